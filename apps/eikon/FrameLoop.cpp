@@ -1,0 +1,54 @@
+#include "apps/eikon/FrameLoop.h"
+
+#include "bridge/io/ImageIo.h"
+
+#include <nlohmann/json.hpp>
+
+namespace eikon::app {
+
+namespace {
+
+nlohmann::json rgbJson(const Rgb& rgb) { return {rgb.r, rgb.g, rgb.b}; }
+
+}  // namespace
+
+std::string frameReportJson(int frame, const render::FrameResult& result) {
+    nlohmann::json stages = nlohmann::json::array();
+    for (const auto& stage : result.stages)
+        stages.push_back({{"name", stage.name}, {"ran", stage.ran}, {"ms", stage.milliseconds}});
+    const render::PhotonStats& p = result.photons;
+    nlohmann::json photons = {
+        {"power_w",
+         {{"emitted", rgbJson(p.emitted)},
+          {"absorbed", rgbJson(p.absorbed)},
+          {"escaped", rgbJson(p.escaped)},
+          {"received", rgbJson(p.received)},
+          {"cut_off", rgbJson(p.cutOff)},
+          {"blocked", rgbJson(p.blocked)}}},
+        {"count",
+         {{"escaped", p.photonsEscaped},
+          {"received", p.photonsReceived},
+          {"cut_off", p.photonsCutOff},
+          {"blocked", p.photonsBlocked}}},
+        {"energy_balance_error", p.balanceError()},
+        {"steps", p.steps},
+        {"max_invariant_error", p.maxInvariantError}};
+    return nlohmann::json{{"frame", frame},
+                          {"stages", stages},
+                          {"host_bytes_uploaded", result.hostBytesUploaded},
+                          {"photons", photons}}
+        .dump();
+}
+
+void runFrames(const Scene& scene, const FieldSet& fields, int frames, io::OutputFolder& output, ProgressBar& progress) {
+    render::FrameRenderer renderer(scene, fields);
+    for (int frame = 0; frame < frames; ++frame) {
+        const render::FrameResult result = renderer.render(fields);
+        io::writePng(output.framePath(frame), result.image.width, result.image.height, result.image.rgba);
+        output.appendReport(frameReportJson(frame, result));
+        progress.advance();
+    }
+    progress.finish();
+}
+
+}  // namespace eikon::app

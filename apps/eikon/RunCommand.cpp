@@ -1,0 +1,42 @@
+#include "apps/eikon/RunCommand.h"
+
+#include "apps/eikon/FrameLoop.h"
+#include "apps/eikon/ProgressBar.h"
+#include "bridge/grid/FieldSet.h"
+#include "bridge/io/OutputFolder.h"
+#include "bridge/scene/SceneParser.h"
+#include "render/gl/GlContext.h"
+#include "sim/voxelize/AnalyticVoxelizer.h"
+
+#include <filesystem>
+
+namespace eikon::app {
+
+void addRunCommand(CLI::App& app, RunOptions& options) {
+    CLI::App* run = app.add_subcommand("run", "Render a scene headless: DIR/frames/frame_NNNNN.png and DIR/report.jsonl");
+    run->add_option("scene", options.scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
+    run->add_option("--out", options.outDir, "Output folder (default: out/<scene name>)");
+    run->add_option("--frames", options.frames, "Number of frames to render")->check(CLI::Range(1, 1000000));
+    run->add_option("--set", options.overrides, "Override a scene value, e.g. --set render.photons=100000")
+        ->type_name("KEY.PATH=VALUE");
+    run->add_flag("--quiet", options.quiet, "No progress bar");
+    run->add_flag("--force", options.force, "Clear the output folder if it holds an earlier run");
+}
+
+int runCommand(const RunOptions& options) {
+    // Everything the user supplied is checked before anything is written.
+    const Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    FieldSet fields = sim::voxelizeScene(scene);
+    validateFields(fields, options.scenePath);
+    const std::filesystem::path outDir =
+        options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
+                               : std::filesystem::path(options.outDir);
+    io::OutputFolder output(outDir, options.force);
+
+    auto context = gl::createHeadlessContext();
+    ProgressBar progress(options.frames, options.quiet);
+    runFrames(scene, fields, options.frames, output, progress);
+    return 0;
+}
+
+}  // namespace eikon::app

@@ -1,0 +1,23 @@
+// `eikon run SCENE`: render a scene headless into an output folder.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace eikon::app {
+
+struct RunOptions {
+    std::string scenePath;
+    std::string outDir;  // default: out/<scene file stem>
+    int frames = 1;
+    std::vector<std::string> overrides;
+    bool quiet = false;
+    bool force = false;
+};
+
+void addRunCommand(CLI::App& app, RunOptions& options);
+int runCommand(const RunOptions& options);
+
+}  // namespace eikon::app

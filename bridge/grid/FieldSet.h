@@ -1,0 +1,35 @@
+// The optical fields of one frame on a dense grid, as the simulation hands
+// them to the renderer: index offset δn = n − n_ref (DESIGN.md: a mirage
+// lives on Δn ≈ 1e-5, which float32 n would round away), extinction κ and
+// scattering σs in 1/m per RGB channel. Each field carries a version that
+// changes whenever its values do, so stages can skip unchanged inputs.
+#pragma once
+
+#include "bridge/grid/GridSpec.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace eikon {
+
+struct FieldSet {
+    GridSpec grid;
+    double referenceIndex = 1.0;      // n_ref
+    std::vector<float> deltaIndex;    // one per cell
+    std::vector<float> extinction;    // three per cell (RGB), empty when κ = 0 everywhere
+    std::vector<float> scattering;    // three per cell (RGB), empty when σs = 0 everywhere
+    std::uint64_t indexVersion = 0;
+    std::uint64_t extinctionVersion = 0;
+    std::uint64_t scatteringVersion = 0;
+
+    bool hasExtinction() const { return !extinction.empty(); }
+    bool hasScattering() const { return !scattering.empty(); }
+};
+
+// Throws InputError naming the field and cell of the first value that is not
+// finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ): fields are checked
+// where they enter the bridge, never traced silently.
+void validateFields(const FieldSet& fields, const std::string& source);
+
+}  // namespace eikon

@@ -1,0 +1,107 @@
+// C++ mirrors of every GPU buffer layout eikon uses. These structs are the
+// source of truth (after Filament's UibStructs.h): the GLSL blocks in
+// shaders/ declare the same members in the same order, and the
+// static_asserts below pin sizes and offsets to the std140/std430 rules so a
+// reordering breaks the build, not the picture. Only vec4-sized members are
+// used, which packs identically under std140 and std430.
+#pragma once
+
+#include <glm/vec4.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+namespace eikon::layout {
+
+// Binding points shared by the C++ stages and the shaders.
+enum Binding : unsigned {
+    kGridBlock = 0,        // uniform GridBlock (GpuGrid)
+    kCameraBlock = 1,      // uniform CameraBlock (GpuCamera)
+    kEmitters = 2,         // buffer Emitters { GpuEmitter emitters[]; }
+    kReceivers = 3,        // buffer Receivers { GpuReceiver receivers[]; }
+    kReceiverMaps = 4,     // buffer ReceiverMaps { float irradiance[]; } — RGB per texel, W·(texel area)⁻¹ accumulated
+    kFluence = 5,          // buffer Fluence { float fluence[]; } — RGB per cell, track-length estimator
+    kPhotonStats = 6,      // buffer PhotonStats (GpuPhotonStats)
+    kHdrImage = 7,         // buffer HdrImage { vec4 radiance[]; }
+    kLdrImage = 8,         // buffer LdrImage { uint rgba8[]; }
+    kPhotonPaths = 9,      // buffer PhotonPaths { vec4 vertices[]; } — optional recording for tests and export
+    kProbe = 10,           // buffer used by the shared-math probe
+};
+
+// Texture units.
+enum TextureUnit : unsigned {
+    kIndexTexture = 0,       // r32f δn
+    kGradientTexture = 1,    // rgba32f (∇n, δn)
+    kExtinctionTexture = 2,  // rgba32f (κ rgb, 0)
+    kScatteringTexture = 3,  // rgba32f (σs rgb, 0)
+};
+
+// uniform GridBlock (std140): the world box of the field grid.
+struct GpuGrid {
+    glm::vec4 boundsMin;   // xyz metres; w = n_ref
+    glm::vec4 boundsMax;   // xyz metres; w unused
+    glm::vec4 voxelSize;   // xyz metres; w = voxel volume in m³
+    glm::ivec4 resolution; // xyz cells; w unused
+};
+static_assert(sizeof(GpuGrid) == 64);
+static_assert(offsetof(GpuGrid, resolution) == 48);
+
+// One light's emission, prepared on the CPU so that the photons of all lights
+// carry exactly the power each light sends toward the traced region.
+struct GpuEmitter {
+    glm::vec4 origin;       // point: position; directional: centre of the emitting disk. w: kind (0 point, 1 directional)
+    glm::vec4 axis;         // unit central direction. w: point: cos of cone half-angle; directional: disk radius (m)
+    glm::vec4 tangent;      // unit, ⟂ axis
+    glm::vec4 bitangent;    // unit, ⟂ axis and tangent
+    glm::vec4 photonPower;  // rgb W carried by each photon; w unused
+    glm::uvec4 photons;     // x: first photon index, y: photon count, z: strata along u1, w: strata along u2
+};
+static_assert(sizeof(GpuEmitter) == 96);
+static_assert(offsetof(GpuEmitter, photons) == 80);
+
+// An opaque diffuse square receiver and where its map lives in ReceiverMaps.
+struct GpuReceiver {
+    glm::vec4 origin;   // centre on the plane; w: edge size (m)
+    glm::vec4 normal;   // unit, lit side; w: texel area (m²)
+    glm::vec4 axisU;    // unit tangent; w unused
+    glm::vec4 axisV;    // unit tangent; w unused
+    glm::vec4 albedo;   // rgb in [0,1]; w unused
+    glm::uvec4 map;     // x: first texel in ReceiverMaps, y: texels per edge
+};
+static_assert(sizeof(GpuReceiver) == 96);
+static_assert(offsetof(GpuReceiver, map) == 80);
+
+// Energy balance and error figures of one photon pass, accumulated with
+// atomics. Every emitted photon ends in exactly one of escaped, received,
+// cut off, blocked; absorbed collects what extinction took along the way, so
+//   emitted = absorbed + escaped + received + cutOff + blocked.
+// Powers are tallied in 64-bit fixed point (two 32-bit words with carry) in
+// units of the largest per-photon power / 2^24 per channel: float atomics
+// adding a million equal values drift by a percent, these stay exact to the
+// per-photon rounding and are independent of summation order.
+enum PowerTally : unsigned { kEmitted = 0, kAbsorbed, kEscaped, kReceived, kCutOff, kBlocked, kTallyCount };
+constexpr double kPowerUnitsPerPhoton = 16777216.0;  // 2^24
+
+struct GpuPhotonStats {
+    std::uint32_t power[kTallyCount][3][2];  // [tally][channel][low, high word]
+    glm::uvec4 photons;  // photon counts: x escaped, y received, z cut off, w blocked
+    glm::uvec4 steps;    // x: low 32 bits of the step count, y: high bits; z: max |v|−n invariant error (float bits)
+};
+static_assert(sizeof(GpuPhotonStats) == 176);
+static_assert(offsetof(GpuPhotonStats, photons) == 144);
+static_assert(offsetof(GpuPhotonStats, steps) == 160);
+
+
+// uniform CameraBlock (std140): a pinhole camera.
+struct GpuCamera {
+    glm::vec4 position;    // xyz metres; w = tan(vertical fov / 2)
+    glm::vec4 forward;     // unit; w = width / height
+    glm::vec4 right;       // unit
+    glm::vec4 up;          // unit
+    glm::vec4 background;  // rgb radiance of the environment, W/(m²·sr)
+    glm::uvec4 image;      // x: width, y: height
+};
+static_assert(sizeof(GpuCamera) == 96);
+static_assert(offsetof(GpuCamera, image) == 80);
+
+}  // namespace eikon::layout

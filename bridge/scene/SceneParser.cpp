@@ -1,0 +1,328 @@
+#include "bridge/scene/SceneParser.h"
+
+#include "bridge/core/Error.h"
+#include "bridge/scene/JsonReader.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace eikon {
+namespace {
+
+constexpr long long kMaxGridCells = 512LL * 512 * 512;
+constexpr long long kMaxPhotons = 2147483647LL;  // 2^31 - 1
+constexpr int kMaxImageEdge = 16384;
+constexpr int kMaxReceiverResolution = 4096;
+constexpr int kMaxSupersampling = 16;
+constexpr long long kMaxSeed = 4294967295LL;  // 2^32 - 1
+
+const NumberRange kPositive = NumberRange::above(0.0);
+const NumberRange kNonNegative = NumberRange::atLeast(0.0);
+
+std::string formatVector(const glm::dvec3& v) {
+    return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
+}
+
+// v / |v|, or zero for the zero vector; pre-scaled so that |v| cannot overflow.
+glm::dvec3 normalizedOrZero(const glm::dvec3& v) {
+    const double largest = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    return largest == 0.0 ? glm::dvec3(0.0) : glm::normalize(v / largest);
+}
+
+// A non-zero vector, scaled to unit length.
+glm::dvec3 readDirection(const JsonReader& node) {
+    const glm::dvec3 v = node.vec3();
+    const glm::dvec3 unit = normalizedOrZero(v);
+    if (unit == glm::dvec3(0.0)) node.fail("a non-zero vector", formatVector(v));
+    return unit;
+}
+
+// Checks max > min on every axis; the error points at the offending max element.
+void requireNonEmpty(const JsonReader& minNode, const glm::dvec3& min, const JsonReader& maxNode,
+                     const glm::dvec3& max) {
+    for (int axis = 0; axis < 3; ++axis) {
+        if (max[axis] > min[axis]) continue;
+        maxNode.element(axis).fail("a number > " + minNode.element(axis).path() + " = " + formatNumber(min[axis]) +
+                                       " (the bounds must not be empty)",
+                                   formatNumber(max[axis]));
+    }
+}
+
+// Optional extinction and scattering (default 0), with scattering <= extinction.
+void readAttenuation(const JsonObjectReader& fields, Material& material) {
+    if (auto node = fields.optional("extinction")) material.extinction = node->rgb(kNonNegative);
+    if (auto node = fields.optional("scattering")) {
+        material.scattering = node->rgb(kNonNegative);
+        for (int channel = 0; channel < 3; ++channel) {
+            if (material.scattering[channel] <= material.extinction[channel]) continue;
+            node->fail("scattering <= extinction " + formatVector(material.extinction) + " in every channel",
+                       formatVector(material.scattering));
+        }
+    }
+}
+
+GridDesc readGrid(const JsonReader& node) {
+    GridDesc grid;
+    const auto fields = node.object({"resolution", "bounds", "smoothing_sigma_voxels", "supersampling"});
+    if (auto resolution = fields.optional("resolution")) {
+        grid.resolution = resolution->ivec3(1, static_cast<int>(kMaxGridCells));
+        const glm::ivec3 n = grid.resolution;
+        const double cells = static_cast<double>(n.x) * n.y * n.z;  // a 64-bit integer product could overflow
+        if (cells > static_cast<double>(kMaxGridCells)) {
+            const std::string found =
+                std::to_string(n.x) + " x " + std::to_string(n.y) + " x " + std::to_string(n.z) + " cells";
+            resolution->fail("at most " + std::to_string(kMaxGridCells) + " cells (512^3) in total", found);
+        }
+    }
+    if (auto bounds = fields.optional("bounds")) {
+        const auto corners = bounds->object({"min", "max"});
+        grid.boundsMin = corners.member("min").vec3();
+        grid.boundsMax = corners.member("max").vec3();
+        requireNonEmpty(corners.member("min"), grid.boundsMin, corners.member("max"), grid.boundsMax);
+    }
+    if (auto sigma = fields.optional("smoothing_sigma_voxels")) grid.smoothingSigmaVoxels = sigma->number(kNonNegative);
+    if (auto samples = fields.optional("supersampling")) {
+        grid.supersampling = static_cast<int>(samples->integer(1, kMaxSupersampling));
+    }
+    return grid;
+}
+
+Material readMedium(const JsonReader& node) {
+    Material medium;
+    const auto fields = node.object({"index", "extinction", "scattering"});
+    if (auto index = fields.optional("index")) medium.index = index->number(kPositive);
+    readAttenuation(fields, medium);
+    return medium;
+}
+
+ObjectDesc readObject(const JsonReader& node) {
+    ObjectDesc object;
+    const std::string type = node.member("type").oneOf({"sphere", "box"});
+    if (type == "sphere") {
+        const auto fields = node.object({"type", "center", "radius", "index", "extinction", "scattering"});
+        object.kind = ObjectDesc::Kind::Sphere;
+        object.sphere.center = fields.member("center").vec3();
+        object.sphere.radius = fields.member("radius").number(kPositive);
+        object.material.index = fields.member("index").number(kPositive);
+        readAttenuation(fields, object.material);
+    } else {
+        const auto fields = node.object({"type", "min", "max", "index", "extinction", "scattering"});
+        object.kind = ObjectDesc::Kind::Box;
+        object.box.min = fields.member("min").vec3();
+        object.box.max = fields.member("max").vec3();
+        requireNonEmpty(fields.member("min"), object.box.min, fields.member("max"), object.box.max);
+        object.material.index = fields.member("index").number(kPositive);
+        readAttenuation(fields, object.material);
+    }
+    return object;
+}
+
+LightDesc readLight(const JsonReader& node) {
+    LightDesc light;
+    const std::string type = node.member("type").oneOf({"point", "directional"});
+    if (type == "point") {
+        const auto fields = node.object({"type", "position", "power"});
+        light.kind = LightDesc::Kind::Point;
+        light.position = fields.member("position").vec3();
+        light.power = fields.member("power").rgb(kNonNegative);
+    } else {
+        const auto fields = node.object({"type", "direction", "irradiance"});
+        light.kind = LightDesc::Kind::Directional;
+        light.direction = readDirection(fields.member("direction"));
+        light.irradiance = fields.member("irradiance").rgb(kNonNegative);
+    }
+    return light;
+}
+
+ReceiverDesc readReceiver(const JsonReader& node) {
+    ReceiverDesc receiver;
+    node.member("type").oneOf({"plane"});
+    const auto fields = node.object({"type", "point", "normal", "albedo", "size", "resolution"});
+    receiver.point = fields.member("point").vec3();
+    receiver.normal = readDirection(fields.member("normal"));
+    if (auto albedo = fields.optional("albedo")) receiver.albedo = albedo->rgb(NumberRange::closed(0.0, 1.0));
+    if (auto size = fields.optional("size")) receiver.size = size->number(kPositive);
+    if (auto resolution = fields.optional("resolution")) {
+        receiver.resolution = static_cast<int>(resolution->integer(1, kMaxReceiverResolution));
+    }
+    return receiver;
+}
+
+CameraDesc readCamera(const JsonReader& node) {
+    CameraDesc camera;
+    const auto fields = node.object({"position", "target", "up", "fov_deg"});
+    if (auto position = fields.optional("position")) camera.position = position->vec3();
+    if (auto target = fields.optional("target")) camera.target = target->vec3();
+    if (auto up = fields.optional("up")) camera.up = up->vec3();
+    if (auto fov = fields.optional("fov_deg")) camera.fovDeg = fov->number(NumberRange::open(0.0, 180.0));
+
+    const glm::dvec3 view = normalizedOrZero(camera.target - camera.position);
+    if (view == glm::dvec3(0.0)) {
+        fields.member("target").fail("a point other than camera.position " + formatVector(camera.position),
+                                     formatVector(camera.target));
+    }
+    const double sine = glm::length(glm::cross(normalizedOrZero(camera.up), view));
+    if (sine < 1e-6) {
+        fields.member("up").fail("a non-zero vector not parallel to the view direction " + formatVector(view),
+                                 formatVector(camera.up));
+    }
+    return camera;
+}
+
+RenderDesc readRender(const JsonReader& node) {
+    RenderDesc render;
+    const auto fields =
+        node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background"});
+    if (auto photons = fields.optional("photons")) render.photons = photons->integer(1, kMaxPhotons);
+    if (auto width = fields.optional("width")) render.width = static_cast<int>(width->integer(1, kMaxImageEdge));
+    if (auto height = fields.optional("height")) render.height = static_cast<int>(height->integer(1, kMaxImageEdge));
+    if (auto seed = fields.optional("seed")) render.seed = static_cast<unsigned>(seed->integer(0, kMaxSeed));
+    if (auto exposure = fields.optional("exposure_ev")) render.exposureEv = exposure->number();
+    if (auto step = fields.optional("step_voxels")) render.stepVoxels = step->number(kPositive);
+    if (auto background = fields.optional("background")) render.background = background->rgb(kNonNegative);
+    return render;
+}
+
+template <class Item, class ReadItem>
+std::vector<Item> readList(const JsonObjectReader& fields, const std::string& key, ReadItem readItem) {
+    std::vector<Item> items;
+    if (auto list = fields.optional(key)) {
+        for (const JsonReader& element : list->array()) items.push_back(readItem(element));
+    }
+    return items;
+}
+
+// 1-based line and column of a parse error at byte offset `byte` (1-based, as
+// nlohmann reports it: the last character read).
+std::string lineAndColumn(const std::string& text, std::size_t byte) {
+    const std::size_t errorIndex = std::min(byte == 0 ? 0 : byte - 1, text.size());
+    std::size_t line = 1;
+    std::size_t lineStart = 0;
+    for (std::size_t i = 0; i < errorIndex; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            lineStart = i + 1;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(errorIndex - lineStart + 1);
+}
+
+// The part of text after the first marker, or all of text if there is none.
+std::string textAfter(const std::string& text, const std::string& marker) {
+    const std::size_t at = text.find(marker);
+    return at == std::string::npos ? text : text.substr(at + marker.size());
+}
+
+std::string readTextFile(const std::string& path) {
+    std::error_code ignored;
+    if (!std::filesystem::exists(path, ignored)) throw InputError(path, "a scene file", "no such file");
+    if (!std::filesystem::is_regular_file(path, ignored)) throw InputError(path, "a scene file", "not a regular file");
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (!file) throw InputError(path, "a readable scene file", "a file that cannot be read");
+    return text.str();
+}
+
+nlohmann::json parseJsonText(const std::string& text, const std::string& sourceName) {
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error& error) {
+        // Drops "[json.exception.parse_error.101] parse error at line L, column C: ".
+        const std::string reason = textAfter(error.what(), ": ");
+        throw InputError(sourceName + ": " + lineAndColumn(text, error.byte), "valid JSON", reason);
+    } catch (const nlohmann::json::exception& error) {  // a number too large for a double, say
+        throw InputError(sourceName, "valid JSON", textAfter(error.what(), "] "));
+    }
+}
+
+bool isArrayIndex(const std::string& segment) {
+    return !segment.empty() && segment.size() <= 9 &&
+           std::all_of(segment.begin(), segment.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+std::vector<std::string> splitKeyPath(const std::string& keyPath) {
+    std::vector<std::string> segments;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t dot = keyPath.find('.', start);
+        segments.push_back(keyPath.substr(start, dot - start));
+        if (dot == std::string::npos) return segments;
+        start = dot + 1;
+    }
+}
+
+// The member or element named by segment; `parent` is the key path so far.
+nlohmann::json& stepInto(nlohmann::json& node, const std::string& segment, const std::string& parent,
+                         const std::string& where) {
+    const std::string at = parent.empty() ? "the top level" : parent;
+    if (node.is_array()) {
+        if (!isArrayIndex(segment)) throw InputError(where, "an array index at " + at, "\"" + segment + "\"");
+        const std::size_t index = std::stoul(segment);
+        if (index >= node.size()) {
+            throw InputError(where, "an index below " + std::to_string(node.size()) + " (the length of " + at + ")",
+                             segment);
+        }
+        return node[index];
+    }
+    if (node.is_null()) node = nlohmann::json::object();
+    if (!node.is_object()) {
+        throw InputError(where, "an object or array at " + at, std::string("a ") + node.type_name());
+    }
+    return node[segment];
+}
+
+nlohmann::json parseOverrideValue(const std::string& text) {
+    nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+    return value.is_discarded() ? nlohmann::json(text) : value;
+}
+
+}  // namespace
+
+Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
+    const auto fields = JsonReader(root, sourceName)
+                            .object({"description", "grid", "medium", "objects", "lights", "receivers", "camera",
+                                     "render"});
+    Scene scene;
+    scene.sourcePath = sourceName;
+    if (auto description = fields.optional("description")) description->string();  // checked, not kept
+    if (auto grid = fields.optional("grid")) scene.grid = readGrid(*grid);
+    if (auto medium = fields.optional("medium")) scene.medium = readMedium(*medium);
+    scene.objects = readList<ObjectDesc>(fields, "objects", readObject);
+    scene.lights = readList<LightDesc>(fields, "lights", readLight);
+    if (scene.lights.empty()) fields.member("lights").fail("an array of at least one light");
+    scene.receivers = readList<ReceiverDesc>(fields, "receivers", readReceiver);
+    if (auto camera = fields.optional("camera")) scene.camera = readCamera(*camera);
+    if (auto render = fields.optional("render")) scene.render = readRender(*render);
+    return scene;
+}
+
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+    nlohmann::json root = parseJsonText(readTextFile(path), path);
+    for (const std::string& assignment : overrides) applyOverride(root, assignment);
+    return parseScene(root, path);
+}
+
+void applyOverride(nlohmann::json& root, const std::string& assignment) {
+    const std::string where = "--set " + assignment;
+    const std::size_t equals = assignment.find('=');
+    if (equals == std::string::npos) throw InputError(where, "key.path=value", "no '='");
+    const std::string keyPath = assignment.substr(0, equals);
+    if (keyPath.empty()) throw InputError(where, "a key path before '='", "an empty key path");
+
+    nlohmann::json* node = &root;
+    std::string walked;
+    for (const std::string& segment : splitKeyPath(keyPath)) {
+        if (segment.empty()) throw InputError(where, "key names separated by single '.'", "an empty key in " + keyPath);
+        node = &stepInto(*node, segment, walked, where);
+        walked += (walked.empty() ? "" : ".") + segment;
+    }
+    *node = parseOverrideValue(assignment.substr(equals + 1));
+}
+
+}  // namespace eikon

@@ -1,0 +1,37 @@
+#include "render/gl/GlContext.h"
+
+#include "render/gl/GlDebug.h"
+
+#include <epoxy/gl.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace eikon::gl {
+
+namespace {
+
+std::string glString(GLenum name) {
+    const auto* text = reinterpret_cast<const char*>(glGetString(name));
+    return text ? text : "(unknown)";
+}
+
+}  // namespace
+
+void GlContext::initialiseCurrent(const std::string& platform) {
+    info_.vendor = glString(GL_VENDOR);
+    info_.renderer = glString(GL_RENDERER);
+    info_.version = glString(GL_VERSION);
+    info_.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
+    info_.platform = platform;
+    if (epoxy_gl_version() < 45)
+        throw std::runtime_error(platform + " gave OpenGL " + info_.version + " on " + info_.renderer +
+                                 "; eikon needs OpenGL 4.5 core");
+    // Photon deposition accumulates power with float atomics.
+    if (!epoxy_has_gl_extension("GL_NV_shader_atomic_float"))
+        throw std::runtime_error(platform + ": " + info_.renderer +
+                                 " lacks GL_NV_shader_atomic_float, which photon deposition needs");
+    installDebugCallback();
+}
+
+}  // namespace eikon::gl

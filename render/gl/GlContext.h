@@ -1,0 +1,56 @@
+// An OpenGL 4.5 core context, headless (EGL) or in a window (GLFW), behind
+// one interface. Creating one makes it current on the calling thread.
+#pragma once
+
+#include <memory>
+#include <string>
+
+namespace eikon::gl {
+
+struct GlInfo {
+    std::string vendor;
+    std::string renderer;
+    std::string version;
+    std::string glslVersion;
+    std::string platform;  // how the context was made, e.g. "EGL surfaceless (Mesa)"
+};
+
+class GlContext {
+public:
+    virtual ~GlContext() = default;
+    GlContext(const GlContext&) = delete;
+    GlContext& operator=(const GlContext&) = delete;
+
+    virtual void makeCurrent() = 0;
+    const GlInfo& info() const { return info_; }
+
+protected:
+    GlContext() = default;
+    // Reads vendor/renderer/version, checks for 4.5 core and the extensions
+    // eikon needs, and installs the KHR_debug callback. Call once current.
+    void initialiseCurrent(const std::string& platform);
+
+private:
+    GlInfo info_;
+};
+
+// Headless context through EGL. Tries, in order: the EGL device platform on a
+// hardware device (NVIDIA and other GPU drivers), then Mesa's surfaceless
+// platform (llvmpipe without a GPU). EIKON_EGL_PLATFORM=device|surfaceless
+// forces one. Throws std::runtime_error naming every attempt when none gives
+// an OpenGL 4.5 core context.
+std::unique_ptr<GlContext> createHeadlessContext();
+
+class WindowContext : public GlContext {
+public:
+    virtual bool shouldClose() const = 0;
+    virtual void swapBuffers() = 0;
+    virtual void pollEvents() = 0;
+    virtual void framebufferSize(int& width, int& height) const = 0;
+    virtual void* nativeWindow() const = 0;  // GLFWwindow*, for UI layers
+};
+
+// A window with an OpenGL 4.5 core context through GLFW.
+std::unique_ptr<WindowContext> createWindowContext(int width, int height, const std::string& title);
+
+}  // namespace eikon::gl

@@ -1,0 +1,62 @@
+#include "render/gl/GlObjects.h"
+
+#include <stdexcept>
+
+namespace eikon::gl {
+
+void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
+void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
+void deleteProgram(GLuint id) { glDeleteProgram(id); }
+
+Buffer::Buffer(std::size_t bytes, const void* data, GLbitfield flags) : bytes_(bytes) {
+    GLuint id = 0;
+    glCreateBuffers(1, &id);
+    name_ = GlName<deleteBuffer>(id);
+    // Zero-sized storage is invalid; keep one word so bindings stay legal.
+    glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes > 0 ? bytes : 4), data, flags);
+}
+
+void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
+    if (offset + bytes > bytes_) throw std::out_of_range("Buffer::upload past the end");
+    glNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
+    if (offset + bytes > bytes_) throw std::out_of_range("Buffer::download past the end");
+    glGetNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void Buffer::clearToZero() {
+    const GLuint zero = 0;
+    glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
+Texture3D::Texture3D(GLenum internalFormat, int width, int height, int depth)
+    : internalFormat_(internalFormat), width_(width), height_(height), depth_(depth) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_3D, 1, &id);
+    name_ = GlName<deleteTexture>(id);
+    glTextureStorage3D(id, 1, internalFormat, width, height, depth);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+}
+
+void Texture3D::upload(GLenum format, GLenum type, const void* data) {
+    glTextureSubImage3D(id(), 0, 0, 0, 0, width_, height_, depth_, format, type, data);
+}
+
+void Texture3D::bindImage(GLuint unit, GLenum access) const {
+    glBindImageTexture(unit, id(), 0, GL_TRUE, 0, access, internalFormat_);
+}
+
+void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX,
+                               GLuint localY, GLuint localZ) const {
+    auto groups = [](std::size_t count, GLuint local) { return static_cast<GLuint>((count + local - 1) / local); };
+    use();
+    glDispatchCompute(groups(countX, localX), groups(countY, localY), groups(countZ, localZ));
+}
+
+}  // namespace eikon::gl

@@ -1,0 +1,106 @@
+// RAII owners for OpenGL objects: each deletes its name on destruction and
+// moves but never copies. Uses direct state access (OpenGL 4.5) throughout.
+#pragma once
+
+#include <epoxy/gl.h>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+
+namespace eikon::gl {
+
+// Owns one GL name; Deleter is a function that deletes one name.
+template <void (*Deleter)(GLuint)>
+class GlName {
+public:
+    GlName() = default;
+    explicit GlName(GLuint id) : id_(id) {}
+    ~GlName() { reset(); }
+    GlName(GlName&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+    GlName& operator=(GlName&& other) noexcept {
+        if (this != &other) {
+            reset();
+            id_ = std::exchange(other.id_, 0);
+        }
+        return *this;
+    }
+    GlName(const GlName&) = delete;
+    GlName& operator=(const GlName&) = delete;
+
+    GLuint id() const { return id_; }
+    explicit operator bool() const { return id_ != 0; }
+
+private:
+    void reset() {
+        if (id_ != 0) Deleter(id_);
+        id_ = 0;
+    }
+    GLuint id_ = 0;
+};
+
+void deleteBuffer(GLuint id);
+void deleteTexture(GLuint id);
+void deleteProgram(GLuint id);
+
+// An immutable-storage buffer (glNamedBufferStorage).
+class Buffer {
+public:
+    Buffer() = default;
+    Buffer(std::size_t bytes, const void* data = nullptr, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+
+    GLuint id() const { return name_.id(); }
+    std::size_t bytes() const { return bytes_; }
+    void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
+    void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
+    void clearToZero();
+    void bindStorage(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id()); }
+    void bindUniform(GLuint binding) const { glBindBufferBase(GL_UNIFORM_BUFFER, binding, id()); }
+
+    template <typename T>
+    T downloadAs(std::size_t offset = 0) const {
+        T value{};
+        download(&value, sizeof value, offset);
+        return value;
+    }
+
+private:
+    GlName<deleteBuffer> name_;
+    std::size_t bytes_ = 0;
+};
+
+// A 3D texture with trilinear filtering and clamp-to-edge addressing.
+class Texture3D {
+public:
+    Texture3D() = default;
+    Texture3D(GLenum internalFormat, int width, int height, int depth);
+
+    GLuint id() const { return name_.id(); }
+    void upload(GLenum format, GLenum type, const void* data);
+    void bindSampler(GLuint unit) const { glBindTextureUnit(unit, id()); }
+    void bindImage(GLuint unit, GLenum access) const;
+
+private:
+    GlName<deleteTexture> name_;
+    GLenum internalFormat_ = 0;
+    int width_ = 0, height_ = 0, depth_ = 0;
+};
+
+// A linked compute program.
+class Program {
+public:
+    Program() = default;
+    explicit Program(GLuint id) : name_(id) {}
+
+    GLuint id() const { return name_.id(); }
+    void use() const { glUseProgram(id()); }
+    GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+    // Dispatches enough work groups of `localSize` to cover `count` items.
+    void dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX, GLuint localY,
+                          GLuint localZ) const;
+
+private:
+    GlName<deleteProgram> name_;
+};
+
+}  // namespace eikon::gl

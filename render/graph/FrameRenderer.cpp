@@ -1,0 +1,74 @@
+#include "render/graph/FrameRenderer.h"
+
+#include <chrono>
+#include <utility>
+
+namespace eikon::render {
+
+namespace {
+
+// Runs `work` if `needed`, timing it to completion on the GPU.
+template <typename Work>
+StageReport runStage(const char* name, bool needed, Work&& work) {
+    StageReport report{name, needed, 0.0};
+    if (!needed) return report;
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    glFinish();
+    report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+}  // namespace
+
+FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options)
+    : scene_(scene), receivers_(scene.receivers), post_(scene.render.width, scene.render.height) {
+    pendingUploadBytes_ = fields_.upload(fields);  // before the stages: they compile for the fields present
+    photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.recordPathVertices,
+                                             options.recordedPhotons);
+    view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_);
+    const double step = scene.render.stepVoxels * fields.grid.smallestVoxelEdge();
+    photonSettings_.photons = scene.render.photons;
+    photonSettings_.seed = scene.render.seed;
+    photonSettings_.stepLength = step;
+    photonSettings_.maxSteps = defaultMaxSteps(fields.grid, step);
+    photonSettings_.recordPathVertices = options.recordPathVertices;
+    photonSettings_.recordedPhotons = options.recordedPhotons;
+    viewStepLength_ = step;
+    viewMaxSteps_ = photonSettings_.maxSteps;
+}
+
+void FrameRenderer::setCamera(const CameraDesc& camera) {
+    scene_.camera = camera;
+    view_->setCamera(camera);
+    cameraChanged_ = true;
+}
+
+FrameResult FrameRenderer::render(const FieldSet& fields) {
+    FrameResult result;
+    result.stages.push_back(runStage("upload", true, [&] {
+        result.hostBytesUploaded = std::exchange(pendingUploadBytes_, 0) + fields_.upload(fields);
+    }));
+    const bool indexChanged = fields.indexVersion != tracedIndexVersion_;
+    const bool fieldsChanged = indexChanged || fields.extinctionVersion != tracedExtinctionVersion_ ||
+                               fields.scatteringVersion != tracedScatteringVersion_;
+    result.stages.push_back(runStage("prepare", indexChanged, [&] { prepare_.run(fields_); }));
+    result.stages.push_back(
+        runStage("photons", fieldsChanged, [&] { last_.photons = photons_->run(fields_, photonSettings_); }));
+    const bool viewNeeded = fieldsChanged || cameraChanged_;
+    result.stages.push_back(runStage("view", viewNeeded, [&] {
+        view_->run(fields_, photons_->fluence(), viewStepLength_, viewMaxSteps_);
+    }));
+    result.stages.push_back(runStage("post", viewNeeded, [&] {
+        last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
+    }));
+    tracedIndexVersion_ = fields.indexVersion;
+    tracedExtinctionVersion_ = fields.extinctionVersion;
+    tracedScatteringVersion_ = fields.scatteringVersion;
+    cameraChanged_ = false;
+    result.image = last_.image;
+    result.photons = last_.photons;
+    return result;
+}
+
+}  // namespace eikon::render

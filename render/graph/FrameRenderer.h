@@ -1,0 +1,70 @@
+// One frame of the render half: upload → prepare → photons → view → post.
+// A stage runs only when one of its inputs changed since it last ran (field
+// versions, camera, exposure); stages the scene does not need are not
+// created (no receivers → no maps, no scattering → no fluence). Each frame
+// reports every stage with whether it ran and its wall time.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/scene/Scene.h"
+#include "render/stages/FieldTextures.h"
+#include "render/stages/PhotonStage.h"
+#include "render/stages/PostStage.h"
+#include "render/stages/PrepareStage.h"
+#include "render/stages/ReceiverMaps.h"
+#include "render/stages/ViewStage.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace eikon::render {
+
+struct StageReport {
+    std::string name;
+    bool ran = false;
+    double milliseconds = 0.0;  // wall time with glFinish (GPU timer queries read 0 on llvmpipe)
+};
+
+struct FrameResult {
+    Image8 image;
+    PhotonStats photons;          // of the latest photon pass
+    std::vector<StageReport> stages;
+    std::size_t hostBytesUploaded = 0;
+};
+
+struct RendererOptions {
+    int recordPathVertices = 0;  // photon paths to record (tests, export)
+    int recordedPhotons = 64;
+};
+
+class FrameRenderer {
+public:
+    FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options = {});
+
+    FrameResult render(const FieldSet& fields);
+    void setCamera(const CameraDesc& camera);
+
+    const ReceiverMaps& receivers() const { return receivers_; }
+    const PhotonStage& photonStage() const { return *photons_; }
+    const PhotonSettings& photonSettings() const { return photonSettings_; }
+
+private:
+    Scene scene_;
+    FieldTextures fields_;
+    ReceiverMaps receivers_;
+    PrepareStage prepare_;
+    std::unique_ptr<PhotonStage> photons_;
+    std::unique_ptr<ViewStage> view_;
+    PostStage post_;
+    PhotonSettings photonSettings_;
+    double viewStepLength_ = 0.0;
+    unsigned viewMaxSteps_ = 0;
+
+    std::uint64_t tracedIndexVersion_ = ~0ull, tracedExtinctionVersion_ = ~0ull, tracedScatteringVersion_ = ~0ull;
+    bool cameraChanged_ = true;
+    std::size_t pendingUploadBytes_ = 0;  // uploaded while constructing, reported with the first frame
+    FrameResult last_;
+};
+
+}  // namespace eikon::render

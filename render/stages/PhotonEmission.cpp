@@ -1,0 +1,140 @@
+#include "render/stages/PhotonEmission.h"
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace eikon::render {
+
+namespace {
+
+void include(Box& box, const glm::dvec3& point) {
+    box.min = glm::min(box.min, point);
+    box.max = glm::max(box.max, point);
+}
+
+bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
+
+double channelSum(const Rgb& rgb) { return rgb.r + rgb.g + rgb.b; }
+
+// Any unit vector perpendicular to `axis`, and a third completing the basis.
+void orthonormalBasis(const glm::dvec3& axis, glm::dvec3& tangent, glm::dvec3& bitangent) {
+    const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    tangent = glm::normalize(glm::cross(axis, helper));
+    bitangent = glm::cross(axis, tangent);
+}
+
+struct EmitterGeometry {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 axis{0, 0, 1};
+    double shape = 0.0;  // cos of the cone half-angle, or disk radius
+    Rgb powerIntoRegion{0.0};
+    float kind = 0.0f;
+};
+
+// The narrowest cone around the direction to the region's centre that holds
+// all eight corners; a convex cone of half-angle < 90° holding the corners
+// holds the box. Otherwise (light inside or beside a large box) the full sphere.
+EmitterGeometry pointEmitter(const LightDesc& light, const Box& region) {
+    EmitterGeometry geometry;
+    geometry.origin = light.position;
+    const glm::dvec3 toCentre = 0.5 * (region.min + region.max) - light.position;
+    double cosMax = -1.0;
+    if (glm::length(toCentre) > 0.0) {
+        geometry.axis = glm::normalize(toCentre);
+        cosMax = 1.0;
+        for (int corner = 0; corner < 8; ++corner) {
+            const glm::dvec3 point((corner & 1) ? region.max.x : region.min.x, (corner & 2) ? region.max.y : region.min.y,
+                                   (corner & 4) ? region.max.z : region.min.z);
+            const glm::dvec3 toCorner = point - light.position;
+            const double length = glm::length(toCorner);
+            if (length > 0.0) cosMax = std::min(cosMax, glm::dot(toCorner / length, geometry.axis));
+            else cosMax = -1.0;
+        }
+        if (cosMax <= 1e-6) cosMax = -1.0;
+    }
+    geometry.shape = cosMax;
+    // Isotropic: intensity Φ/4π over the cap's solid angle 2π(1 − cosMax).
+    geometry.powerIntoRegion = light.power * (0.5 * (1.0 - cosMax));
+    return geometry;
+}
+
+// A disk ⟂ the light's direction, upstream of the region, covering the
+// region's bounding sphere.
+EmitterGeometry directionalEmitter(const LightDesc& light, const Box& region) {
+    EmitterGeometry geometry;
+    geometry.kind = 1.0f;
+    geometry.axis = glm::normalize(light.direction);
+    const glm::dvec3 centre = 0.5 * (region.min + region.max);
+    const double radius = 0.5 * glm::length(region.max - region.min) * 1.001 + 1e-9;
+    geometry.origin = centre - geometry.axis * radius * 1.01;
+    geometry.shape = radius;
+    geometry.powerIntoRegion = light.irradiance * (std::numbers::pi * radius * radius);
+    return geometry;
+}
+
+}  // namespace
+
+Box emissionRegion(const Scene& scene) {
+    const Box gridBox{scene.grid.boundsMin, scene.grid.boundsMax};
+    if (positive(scene.medium.extinction) || positive(scene.medium.scattering)) return gridBox;
+    Box region{glm::dvec3(INFINITY), glm::dvec3(-INFINITY)};
+    for (const auto& object : scene.objects) {
+        Box bounds = object.kind == ObjectDesc::Kind::Sphere
+                         ? Box{object.sphere.center - object.sphere.radius, object.sphere.center + object.sphere.radius}
+                         : Box{object.box.min, object.box.max};
+        bounds.min = glm::max(bounds.min, gridBox.min);
+        bounds.max = glm::min(bounds.max, gridBox.max);
+        if (glm::all(glm::lessThan(bounds.min, bounds.max))) {
+            include(region, bounds.min);
+            include(region, bounds.max);
+        }
+    }
+    for (const auto& receiver : scene.receivers) {
+        glm::dvec3 u, v;
+        orthonormalBasis(receiver.normal, u, v);
+        for (double su : {-0.5, 0.5})
+            for (double sv : {-0.5, 0.5}) include(region, receiver.point + receiver.size * (su * u + sv * v));
+    }
+    return glm::all(glm::lessThanEqual(region.min, region.max)) ? region : gridBox;
+}
+
+std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& lights, const Box& region,
+                                              long long photons) {
+    std::vector<EmitterGeometry> geometries;
+    double totalPower = 0.0;
+    for (const auto& light : lights) {
+        const EmitterGeometry geometry =
+            light.kind == LightDesc::Kind::Point ? pointEmitter(light, region) : directionalEmitter(light, region);
+        if (channelSum(geometry.powerIntoRegion) <= 0.0) continue;
+        totalPower += channelSum(geometry.powerIntoRegion);
+        geometries.push_back(geometry);
+    }
+    std::vector<layout::GpuEmitter> emitters;
+    long long first = 0;
+    for (std::size_t i = 0; i < geometries.size(); ++i) {
+        const EmitterGeometry& geometry = geometries[i];
+        const bool last = i + 1 == geometries.size();
+        const long long share = std::llround(static_cast<double>(photons) * channelSum(geometry.powerIntoRegion) / totalPower);
+        const long long count = last ? std::max(1LL, photons - first) : std::max(1LL, share);
+        glm::dvec3 tangent, bitangent;
+        orthonormalBasis(geometry.axis, tangent, bitangent);
+        const auto strataU = static_cast<unsigned>(std::floor(std::sqrt(static_cast<double>(count))));
+        layout::GpuEmitter emitter{};
+        emitter.origin = glm::vec4(glm::vec3(geometry.origin), geometry.kind);
+        emitter.axis = glm::vec4(glm::vec3(geometry.axis), static_cast<float>(geometry.shape));
+        emitter.tangent = glm::vec4(glm::vec3(tangent), 0.0f);
+        emitter.bitangent = glm::vec4(glm::vec3(bitangent), 0.0f);
+        emitter.photonPower = glm::vec4(glm::vec3(geometry.powerIntoRegion / static_cast<double>(count)), 0.0f);
+        emitter.photons = glm::uvec4(static_cast<unsigned>(first), static_cast<unsigned>(count), strataU,
+                                     static_cast<unsigned>(count / strataU));
+        emitters.push_back(emitter);
+        first += count;
+    }
+    return emitters;
+}
+
+}  // namespace eikon::render

@@ -1,0 +1,33 @@
+// Photon emission set-up (Sun et al. 2008, §4.3, with the shadow-map trick
+// replaced by a bounding cone): photons leave each light only toward the box
+// that holds the non-empty medium and the receivers, and each carries the
+// power of the solid angle (point) or area (directional) it stands for, so
+// the photons of a light sum to the power that light sends into that region.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/layout/GpuLayouts.h"
+#include "bridge/scene/Scene.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace eikon::render {
+
+struct Box {
+    glm::dvec3 min{0.0};
+    glm::dvec3 max{0.0};
+};
+
+// Box around the part of the scene light must reach: the grid where the
+// background medium attenuates, each object clipped to the grid, and each
+// receiver's square. The grid box when there is nothing else.
+Box emissionRegion(const Scene& scene);
+
+// One emitter per light with non-zero power toward `region`; photons are
+// shared among lights in proportion to that power (each light at least one).
+std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& lights, const Box& region,
+                                              long long photons);
+
+}  // namespace eikon::render

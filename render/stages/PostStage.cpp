@@ -1,0 +1,30 @@
+#include "render/stages/PostStage.h"
+
+#include "bridge/layout/GpuLayouts.h"
+#include "render/gl/GlDebug.h"
+#include "render/gl/ShaderLibrary.h"
+
+#include <cmath>
+
+namespace eikon::render {
+
+PostStage::PostStage(int width, int height)
+    : width_(width), height_(height), program_(gl::compileComputeProgram("tonemap.comp")),
+      ldr_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {}
+
+Image8 PostStage::run(const gl::Buffer& hdrImage, double exposureEv) {
+    const auto pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+    hdrImage.bindStorage(layout::kHdrImage);
+    ldr_.bindStorage(layout::kLdrImage);
+    program_.use();
+    glUniform1ui(program_.uniform("pixel_count"), static_cast<GLuint>(pixels));
+    glUniform1f(program_.uniform("exposure_scale"), static_cast<float>(std::exp2(exposureEv)));
+    program_.dispatchCovering(pixels, 1, 1, 64, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    Image8 image{width_, height_, std::vector<std::uint8_t>(pixels * 4)};
+    ldr_.download(image.rgba.data(), image.rgba.size());
+    gl::checkpoint("post stage");
+    return image;
+}
+
+}  // namespace eikon::render

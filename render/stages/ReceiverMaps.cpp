@@ -1,0 +1,51 @@
+#include "render/stages/ReceiverMaps.h"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace eikon::render {
+
+std::vector<layout::GpuReceiver> buildReceivers(const std::vector<ReceiverDesc>& receivers) {
+    std::vector<layout::GpuReceiver> result;
+    unsigned firstTexel = 0;
+    for (const auto& desc : receivers) {
+        const glm::dvec3 normal = glm::normalize(desc.normal);
+        const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        const glm::dvec3 axisU = glm::normalize(glm::cross(normal, helper));
+        const glm::dvec3 axisV = glm::cross(normal, axisU);
+        const double texelEdge = desc.size / desc.resolution;
+        layout::GpuReceiver receiver{};
+        receiver.origin = glm::vec4(glm::vec3(desc.point), static_cast<float>(desc.size));
+        receiver.normal = glm::vec4(glm::vec3(normal), static_cast<float>(texelEdge * texelEdge));
+        receiver.axisU = glm::vec4(glm::vec3(axisU), 0.0f);
+        receiver.axisV = glm::vec4(glm::vec3(axisV), 0.0f);
+        receiver.albedo = glm::vec4(glm::vec3(desc.albedo), 0.0f);
+        receiver.map = glm::uvec4(firstTexel, static_cast<unsigned>(desc.resolution), 0u, 0u);
+        firstTexel += static_cast<unsigned>(desc.resolution * desc.resolution);
+        result.push_back(receiver);
+    }
+    return result;
+}
+
+ReceiverMaps::ReceiverMaps(const std::vector<ReceiverDesc>& receivers) : receivers_(buildReceivers(receivers)) {
+    std::size_t texels = 0;
+    for (const auto& receiver : receivers_) texels += std::size_t{receiver.map.y} * receiver.map.y;
+    geometry_ = gl::Buffer(receivers_.size() * sizeof(layout::GpuReceiver), receivers_.data());
+    maps_ = gl::Buffer(3 * texels * sizeof(float));
+}
+
+void ReceiverMaps::bind() const {
+    geometry_.bindStorage(layout::kReceivers);
+    maps_.bindStorage(layout::kReceiverMaps);
+}
+
+std::vector<float> ReceiverMaps::download(unsigned receiver) const {
+    const auto& map = receivers_.at(receiver).map;
+    std::vector<float> irradiance(3 * std::size_t{map.y} * map.y);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    maps_.download(irradiance.data(), irradiance.size() * sizeof(float), 3 * std::size_t{map.x} * sizeof(float));
+    return irradiance;
+}
+
+}  // namespace eikon::render

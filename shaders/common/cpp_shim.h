@@ -1,0 +1,29 @@
+// C++ side of the GLSL/C++ shim (GLSL side: shaders/common/glsl_prelude.glsl).
+// Including a shared .glsl file after this header compiles the very code the
+// GPU runs into namespace eikon::shader, so C++ tests can check it.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+
+#define INOUT(T) T&
+#define precise
+
+namespace eikon::shader {
+
+using namespace glm;
+using uint = glm::uint;
+
+// GLSL built-ins GLM spells differently.
+inline uint floatBitsToUint(float value) { return glm::floatBitsToUint(value); }
+inline float uintBitsToFloat(uint value) { return glm::uintBitsToFloat(value); }
+
+#include "shaders/common/random.glsl"
+#include "shaders/common/ray_step.glsl"
+#include "shaders/common/attenuation.glsl"
+#include "shaders/common/phase.glsl"
+#include "shaders/common/sampling.glsl"
+#include "shaders/common/receiver.glsl"
+
+}  // namespace eikon::shader

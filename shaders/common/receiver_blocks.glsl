@@ -1,0 +1,57 @@
+// Receivers as shaders see them (C++ mirror: layout::GpuReceiver) and their
+// irradiance maps. GLSL only; the geometry lives in common/receiver.glsl.
+struct Receiver {
+    vec4 origin;   // w: edge size
+    vec4 normal;   // w: texel area
+    vec4 axis_u;
+    vec4 axis_v;
+    vec4 albedo;
+    uvec4 map;     // x: first texel, y: texels per edge
+};
+
+layout(std430, binding = 3) readonly buffer Receivers { Receiver receivers[]; };
+layout(std430, binding = 4) buffer ReceiverMaps { float receiver_irradiance[]; };  // RGB per texel, W/m²
+
+uniform uint receiver_count;
+
+// Where a segment from a to b first crosses a receiver square.
+struct ReceiverHit {
+    int receiver;   // -1: none
+    float fraction; // position of the hit along the segment, in [0, 1]
+    bool lit_side;  // arrived from the side the normal points to
+    vec2 map_uv;
+};
+
+ReceiverHit first_receiver_crossing(vec3 a, vec3 b) {
+    ReceiverHit best = ReceiverHit(-1, 2.0f, false, vec2(0.0f));
+    for (uint r = 0u; r < receiver_count; ++r) {
+        float da = receiver_signed_distance(a, receivers[r].origin.xyz, receivers[r].normal.xyz);
+        float db = receiver_signed_distance(b, receivers[r].origin.xyz, receivers[r].normal.xyz);
+        if ((da > 0.0f) == (db > 0.0f) || da == db) continue;
+        float fraction = da / (da - db);
+        if (fraction >= best.fraction) continue;
+        vec2 uv = receiver_map_coordinates(mix(a, b, fraction), receivers[r].origin.xyz, receivers[r].axis_u.xyz,
+                                           receivers[r].axis_v.xyz, receivers[r].origin.w);
+        if (any(lessThan(uv, vec2(0.0f))) || any(greaterThanEqual(uv, vec2(1.0f)))) continue;
+        best = ReceiverHit(int(r), fraction, da > 0.0f, uv);
+    }
+    return best;
+}
+
+// Irradiance of a receiver's map at uv, bilinear between texel centres.
+vec3 receiver_irradiance_at(int r, vec2 uv) {
+    uint resolution = receivers[r].map.y;
+    vec2 texel = uv * float(resolution) - 0.5f;
+    ivec2 base = ivec2(floor(texel));
+    vec2 f = texel - vec2(base);
+    vec3 sum = vec3(0.0f);
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 2; ++i) {
+            ivec2 t = clamp(base + ivec2(i, j), ivec2(0), ivec2(int(resolution) - 1));
+            uint index = 3u * (receivers[r].map.x + uint(t.y) * resolution + uint(t.x));
+            float weight = (i == 0 ? 1.0f - f.x : f.x) * (j == 0 ? 1.0f - f.y : f.y);
+            sum += weight * vec3(receiver_irradiance[index], receiver_irradiance[index + 1u], receiver_irradiance[index + 2u]);
+        }
+    }
+    return sum;
+}

@@ -1,0 +1,24 @@
+// Post: linear HDR radiance → exposure 2^EV → filmic curve (Narkowicz's fit
+// of the ACES reference rendering transform) → sRGB encoding → RGBA8.
+layout(local_size_x = 64) in;
+
+layout(std430, binding = 7) readonly buffer HdrImage { vec4 hdr_radiance[]; };
+layout(std430, binding = 8) writeonly buffer LdrImage { uint ldr_rgba8[]; };
+
+uniform uint pixel_count;
+uniform float exposure_scale;
+
+vec3 aces_filmic(vec3 x) {
+    return clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
+}
+
+vec3 srgb_encode(vec3 linear) {
+    return mix(12.92f * linear, 1.055f * pow(linear, vec3(1.0f / 2.4f)) - 0.055f, greaterThan(linear, vec3(0.0031308f)));
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x;
+    if (i >= pixel_count) return;
+    vec3 encoded = srgb_encode(aces_filmic(max(hdr_radiance[i].rgb, vec3(0.0f)) * exposure_scale));
+    ldr_rgba8[i] = packUnorm4x8(vec4(encoded, 1.0f));
+}

@@ -1,0 +1,184 @@
+// The eikon executable as users meet it: exit codes, messages that name the
+// file and JSON path of bad input, nothing written on refusal, and the
+// output layout of a run.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr together
+};
+
+Outcome runEikon(const std::string& arguments) {
+    const std::string command = std::string(EIKON_EXECUTABLE) + " " + arguments + " 2>&1";
+    Outcome outcome;
+    FILE* pipe = popen(command.c_str(), "r");
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) outcome.output += buffer;
+    const int status = pclose(pipe);
+    outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return outcome;
+}
+
+class Cli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("eikon_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // A small valid scene with one value replaced textually.
+    std::string writeScene(const std::string& name, const std::string& text) {
+        const fs::path path = dir_ / name;
+        std::ofstream(path) << text;
+        return path.string();
+    }
+    static std::string validScene() {
+        return R"({
+  "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
+  "medium": {"index": 1.0},
+  "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5}],
+  "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
+  "receivers": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 1, 0], "size": 1.0, "resolution": 32}],
+  "camera": {"position": [0, 1, 2], "target": [0, 0.3, 0], "up": [0, 1, 0], "fov_deg": 45},
+  "render": {"photons": 4096, "width": 32, "height": 24, "seed": 3}
+})";
+    }
+    static std::string replaced(const std::string& from, const std::string& to) {
+        std::string text = validScene();
+        const auto at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        return text.replace(at, from.size(), to);
+    }
+    fs::path dir_;
+};
+
+TEST_F(Cli, RunWritesFramesAndReport) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const fs::path out = dir_ / "out";
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_TRUE(fs::exists(out / "frames" / "frame_00000.png"));
+    EXPECT_TRUE(fs::exists(out / "frames" / "frame_00001.png"));
+    std::ifstream report(out / "report.jsonl");
+    std::string line;
+    int lines = 0;
+    while (std::getline(report, line)) {
+        ++lines;
+        EXPECT_NE(line.find("\"energy_balance_error\""), std::string::npos);
+        EXPECT_NE(line.find("\"name\":\"photons\""), std::string::npos);
+    }
+    EXPECT_EQ(lines, 2);
+}
+
+TEST_F(Cli, SecondFrameOfStaticSceneRunsOnlyUpload) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const fs::path out = dir_ / "out";
+    ASSERT_EQ(runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet").exitCode, 0);
+    std::ifstream report(out / "report.jsonl");
+    std::string first, second;
+    std::getline(report, first);
+    std::getline(report, second);
+    EXPECT_NE(first.find("\"name\":\"photons\",\"ran\":true"), std::string::npos) << first;
+    EXPECT_NE(second.find("\"name\":\"photons\",\"ran\":false"), std::string::npos) << second;
+    EXPECT_NE(second.find("\"name\":\"view\",\"ran\":false"), std::string::npos) << second;
+}
+
+TEST_F(Cli, RefusesEarlierRunUnlessForced) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const std::string out = (dir_ / "out").string();
+    ASSERT_EQ(runEikon("run " + scene + " --out " + out + " --quiet").exitCode, 0);
+    const Outcome refused = runEikon("run " + scene + " --out " + out + " --quiet");
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_NE(refused.output.find("--force"), std::string::npos) << refused.output;
+    EXPECT_EQ(runEikon("run " + scene + " --out " + out + " --quiet --force").exitCode, 0);
+}
+
+struct BadInput {
+    const char* name;
+    const char* from;
+    const char* to;
+    const char* path;  // the JSON path the message must name
+};
+
+const BadInput kBadInputs[] = {
+    {"unknown top-level key", "\"medium\":", "\"mediun\":", "mediun"},
+    {"unknown nested key", "\"radius\": 0.2", "\"radios\": 0.2", "objects[0].radios"},
+    {"wrong type", "\"radius\": 0.2", "\"radius\": \"big\"", "objects[0].radius"},
+    {"index not positive", "\"index\": 1.5", "\"index\": 0", "objects[0].index"},
+    {"negative medium index", "\"medium\": {\"index\": 1.0}", "\"medium\": {\"index\": -1.0}", "medium.index"},
+    {"negative extinction", "\"medium\": {\"index\": 1.0}", "\"medium\": {\"index\": 1.0, \"extinction\": [0, -1, 0]}",
+     "medium.extinction"},
+    {"zero resolution", "[16, 16, 16]", "[16, 0, 16]", "grid.resolution"},
+    {"empty bounds", "\"max\": [0.5, 1, 0.5]", "\"max\": [0.5, 0, 0.5]", "grid.bounds"},
+    {"vector too short", "\"center\": [0, 0.5, 0]", "\"center\": [0, 0.5]", "objects[0].center"},
+    {"unknown object type", "\"type\": \"sphere\"", "\"type\": \"cone\"", "objects[0].type"},
+    {"number overflow", "\"radius\": 0.2", "\"radius\": 1e999", "ok.json"},
+    {"camera looks at itself", "\"target\": [0, 0.3, 0]", "\"target\": [0, 1, 2]", "camera.target"},
+    {"photons zero", "\"photons\": 4096", "\"photons\": 0", "render.photons"},
+    {"fov out of range", "\"fov_deg\": 45", "\"fov_deg\": 200", "camera.fov_deg"},
+};
+
+TEST_F(Cli, BadSceneInputsExitWithCodeTwoAndNameThePath) {
+    for (const BadInput& bad : kBadInputs) {
+        const std::string scene = writeScene("ok.json", replaced(bad.from, bad.to));
+        const fs::path out = dir_ / "never";
+        const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --quiet");
+        EXPECT_EQ(outcome.exitCode, 2) << bad.name << ": " << outcome.output;
+        EXPECT_NE(outcome.output.find("ok.json"), std::string::npos) << bad.name << ": " << outcome.output;
+        EXPECT_NE(outcome.output.find(bad.path), std::string::npos) << bad.name << ": " << outcome.output;
+        EXPECT_FALSE(fs::exists(out)) << bad.name << ": nothing may be written for bad input";
+    }
+}
+
+TEST_F(Cli, BadOverrideNamesItsPath) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const Outcome outcome = runEikon("run " + scene + " --out " + (dir_ / "o").string() + " --set render.width=-3");
+    EXPECT_EQ(outcome.exitCode, 2);
+    EXPECT_NE(outcome.output.find("render.width"), std::string::npos) << outcome.output;
+}
+
+TEST_F(Cli, MissingSceneFileAndBadJson) {
+    EXPECT_EQ(runEikon("run " + (dir_ / "absent.json").string()).exitCode, 2);
+    const std::string broken = writeScene("broken.json", "{\n  \"grid\": {\n    \"resolution\": [1, 2,, 3]\n}");
+    const Outcome outcome = runEikon("run " + broken);
+    EXPECT_EQ(outcome.exitCode, 2);
+    EXPECT_NE(outcome.output.find("broken.json: line 3"), std::string::npos) << outcome.output;
+}
+
+TEST_F(Cli, BadCommandLineIsExitCodeTwo) {
+    EXPECT_EQ(runEikon("run").exitCode, 2);
+    EXPECT_EQ(runEikon("frobnicate").exitCode, 2);
+    EXPECT_EQ(runEikon("run x.json --frames 0").exitCode, 2);
+}
+
+TEST_F(Cli, HelpOnEveryCommand) {
+    for (const char* command : {"--help", "run --help", "info --help"}) {
+        const Outcome outcome = runEikon(command);
+        EXPECT_EQ(outcome.exitCode, 0) << command;
+        EXPECT_NE(outcome.output.find("Usage"), std::string::npos) << command << ": " << outcome.output;
+    }
+}
+
+TEST_F(Cli, InfoNamesTheOpenGlRenderer) {
+    const Outcome outcome = runEikon("info");
+    EXPECT_EQ(outcome.exitCode, 0);
+    EXPECT_NE(outcome.output.find("OpenGL renderer:"), std::string::npos) << outcome.output;
+    EXPECT_NE(outcome.output.find("OpenVDB"), std::string::npos);
+}
+
+}  // namespace

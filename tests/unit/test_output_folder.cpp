@@ -1,0 +1,78 @@
+#include "bridge/core/Error.h"
+#include "bridge/io/AtomicFile.h"
+#include "bridge/io/ImageIo.h"
+#include "bridge/io/OutputFolder.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace eikon::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+class OutputFolderTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        root_ = fs::temp_directory_path() / ("eikon_output_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(root_);
+    }
+    void TearDown() override { fs::remove_all(root_); }
+    fs::path root_;
+};
+
+std::string readAll(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+TEST_F(OutputFolderTest, CreatesFramesFolderAndNamesFrames) {
+    OutputFolder folder(root_, false);
+    EXPECT_TRUE(fs::is_directory(root_ / "frames"));
+    EXPECT_EQ(folder.framePath(7).filename(), "frame_00007.png");
+}
+
+TEST_F(OutputFolderTest, RefusesEarlierRunWithoutForce) {
+    { OutputFolder first(root_, false); first.appendReport("{\"frame\":0}"); }
+    EXPECT_THROW(OutputFolder(root_, false), InputError);
+    EXPECT_TRUE(fs::exists(root_ / "report.jsonl")) << "a refused run must not touch the earlier one";
+}
+
+TEST_F(OutputFolderTest, ForceClearsEarlierRun) {
+    { OutputFolder first(root_, false); writeFileAtomically(first.framePath(3), "old"); }
+    OutputFolder second(root_, true);
+    EXPECT_FALSE(fs::exists(second.framePath(3)));
+}
+
+TEST_F(OutputFolderTest, ReportAccumulatesWholeLines) {
+    OutputFolder folder(root_, false);
+    folder.appendReport("{\"frame\":0}");
+    folder.appendReport("{\"frame\":1}");
+    EXPECT_EQ(readAll(root_ / "report.jsonl"), "{\"frame\":0}\n{\"frame\":1}\n");
+    for (const auto& entry : fs::directory_iterator(root_))
+        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << "temporary left behind";
+}
+
+TEST_F(OutputFolderTest, PngRoundTrip) {
+    OutputFolder folder(root_, false);
+    const std::vector<std::uint8_t> pixels = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 10, 20, 30, 255};
+    writePng(folder.framePath(0), 2, 2, pixels);
+    const Rgba8Image image = readImage(folder.framePath(0));
+    EXPECT_EQ(image.width, 2);
+    EXPECT_EQ(image.height, 2);
+    EXPECT_EQ(image.rgba, pixels);
+}
+
+TEST_F(OutputFolderTest, UnreadableImageIsInputError) {
+    fs::create_directories(root_);
+    writeFileAtomically(root_ / "broken.png", "not a png");
+    EXPECT_THROW(readImage(root_ / "broken.png"), InputError);
+}
+
+}  // namespace
+}  // namespace eikon::io

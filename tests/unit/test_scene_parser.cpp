@@ -1,0 +1,372 @@
+#include "bridge/scene/SceneParser.h"
+
+#include "bridge/core/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <string>
+
+namespace eikon {
+namespace {
+
+using nlohmann::json;
+
+const char* const kValidScene = R"({
+  "description": "a glass sphere and a box above a floor",
+  "grid": {"resolution": [32, 16, 8], "bounds": {"min": [-1, -0.5, -2], "max": [1, 0.5, 2]},
+           "smoothing_sigma_voxels": 0.75, "supersampling": 2},
+  "medium": {"index": 1.0003, "extinction": 0.01, "scattering": [0.001, 0.002, 0.003]},
+  "objects": [
+    {"type": "sphere", "center": [0, 0.1, 0], "radius": 0.4, "index": 1.5, "extinction": [0.1, 0.2, 0.3]},
+    {"type": "box", "min": [-0.5, -0.5, -0.5], "max": [0.5, 0, 0.5], "index": 1.33,
+     "extinction": 2, "scattering": 1}
+  ],
+  "lights": [
+    {"type": "point", "position": [0, 2, 0], "power": [10, 20, 30]},
+    {"type": "directional", "direction": [0, -3, 0], "irradiance": 500}
+  ],
+  "receivers": [
+    {"type": "plane", "point": [0, -0.5, 0], "normal": [0, 2, 0]},
+    {"type": "plane", "point": [0, 0, -2], "normal": [0, 0, 1], "albedo": [0.2, 0.5, 1], "size": 4,
+     "resolution": 512}
+  ],
+  "camera": {"position": [0, 1, 4], "target": [0, 0, 0], "up": [0, 1, 0], "fov_deg": 35},
+  "render": {"photons": 1e6, "width": 320, "height": 240, "seed": 7, "exposure_ev": -1.5,
+             "step_voxels": 0.25, "background": 0.1}
+})";
+
+json validScene() { return json::parse(kValidScene); }
+
+std::string writeTempFile(const std::string& name, const std::string& contents) {
+    const std::string path = ::testing::TempDir() + name;
+    std::ofstream(path) << contents;
+    return path;
+}
+
+// The message of the InputError that parsing `root` throws, or "" (and a test
+// failure) if it throws none.
+std::string parseErrorMessage(const json& root) {
+    try {
+        parseScene(root, "test.json");
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "parseScene accepted " << root.dump();
+    return "";
+}
+
+// Expects parsing to fail at `path` with a message containing `detail`.
+void expectErrorAt(const json& root, const std::string& path, const std::string& detail = "") {
+    const std::string message = parseErrorMessage(root);
+    EXPECT_NE(message.find("test.json: " + path + ": expected"), std::string::npos) << message;
+    EXPECT_NE(message.find(detail), std::string::npos) << message;
+}
+
+TEST(SceneParser, ParsesAFullScene) {
+    const Scene scene = parseScene(validScene(), "test.json");
+    EXPECT_EQ(scene.sourcePath, "test.json");
+
+    EXPECT_EQ(scene.grid.resolution, glm::ivec3(32, 16, 8));
+    EXPECT_EQ(scene.grid.boundsMin, glm::dvec3(-1, -0.5, -2));
+    EXPECT_EQ(scene.grid.boundsMax, glm::dvec3(1, 0.5, 2));
+    EXPECT_DOUBLE_EQ(scene.grid.smoothingSigmaVoxels, 0.75);
+    EXPECT_EQ(scene.grid.supersampling, 2);
+
+    EXPECT_DOUBLE_EQ(scene.medium.index, 1.0003);
+    EXPECT_EQ(scene.medium.extinction, Rgb(0.01));  // grey value expanded to all channels
+    EXPECT_EQ(scene.medium.scattering, Rgb(0.001, 0.002, 0.003));
+
+    ASSERT_EQ(scene.objects.size(), 2u);
+    EXPECT_EQ(scene.objects[0].kind, ObjectDesc::Kind::Sphere);
+    EXPECT_EQ(scene.objects[0].sphere.center, glm::dvec3(0, 0.1, 0));
+    EXPECT_DOUBLE_EQ(scene.objects[0].sphere.radius, 0.4);
+    EXPECT_DOUBLE_EQ(scene.objects[0].material.index, 1.5);
+    EXPECT_EQ(scene.objects[0].material.scattering, Rgb(0.0));  // default
+    EXPECT_EQ(scene.objects[1].kind, ObjectDesc::Kind::Box);
+    EXPECT_EQ(scene.objects[1].box.max, glm::dvec3(0.5, 0, 0.5));
+    EXPECT_EQ(scene.objects[1].material.extinction, Rgb(2.0));
+
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[0].kind, LightDesc::Kind::Point);
+    EXPECT_EQ(scene.lights[0].power, Rgb(10, 20, 30));
+    EXPECT_EQ(scene.lights[1].kind, LightDesc::Kind::Directional);
+    EXPECT_EQ(scene.lights[1].direction, glm::dvec3(0, -1, 0));  // normalised
+    EXPECT_EQ(scene.lights[1].irradiance, Rgb(500.0));
+
+    ASSERT_EQ(scene.receivers.size(), 2u);
+    EXPECT_EQ(scene.receivers[0].normal, glm::dvec3(0, 1, 0));  // normalised
+    EXPECT_EQ(scene.receivers[0].albedo, Rgb(0.8));              // defaults
+    EXPECT_DOUBLE_EQ(scene.receivers[0].size, 2.0);
+    EXPECT_EQ(scene.receivers[0].resolution, 256);
+    EXPECT_EQ(scene.receivers[1].albedo, Rgb(0.2, 0.5, 1.0));
+    EXPECT_EQ(scene.receivers[1].resolution, 512);
+
+    EXPECT_EQ(scene.camera.position, glm::dvec3(0, 1, 4));
+    EXPECT_DOUBLE_EQ(scene.camera.fovDeg, 35.0);
+
+    EXPECT_EQ(scene.render.photons, 1000000);
+    EXPECT_EQ(scene.render.width, 320);
+    EXPECT_EQ(scene.render.height, 240);
+    EXPECT_EQ(scene.render.seed, 7u);
+    EXPECT_DOUBLE_EQ(scene.render.exposureEv, -1.5);
+    EXPECT_DOUBLE_EQ(scene.render.stepVoxels, 0.25);
+    EXPECT_EQ(scene.render.background, Rgb(0.1));
+}
+
+TEST(SceneParser, MinimalSceneTakesDefaults) {
+    const Scene scene = parseScene(json::parse(R"({"lights": [{"type": "point", "position": [0, 1, 0], "power": 1}]})"),
+                                   "test.json");
+    const Scene defaults;
+    EXPECT_EQ(scene.grid.resolution, defaults.grid.resolution);
+    EXPECT_DOUBLE_EQ(scene.medium.index, 1.0);
+    EXPECT_TRUE(scene.objects.empty());
+    EXPECT_TRUE(scene.receivers.empty());
+    EXPECT_EQ(scene.camera.position, defaults.camera.position);
+    EXPECT_EQ(scene.render.photons, defaults.render.photons);
+}
+
+TEST(SceneParserErrors, UnknownTopLevelKey) {
+    json scene = validScene();
+    scene["lightz"] = json::array();
+    expectErrorAt(scene, "lightz", "\"lights\"");  // lists the allowed keys
+}
+
+TEST(SceneParserErrors, UnknownNestedKey) {
+    json scene = validScene();
+    scene["objects"][0].erase("radius");
+    scene["objects"][0]["radus"] = 0.4;
+    expectErrorAt(scene, "objects[0].radus", "found an unknown key");
+}
+
+TEST(SceneParserErrors, KeyOfAnotherObjectType) {
+    json scene = validScene();
+    scene["objects"][1]["radius"] = 0.4;  // objects[1] is a box
+    expectErrorAt(scene, "objects[1].radius", "\"min\", \"max\"");
+}
+
+TEST(SceneParserErrors, StringForANumber) {
+    json scene = validScene();
+    scene["objects"][0]["radius"] = "big";
+    expectErrorAt(scene, "objects[0].radius", "a number > 0, found a string \"big\"");
+}
+
+TEST(SceneParserErrors, NonPositiveIndex) {
+    json scene = validScene();
+    scene["objects"][1]["index"] = 0;
+    expectErrorAt(scene, "objects[1].index", "a number > 0, found 0");
+}
+
+TEST(SceneParserErrors, MissingRequiredKey) {
+    json scene = validScene();
+    scene["objects"][0].erase("index");
+    expectErrorAt(scene, "objects[0].index", "found nothing");
+}
+
+TEST(SceneParserErrors, NegativeExtinction) {
+    json scene = validScene();
+    scene["medium"]["extinction"] = {0.1, -0.25, 0};
+    expectErrorAt(scene, "medium.extinction[1]", "a number >= 0, found -0.25");
+}
+
+TEST(SceneParserErrors, ScatteringAboveExtinction) {
+    json scene = validScene();
+    scene["objects"][0]["scattering"] = 0.25;
+    expectErrorAt(scene, "objects[0].scattering", "scattering <= extinction [0.1, 0.2, 0.3]");
+}
+
+TEST(SceneParserErrors, ZeroResolution) {
+    json scene = validScene();
+    scene["grid"]["resolution"][2] = 0;
+    expectErrorAt(scene, "grid.resolution[2]", "an integer in [1, ");
+}
+
+TEST(SceneParserErrors, NonIntegerResolution) {
+    json scene = validScene();
+    scene["grid"]["resolution"][0] = 2.5;
+    expectErrorAt(scene, "grid.resolution[0]", "found 2.5");
+}
+
+TEST(SceneParserErrors, TooManyGridCells) {
+    json scene = validScene();
+    scene["grid"]["resolution"] = {1024, 1024, 1024};
+    expectErrorAt(scene, "grid.resolution", "at most 134217728 cells");
+}
+
+TEST(SceneParserErrors, EmptyBounds) {
+    json scene = validScene();
+    scene["grid"]["bounds"]["max"][1] = -0.5;  // equals min[1]
+    expectErrorAt(scene, "grid.bounds.max[1]", "grid.bounds.min[1] = -0.5");
+}
+
+TEST(SceneParserErrors, InvertedBox) {
+    json scene = validScene();
+    scene["objects"][1]["max"][0] = -1;
+    expectErrorAt(scene, "objects[1].max[0]", "objects[1].min[0]");
+}
+
+TEST(SceneParserErrors, NonFiniteNumber) {
+    json scene = validScene();
+    scene["lights"][0]["position"][1] = std::numeric_limits<double>::infinity();
+    expectErrorAt(scene, "lights[0].position[1]", "found a number too large to represent (inf)");
+    scene["lights"][0]["position"][1] = std::nan("");
+    expectErrorAt(scene, "lights[0].position[1]", "(nan)");
+}
+
+TEST(SceneParserErrors, WrongVectorLength) {
+    json scene = validScene();
+    scene["camera"]["position"] = {1, 2};
+    expectErrorAt(scene, "camera.position", "an array of 3 numbers, found an array of 2 elements");
+}
+
+TEST(SceneParserErrors, UnknownObjectType) {
+    json scene = validScene();
+    scene["objects"][1]["type"] = "cone";
+    expectErrorAt(scene, "objects[1].type", "one of \"sphere\", \"box\", found a string \"cone\"");
+}
+
+TEST(SceneParserErrors, UnknownLightType) {
+    json scene = validScene();
+    scene["lights"][0]["type"] = "spot";
+    expectErrorAt(scene, "lights[0].type", "\"point\", \"directional\"");
+}
+
+TEST(SceneParserErrors, MissingLights) {
+    json scene = validScene();
+    scene.erase("lights");
+    expectErrorAt(scene, "lights", "at least one light, found nothing");
+    scene["lights"] = json::array();
+    expectErrorAt(scene, "lights", "found an array of 0 elements");
+}
+
+TEST(SceneParserErrors, ZeroNormal) {
+    json scene = validScene();
+    scene["receivers"][1]["normal"] = {0, 0, 0};
+    expectErrorAt(scene, "receivers[1].normal", "a non-zero vector");
+}
+
+TEST(SceneParserErrors, AlbedoAboveOne) {
+    json scene = validScene();
+    scene["receivers"][1]["albedo"] = 1.5;
+    expectErrorAt(scene, "receivers[1].albedo", "a number in [0, 1], found 1.5");
+}
+
+TEST(SceneParserErrors, FieldOfViewOutOfRange) {
+    json scene = validScene();
+    scene["camera"]["fov_deg"] = 180;
+    expectErrorAt(scene, "camera.fov_deg", "a number in (0, 180), found 180");
+}
+
+TEST(SceneParserErrors, CameraTargetAtPosition) {
+    json scene = validScene();
+    scene["camera"]["target"] = {0, 1, 4};
+    expectErrorAt(scene, "camera.target", "a point other than camera.position");
+}
+
+TEST(SceneParserErrors, CameraUpAlongView) {
+    json scene = validScene();
+    scene["camera"]["up"] = {0, -2, -8};
+    expectErrorAt(scene, "camera.up", "not parallel");
+}
+
+TEST(SceneParserErrors, TooManyPhotons) {
+    json scene = validScene();
+    scene["render"]["photons"] = 4294967296LL;
+    expectErrorAt(scene, "render.photons", "an integer in [1, 2147483647]");
+}
+
+TEST(SceneFile, LoadsAFileAndRecordsItsPath) {
+    const std::string path = writeTempFile("eikon_valid_scene.json", kValidScene);
+    const Scene scene = loadSceneFile(path);
+    EXPECT_EQ(scene.sourcePath, path);
+    EXPECT_EQ(scene.objects.size(), 2u);
+}
+
+TEST(SceneFile, MissingFileNamesThePath) {
+    const std::string path = ::testing::TempDir() + "eikon_no_such_scene.json";
+    try {
+        loadSceneFile(path);
+        FAIL() << "no InputError";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.where(), path);
+        EXPECT_NE(std::string(error.what()).find("no such file"), std::string::npos) << error.what();
+    }
+}
+
+TEST(SceneFile, SyntaxErrorGivesLineAndColumn) {
+    const std::string path = writeTempFile("eikon_syntax_error.json", "{\n  \"lights\": [],\n  \"grid\" {}\n}\n");
+    try {
+        loadSceneFile(path);
+        FAIL() << "no InputError";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.where(), path + ": line 3, column 10");
+        EXPECT_NE(std::string(error.what()).find("expected valid JSON, found syntax error"), std::string::npos)
+            << error.what();
+    }
+}
+
+TEST(SceneFile, NumberTooLargeForADouble) {
+    const std::string path =
+        writeTempFile("eikon_overflow.json", R"({"lights": [], "render": {"exposure_ev": 1e999}})");
+    try {
+        loadSceneFile(path);
+        FAIL() << "no InputError";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.where(), path);
+        EXPECT_NE(std::string(error.what()).find("1e999"), std::string::npos) << error.what();
+    }
+}
+
+TEST(SceneFile, OverrideIntoABadValueIsReportedAtItsPath) {
+    const std::string path = writeTempFile("eikon_override_scene.json", kValidScene);
+    try {
+        loadSceneFile(path, {"render.photons=-5"});
+        FAIL() << "no InputError";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.where(), path + ": render.photons");
+        EXPECT_NE(std::string(error.what()).find("found -5"), std::string::npos) << error.what();
+    }
+}
+
+TEST(SceneFile, OverridesApplyInOrder) {
+    const std::string path = writeTempFile("eikon_override_order.json", kValidScene);
+    const Scene scene = loadSceneFile(path, {"objects.0.radius=0.3", "render.width=100", "render.width=200"});
+    EXPECT_DOUBLE_EQ(scene.objects[0].sphere.radius, 0.3);
+    EXPECT_EQ(scene.render.width, 200);
+}
+
+TEST(ApplyOverride, SetsNestedAndArrayIndexedValues) {
+    json root = validScene();
+    applyOverride(root, "render.photons=1000");
+    applyOverride(root, "objects.1.min=[-1,-2,-3]");
+    applyOverride(root, "lights.0.type=directional");
+    applyOverride(root, "grid.extra.deep=true");
+    EXPECT_EQ(root["render"]["photons"], 1000);
+    EXPECT_EQ(root["objects"][1]["min"], json({-1, -2, -3}));
+    EXPECT_EQ(root["lights"][0]["type"], "directional");  // not JSON, so taken as a string
+    EXPECT_EQ(root["grid"]["extra"]["deep"], true);       // intermediate object created
+}
+
+// The `where` of the InputError that applying `assignment` throws.
+std::string overrideErrorWhere(const std::string& assignment) {
+    json root = validScene();
+    try {
+        applyOverride(root, assignment);
+    } catch (const InputError& error) {
+        return error.where();
+    }
+    ADD_FAILURE() << "applyOverride accepted " << assignment;
+    return "";
+}
+
+TEST(ApplyOverride, RejectsMalformedAssignments) {
+    for (const std::string assignment : {"render.photons", "=5", "render..photons=5", "objects.2.radius=1",
+                                         "render.photons.x=1", "objects.first=1"}) {
+        EXPECT_EQ(overrideErrorWhere(assignment), "--set " + assignment);
+    }
+}
+
+}  // namespace
+}  // namespace eikon
