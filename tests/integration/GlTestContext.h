@@ -8,4 +8,8 @@ namespace eikon::test {
 
 gl::GlContext& glContext();
 
+// Prints a measured figure and records it in the test's XML properties, so
+// accuracy figures can be read off a test run.
+void reportFigure(const char* name, double value);
+
 }  // namespace eikon::test

@@ -106,6 +106,8 @@ std::vector<float>* DefaultRender::map_ = nullptr;
 TEST_F(DefaultRender, CausticOnFloorIsThreeTimesDirectLight) {
     const RingAverage caustic = ringIrradiance(*map_, scene_->receivers[0], 0.0, 0.04);
     const RingAverage direct = ringIrradiance(*map_, scene_->receivers[0], 0.75, 0.9);
+    test::reportFigure("default_direct_floor_over_inverse_square", direct.measured / direct.unobstructed);
+    test::reportFigure("default_caustic_over_direct", caustic.measured / direct.measured);
     EXPECT_NEAR(direct.measured / direct.unobstructed, 1.0, 0.03);
     EXPECT_GT(caustic.measured, 3.0 * direct.measured);
 }
@@ -117,6 +119,7 @@ TEST_F(DefaultRender, PictureShowsCausticAndIsNotBlank) {
     ASSERT_EQ(image.width, 200);
     const double caustic = meanLuminance(image, projectToPixel(*scene_, {0.0, 0.02, 0.0}), 1);
     const double floor = meanLuminance(image, projectToPixel(*scene_, {0.75, 0.02, 0.5}), 2);
+    test::reportFigure("default_picture_caustic_over_floor_luminance", caustic / floor);
     EXPECT_GT(floor, 40.0) << "the directly lit floor is visible";
     EXPECT_GT(caustic, 1.5 * floor);
 

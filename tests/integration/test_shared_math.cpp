@@ -69,8 +69,13 @@ TEST(SharedMath, GlslAndCppAgree) {
                                {"v.x", "v.y", "v.z", "henyey_greenstein"},
                                {"T.r", "T.g", "T.b", "random_uniform"},
                                {"track_length", "cone.x", "cone.y", "cone.z"}};
+    double worstRelative = 0.0;
     for (unsigned i = 0; i < kCases; ++i) {
         evaluateOnCpu(cpu[i], i);
+        for (int o = 0; o < 4; ++o)
+            for (int k = 0; k < 4; ++k)
+                worstRelative = std::max(worstRelative, std::abs(double{gpu[i].out[o][k]} - cpu[i].out[o][k]) /
+                                                            std::max(1.0, std::abs(double{cpu[i].out[o][k]})));
         for (int o = 0; o < 4; ++o)
             for (int k = 0; k < 4; ++k) {
                 const float expected = cpu[i].out[o][k];
@@ -81,6 +86,7 @@ TEST(SharedMath, GlslAndCppAgree) {
         // The random stream must be exactly the same bits on both sides.
         ASSERT_EQ(gpu[i].out[2].w, cpu[i].out[2].w) << "random_uniform differs in case " << i;
     }
+    test::reportFigure("shared_math_worst_relative_difference", worstRelative);
 }
 
 TEST(SharedMath, HenyeyGreensteinIntegratesToOne) {
