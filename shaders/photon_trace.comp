@@ -1,5 +1,6 @@
 // Photon pass (Sun et al. 2008, §4.3–4.4): each invocation emits one photon
-// toward the traced region, flies it straight outside the field grid and
+// toward the traced region, flies it straight outside the field grid
+// (common/straight_flight.glsl) and
 // marches it with fixed-step forward Euler of the ray equation inside,
 // attenuating its power by Beer–Lambert, depositing fluence by the
 // track-length estimator and irradiance where it lands on a receiver.
@@ -12,6 +13,7 @@ layout(local_size_x = 64) in;
 #include "common/sampling.glsl"
 #include "common/receiver.glsl"
 #include "common/receiver_blocks.glsl"
+#include "common/straight_flight.glsl"
 
 // Optional path recording for tests and export: the first
 // EIKON_RECORDED_PHOTONS photons of a pass store up to EIKON_RECORD_PATHS
@@ -160,28 +162,24 @@ void main() {
 
     for (;;) {
         if (!grid_contains(x)) {
-            // Outside the grid the medium is uniform (n = n_ref, no extinction): fly straight.
             vec3 d = normalize(v);
-            vec2 span = grid_ray_interval(x, d);
-            float t_grid = (span.x <= span.y && span.y > 0.0f) ? max(span.x, 0.0f) : EIKON_INFINITY;
-            float reach = min(t_grid, 1e4f);
-            ReceiverHit hit = first_receiver_crossing(x, x + reach * d);
-            if (hit.receiver >= 0) {
-                x = x + hit.fraction * reach * d;
+            StraightFlight flight = fly_straight(x, d);
+            if (flight.hit.receiver >= 0) {
+                x = x + flight.distance * d;
                 record_vertex(photon, vertex++, x);
-                fate = hit.lit_side ? TALLY_RECEIVED : TALLY_BLOCKED;
-                if (hit.lit_side) deposit_on_receiver(hit, power);
+                fate = flight.hit.lit_side ? TALLY_RECEIVED : TALLY_BLOCKED;
+                if (flight.hit.lit_side) deposit_on_receiver(flight.hit, power);
                 break;
             }
-            if (t_grid == EIKON_INFINITY) {
-                record_vertex(photon, vertex++, x + reach * d);
+            if (!flight.enters_grid) {
+                record_vertex(photon, vertex++, x + flight.distance * d);
                 fate = TALLY_ESCAPED;
                 break;
             }
-            // Step just inside; keep |v| = n there so the invariant starts exact.
-            x = x + (t_grid + 1e-4f * grid.voxel_size.x) * d;
+            x = grid_entry_point(x, d, flight);
             x_lost = vec3(0.0f);
             if (!grid_contains(x)) continue;
+            // Keep |v| = n at entry so the invariant starts exact.
             v = (reference_index() + sample_gradient_and_delta(x).w) * d;
             record_vertex(photon, vertex++, x);
             continue;

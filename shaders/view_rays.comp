@@ -12,6 +12,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/phase.glsl"
 #include "common/receiver.glsl"
 #include "common/receiver_blocks.glsl"
+#include "common/straight_flight.glsl"
 
 layout(std140, binding = 1) uniform CameraBlock {
     vec4 position;    // w: tan(fov / 2)
@@ -62,18 +63,15 @@ void main() {
     while (!done) {
         if (!grid_contains(x)) {
             vec3 d = normalize(v);
-            vec2 span = grid_ray_interval(x, d);
-            float t_grid = (span.x <= span.y && span.y > 0.0f) ? max(span.x, 0.0f) : EIKON_INFINITY;
-            float reach = min(t_grid, 1e4f);
-            ReceiverHit hit = first_receiver_crossing(x, x + reach * d);
-            if (hit.receiver >= 0) {
-                radiance += transmittance * receiver_radiance(hit);
+            StraightFlight flight = fly_straight(x, d);
+            if (flight.hit.receiver >= 0) {
+                radiance += transmittance * receiver_radiance(flight.hit);
                 done = true;
-            } else if (t_grid == EIKON_INFINITY) {
+            } else if (!flight.enters_grid) {
                 radiance += transmittance * camera.background.rgb;
                 done = true;
             } else {
-                x = x + (t_grid + 1e-4f * grid.voxel_size.x) * d;
+                x = grid_entry_point(x, d, flight);
                 x_lost = vec3(0.0f);
                 if (grid_contains(x)) v = (reference_index() + sample_gradient_and_delta(x).w) * d;
             }

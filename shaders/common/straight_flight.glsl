@@ -1,0 +1,27 @@
+// Outside the field grid the medium is uniform (n = n_ref, no extinction),
+// so photons and camera rays fly straight until they meet a receiver, enter
+// the grid, or leave for good. GLSL only; needs grid_sampling.glsl and
+// receiver_blocks.glsl.
+struct StraightFlight {
+    ReceiverHit hit;   // the receiver met first (hit.receiver < 0: none)
+    bool enters_grid;  // no receiver first, and the grid lies ahead
+    float distance;    // to the receiver hit, the grid entry, or far away
+};
+
+const float EIKON_FAR_AWAY = 1e4f;  // metres; farther than any scene
+
+StraightFlight fly_straight(vec3 x, vec3 d) {
+    vec2 span = grid_ray_interval(x, d);
+    float t_grid = (span.x <= span.y && span.y > 0.0f) ? max(span.x, 0.0f) : EIKON_INFINITY;
+    float reach = min(t_grid, EIKON_FAR_AWAY);
+    StraightFlight flight;
+    flight.hit = first_receiver_crossing(x, x + reach * d);
+    flight.enters_grid = flight.hit.receiver < 0 && t_grid != EIKON_INFINITY;
+    flight.distance = flight.hit.receiver >= 0 ? flight.hit.fraction * reach : reach;
+    return flight;
+}
+
+// A point just inside the grid on a flight that enters it.
+vec3 grid_entry_point(vec3 x, vec3 d, StraightFlight flight) {
+    return x + (flight.distance + 1e-4f * grid.voxel_size.x) * d;
+}
