@@ -31,9 +31,8 @@ int runCommand(const RunOptions& options) {
     const std::filesystem::path outDir =
         options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
                                : std::filesystem::path(options.outDir);
+    auto context = gl::createHeadlessContext();  // before the folder: a machine without GL leaves nothing behind
     io::OutputFolder output(outDir, options.force);
-
-    auto context = gl::createHeadlessContext();
     ProgressBar progress(options.frames, options.quiet);
     runFrames(scene, fields, options.frames, output, progress);
     return 0;

@@ -131,6 +131,8 @@ std::unique_ptr<GlContext> createHeadlessContext() {
     std::vector<std::string> attempts;
     const char* forced = std::getenv("EIKON_EGL_PLATFORM");
     const std::string choice = forced ? forced : "";
+    if (!choice.empty() && choice != "device" && choice != "surfaceless")
+        throw std::runtime_error("EIKON_EGL_PLATFORM: expected device or surfaceless, found '" + choice + "'");
     if (choice != "surfaceless")
         if (auto context = tryDevicePlatform(attempts)) return context;
     if (choice != "device")

@@ -20,8 +20,8 @@ struct Outcome {
     std::string output;  // stdout and stderr together
 };
 
-Outcome runEikon(const std::string& arguments) {
-    const std::string command = std::string(EIKON_EXECUTABLE) + " " + arguments + " 2>&1";
+Outcome runEikon(const std::string& arguments, const std::string& environment = "") {
+    const std::string command = environment + " " + std::string(EIKON_EXECUTABLE) + " " + arguments + " 2>&1";
     Outcome outcome;
     FILE* pipe = popen(command.c_str(), "r");
     char buffer[4096];
@@ -172,6 +172,21 @@ TEST_F(Cli, HelpOnEveryCommand) {
         EXPECT_EQ(outcome.exitCode, 0) << command;
         EXPECT_NE(outcome.output.find("Usage"), std::string::npos) << command << ": " << outcome.output;
     }
+}
+
+// Without a usable OpenGL 4.5 context the run stops with a message naming
+// what was tried (exit code 1: not the user's input), and writes no frames.
+// Forcing the EGL device platform finds no context on a machine without a GPU.
+TEST_F(Cli, NoOpenGlContextIsAClearError) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const fs::path out = dir_ / "out";
+    const Outcome outcome =
+        runEikon("run " + scene + " --out " + out.string() + " --quiet", "EIKON_EGL_PLATFORM=device");
+    if (outcome.exitCode == 0) GTEST_SKIP() << "this machine has a GPU reachable through the EGL device platform";
+    EXPECT_EQ(outcome.exitCode, 1) << outcome.output;
+    EXPECT_NE(outcome.output.find("no headless OpenGL 4.5 core context"), std::string::npos) << outcome.output;
+    EXPECT_NE(outcome.output.find("EGL device platform"), std::string::npos) << outcome.output;
+    EXPECT_FALSE(fs::exists(out)) << "nothing may be written";
 }
 
 TEST_F(Cli, InfoNamesTheOpenGlRenderer) {
