@@ -1,9 +1,19 @@
-// Photon pass (Sun et al. 2008, §4.3–4.4): each invocation emits one photon
-// toward the traced region, flies it straight outside the field grid
-// (common/straight_flight.glsl) and
-// marches it with fixed-step forward Euler of the ray equation inside,
-// attenuating its power by Beer–Lambert, depositing fluence by the
-// track-length estimator and irradiance where it lands on a receiver.
+// Photon pass (Sun et al. 2008, §4.3–4.4 and §5.3): each invocation emits
+// one photon toward the traced region, flies it straight outside the field
+// grid (common/straight_flight.glsl) and marches it inside with the chosen
+// integrator (common/integrators.glsl) and step policy (uniform, or octree-
+// adaptive: common/step_size.glsl), attenuating its power by Beer–Lambert,
+// depositing fluence along every voxel its segments cross (track-length
+// estimator, 3D DDA) and landing on receivers.
+//
+// Program options (#defines set by PhotonStage):
+//   EIKON_INTEGRATOR       0 Euler, 1 leapfrog, 2 RK4
+//   EIKON_OCTREE_STEPS     1: adaptive steps from the step structure
+//   EIKON_RENORMALIZE      1: |v| = n(x) after every step
+//   EIKON_DISPERSION       1: each photon carries one RGB channel with its own index scale
+//   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
+//   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
+//   EIKON_RECORD_PATHS     vertices recorded for each of the first EIKON_RECORDED_PHOTONS photons
 layout(local_size_x = 64) in;
 
 #include "common/grid_sampling.glsl"
@@ -14,10 +24,26 @@ layout(local_size_x = 64) in;
 #include "common/receiver.glsl"
 #include "common/receiver_blocks.glsl"
 #include "common/straight_flight.glsl"
+#include "common/step_size.glsl"
 
-// Optional path recording for tests and export: the first
-// EIKON_RECORDED_PHOTONS photons of a pass store up to EIKON_RECORD_PATHS
-// vertices each (0: no recording).
+#ifndef EIKON_INTEGRATOR
+#define EIKON_INTEGRATOR 1
+#endif
+#ifndef EIKON_OCTREE_STEPS
+#define EIKON_OCTREE_STEPS 0
+#endif
+#ifndef EIKON_RENORMALIZE
+#define EIKON_RENORMALIZE 0
+#endif
+#ifndef EIKON_DISPERSION
+#define EIKON_DISPERSION 0
+#endif
+#ifndef EIKON_STORE_FLUENCE
+#define EIKON_STORE_FLUENCE 0
+#endif
+#ifndef EIKON_BARE_MARCH
+#define EIKON_BARE_MARCH 0
+#endif
 #ifndef EIKON_RECORD_PATHS
 #define EIKON_RECORD_PATHS 0
 #endif
@@ -25,19 +51,37 @@ layout(local_size_x = 64) in;
 #define EIKON_RECORDED_PHOTONS 64
 #endif
 
+uniform vec3 dispersion;  // per-channel scale of δn
+float channel_scale = 1.0f;  // this photon's scale (dispersion)
+
+// (∇n, n) for this photon's channel; used by the integrators.
+vec4 field_at(vec3 x) {
+    vec4 sample_ = sample_gradient_and_delta(x);
+    return vec4(channel_scale * sample_.xyz, reference_index() + channel_scale * sample_.w);
+}
+
+#include "common/integrators.glsl"
+
 struct Emitter {
-    vec4 origin;        // w: kind (0 point, 1 directional)
-    vec4 axis;          // w: point: cos of cone half-angle; directional: disk radius
+    vec4 origin;        // w: kind (0 cone, 1 disk)
+    vec4 axis;          // w: cone: cos of half-angle; disk: radius
     vec4 tangent;
     vec4 bitangent;
-    vec4 photon_power;  // rgb W per photon
+    vec4 photon_power;  // rgb W per photon where the spot profile is 1
+    vec4 spot;          // xyz: spot axis; w: cos outer half-angle (−2: none)
+    vec4 spot_edge;     // x: cos inner half-angle
     uvec4 photons;      // x: first photon, y: count, z, w: strata
 };
 layout(std430, binding = 2) readonly buffer Emitters { Emitter emitters[]; };
 
-#if EIKON_HAS_SCATTERING
-layout(std430, binding = 5) buffer Fluence { float fluence[]; };  // RGB per cell, W/m²
+#if EIKON_STORE_FLUENCE > 0
+layout(std430, binding = 13) buffer RawFluence { float raw_fluence[]; };                    // RGB per cell, W/m²
+layout(std430, binding = 14) buffer RawFluenceDirection { float raw_fluence_direction[]; };  // xyz per cell
 #endif
+#if EIKON_OCTREE_STEPS
+layout(binding = 4) uniform sampler3D step_structure;  // (octree level, step cap in m)
+#endif
+layout(std430, binding = 11) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
 // C++ mirror: layout::GpuPhotonStats (powers in 64-bit fixed point).
 const int TALLY_EMITTED = 0;
@@ -50,6 +94,8 @@ layout(std430, binding = 6) buffer PhotonStats {
     uint power_tallies[36];   // [2·(3·tally + channel) + word]
     uint photon_tallies[4];   // escaped, received, cut off, blocked
     uint step_tallies[4];     // low word, high word, max invariant error bits
+    uint deposit_tallies[4];  // low word, high word
+    float invariant_sum;
 };
 
 #if EIKON_RECORD_PATHS > 0
@@ -60,21 +106,30 @@ uniform uint photon_offset;    // index of this batch's first photon
 uniform uint batch_size;
 uniform uint emitter_count;
 uniform uint seed;
-uniform float step_length;     // Δs in metres
+uniform float step_length;     // uniform Δs, or the octree's Δs_min, in metres
 uniform uint max_steps;        // trapped-ray cap
 uniform float power_cutoff;    // stop once every channel is below this fraction of the emitted power
 uniform vec3 power_unit;       // W per fixed-point tally unit, per channel
 
 // Adds to a 64-bit counter held as two words, carrying into the high word.
-void add_wide(uint low_word, uint value) {
+void add_wide_power(uint low_word, uint value) {
     uint before = atomicAdd(power_tallies[low_word], value);
     if (before + value < before) atomicAdd(power_tallies[low_word + 1u], 1u);
 }
 
+void add_wide_receiver(uint low_word, uint value) {
+    uint before = atomicAdd(receiver_tallies[low_word], value);
+    if (before + value < before) atomicAdd(receiver_tallies[low_word + 1u], 1u);
+}
+
+uvec3 power_units(vec3 power) {
+    return uvec3(power / power_unit + 0.5f);
+}
+
 void add_power(int tally, vec3 power) {
-    uvec3 units = uvec3(power / power_unit + 0.5f);
+    uvec3 units = power_units(power);
     for (int channel = 0; channel < 3; ++channel)
-        if (units[channel] != 0u) add_wide(uint(2 * (3 * tally + channel)), units[channel]);
+        if (units[channel] != 0u) add_wide_power(uint(2 * (3 * tally + channel)), units[channel]);
 }
 
 void record_vertex(uint photon, uint vertex, vec3 x) {
@@ -84,34 +139,79 @@ void record_vertex(uint photon, uint vertex, vec3 x) {
 #endif
 }
 
-// Irradiance estimate on the receiver map: the photon's power is shared
-// among the four nearest texel centres with bilinear (tent) weights, which
-// sum to one, so the map's integral is exactly the received power.
+// The photon's power, in fixed point, into the receiver texel it lands in
+// (exact and order-independent: the same seed gives bit-identical maps); the
+// kernel filter runs afterwards (receiver_filter.comp).
 void deposit_on_receiver(ReceiverHit hit, vec3 power) {
-    int resolution = int(receivers[hit.receiver].map.y);
-    vec2 texel = hit.map_uv * float(resolution) - 0.5f;
-    ivec2 base = ivec2(floor(texel));
-    vec2 f = texel - vec2(base);
-    vec3 irradiance = power / receivers[hit.receiver].normal.w;
-    for (int j = 0; j < 2; ++j) {
-        for (int i = 0; i < 2; ++i) {
-            ivec2 t = clamp(base + ivec2(i, j), ivec2(0), ivec2(resolution - 1));
-            uint index = 3u * (receivers[hit.receiver].map.x + uint(t.y * resolution + t.x));
-            float weight = (i == 0 ? 1.0f - f.x : f.x) * (j == 0 ? 1.0f - f.y : f.y);
-            atomicAdd(receiver_irradiance[index + 0u], weight * irradiance.r);
-            atomicAdd(receiver_irradiance[index + 1u], weight * irradiance.g);
-            atomicAdd(receiver_irradiance[index + 2u], weight * irradiance.b);
-        }
-    }
+    uint resolution = receivers[hit.receiver].map.y;
+    uvec2 texel = min(uvec2(hit.map_uv * float(resolution)), uvec2(resolution - 1u));
+    uint base = 6u * (receivers[hit.receiver].map.x + texel.y * resolution + texel.x);
+    uvec3 units = power_units(power);
+    for (int channel = 0; channel < 3; ++channel)
+        if (units[channel] != 0u) add_wide_receiver(base + uint(2 * channel), units[channel]);
 }
 
-void deposit_fluence(vec3 x, vec3 power_times_length) {
-#if EIKON_HAS_SCATTERING
-    uint index = 3u * uint(grid_linear_index(grid_cell(x)));
-    vec3 value = power_times_length / grid.voxel_size.w;
-    atomicAdd(fluence[index + 0u], value.r);
-    atomicAdd(fluence[index + 1u], value.g);
-    atomicAdd(fluence[index + 2u], value.b);
+uint deposits = 0u;
+
+// Track-length estimator over the segment a → b (DESIGN.md: φ = Σ Φ·ℓ / h³):
+// a 3D DDA (Amanatides and Woo 1987) visits every voxel the segment crosses
+// and adds the power-weighted length spent in it, with Beer–Lambert decay
+// along the way at the segment's extinction κ; the power-weighted direction
+// goes beside it.
+void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa) {
+#if EIKON_STORE_FLUENCE > 0
+    vec3 delta = b - a;
+    float length_ = length(delta);
+    if (length_ <= 0.0f) return;
+    vec3 direction = delta / length_;
+    vec3 p = (a - grid.bounds_min.xyz) / grid.voxel_size.xyz;
+    vec3 q = (b - grid.bounds_min.xyz) / grid.voxel_size.xyz;
+    vec3 span = q - p;
+    ivec3 cell = clamp(ivec3(floor(p)), ivec3(0), grid.resolution.xyz - 1);
+    ivec3 stride = ivec3(sign(span));
+    vec3 inverse = 1.0f / abs(span);
+    vec3 next_face = vec3(cell) + step(vec3(0.0f), span);  // the face ahead on each axis
+    vec3 t_max = mix((next_face - p) / span, vec3(1e30f), equal(span, vec3(0.0f)));
+    vec3 t_delta = mix(inverse, vec3(1e30f), equal(span, vec3(0.0f)));
+    float t = 0.0f;
+    int guard = 3 * (int(abs(span.x)) + int(abs(span.y)) + int(abs(span.z))) + 6;
+    for (int i = 0; i < guard; ++i) {
+        float t_next = min(1.0f, min(t_max.x, min(t_max.y, t_max.z)));
+        float piece = (t_next - t) * length_;
+        if (piece > 0.0f) {
+            uint index = 3u * uint(grid_linear_index(cell));
+#if EIKON_STORE_FLUENCE == 1
+            bool stored = any(greaterThan(texelFetch(scattering_texture, cell, 0).rgb, vec3(0.0f)));
+#else
+            bool stored = true;
+#endif
+            if (stored) {
+                vec3 entering = power * beer_lambert_transmittance(kappa, t * length_);
+                vec3 value = entering * attenuated_track_length(kappa, piece) / grid.voxel_size.w;
+                atomicAdd(raw_fluence[index + 0u], value.r);
+                atomicAdd(raw_fluence[index + 1u], value.g);
+                atomicAdd(raw_fluence[index + 2u], value.b);
+                vec3 weighted = (value.r + value.g + value.b) * direction;
+                atomicAdd(raw_fluence_direction[index + 0u], weighted.x);
+                atomicAdd(raw_fluence_direction[index + 1u], weighted.y);
+                atomicAdd(raw_fluence_direction[index + 2u], weighted.z);
+                ++deposits;
+            }
+        }
+        if (t_next >= 1.0f) break;
+        t = t_next;
+        if (t_max.x <= t_max.y && t_max.x <= t_max.z) {
+            cell.x += stride.x;
+            t_max.x += t_delta.x;
+        } else if (t_max.y <= t_max.z) {
+            cell.y += stride.y;
+            t_max.y += t_delta.y;
+        } else {
+            cell.z += stride.z;
+            t_max.z += t_delta.z;
+        }
+        if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, grid.resolution.xyz))) break;
+    }
 #endif
 }
 
@@ -131,6 +231,32 @@ vec2 emission_sample(Emitter emitter, uint photon) {
     return (vec2(local % strata.x, local / strata.x) + jitter) / vec2(strata);
 }
 
+// A spot light's intensity relative to its axis: 1 inside the inner cone,
+// smoothstep in cos θ to 0 at the outer cone.
+float spot_profile(Emitter emitter, vec3 direction) {
+    if (emitter.spot.w < -1.5f) return 1.0f;
+    return smoothstep(emitter.spot.w, emitter.spot_edge.x, dot(direction, emitter.spot.xyz));
+}
+
+float next_step(vec3 x, vec3 v) {
+#if EIKON_OCTREE_STEPS
+    vec2 node = texelFetch(step_structure, grid_cell(x), 0).rg;
+    return octree_step(x, normalize(v), grid.bounds_min.xyz, grid.voxel_size.xyz, node.x, step_length, node.y);
+#else
+    return step_length;
+#endif
+}
+
+void integrate(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field, float ds) {
+#if EIKON_INTEGRATOR == 0
+    integrate_euler(x, x_lost, v, field, ds);
+#elif EIKON_INTEGRATOR == 1
+    integrate_leapfrog(x, x_lost, v, field, ds);
+#else
+    integrate_rk4(x, x_lost, v, field, ds);
+#endif
+}
+
 void main() {
     uint id = gl_GlobalInvocationID.x;
     if (id >= batch_size) return;
@@ -148,15 +274,28 @@ void main() {
         x = emitter.origin.xyz + disk.x * emitter.tangent.xyz + disk.y * emitter.bitangent.xyz;
         direction = emitter.axis.xyz;
     }
+    vec3 emitted = emitter.photon_power.rgb * spot_profile(emitter, direction);
+#if EIKON_DISPERSION
+    // One channel per photon, three times the power: each channel keeps its total.
+    int channel = int(photon % 3u);
+    channel_scale = dispersion[channel];
+    vec3 only = vec3(0.0f);
+    only[channel] = 3.0f * emitted[channel];
+    emitted = only;
+#else
+    channel_scale = dispersion.x;
+#endif
 
-    vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
-    vec3 power = emitter.photon_power.rgb;
+    vec3 power = emitted;
     vec3 absorbed = vec3(0.0f);
     float cutoff = power_cutoff * max(power.r, max(power.g, power.b));
+    vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
     vec3 v = reference_index() * direction;
+    vec4 field = vec4(0.0f, 0.0f, 0.0f, reference_index());
     uint steps = 0u;
     uint vertex = 0u;
     float max_invariant_error = 0.0f;
+    float invariant_error_sum = 0.0f;
     int fate = TALLY_ESCAPED;
     record_vertex(photon, vertex++, x);
 
@@ -164,6 +303,7 @@ void main() {
         if (!grid_contains(x)) {
             vec3 d = normalize(v);
             StraightFlight flight = fly_straight(x, d);
+#if !EIKON_BARE_MARCH
             if (flight.hit.receiver >= 0) {
                 x = x + flight.distance * d;
                 record_vertex(photon, vertex++, x);
@@ -171,6 +311,7 @@ void main() {
                 if (flight.hit.lit_side) deposit_on_receiver(flight.hit, power);
                 break;
             }
+#endif
             if (!flight.enters_grid) {
                 record_vertex(photon, vertex++, x + flight.distance * d);
                 fate = TALLY_ESCAPED;
@@ -180,7 +321,8 @@ void main() {
             x_lost = vec3(0.0f);
             if (!grid_contains(x)) continue;
             // Keep |v| = n at entry so the invariant starts exact.
-            v = (reference_index() + sample_gradient_and_delta(x).w) * d;
+            field = field_at(x);
+            v = field.w * d;
             record_vertex(photon, vertex++, x);
             continue;
         }
@@ -188,21 +330,25 @@ void main() {
             fate = TALLY_CUT_OFF;
             break;
         }
-        vec4 field = sample_gradient_and_delta(x);
-        float n = reference_index() + field.w;
-        max_invariant_error = max(max_invariant_error, eikonal_invariant_error(v, n));
+        float ds = next_step(x, v);
         vec3 start = x;
-        eikonal_euler_step(x, x_lost, v, n, field.xyz, step_length);
+        integrate(x, x_lost, v, field, ds);
         ++steps;
+        float invariant_error = eikonal_invariant_error(v, field.w);
+        max_invariant_error = max(max_invariant_error, invariant_error);
+        invariant_error_sum += invariant_error;
+#if EIKON_RENORMALIZE
+        v = renormalised_direction(v, field.w);
+#endif
 
+#if !EIKON_BARE_MARCH
         ReceiverHit hit = first_receiver_crossing(start, x);
-        float travelled = hit.receiver >= 0 ? hit.fraction * step_length : step_length;
+        float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
         vec3 kappa = sample_extinction(start);
-        deposit_fluence(0.5f * (start + x), power * attenuated_track_length(kappa, travelled));
+        deposit_segment(start, hit.receiver >= 0 ? mix(start, x, hit.fraction) : x, power, kappa);
         vec3 transmitted = power * beer_lambert_transmittance(kappa, travelled);
         absorbed += power - transmitted;
         power = transmitted;
-
         if (hit.receiver >= 0) {
             x = mix(start, x, hit.fraction);
             record_vertex(photon, vertex++, x);
@@ -210,6 +356,7 @@ void main() {
             if (hit.lit_side) deposit_on_receiver(hit, power);
             break;
         }
+#endif
         record_vertex(photon, vertex++, x);
         if (max(power.r, max(power.g, power.b)) < cutoff) {
             fate = TALLY_CUT_OFF;
@@ -218,11 +365,16 @@ void main() {
         if (!grid_contains(x)) v = reference_index() * normalize(v);
     }
 
-    add_power(TALLY_EMITTED, emitter.photon_power.rgb);
+    add_power(TALLY_EMITTED, emitted);
     add_power(TALLY_ABSORBED, absorbed);
     add_power(fate, power);
     atomicAdd(photon_tallies[fate - TALLY_ESCAPED], 1u);
     uint steps_before = atomicAdd(step_tallies[0], steps);
     if (steps_before + steps < steps_before) atomicAdd(step_tallies[1], 1u);
     atomicMax(step_tallies[2], floatBitsToUint(max_invariant_error));
+    if (deposits > 0u) {
+        uint deposits_before = atomicAdd(deposit_tallies[0], deposits);
+        if (deposits_before + deposits < deposits_before) atomicAdd(deposit_tallies[1], 1u);
+    }
+    atomicAdd(invariant_sum, invariant_error_sum);
 }

@@ -30,9 +30,13 @@ std::string frameReportJson(int frame, const render::FrameResult& result) {
           {"received", p.photonsReceived},
           {"cut_off", p.photonsCutOff},
           {"blocked", p.photonsBlocked}}},
+        {"emitted", p.photons},
         {"energy_balance_error", p.balanceError()},
         {"steps", p.steps},
-        {"max_invariant_error", p.maxInvariantError}};
+        {"mean_steps_per_photon", p.photons > 0 ? static_cast<double>(p.steps) / static_cast<double>(p.photons) : 0.0},
+        {"voxel_deposits", p.voxelDeposits},
+        {"max_invariant_error", p.maxInvariantError},
+        {"mean_invariant_error", p.meanInvariantError}};
     return nlohmann::json{{"frame", frame},
                           {"stages", stages},
                           {"host_bytes_uploaded", result.hostBytesUploaded},

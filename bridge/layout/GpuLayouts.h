@@ -26,6 +26,10 @@ enum Binding : unsigned {
     kLdrImage = 8,         // buffer LdrImage { uint rgba8[]; }
     kPhotonPaths = 9,      // buffer PhotonPaths { vec4 vertices[]; } — optional recording for tests and export
     kProbe = 10,           // buffer used by the shared-math probe
+    kReceiverTallies = 11, // buffer ReceiverTallies { uint units[]; } — per texel and channel a 64-bit fixed-point sum
+    kFluenceDirection = 12,// buffer FluenceDirection { float direction[]; } — xyz per cell, power-weighted
+    kRawFluence = 13,      // the photon pass's unsmoothed fluence, RGB per cell
+    kRawFluenceDirection = 14,  // and its unsmoothed direction sums
 };
 
 // Texture units.
@@ -34,6 +38,7 @@ enum TextureUnit : unsigned {
     kGradientTexture = 1,    // rgba32f (∇n, δn)
     kExtinctionTexture = 2,  // rgba32f (κ rgb, 0)
     kScatteringTexture = 3,  // rgba32f (σs rgb, 0)
+    kStepTexture = 4,        // rg32f (octree level, step cap in m)
 };
 
 // uniform GridBlock (std140): the world box of the field grid.
@@ -49,15 +54,17 @@ static_assert(offsetof(GpuGrid, resolution) == 48);
 // One light's emission, prepared on the CPU so that the photons of all lights
 // carry exactly the power each light sends toward the traced region.
 struct GpuEmitter {
-    glm::vec4 origin;       // point: position; directional: centre of the emitting disk. w: kind (0 point, 1 directional)
-    glm::vec4 axis;         // unit central direction. w: point: cos of cone half-angle; directional: disk radius (m)
+    glm::vec4 origin;       // point, spot: position; directional: centre of the emitting disk. w: kind (0 cone, 1 disk)
+    glm::vec4 axis;         // unit central direction. w: cone: cos of its half-angle; disk: radius (m)
     glm::vec4 tangent;      // unit, ⟂ axis
     glm::vec4 bitangent;    // unit, ⟂ axis and tangent
-    glm::vec4 photonPower;  // rgb W carried by each photon; w unused
+    glm::vec4 photonPower;  // rgb W carried by each photon where the spot profile is 1; w unused
+    glm::vec4 spot;         // xyz: unit spot axis; w: cos of the spot's outer half-angle (−2: no profile)
+    glm::vec4 spotEdge;     // x: cos of the spot's inner half-angle (full intensity inside)
     glm::uvec4 photons;     // x: first photon index, y: photon count, z: strata along u1, w: strata along u2
 };
-static_assert(sizeof(GpuEmitter) == 96);
-static_assert(offsetof(GpuEmitter, photons) == 80);
+static_assert(sizeof(GpuEmitter) == 128);
+static_assert(offsetof(GpuEmitter, photons) == 112);
 
 // An opaque diffuse square receiver and where its map lives in ReceiverMaps.
 struct GpuReceiver {
@@ -84,12 +91,16 @@ constexpr double kPowerUnitsPerPhoton = 16777216.0;  // 2^24
 
 struct GpuPhotonStats {
     std::uint32_t power[kTallyCount][3][2];  // [tally][channel][low, high word]
-    glm::uvec4 photons;  // photon counts: x escaped, y received, z cut off, w blocked
-    glm::uvec4 steps;    // x: low 32 bits of the step count, y: high bits; z: max |v|−n invariant error (float bits)
+    glm::uvec4 photons;   // photon counts: x escaped, y received, z cut off, w blocked
+    glm::uvec4 steps;     // x: low 32 bits of the step count, y: high bits; z: max |v|−n invariant error (float bits)
+    glm::uvec4 deposits;  // x: low 32 bits of the voxel deposits, y: high bits
+    glm::vec4 invariant;  // x: sum over steps of the relative invariant error (float atomics; for the mean only)
 };
-static_assert(sizeof(GpuPhotonStats) == 176);
+static_assert(sizeof(GpuPhotonStats) == 208);
 static_assert(offsetof(GpuPhotonStats, photons) == 144);
 static_assert(offsetof(GpuPhotonStats, steps) == 160);
+static_assert(offsetof(GpuPhotonStats, deposits) == 176);
+static_assert(offsetof(GpuPhotonStats, invariant) == 192);
 
 
 // uniform CameraBlock (std140): a pinhole camera.

@@ -100,6 +100,11 @@ long long JsonReader::integer(long long min, long long max) const {
     return static_cast<long long>(value);
 }
 
+bool JsonReader::boolean() const {
+    if (node_ == nullptr || !node_->is_boolean()) fail("true or false");
+    return node_->get<bool>();
+}
+
 std::string JsonReader::string() const {
     if (node_ == nullptr || !node_->is_string()) fail("a string");
     return node_->get<std::string>();

@@ -53,6 +53,7 @@ public:
     // Typed reads; an absent node fails them all with "found nothing".
     double number(NumberRange range = NumberRange::any()) const;  // finite only
     long long integer(long long min, long long max) const;        // 3 and 3.0 pass, 2.5 fails
+    bool boolean() const;  // JSON true or false only, not 0/1 or "true"
     std::string string() const;
     std::string oneOf(std::initializer_list<const char*> choices) const;
     glm::dvec3 vec3() const;

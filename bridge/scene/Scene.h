@@ -20,7 +20,8 @@ struct GridDesc {
     glm::ivec3 resolution{64, 64, 64};  // cells per axis, each >= 1
     glm::dvec3 boundsMin{-1.0};         // metres; boundsMax > boundsMin on every axis
     glm::dvec3 boundsMax{1.0};
-    double smoothingSigmaVoxels = 1.5;  // Gaussian σ of index smoothing in voxels (Sun et al. 2008 §4.1: 9³ window, σ = 9/6)
+    double smoothingSigmaVoxels = 1.5;  // Gaussian σ of index smoothing in voxels (Sun et al. 2008 §4.1: 9³ window, σ = 9/6); 0: none
+    int smoothingWindowVoxels = 0;      // odd kernel width; 0: 2·floor(3σ) + 1 (9 for σ = 1.5)
     int supersampling = 4;              // coverage samples per voxel axis (Sun et al. 2008 §4.1: 4)
 };
 
@@ -50,11 +51,13 @@ struct ObjectDesc {
 };
 
 struct LightDesc {
-    enum class Kind { Point, Directional } kind = Kind::Point;
-    glm::dvec3 position{0.0};    // point: metres
-    Rgb power{0.0};              // point: W per channel, ≥ 0, emitted isotropically
-    glm::dvec3 direction{0, -1, 0};  // directional: unit vector the light travels along
-    Rgb irradiance{0.0};         // directional: W/m² per channel on a plane ⟂ direction, ≥ 0
+    enum class Kind { Point, Spot, Directional } kind = Kind::Point;
+    glm::dvec3 position{0.0};        // point, spot: metres
+    Rgb power{0.0};                  // point: W per channel emitted isotropically; spot: W per channel inside its cone; ≥ 0
+    glm::dvec3 direction{0, -1, 0};  // spot: unit axis of the cone; directional: unit vector the light travels along
+    double coneAngleDeg = 30.0;      // spot: half-angle of the cone, in (0, 180)
+    double falloffDeg = 5.0;         // spot: width of the soft edge inside the cone, in [0, coneAngleDeg]
+    Rgb irradiance{0.0};             // directional: W/m² per channel on a plane ⟂ direction, ≥ 0
 };
 
 // A diffuse (Lambertian) plane that records photon irradiance on a square
@@ -80,8 +83,27 @@ struct RenderDesc {
     int height = 480;             // >= 1
     unsigned seed = 1;
     double exposureEv = 0.0;      // exposure compensation in stops
-    double stepVoxels = 0.5;      // photon step Δs in voxels, > 0
+    double stepVoxels = 0.5;      // camera-ray step in voxels, > 0
     Rgb background{0.02, 0.025, 0.03};  // radiance of the environment, W/(m²·sr)
+};
+
+// How photons are marched (Sun et al. 2008, §4.2–4.4 and §5.3).
+struct TracerDesc {
+    enum class Integrator { Euler, Leapfrog, Rk4 } integrator = Integrator::Leapfrog;
+    enum class StepPolicy { Uniform, Octree } stepPolicy = StepPolicy::Octree;
+    double stepVoxels = 0.5;      // uniform: Δs; octree: Δs_min. In voxels, > 0
+    // Octree tolerances. Sun et al. used ε = 0.005, ε′ = 0.02 with an 8-voxel
+    // cap; on the glass-sphere caustic that doubled the error of uniform
+    // half-voxel steps, while ε = ε′ = 0.001 beats uniform steps with 3.6×
+    // fewer (docs/accuracy.md), so the capped tier is off by default.
+    double maxStepVoxels = 8.0;   // octree: step cap in nodes whose index varies by ε..ε′, >= stepVoxels
+    double epsilon = 0.001;       // octree: index variation below which a node counts as uniform, > 0
+    double epsilonPrime = 0.001;  // octree: variation below which the capped step applies, >= epsilon
+    bool renormalize = false;     // rescale |v| to n(x) after every step
+    double powerCutoff = 1e-4;    // stop a photon below this fraction of its emitted power, in [0, 1)
+    long long maxSteps = 0;       // per photon; 0: four grid crossings at the smallest step
+    Rgb dispersion{1.0};          // per-channel scale of δn = n − n_ref (Cauchy-style), each > 0
+    bool storeFluence = false;    // keep the fluence grid even where nothing scatters
 };
 
 struct Scene {
@@ -93,6 +115,7 @@ struct Scene {
     std::vector<ReceiverDesc> receivers;
     CameraDesc camera;
     RenderDesc render;
+    TracerDesc tracer;
 };
 
 }  // namespace eikon

@@ -20,6 +20,8 @@ constexpr int kMaxImageEdge = 16384;
 constexpr int kMaxReceiverResolution = 4096;
 constexpr int kMaxSupersampling = 16;
 constexpr long long kMaxSeed = 4294967295LL;  // 2^32 - 1
+constexpr int kMaxSmoothingWindow = 63;
+constexpr long long kMaxTracerSteps = 2147483647LL;  // 2^31 - 1
 
 const NumberRange kPositive = NumberRange::above(0.0);
 const NumberRange kNonNegative = NumberRange::atLeast(0.0);
@@ -66,9 +68,20 @@ void readAttenuation(const JsonObjectReader& fields, Material& material) {
     }
 }
 
+// An odd kernel width; absence (not 0) in the file means automatic.
+int readOddWindow(const JsonReader& node) {
+    const int window = static_cast<int>(node.integer(1, kMaxSmoothingWindow));
+    if (window % 2 == 0) {
+        node.fail("an odd integer in [1, " + std::to_string(kMaxSmoothingWindow) + "] (the kernel has a centre voxel)",
+                  std::to_string(window));
+    }
+    return window;
+}
+
 GridDesc readGrid(const JsonReader& node) {
     GridDesc grid;
-    const auto fields = node.object({"resolution", "bounds", "smoothing_sigma_voxels", "supersampling"});
+    const auto fields =
+        node.object({"resolution", "bounds", "smoothing_sigma_voxels", "smoothing_window_voxels", "supersampling"});
     if (auto resolution = fields.optional("resolution")) {
         grid.resolution = resolution->ivec3(1, static_cast<int>(kMaxGridCells));
         const glm::ivec3 n = grid.resolution;
@@ -86,6 +99,7 @@ GridDesc readGrid(const JsonReader& node) {
         requireNonEmpty(corners.member("min"), grid.boundsMin, corners.member("max"), grid.boundsMax);
     }
     if (auto sigma = fields.optional("smoothing_sigma_voxels")) grid.smoothingSigmaVoxels = sigma->number(kNonNegative);
+    if (auto window = fields.optional("smoothing_window_voxels")) grid.smoothingWindowVoxels = readOddWindow(*window);
     if (auto samples = fields.optional("supersampling")) {
         grid.supersampling = static_cast<int>(samples->integer(1, kMaxSupersampling));
     }
@@ -122,14 +136,37 @@ ObjectDesc readObject(const JsonReader& node) {
     return object;
 }
 
+// Cone half-angle in (0, 180) and a soft edge in [0, cone]; the default edge
+// shrinks to fit a cone narrower than it.
+void readSpotCone(const JsonObjectReader& fields, LightDesc& light) {
+    if (auto cone = fields.optional("cone_angle_deg")) light.coneAngleDeg = cone->number(NumberRange::open(0.0, 180.0));
+    light.falloffDeg = std::min(light.falloffDeg, light.coneAngleDeg);
+    if (auto falloff = fields.optional("falloff_deg")) {
+        light.falloffDeg = falloff->number(kNonNegative);
+        if (light.falloffDeg > light.coneAngleDeg) {
+            falloff->fail("a number in [0, " + fields.member("cone_angle_deg").path() + " = " +
+                              formatNumber(light.coneAngleDeg) + "] (the soft edge lies inside the cone)",
+                          formatNumber(light.falloffDeg));
+        }
+    }
+}
+
 LightDesc readLight(const JsonReader& node) {
     LightDesc light;
-    const std::string type = node.member("type").oneOf({"point", "directional"});
+    const std::string type = node.member("type").oneOf({"point", "spot", "directional"});
     if (type == "point") {
         const auto fields = node.object({"type", "position", "power"});
         light.kind = LightDesc::Kind::Point;
         light.position = fields.member("position").vec3();
         light.power = fields.member("power").rgb(kNonNegative);
+    } else if (type == "spot") {
+        const auto fields =
+            node.object({"type", "position", "direction", "power", "cone_angle_deg", "falloff_deg"});
+        light.kind = LightDesc::Kind::Spot;
+        light.position = fields.member("position").vec3();
+        light.direction = readDirection(fields.member("direction"));
+        light.power = fields.member("power").rgb(kNonNegative);
+        readSpotCone(fields, light);
     } else {
         const auto fields = node.object({"type", "direction", "irradiance"});
         light.kind = LightDesc::Kind::Directional;
@@ -186,6 +223,52 @@ RenderDesc readRender(const JsonReader& node) {
     if (auto step = fields.optional("step_voxels")) render.stepVoxels = step->number(kPositive);
     if (auto background = fields.optional("background")) render.background = background->rgb(kNonNegative);
     return render;
+}
+
+// A number >= `low`, the value already read for the key `lowKey` of the same
+// object (low > 0); absent, the larger of `fallback` and `low`.
+double readAtLeast(const JsonObjectReader& fields, const std::string& key, double fallback, const std::string& lowKey,
+                   double low) {
+    const auto node = fields.optional(key);
+    if (!node) return std::max(fallback, low);
+    const double value = node->number();
+    if (value < low) {
+        node->fail("a number >= " + fields.member(lowKey).path() + " = " + formatNumber(low), formatNumber(value));
+    }
+    return value;
+}
+
+TracerDesc::Integrator readIntegrator(const JsonReader& node) {
+    const std::string name = node.oneOf({"euler", "leapfrog", "rk4"});
+    if (name == "euler") return TracerDesc::Integrator::Euler;
+    return name == "leapfrog" ? TracerDesc::Integrator::Leapfrog : TracerDesc::Integrator::Rk4;
+}
+
+TracerDesc::StepPolicy readStepPolicy(const JsonReader& node) {
+    return node.oneOf({"uniform", "octree"}) == "uniform" ? TracerDesc::StepPolicy::Uniform
+                                                          : TracerDesc::StepPolicy::Octree;
+}
+
+TracerDesc readTracer(const JsonReader& node) {
+    TracerDesc tracer;
+    const auto fields = node.object({"integrator", "step_policy", "step_voxels", "max_step_voxels", "epsilon",
+                                     "epsilon_prime", "renormalize", "power_cutoff", "max_steps", "dispersion",
+                                     "store_fluence"});
+    if (auto integrator = fields.optional("integrator")) tracer.integrator = readIntegrator(*integrator);
+    if (auto policy = fields.optional("step_policy")) tracer.stepPolicy = readStepPolicy(*policy);
+    if (auto step = fields.optional("step_voxels")) tracer.stepVoxels = step->number(kPositive);
+    tracer.maxStepVoxels =
+        readAtLeast(fields, "max_step_voxels", tracer.maxStepVoxels, "step_voxels", tracer.stepVoxels);
+    if (auto epsilon = fields.optional("epsilon")) tracer.epsilon = epsilon->number(kPositive);
+    tracer.epsilonPrime = readAtLeast(fields, "epsilon_prime", tracer.epsilonPrime, "epsilon", tracer.epsilon);
+    if (auto renormalize = fields.optional("renormalize")) tracer.renormalize = renormalize->boolean();
+    if (auto cutoff = fields.optional("power_cutoff")) {
+        tracer.powerCutoff = cutoff->number(NumberRange{0.0, 1.0, true, false});
+    }
+    if (auto steps = fields.optional("max_steps")) tracer.maxSteps = steps->integer(0, kMaxTracerSteps);
+    if (auto dispersion = fields.optional("dispersion")) tracer.dispersion = dispersion->rgb(kPositive);
+    if (auto store = fields.optional("store_fluence")) tracer.storeFluence = store->boolean();
+    return tracer;
 }
 
 template <class Item, class ReadItem>
@@ -287,7 +370,7 @@ nlohmann::json parseOverrideValue(const std::string& text) {
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const auto fields = JsonReader(root, sourceName)
                             .object({"description", "grid", "medium", "objects", "lights", "receivers", "camera",
-                                     "render"});
+                                     "render", "tracer"});
     Scene scene;
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
@@ -299,6 +382,7 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     scene.receivers = readList<ReceiverDesc>(fields, "receivers", readReceiver);
     if (auto camera = fields.optional("camera")) scene.camera = readCamera(*camera);
     if (auto render = fields.optional("render")) scene.render = readRender(*render);
+    if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
     return scene;
 }
 

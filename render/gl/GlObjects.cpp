@@ -31,13 +31,14 @@ void Buffer::clearToZero() {
     glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
-Texture3D::Texture3D(GLenum internalFormat, int width, int height, int depth)
+Texture3D::Texture3D(GLenum internalFormat, int width, int height, int depth, int levels)
     : internalFormat_(internalFormat), width_(width), height_(height), depth_(depth) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     name_ = GlName<deleteTexture>(id);
-    glTextureStorage3D(id, 1, internalFormat, width, height, depth);
-    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureStorage3D(id, levels, internalFormat, width, height, depth);
+    // texelFetch reaches levels > 0 only with a mipmapped minification filter.
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR);
     glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);

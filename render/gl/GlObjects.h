@@ -69,11 +69,12 @@ private:
     std::size_t bytes_ = 0;
 };
 
-// A 3D texture with trilinear filtering and clamp-to-edge addressing.
+// A 3D texture with trilinear filtering and clamp-to-edge addressing, and
+// optionally a mip chain of `levels` (read with texelFetch per level).
 class Texture3D {
 public:
     Texture3D() = default;
-    Texture3D(GLenum internalFormat, int width, int height, int depth);
+    Texture3D(GLenum internalFormat, int width, int height, int depth, int levels = 1);
 
     GLuint id() const { return name_.id(); }
     void upload(GLenum format, GLenum type, const void* data);

@@ -21,21 +21,23 @@ StageReport runStage(const char* name, bool needed, Work&& work) {
 
 }  // namespace
 
-FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options)
+FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, PhotonProgramOptions options)
     : scene_(scene), receivers_(scene.receivers), post_(scene.render.width, scene.render.height) {
     pendingUploadBytes_ = fields_.upload(fields);  // before the stages: they compile for the fields present
-    photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.recordPathVertices,
-                                             options.recordedPhotons);
+    prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
+    if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree)
+        stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction());
+    photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options);
     view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_);
-    const double step = scene.render.stepVoxels * fields.grid.smallestVoxelEdge();
+    const double voxel = fields.grid.smallestVoxelEdge();
     photonSettings_.photons = scene.render.photons;
     photonSettings_.seed = scene.render.seed;
-    photonSettings_.stepLength = step;
-    photonSettings_.maxSteps = defaultMaxSteps(fields.grid, step);
-    photonSettings_.recordPathVertices = options.recordPathVertices;
-    photonSettings_.recordedPhotons = options.recordedPhotons;
-    viewStepLength_ = step;
-    viewMaxSteps_ = photonSettings_.maxSteps;
+    photonSettings_.stepLength = scene.tracer.stepVoxels * voxel;
+    photonSettings_.maxSteps = scene.tracer.maxSteps > 0 ? static_cast<unsigned>(scene.tracer.maxSteps)
+                                                          : defaultMaxSteps(fields.grid, photonSettings_.stepLength);
+    photonSettings_.powerCutoff = scene.tracer.powerCutoff;
+    viewStepLength_ = scene.render.stepVoxels * voxel;
+    viewMaxSteps_ = defaultMaxSteps(fields.grid, viewStepLength_);
 }
 
 void FrameRenderer::setCamera(const CameraDesc& camera) {
@@ -50,11 +52,16 @@ FrameResult FrameRenderer::render(const FieldSet& fields) {
         result.hostBytesUploaded = std::exchange(pendingUploadBytes_, 0) + fields_.upload(fields);
     }));
     const bool indexChanged = fields.indexVersion != tracedIndexVersion_;
-    const bool fieldsChanged = indexChanged || fields.extinctionVersion != tracedExtinctionVersion_ ||
-                               fields.scatteringVersion != tracedScatteringVersion_;
-    result.stages.push_back(runStage("prepare", indexChanged, [&] { prepare_.run(fields_); }));
-    result.stages.push_back(
-        runStage("photons", fieldsChanged, [&] { last_.photons = photons_->run(fields_, photonSettings_); }));
+    const bool extinctionChanged = fields.extinctionVersion != tracedExtinctionVersion_;
+    const bool fieldsChanged = indexChanged || extinctionChanged || fields.scatteringVersion != tracedScatteringVersion_;
+    result.stages.push_back(runStage("prepare", indexChanged, [&] { prepare_->run(fields_); }));
+    if (stepStructure_)
+        result.stages.push_back(runStage("step_structure", indexChanged || extinctionChanged,
+                                         [&] { stepStructure_->run(prepare_->smoothedIndex(fields_), fields_); }));
+    const gl::Texture3D* stepTexture = stepStructure_ ? &stepStructure_->stepTexture() : nullptr;
+    result.stages.push_back(runStage("photons", fieldsChanged, [&] {
+        last_.photons = photons_->run(fields_, stepTexture, photonSettings_);
+    }));
     const bool viewNeeded = fieldsChanged || cameraChanged_;
     result.stages.push_back(runStage("view", viewNeeded, [&] {
         view_->run(fields_, photons_->fluence(), viewStepLength_, viewMaxSteps_);

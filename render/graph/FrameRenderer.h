@@ -1,8 +1,9 @@
-// One frame of the render half: upload → prepare → photons → view → post.
-// A stage runs only when one of its inputs changed since it last ran (field
-// versions, camera, exposure); stages the scene does not need are not
-// created (no receivers → no maps, no scattering → no fluence). Each frame
-// reports every stage with whether it ran and its wall time.
+// One frame of the render half: upload → prepare → step structure → photons
+// → view → post. A stage runs only when one of its inputs changed since it
+// last ran (field versions, camera); stages the scene does not need are not
+// created (uniform steps → no step structure, no receivers → no maps, no
+// scattering → no fluence). Each frame reports every stage it has with
+// whether it ran and its wall time.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -12,6 +13,7 @@
 #include "render/stages/PostStage.h"
 #include "render/stages/PrepareStage.h"
 #include "render/stages/ReceiverMaps.h"
+#include "render/stages/StepStructureStage.h"
 #include "render/stages/ViewStage.h"
 
 #include <memory>
@@ -33,14 +35,9 @@ struct FrameResult {
     std::size_t hostBytesUploaded = 0;
 };
 
-struct RendererOptions {
-    int recordPathVertices = 0;  // photon paths to record (tests, export)
-    int recordedPhotons = 64;
-};
-
 class FrameRenderer {
 public:
-    FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options = {});
+    FrameRenderer(const Scene& scene, const FieldSet& fields, PhotonProgramOptions options = {});
 
     FrameResult render(const FieldSet& fields);
     void setCamera(const CameraDesc& camera);
@@ -53,7 +50,8 @@ private:
     Scene scene_;
     FieldTextures fields_;
     ReceiverMaps receivers_;
-    PrepareStage prepare_;
+    std::unique_ptr<PrepareStage> prepare_;
+    std::unique_ptr<StepStructureStage> stepStructure_;  // octree step policy only
     std::unique_ptr<PhotonStage> photons_;
     std::unique_ptr<ViewStage> view_;
     PostStage post_;

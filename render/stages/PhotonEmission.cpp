@@ -31,8 +31,14 @@ struct EmitterGeometry {
     glm::dvec3 origin{0.0};
     glm::dvec3 axis{0, 0, 1};
     double shape = 0.0;  // cos of the cone half-angle, or disk radius
+    // What all photons together carry where a spot's profile is 1: the power
+    // into the sampled cone or disk (exactly the power into it for point and
+    // directional lights).
     Rgb powerIntoRegion{0.0};
     float kind = 0.0f;
+    glm::dvec3 spotAxis{0.0};
+    double spotCosOuter = -2.0;  // no spot profile
+    double spotCosInner = 1.0;
 };
 
 // The narrowest cone around the direction to the region's centre that holds
@@ -59,6 +65,28 @@ EmitterGeometry pointEmitter(const LightDesc& light, const Box& region) {
     geometry.shape = cosMax;
     // Isotropic: intensity Φ/4π over the cap's solid angle 2π(1 − cosMax).
     geometry.powerIntoRegion = light.power * (0.5 * (1.0 - cosMax));
+    return geometry;
+}
+
+// A spot: intensity I0·profile(θ), profile = 1 inside the inner cone and a
+// smoothstep in cos θ down to 0 at the outer cone, with I0 such that the
+// power inside the cone is the light's power:
+//   Φ = I0 · 2π [(1 − cos θi) + (cos θi − cos θo)/2].
+// Photons are sampled in the narrower of the spot's cone and the cone
+// toward the region.
+EmitterGeometry spotEmitter(const LightDesc& light, const Box& region) {
+    EmitterGeometry geometry = pointEmitter(light, region);
+    const double cosOuter = std::cos(glm::radians(light.coneAngleDeg));
+    const double cosInner = std::cos(glm::radians(light.coneAngleDeg - light.falloffDeg));
+    const Rgb peakIntensity = light.power / (2.0 * std::numbers::pi * ((1.0 - cosInner) + 0.5 * (cosInner - cosOuter)));
+    if (cosOuter > geometry.shape) {
+        geometry.axis = glm::normalize(light.direction);
+        geometry.shape = cosOuter;
+    }
+    geometry.powerIntoRegion = peakIntensity * (2.0 * std::numbers::pi * (1.0 - geometry.shape));
+    geometry.spotAxis = glm::normalize(light.direction);
+    geometry.spotCosOuter = cosOuter;
+    geometry.spotCosInner = cosInner;
     return geometry;
 }
 
@@ -107,8 +135,9 @@ std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& ligh
     std::vector<EmitterGeometry> geometries;
     double totalPower = 0.0;
     for (const auto& light : lights) {
-        const EmitterGeometry geometry =
-            light.kind == LightDesc::Kind::Point ? pointEmitter(light, region) : directionalEmitter(light, region);
+        const EmitterGeometry geometry = light.kind == LightDesc::Kind::Point ? pointEmitter(light, region)
+                                         : light.kind == LightDesc::Kind::Spot ? spotEmitter(light, region)
+                                                                               : directionalEmitter(light, region);
         if (channelSum(geometry.powerIntoRegion) <= 0.0) continue;
         totalPower += channelSum(geometry.powerIntoRegion);
         geometries.push_back(geometry);
@@ -129,6 +158,8 @@ std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& ligh
         emitter.tangent = glm::vec4(glm::vec3(tangent), 0.0f);
         emitter.bitangent = glm::vec4(glm::vec3(bitangent), 0.0f);
         emitter.photonPower = glm::vec4(glm::vec3(geometry.powerIntoRegion / static_cast<double>(count)), 0.0f);
+        emitter.spot = glm::vec4(glm::vec3(geometry.spotAxis), static_cast<float>(geometry.spotCosOuter));
+        emitter.spotEdge = glm::vec4(static_cast<float>(geometry.spotCosInner), 0.0f, 0.0f, 0.0f);
         emitter.photons = glm::uvec4(static_cast<unsigned>(first), static_cast<unsigned>(count), strataU,
                                      static_cast<unsigned>(count / strataU));
         emitters.push_back(emitter);

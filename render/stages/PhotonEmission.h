@@ -1,8 +1,9 @@
 // Photon emission set-up (Sun et al. 2008, §4.3, with the shadow-map trick
 // replaced by a bounding cone): photons leave each light only toward the box
 // that holds the non-empty medium and the receivers, and each carries the
-// power of the solid angle (point) or area (directional) it stands for, so
-// the photons of a light sum to the power that light sends into that region.
+// power of the solid angle (point, spot) or area (directional) it stands for,
+// so the photons of a light sum to the power that light sends into that
+// region (for a spot, in expectation over its profile).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"

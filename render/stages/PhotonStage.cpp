@@ -24,6 +24,19 @@ Rgb tallyOf(const layout::GpuPhotonStats& gpu, layout::PowerTally tally, const R
     return watts;
 }
 
+std::uint64_t wide(std::uint32_t low, std::uint32_t high) { return (std::uint64_t{high} << 32) | low; }
+
+bool dispersive(const Rgb& scale) { return scale.r != scale.g || scale.g != scale.b; }
+
+int integratorNumber(TracerDesc::Integrator integrator) {
+    switch (integrator) {
+        case TracerDesc::Integrator::Euler: return 0;
+        case TracerDesc::Integrator::Leapfrog: return 1;
+        case TracerDesc::Integrator::Rk4: return 2;
+    }
+    return 1;
+}
+
 }  // namespace
 
 double PhotonStats::balanceError() const {
@@ -36,42 +49,65 @@ double PhotonStats::balanceError() const {
 
 unsigned defaultMaxSteps(const GridSpec& grid, double stepLength) {
     const glm::dvec3 extent = grid.extent();
-    return static_cast<unsigned>(std::ceil(4.0 * (extent.x + extent.y + extent.z) / stepLength));
+    return static_cast<unsigned>(std::min(4.0 * (extent.x + extent.y + extent.z) / stepLength, 2147483647.0));
 }
 
 PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, ReceiverMaps& receivers,
-                         int recordPathVertices, int recordedPhotons)
-    : receivers_(receivers) {
-    gl::ShaderDefines defines{{"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
-                              {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"},
-                              {"EIKON_RECORD_PATHS", std::to_string(recordPathVertices)},
-                              {"EIKON_RECORDED_PHOTONS", std::to_string(recordedPhotons)}};
+                         PhotonProgramOptions options)
+    : receivers_(receivers), dispersion_(scene.tracer.dispersion) {
+    storeFluence_ = scene.tracer.storeFluence ? 2 : (fields.hasScattering() ? 1 : 0);
+    if (options.bareMarch) storeFluence_ = 0;
+    const TracerDesc& tracer = scene.tracer;
+    gl::ShaderDefines defines{
+        {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
+        {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"},
+        {"EIKON_INTEGRATOR", std::to_string(integratorNumber(tracer.integrator))},
+        {"EIKON_OCTREE_STEPS", tracer.stepPolicy == TracerDesc::StepPolicy::Octree ? "1" : "0"},
+        {"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
+        {"EIKON_DISPERSION", dispersive(tracer.dispersion) ? "1" : "0"},
+        {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
+        {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
+        {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
+        {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)}};
     program_ = gl::compileComputeProgram("photon_trace.comp", defines);
     const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), scene.render.photons);
     for (const auto& emitter : emitters)
         for (int c = 0; c < 3; ++c) powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c]);
+    // Dispersion gives each photon three times one channel's power.
+    const float headroom = dispersive(tracer.dispersion) ? 3.0f : 1.0f;
     for (int c = 0; c < 3; ++c)
-        powerUnit_[c] = std::max(powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);
+        powerUnit_[c] = std::max(headroom * powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);
     emitterCount_ = static_cast<unsigned>(emitters.size());
     emitters_ = gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
-    if (fields.hasScattering()) fluence_ = gl::Buffer(3 * fields.grid().cellCount() * sizeof(float));
+    if (storeFluence_ > 0) {
+        const std::size_t bytes = 3 * fields.grid().cellCount() * sizeof(float);
+        rawFluence_ = gl::Buffer(bytes);
+        rawDirection_ = gl::Buffer(bytes);
+        fluence_ = gl::Buffer(bytes);
+        direction_ = gl::Buffer(bytes);
+        fluenceSmoothProgram_ = gl::compileComputeProgram("fluence_smooth.comp");
+    }
     stats_ = gl::Buffer(sizeof(layout::GpuPhotonStats));
-    paths_ = gl::Buffer(static_cast<std::size_t>(recordPathVertices) * static_cast<std::size_t>(recordedPhotons) *
-                        sizeof(glm::vec4));
+    paths_ = gl::Buffer(static_cast<std::size_t>(options.recordPathVertices) *
+                        static_cast<std::size_t>(options.recordedPhotons) * sizeof(glm::vec4));
 }
 
-PhotonStats PhotonStage::run(const FieldTextures& fields, const PhotonSettings& settings) {
+PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* stepTexture,
+                             const PhotonSettings& settings) {
     fields.bindForTracing();
+    if (stepTexture) stepTexture->bindSampler(layout::kStepTexture);
     receivers_.bind();
-    receivers_.clear();
+    receivers_.clearTallies();
     emitters_.bindStorage(layout::kEmitters);
     stats_.clearToZero();
     stats_.bindStorage(layout::kPhotonStats);
     paths_.clearToZero();
     paths_.bindStorage(layout::kPhotonPaths);
-    if (fields.hasScattering()) {
-        fluence_.clearToZero();
-        fluence_.bindStorage(layout::kFluence);
+    if (storeFluence_ > 0) {
+        rawFluence_.clearToZero();
+        rawDirection_.clearToZero();
+        rawFluence_.bindStorage(layout::kRawFluence);
+        rawDirection_.bindStorage(layout::kRawFluenceDirection);
     }
     program_.use();
     glUniform1ui(program_.uniform("emitter_count"), emitterCount_);
@@ -81,6 +117,8 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const PhotonSettings& 
     glUniform1ui(program_.uniform("max_steps"), settings.maxSteps);
     glUniform1f(program_.uniform("power_cutoff"), static_cast<float>(settings.powerCutoff));
     glUniform3f(program_.uniform("power_unit"), powerUnit_.r, powerUnit_.g, powerUnit_.b);
+    glUniform3f(program_.uniform("dispersion"), static_cast<float>(dispersion_.r), static_cast<float>(dispersion_.g),
+                static_cast<float>(dispersion_.b));
     const auto total = static_cast<std::size_t>(settings.photons);
     for (std::size_t offset = 0; offset < total; offset += kBatchPhotons) {
         const std::size_t batch = std::min(kBatchPhotons, total - offset);
@@ -89,11 +127,24 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const PhotonSettings& 
         program_.dispatchCovering(batch, 1, 1, 64, 1, 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    receivers_.filter(powerUnit_);
+    if (storeFluence_ > 0) {
+        fields.gridBlock().bindUniform(layout::kGridBlock);
+        rawFluence_.bindStorage(layout::kRawFluence);
+        rawDirection_.bindStorage(layout::kRawFluenceDirection);
+        fluence_.bindStorage(layout::kFluence);
+        direction_.bindStorage(layout::kFluenceDirection);
+        const glm::ivec3 r = fields.grid().resolution;
+        fluenceSmoothProgram_.dispatchCovering(static_cast<std::size_t>(r.x), static_cast<std::size_t>(r.y),
+                                               static_cast<std::size_t>(r.z), 4, 4, 4);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
     gl::checkpoint("photon stage");
 
     const auto gpu = stats_.downloadAs<layout::GpuPhotonStats>();
-    PhotonStats stats;
     const Rgb unit(powerUnit_);
+    PhotonStats stats;
+    stats.photons = settings.photons;
     stats.emitted = tallyOf(gpu, layout::kEmitted, unit);
     stats.absorbed = tallyOf(gpu, layout::kAbsorbed, unit);
     stats.escaped = tallyOf(gpu, layout::kEscaped, unit);
@@ -104,11 +155,19 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const PhotonSettings& 
     stats.photonsReceived = gpu.photons.y;
     stats.photonsCutOff = gpu.photons.z;
     stats.photonsBlocked = gpu.photons.w;
-    stats.steps = (std::uint64_t{gpu.steps.y} << 32) | gpu.steps.x;
+    stats.steps = wide(gpu.steps.x, gpu.steps.y);
+    stats.voxelDeposits = wide(gpu.deposits.x, gpu.deposits.y);
     float maxError = 0.0f;
     std::memcpy(&maxError, &gpu.steps.z, sizeof maxError);
     stats.maxInvariantError = maxError;
+    stats.meanInvariantError = stats.steps > 0 ? gpu.invariant.x / static_cast<double>(stats.steps) : 0.0;
     return stats;
+}
+
+std::vector<float> PhotonStage::downloadFluence() const {
+    std::vector<float> values(fluence_.bytes() / sizeof(float));
+    if (!values.empty()) fluence_.download(values.data(), values.size() * sizeof(float));
+    return values;
 }
 
 std::vector<glm::vec4> PhotonStage::downloadPaths() const {

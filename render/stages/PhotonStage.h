@@ -1,6 +1,7 @@
-// The photon pass (shaders/photon_trace.comp): emission, fixed-step Euler
-// marching, Beer–Lambert attenuation, fluence and receiver deposits, and the
-// frame's energy balance.
+// The photon pass (shaders/photon_trace.comp): emission, adaptive or uniform
+// marching with the chosen integrator, Beer–Lambert attenuation, fluence and
+// receiver deposits, then the receiver filter and the fluence smoothing; and
+// the frame's energy balance and error figures.
 #pragma once
 
 #include "bridge/scene/Scene.h"
@@ -8,6 +9,7 @@
 #include "render/stages/FieldTextures.h"
 #include "render/stages/ReceiverMaps.h"
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <cstdint>
@@ -18,19 +20,27 @@ namespace eikon::render {
 struct PhotonSettings {
     long long photons = 1 << 20;
     unsigned seed = 1;
-    double stepLength = 0.0;      // Δs in metres
+    double stepLength = 0.0;      // uniform Δs, or the octree's Δs_min, in metres
     unsigned maxSteps = 0;        // trapped-ray cap
     double powerCutoff = 1e-4;    // relative to a photon's emitted power
-    int recordPathVertices = 0;   // per recorded photon; 0 records nothing
+};
+
+// Options that change the photon program itself (compile-time #defines).
+struct PhotonProgramOptions {
+    int recordPathVertices = 0;  // per recorded photon; 0 records nothing
     int recordedPhotons = 64;
+    bool bareMarch = false;      // benchmark limit: no attenuation, deposits or receivers
 };
 
 // Where the emitted power went, in W per channel, and the step figures.
 struct PhotonStats {
+    long long photons = 0;
     Rgb emitted{0.0}, absorbed{0.0}, escaped{0.0}, received{0.0}, cutOff{0.0}, blocked{0.0};
     std::uint64_t photonsEscaped = 0, photonsReceived = 0, photonsCutOff = 0, photonsBlocked = 0;
     std::uint64_t steps = 0;
-    double maxInvariantError = 0.0;  // max over photons and steps of | |v| − n | / n
+    std::uint64_t voxelDeposits = 0;
+    double maxInvariantError = 0.0;   // max over photons and steps of | |v| − n | / n
+    double meanInvariantError = 0.0;  // mean over steps
 
     // |emitted − (absorbed + escaped + received + cutOff + blocked)| / emitted, worst channel.
     double balanceError() const;
@@ -38,28 +48,36 @@ struct PhotonStats {
 
 class PhotonStage {
 public:
-    PhotonStage(const Scene& scene, const FieldTextures& fields, ReceiverMaps& receivers, int recordPathVertices = 0,
-                int recordedPhotons = 64);
+    PhotonStage(const Scene& scene, const FieldTextures& fields, ReceiverMaps& receivers,
+                PhotonProgramOptions options = {});
 
-    PhotonStats run(const FieldTextures& fields, const PhotonSettings& settings);
+    // stepTexture: the octree step structure, when the scene's tracer uses it.
+    PhotonStats run(const FieldTextures& fields, const gl::Texture3D* stepTexture, const PhotonSettings& settings);
 
-    // Fluence φ (W/m², RGB per cell); empty buffer unless the scene scatters.
+    bool storesFluence() const { return storeFluence_ > 0; }
+    // Smoothed fluence φ (W/m², RGB per cell) and power-weighted mean
+    // direction (xyz per cell); empty unless storesFluence().
     const gl::Buffer& fluence() const { return fluence_; }
+    std::vector<float> downloadFluence() const;
     // Recorded vertices (xyz, w = 1 where written) of the first photons.
     std::vector<glm::vec4> downloadPaths() const;
 
 private:
     ReceiverMaps& receivers_;
+    Rgb dispersion_{1.0};
+    int storeFluence_ = 0;  // 0 none, 1 where σs > 0, 2 everywhere
     gl::Program program_;
+    gl::Program fluenceSmoothProgram_;
     gl::Buffer emitters_;
     unsigned emitterCount_ = 0;
     glm::vec3 powerUnit_{0.0f};  // W per fixed-point tally unit, per channel
-    gl::Buffer fluence_;
+    gl::Buffer rawFluence_, rawDirection_, fluence_, direction_;
     gl::Buffer stats_;
     gl::Buffer paths_;
 };
 
-// Default trapped-ray cap: four crossings of the grid along all three axes.
+// Default trapped-ray cap: four crossings of the grid along all three axes
+// at the smallest step.
 unsigned defaultMaxSteps(const GridSpec& grid, double stepLength);
 
 }  // namespace eikon::render

@@ -3,18 +3,57 @@
 #include "bridge/layout/GpuLayouts.h"
 #include "render/gl/GlDebug.h"
 #include "render/gl/ShaderLibrary.h"
+#include "render/stages/GaussianKernel.h"
 
 namespace eikon::render {
 
-PrepareStage::PrepareStage() : program_(gl::compileComputeProgram("prepare_gradient.comp")) {}
+namespace {
+
+void dispatchOverGrid(const gl::Program& program, const glm::ivec3& r) {
+    program.dispatchCovering(static_cast<std::size_t>(r.x), static_cast<std::size_t>(r.y),
+                             static_cast<std::size_t>(r.z), 4, 4, 4);
+}
+
+}  // namespace
+
+PrepareStage::PrepareStage(const GridDesc& grid, const FieldTextures& fields)
+    : kernel_(gaussianHalfKernel(grid.smoothingSigmaVoxels, grid.smoothingWindowVoxels)),
+      gradientProgram_(gl::compileComputeProgram("prepare_gradient.comp")) {
+    if (kernel_.size() > 1) {
+        smoothProgram_ = gl::compileComputeProgram("smooth_index.comp");
+        const glm::ivec3 r = fields.grid().resolution;
+        for (auto& texture : scratch_) texture = gl::Texture3D(GL_R32F, r.x, r.y, r.z);
+    }
+}
+
+const gl::Texture3D& PrepareStage::smoothedIndex(const FieldTextures& fields) const {
+    return kernel_.size() > 1 ? scratch_[1] : fields.index();
+}
 
 void PrepareStage::run(FieldTextures& fields) {
-    fields.gridBlock().bindUniform(layout::kGridBlock);
-    fields.index().bindSampler(layout::kIndexTexture);
-    fields.gradient().bindImage(0, GL_WRITE_ONLY);
     const glm::ivec3 r = fields.grid().resolution;
-    program_.dispatchCovering(static_cast<std::size_t>(r.x), static_cast<std::size_t>(r.y),
-                              static_cast<std::size_t>(r.z), 4, 4, 4);
+    if (kernel_.size() > 1) {
+        // x: raw → scratch 0, y: scratch 0 → scratch 1, z: scratch 1 → scratch 0; the swap below
+        // then leaves the result in scratch_[1], where smoothedIndex() looks.
+        smoothProgram_.use();
+        glUniform1i(smoothProgram_.uniform("radius"), static_cast<GLint>(kernel_.size()) - 1);
+        glUniform1fv(smoothProgram_.uniform("weights"), static_cast<GLsizei>(kernel_.size()), kernel_.data());
+        const gl::Texture3D* sources[3] = {&fields.index(), &scratch_[0], &scratch_[1]};
+        gl::Texture3D* targets[3] = {&scratch_[0], &scratch_[1], &scratch_[0]};
+        const glm::ivec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+        for (int pass = 0; pass < 3; ++pass) {
+            glUniform3i(smoothProgram_.uniform("axis"), axes[pass].x, axes[pass].y, axes[pass].z);
+            sources[pass]->bindSampler(0);
+            targets[pass]->bindImage(0, GL_WRITE_ONLY);
+            dispatchOverGrid(smoothProgram_, r);
+            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+        }
+        std::swap(scratch_[0], scratch_[1]);  // the result now lives in scratch_[1]
+    }
+    fields.gridBlock().bindUniform(layout::kGridBlock);
+    smoothedIndex(fields).bindSampler(layout::kIndexTexture);
+    fields.gradient().bindImage(0, GL_WRITE_ONLY);
+    dispatchOverGrid(gradientProgram_, r);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("prepare stage");
 }

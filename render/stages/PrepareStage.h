@@ -1,18 +1,29 @@
-// Index preparation on the GPU: (∇n, δn) from δn (shaders/prepare_gradient.comp).
+// Index preparation on the GPU: Gaussian smoothing of δn (three separable
+// passes of shaders/smooth_index.comp) and then (∇n, δn) by central
+// differences (shaders/prepare_gradient.comp).
 #pragma once
 
+#include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
+
+#include <vector>
 
 namespace eikon::render {
 
 class PrepareStage {
 public:
-    PrepareStage();
+    PrepareStage(const GridDesc& grid, const FieldTextures& fields);
     void run(FieldTextures& fields);
 
+    // δn after smoothing (the raw field when smoothing is off).
+    const gl::Texture3D& smoothedIndex(const FieldTextures& fields) const;
+
 private:
-    gl::Program program_;
+    std::vector<float> kernel_;
+    gl::Program smoothProgram_;
+    gl::Program gradientProgram_;
+    gl::Texture3D scratch_[2];
 };
 
 }  // namespace eikon::render

@@ -1,8 +1,12 @@
 #include "render/stages/ReceiverMaps.h"
 
+#include "render/gl/GlDebug.h"
+#include "render/gl/ShaderLibrary.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <cstdint>
 
 namespace eikon::render {
 
@@ -32,12 +36,30 @@ ReceiverMaps::ReceiverMaps(const std::vector<ReceiverDesc>& receivers) : receive
     std::size_t texels = 0;
     for (const auto& receiver : receivers_) texels += std::size_t{receiver.map.y} * receiver.map.y;
     geometry_ = gl::Buffer(receivers_.size() * sizeof(layout::GpuReceiver), receivers_.data());
+    tallies_ = gl::Buffer(6 * texels * sizeof(std::uint32_t));
     maps_ = gl::Buffer(3 * texels * sizeof(float));
+    if (!receivers_.empty()) filterProgram_ = gl::compileComputeProgram("receiver_filter.comp");
 }
 
 void ReceiverMaps::bind() const {
     geometry_.bindStorage(layout::kReceivers);
+    tallies_.bindStorage(layout::kReceiverTallies);
     maps_.bindStorage(layout::kReceiverMaps);
+}
+
+void ReceiverMaps::filter(const glm::vec3& powerUnit) {
+    if (receivers_.empty()) return;
+    bind();
+    filterProgram_.use();
+    glUniform3f(filterProgram_.uniform("power_unit"), powerUnit.r, powerUnit.g, powerUnit.b);
+    for (const auto& receiver : receivers_) {
+        glUniform1ui(filterProgram_.uniform("first_texel"), receiver.map.x);
+        glUniform1i(filterProgram_.uniform("resolution"), static_cast<GLint>(receiver.map.y));
+        glUniform1f(filterProgram_.uniform("texel_area"), receiver.normal.w);
+        filterProgram_.dispatchCovering(receiver.map.y, receiver.map.y, 1, 8, 8, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl::checkpoint("receiver filter");
 }
 
 std::vector<float> ReceiverMaps::download(unsigned receiver) const {

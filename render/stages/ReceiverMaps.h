@@ -1,6 +1,7 @@
-// Receivers on the GPU: their geometry (layout::GpuReceiver) and one
-// irradiance map each, packed into a single buffer the photon pass fills and
-// the view pass reads.
+// Receivers on the GPU: their geometry (layout::GpuReceiver), the photon
+// pass's fixed-point power tallies per texel, and the filtered irradiance
+// maps (shaders/receiver_filter.comp) the view pass reads, all receivers
+// packed into one buffer each.
 #pragma once
 
 #include "bridge/layout/GpuLayouts.h"
@@ -19,15 +20,19 @@ public:
 
     unsigned count() const { return static_cast<unsigned>(receivers_.size()); }
     const layout::GpuReceiver& receiver(unsigned i) const { return receivers_[i]; }
-    void clear() { maps_.clearToZero(); }
+    void clearTallies() { tallies_.clearToZero(); }
     void bind() const;
+    // Turns the tallies into irradiance maps; powerUnit is W per tally unit.
+    void filter(const glm::vec3& powerUnit);
     // Irradiance in W/m², RGB per texel, rows along axisV, texels along axisU.
     std::vector<float> download(unsigned receiver) const;
 
 private:
     std::vector<layout::GpuReceiver> receivers_;
     gl::Buffer geometry_;
+    gl::Buffer tallies_;
     gl::Buffer maps_;
+    gl::Program filterProgram_;
 };
 
 }  // namespace eikon::render

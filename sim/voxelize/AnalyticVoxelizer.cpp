@@ -1,7 +1,5 @@
 #include "sim/voxelize/AnalyticVoxelizer.h"
 
-#include "sim/voxelize/GaussianSmoothing.h"
-
 #include <tbb/parallel_for.h>
 
 #include <glm/geometric.hpp>
@@ -86,7 +84,6 @@ FieldSet voxelizeScene(const Scene& scene) {
                 }
             }
     });
-    gaussianSmooth(fields.deltaIndex, fields.grid.resolution, scene.grid.smoothingSigmaVoxels);
     fields.indexVersion = fields.extinctionVersion = fields.scatteringVersion = 1;
     return fields;
 }

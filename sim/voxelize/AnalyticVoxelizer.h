@@ -2,9 +2,9 @@
 //
 // Follows Sun et al. 2008, §4.1: fractional coverage per voxel from
 // supersampling (s³ samples, 4³ by default, only in voxels the surface
-// crosses), materials composited in list order by coverage, then the index
-// smoothed with a Gaussian (default σ = 1.5 voxels in a 9³ window) so that
-// ∇n is finite and rays bend smoothly across interfaces.
+// crosses), materials composited in list order by coverage. The Gaussian
+// smoothing of the index that follows runs on the GPU, for fields from any
+// source (render/stages/PrepareStage).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"

@@ -139,7 +139,7 @@ TEST_F(DefaultRender, ReportsEveryStageAndBalancesEnergy) {
         names.push_back(stage.name);
         EXPECT_TRUE(stage.ran) << stage.name << " must run on the first frame";
     }
-    EXPECT_EQ(names, (std::vector<std::string>{"upload", "prepare", "photons", "view", "post"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"upload", "prepare", "step_structure", "photons", "view", "post"}));
     EXPECT_LT(result_->photons.balanceError(), 1e-6);
     EXPECT_GT(result_->hostBytesUploaded, 0u);
 }

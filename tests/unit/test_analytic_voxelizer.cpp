@@ -1,11 +1,9 @@
 #include "sim/voxelize/AnalyticVoxelizer.h"
-#include "sim/voxelize/GaussianSmoothing.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-#include <numeric>
 
 namespace eikon::sim {
 namespace {
@@ -15,7 +13,6 @@ Scene sceneWith(ObjectDesc object, int resolution) {
     scene.grid.resolution = glm::ivec3(resolution);
     scene.grid.boundsMin = glm::dvec3(-1.0);
     scene.grid.boundsMax = glm::dvec3(1.0);
-    scene.grid.smoothingSigmaVoxels = 0.0;
     scene.medium.index = 1.0;
     scene.objects.push_back(object);
     return scene;
@@ -59,30 +56,6 @@ TEST(AnalyticVoxelizer, LaterObjectReplacesEarlierWhereItCovers) {
     scene.objects.push_back(inner);
     const FieldSet fields = voxelizeScene(scene);
     EXPECT_NEAR(fields.deltaIndex[fields.grid.linearIndex(8, 8, 8)], 0.2f, 1e-6f);
-}
-
-TEST(GaussianSmoothing, PaperKernelIsNineWideAndNormalised) {
-    const auto kernel = gaussianKernel(1.5);
-    EXPECT_EQ(kernel.size(), 9u);
-    EXPECT_NEAR(std::accumulate(kernel.begin(), kernel.end(), 0.0), 1.0, 1e-12);
-    EXPECT_NEAR(kernel[4] / kernel[3], std::exp(0.5 / (1.5 * 1.5)), 1e-12);
-}
-
-// A single spike on a 9³ grid, far from the edges, spreads into the
-// separable product of the kernel and keeps its sum.
-TEST(GaussianSmoothing, SpikeBecomesProductKernel) {
-    std::vector<float> values(9 * 9 * 9, 0.0f);
-    values[4 + 9 * (4 + 9 * 4)] = 1.0f;
-    gaussianSmooth(values, glm::ivec3(9), 0.7);
-    const auto kernel = gaussianKernel(0.7);  // radius 2
-    EXPECT_NEAR(std::accumulate(values.begin(), values.end(), 0.0), 1.0, 1e-6);
-    EXPECT_NEAR(values[5 + 9 * (4 + 9 * 3)], kernel[3] * kernel[2] * kernel[1], 1e-7);
-}
-
-TEST(GaussianSmoothing, ConstantFieldUnchangedAtEdges) {
-    std::vector<float> values(5 * 4 * 3, 0.25f);
-    gaussianSmooth(values, glm::ivec3(5, 4, 3), 1.5);
-    for (float value : values) EXPECT_NEAR(value, 0.25f, 1e-6f);
 }
 
 }  // namespace

@@ -116,6 +116,111 @@ TEST(SceneParser, ParsesAFullScene) {
     EXPECT_EQ(scene.render.background, Rgb(0.1));
 }
 
+// validScene() with every key added since the first format: a spot light as
+// lights[2], a smoothing window and a full tracer section.
+json sceneWithNewKeys() {
+    json scene = validScene();
+    scene["grid"]["smoothing_window_voxels"] = 5;
+    scene["lights"].push_back(json::parse(R"({"type": "spot", "position": [1, 2, 3], "direction": [0, 0, -2],
+        "power": [1, 2, 3], "cone_angle_deg": 45, "falloff_deg": 10})"));
+    scene["tracer"] = json::parse(R"({"integrator": "rk4", "step_policy": "uniform", "step_voxels": 0.25,
+        "max_step_voxels": 4, "epsilon": 0.001, "epsilon_prime": 0.01, "renormalize": true, "power_cutoff": 0.5,
+        "max_steps": 100000, "dispersion": [0.9, 1, 1.1], "store_fluence": true})");
+    return scene;
+}
+
+TEST(SceneParser, ParsesNewKeys) {
+    const Scene scene = parseScene(sceneWithNewKeys(), "test.json");
+    EXPECT_EQ(scene.grid.smoothingWindowVoxels, 5);
+
+    ASSERT_EQ(scene.lights.size(), 3u);
+    const LightDesc& spot = scene.lights[2];
+    EXPECT_EQ(spot.kind, LightDesc::Kind::Spot);
+    EXPECT_EQ(spot.position, glm::dvec3(1, 2, 3));
+    EXPECT_EQ(spot.direction, glm::dvec3(0, 0, -1));  // normalised
+    EXPECT_EQ(spot.power, Rgb(1, 2, 3));
+    EXPECT_DOUBLE_EQ(spot.coneAngleDeg, 45.0);
+    EXPECT_DOUBLE_EQ(spot.falloffDeg, 10.0);
+
+    const TracerDesc& tracer = scene.tracer;
+    EXPECT_EQ(tracer.integrator, TracerDesc::Integrator::Rk4);
+    EXPECT_EQ(tracer.stepPolicy, TracerDesc::StepPolicy::Uniform);
+    EXPECT_DOUBLE_EQ(tracer.stepVoxels, 0.25);
+    EXPECT_DOUBLE_EQ(tracer.maxStepVoxels, 4.0);
+    EXPECT_DOUBLE_EQ(tracer.epsilon, 0.001);
+    EXPECT_DOUBLE_EQ(tracer.epsilonPrime, 0.01);
+    EXPECT_TRUE(tracer.renormalize);
+    EXPECT_DOUBLE_EQ(tracer.powerCutoff, 0.5);
+    EXPECT_EQ(tracer.maxSteps, 100000);
+    EXPECT_EQ(tracer.dispersion, Rgb(0.9, 1.0, 1.1));
+    EXPECT_TRUE(tracer.storeFluence);
+
+    EXPECT_DOUBLE_EQ(scene.render.stepVoxels, 0.25);  // the camera step stays separate
+}
+
+TEST(SceneParser, IntegratorAndStepPolicyNames) {
+    json scene = validScene();
+    scene["tracer"] = {{"integrator", "euler"}, {"step_policy", "octree"}};
+    EXPECT_EQ(parseScene(scene, "test.json").tracer.integrator, TracerDesc::Integrator::Euler);
+    EXPECT_EQ(parseScene(scene, "test.json").tracer.stepPolicy, TracerDesc::StepPolicy::Octree);
+    scene["tracer"]["integrator"] = "leapfrog";
+    EXPECT_EQ(parseScene(scene, "test.json").tracer.integrator, TracerDesc::Integrator::Leapfrog);
+}
+
+TEST(SceneParser, NewKeysTakeDefaults) {
+    json scene = validScene();
+    scene["lights"].push_back(json::parse(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0],
+        "power": 2})"));
+    scene["tracer"] = json::object();
+    const Scene parsed = parseScene(scene, "test.json");
+    const Scene defaults;
+    EXPECT_EQ(parsed.grid.smoothingWindowVoxels, 0);  // automatic
+    EXPECT_DOUBLE_EQ(parsed.lights[2].coneAngleDeg, 30.0);
+    EXPECT_DOUBLE_EQ(parsed.lights[2].falloffDeg, 5.0);
+
+    for (const TracerDesc& tracer : {parsed.tracer, parseScene(validScene(), "test.json").tracer}) {
+        EXPECT_EQ(tracer.integrator, TracerDesc::Integrator::Leapfrog);
+        EXPECT_EQ(tracer.stepPolicy, TracerDesc::StepPolicy::Octree);
+        EXPECT_DOUBLE_EQ(tracer.stepVoxels, 0.5);
+        EXPECT_DOUBLE_EQ(tracer.maxStepVoxels, 8.0);
+        EXPECT_DOUBLE_EQ(tracer.epsilon, 0.001);
+        EXPECT_DOUBLE_EQ(tracer.epsilonPrime, 0.001);
+        EXPECT_FALSE(tracer.renormalize);
+        EXPECT_DOUBLE_EQ(tracer.powerCutoff, 1e-4);
+        EXPECT_EQ(tracer.maxSteps, 0);
+        EXPECT_EQ(tracer.dispersion, Rgb(1.0));
+        EXPECT_FALSE(tracer.storeFluence);
+        EXPECT_EQ(tracer.maxStepVoxels, defaults.tracer.maxStepVoxels);
+    }
+}
+
+// An absent bound follows the value it must not fall below, rather than
+// rejecting a key the file does not contain.
+TEST(SceneParser, DefaultBoundsFollowTheirLimits) {
+    json scene = validScene();
+    scene["tracer"] = {{"step_voxels", 12}, {"epsilon", 0.05}};
+    scene["lights"][0] = json::parse(R"({"type": "spot", "position": [0, 1, 0], "direction": [0, -1, 0],
+        "power": 2, "cone_angle_deg": 3})");
+    const Scene parsed = parseScene(scene, "test.json");
+    EXPECT_DOUBLE_EQ(parsed.tracer.maxStepVoxels, 12.0);
+    EXPECT_DOUBLE_EQ(parsed.tracer.epsilonPrime, 0.05);
+    EXPECT_DOUBLE_EQ(parsed.lights[0].falloffDeg, 3.0);
+}
+
+TEST(SceneParser, BoundaryValuesAreAccepted) {
+    json scene = sceneWithNewKeys();
+    scene["grid"]["smoothing_window_voxels"] = 1;
+    scene["lights"][2]["falloff_deg"] = 45;  // equal to the cone angle
+    scene["tracer"]["max_step_voxels"] = 0.25;  // equal to step_voxels
+    scene["tracer"]["epsilon_prime"] = 0.001;   // equal to epsilon
+    scene["tracer"]["power_cutoff"] = 0;
+    scene["tracer"]["max_steps"] = 2147483647LL;
+    EXPECT_NO_THROW(parseScene(scene, "test.json"));
+    scene["grid"]["smoothing_window_voxels"] = 63;
+    scene["lights"][2]["falloff_deg"] = 0;
+    EXPECT_NO_THROW(parseScene(scene, "test.json"));
+}
+
 TEST(SceneParser, MinimalSceneTakesDefaults) {
     const Scene scene = parseScene(json::parse(R"({"lights": [{"type": "point", "position": [0, 1, 0], "power": 1}]})"),
                                    "test.json");
@@ -229,8 +334,8 @@ TEST(SceneParserErrors, UnknownObjectType) {
 
 TEST(SceneParserErrors, UnknownLightType) {
     json scene = validScene();
-    scene["lights"][0]["type"] = "spot";
-    expectErrorAt(scene, "lights[0].type", "\"point\", \"directional\"");
+    scene["lights"][0]["type"] = "area";
+    expectErrorAt(scene, "lights[0].type", "one of \"point\", \"spot\", \"directional\", found a string \"area\"");
 }
 
 TEST(SceneParserErrors, MissingLights) {
@@ -275,6 +380,140 @@ TEST(SceneParserErrors, TooManyPhotons) {
     json scene = validScene();
     scene["render"]["photons"] = 4294967296LL;
     expectErrorAt(scene, "render.photons", "an integer in [1, 2147483647]");
+}
+
+TEST(SceneParserErrors, EvenSmoothingWindow) {
+    json scene = sceneWithNewKeys();
+    scene["grid"]["smoothing_window_voxels"] = 8;
+    expectErrorAt(scene, "grid.smoothing_window_voxels", "an odd integer in [1, 63]");
+    expectErrorAt(scene, "grid.smoothing_window_voxels", "found 8");
+}
+
+TEST(SceneParserErrors, SmoothingWindowOutOfRange) {
+    json scene = sceneWithNewKeys();
+    scene["grid"]["smoothing_window_voxels"] = 0;  // automatic is spelt by leaving the key out
+    expectErrorAt(scene, "grid.smoothing_window_voxels", "an integer in [1, 63], found 0");
+    scene["grid"]["smoothing_window_voxels"] = 65;
+    expectErrorAt(scene, "grid.smoothing_window_voxels", "found 65");
+}
+
+TEST(SceneParserErrors, SpotFalloffBeyondCone) {
+    json scene = sceneWithNewKeys();
+    scene["lights"][2]["falloff_deg"] = 50;
+    expectErrorAt(scene, "lights[2].falloff_deg", "a number in [0, lights[2].cone_angle_deg = 45]");
+    expectErrorAt(scene, "lights[2].falloff_deg", "found 50");
+    scene["lights"][2].erase("cone_angle_deg");  // against the default cone
+    scene["lights"][2]["falloff_deg"] = 31;
+    expectErrorAt(scene, "lights[2].falloff_deg", "lights[2].cone_angle_deg = 30]");
+    scene["lights"][2]["falloff_deg"] = -1;
+    expectErrorAt(scene, "lights[2].falloff_deg", "a number >= 0, found -1");
+}
+
+TEST(SceneParserErrors, SpotConeAngleOutOfRange) {
+    json scene = sceneWithNewKeys();
+    scene["lights"][2]["cone_angle_deg"] = 0;
+    expectErrorAt(scene, "lights[2].cone_angle_deg", "a number in (0, 180), found 0");
+    scene["lights"][2]["cone_angle_deg"] = 180;
+    expectErrorAt(scene, "lights[2].cone_angle_deg", "found 180");
+}
+
+TEST(SceneParserErrors, SpotNeedsANonZeroDirection) {
+    json scene = sceneWithNewKeys();
+    scene["lights"][2]["direction"] = {0, 0, 0};
+    expectErrorAt(scene, "lights[2].direction", "a non-zero vector");
+    scene["lights"][2].erase("direction");
+    expectErrorAt(scene, "lights[2].direction", "found nothing");
+}
+
+TEST(SceneParserErrors, SpotKeyOnAPointLight) {
+    json scene = validScene();
+    scene["lights"][0]["cone_angle_deg"] = 20;
+    expectErrorAt(scene, "lights[0].cone_angle_deg", "found an unknown key");
+}
+
+TEST(SceneParserErrors, UnknownIntegrator) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["integrator"] = "verlet";
+    expectErrorAt(scene, "tracer.integrator", "one of \"euler\", \"leapfrog\", \"rk4\", found a string \"verlet\"");
+}
+
+TEST(SceneParserErrors, UnknownStepPolicy) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["step_policy"] = "adaptive";
+    expectErrorAt(scene, "tracer.step_policy", "one of \"uniform\", \"octree\"");
+}
+
+TEST(SceneParserErrors, MaxStepBelowStep) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["max_step_voxels"] = 0.125;
+    expectErrorAt(scene, "tracer.max_step_voxels", "a number >= tracer.step_voxels = 0.25, found 0.125");
+    scene["tracer"].erase("step_voxels");  // against the default step
+    scene["tracer"]["max_step_voxels"] = 0.25;
+    expectErrorAt(scene, "tracer.max_step_voxels", "tracer.step_voxels = 0.5");
+}
+
+TEST(SceneParserErrors, EpsilonPrimeBelowEpsilon) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["epsilon_prime"] = 0.0005;
+    expectErrorAt(scene, "tracer.epsilon_prime", "a number >= tracer.epsilon = 0.001, found 0.0005");
+}
+
+TEST(SceneParserErrors, NonPositiveStepOrEpsilon) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["step_voxels"] = 0;
+    expectErrorAt(scene, "tracer.step_voxels", "a number > 0, found 0");
+    scene = sceneWithNewKeys();
+    scene["tracer"]["epsilon"] = -0.01;
+    expectErrorAt(scene, "tracer.epsilon", "a number > 0, found -0.01");
+}
+
+TEST(SceneParserErrors, PowerCutoffOfOne) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["power_cutoff"] = 1;
+    expectErrorAt(scene, "tracer.power_cutoff", "a number in [0, 1), found 1");
+}
+
+TEST(SceneParserErrors, BooleanGivenAsNumberOrString) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["renormalize"] = 1;
+    expectErrorAt(scene, "tracer.renormalize", "expected true or false, found 1");
+    scene["tracer"]["renormalize"] = false;
+    scene["tracer"]["store_fluence"] = "true";
+    expectErrorAt(scene, "tracer.store_fluence", "expected true or false, found a string \"true\"");
+}
+
+TEST(SceneParserErrors, ZeroDispersion) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["dispersion"] = {1, 0, 1};
+    expectErrorAt(scene, "tracer.dispersion[1]", "a number > 0, found 0");
+    scene["tracer"]["dispersion"] = 0;
+    expectErrorAt(scene, "tracer.dispersion", "a number > 0, found 0");
+}
+
+TEST(SceneParserErrors, MaxStepsOutOfRange) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["max_steps"] = -1;
+    expectErrorAt(scene, "tracer.max_steps", "an integer in [0, 2147483647], found -1");
+    scene["tracer"]["max_steps"] = 2147483648LL;
+    expectErrorAt(scene, "tracer.max_steps", "found 2147483648");
+    scene["tracer"]["max_steps"] = 10.5;
+    expectErrorAt(scene, "tracer.max_steps", "found 10.5");
+}
+
+TEST(SceneParserErrors, UnknownTracerKey) {
+    json scene = sceneWithNewKeys();
+    scene["tracer"]["stepvoxels"] = 1;
+    expectErrorAt(scene, "tracer.stepvoxels", "\"step_voxels\"");
+    scene = validScene();
+    scene["tracer"] = "rk4";
+    expectErrorAt(scene, "tracer", "an object, found a string \"rk4\"");
+}
+
+TEST(SceneFile, OverridesReachTheTracer) {
+    const std::string path = writeTempFile("eikon_override_tracer.json", kValidScene);
+    const Scene scene = loadSceneFile(path, {"tracer.integrator=euler", "tracer.renormalize=true"});
+    EXPECT_EQ(scene.tracer.integrator, TracerDesc::Integrator::Euler);
+    EXPECT_TRUE(scene.tracer.renormalize);
 }
 
 TEST(SceneFile, LoadsAFileAndRecordsItsPath) {

@@ -1,0 +1,68 @@
+#include "render/stages/StepStructureStage.h"
+
+#include "bridge/layout/GpuLayouts.h"
+#include "render/gl/GlDebug.h"
+#include "render/gl/ShaderLibrary.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace eikon::render {
+
+namespace {
+
+void dispatchOver(const gl::Program& program, const glm::ivec3& size) {
+    program.dispatchCovering(static_cast<std::size_t>(size.x), static_cast<std::size_t>(size.y),
+                             static_cast<std::size_t>(size.z), 4, 4, 4);
+}
+
+}  // namespace
+
+StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction)
+    : grid_(grid), tracer_(tracer),
+      minmaxProgram_(gl::compileComputeProgram("octree_minmax.comp",
+                                               {{"EIKON_HAS_EXTINCTION", hasExtinction ? "1" : "0"}})),
+      labelProgram_(gl::compileComputeProgram("octree_label.comp")) {
+    // Levels until one node spans the grid; level 0 padded to a multiple of
+    // the coarsest node so that every level halves exactly (a mip chain).
+    const int largest = std::max({grid.resolution.x, grid.resolution.y, grid.resolution.z});
+    while ((1 << (levels_ - 1)) < largest) ++levels_;
+    const int coarsest = 1 << (levels_ - 1);
+    paddedSize_ = (grid.resolution + coarsest - 1) / coarsest * coarsest;
+    pyramid_ = gl::Texture3D(GL_RGBA32F, paddedSize_.x, paddedSize_.y, paddedSize_.z, levels_);
+    step_ = gl::Texture3D(GL_RG32F, grid.resolution.x, grid.resolution.y, grid.resolution.z);
+}
+
+void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields) {
+    minmaxProgram_.use();
+    smoothedIndex.bindSampler(0);
+    if (fields.hasExtinction()) fields.bindForTracing();  // κ at its texture unit
+    for (int level = 0; level < levels_; ++level) {
+        glUniform1i(minmaxProgram_.uniform("level"), level);
+        if (level > 0) glBindImageTexture(0, pyramid_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(1, pyramid_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        dispatchOver(minmaxProgram_, glm::max(paddedSize_ >> level, glm::ivec3(1)));
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    const float maxDispersion = static_cast<float>(std::max({tracer_.dispersion.r, tracer_.dispersion.g, tracer_.dispersion.b}));
+    labelProgram_.use();
+    pyramid_.bindSampler(0);
+    step_.bindImage(0, GL_WRITE_ONLY);
+    glUniform1i(labelProgram_.uniform("levels"), levels_);
+    glUniform1f(labelProgram_.uniform("epsilon"), static_cast<float>(tracer_.epsilon));
+    glUniform1f(labelProgram_.uniform("epsilon_prime"), static_cast<float>(tracer_.epsilonPrime));
+    glUniform1f(labelProgram_.uniform("index_scale"), maxDispersion);
+    glUniform1f(labelProgram_.uniform("capped_step"),
+                static_cast<float>(tracer_.maxStepVoxels * grid_.smallestVoxelEdge()));
+    glUniform1f(labelProgram_.uniform("min_step"), static_cast<float>(tracer_.stepVoxels * grid_.smallestVoxelEdge()));
+    const glm::dvec3 h = grid_.voxelSize();
+    glUniform1f(labelProgram_.uniform("node_edge"), static_cast<float>(std::max({h.x, h.y, h.z}) * std::sqrt(3.0)));
+    glUniform1f(labelProgram_.uniform("optical_depth_tolerance"), static_cast<float>(kOpticalDepthTolerance));
+    dispatchOver(labelProgram_, grid_.resolution);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    gl::checkpoint("step structure stage");
+}
+
+}  // namespace eikon::render

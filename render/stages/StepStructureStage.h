@@ -1,0 +1,40 @@
+// The step-size structure of Sun et al. 2008 (§4.2, §5.3) on the GPU: a
+// min/max pyramid of δn (shaders/octree_minmax.comp), then per voxel the
+// level of the largest octree node around it whose index varies by less than
+// ε (no step cap) or ε′ (step capped), and whose extinction varies by less
+// than kOpticalDepthTolerance across it, in shaders/octree_label.comp.
+// Rebuilt whenever the index or extinction changes.
+#pragma once
+
+#include "bridge/grid/GridSpec.h"
+#include "bridge/scene/Scene.h"
+#include "render/gl/GlObjects.h"
+#include "render/stages/FieldTextures.h"
+
+namespace eikon::render {
+
+// Largest change of optical depth κ·ℓ across a node's diagonal that still
+// lets a photon cross it in one step (1% in transmittance).
+constexpr double kOpticalDepthTolerance = 0.01;
+
+class StepStructureStage {
+public:
+    StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction);
+
+    void run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields);
+    // rg32f per voxel: (octree level, step cap in metres; 1e30 for none).
+    const gl::Texture3D& stepTexture() const { return step_; }
+    int levels() const { return levels_; }
+
+private:
+    GridSpec grid_;
+    TracerDesc tracer_;
+    int levels_ = 1;
+    glm::ivec3 paddedSize_{1};
+    gl::Program minmaxProgram_;
+    gl::Program labelProgram_;
+    gl::Texture3D pyramid_;
+    gl::Texture3D step_;
+};
+
+}  // namespace eikon::render

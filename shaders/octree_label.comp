@@ -1,0 +1,46 @@
+// Per-voxel octree level and step cap (Sun et al. 2008, §4.2 and §5.3): from
+// the coarsest level down, the first node around the voxel whose index range
+// is below ε gives the level with no cap; one whose range is below ε′ gives
+// the level with the finite cap. Voxels that find neither step by Δs_min —
+// where the paper stepped to the voxel's face, up to √3 voxels: in the
+// steepest part of an interface that doubled the caustic's error against
+// uniform half-voxel steps.
+//
+// Unlike the paper, a node must also hold extinction nearly constant: its κ
+// range times its edge must stay below an optical-depth tolerance, because a
+// step attenuates by exp(−κ(start)·Δs). Without this bound a step from clear
+// air jumps over an absorbing slab: a measured Beer–Lambert error of +45% to
+// +550% for κ = 1 to 5 /m, against 0.01% with it.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+layout(binding = 0) uniform sampler3D pyramid;  // (min δn, max δn, min κ, max κ), one mip level per octree level
+layout(rg32f, binding = 0) writeonly uniform image3D step_structure;  // (level, step cap in m)
+
+uniform int levels;
+uniform float epsilon;
+uniform float epsilon_prime;
+uniform float index_scale;  // largest dispersion scale: ranges are of n = n_ref + s·δn
+uniform float capped_step;  // metres
+uniform float min_step;     // metres, Δs_min
+uniform float node_edge;    // metres, level 0
+uniform float optical_depth_tolerance;
+
+void main() {
+    ivec3 cell = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(cell, imageSize(step_structure)))) return;
+    vec2 result = vec2(0.0f, min_step);
+    for (int level = levels - 1; level >= 0; --level) {
+        vec4 range = texelFetch(pyramid, cell >> level, level);
+        if ((range.w - range.z) * node_edge * exp2(float(level)) >= optical_depth_tolerance) continue;
+        float variation = index_scale * (range.y - range.x);
+        if (variation < epsilon) {
+            result = vec2(float(level), 1e30f);
+            break;
+        }
+        if (variation < epsilon_prime) {
+            result = vec2(float(level), capped_step);
+            break;
+        }
+    }
+    imageStore(step_structure, cell, vec4(result, 0.0f, 0.0f));
+}

@@ -1,0 +1,54 @@
+// Min/max pyramid (Sun et al. 2008, §4.2), like a mipmap whose texels hold
+// (min δn, max δn, min κ, max κ) with κ the largest extinction channel.
+// Level 0 takes each voxel's 3×3×3 neighbourhood, the cells trilinear
+// interpolation mixes anywhere inside it; level k > 0 reduces the 2×2×2
+// children of level k − 1.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#ifndef EIKON_HAS_EXTINCTION
+#define EIKON_HAS_EXTINCTION 0
+#endif
+
+layout(binding = 0) uniform sampler3D index_texture;  // r: smoothed δn (level 0 input)
+#if EIKON_HAS_EXTINCTION
+layout(binding = 2) uniform sampler3D extinction_texture;  // rgb: κ (level 0 input)
+#endif
+layout(rgba32f, binding = 0) readonly uniform image3D finer_level;  // level k − 1 (k > 0)
+layout(rgba32f, binding = 1) writeonly uniform image3D this_level;
+
+uniform int level;
+
+vec4 merged(vec4 a, vec4 b) {
+    return vec4(min(a.x, b.x), max(a.y, b.y), min(a.z, b.z), max(a.w, b.w));
+}
+
+void main() {
+    ivec3 node = ivec3(gl_GlobalInvocationID);
+    ivec3 size = imageSize(this_level);
+    if (any(greaterThanEqual(node, size))) return;
+    vec4 range = vec4(1e30f, -1e30f, 1e30f, -1e30f);
+    if (level == 0) {
+        ivec3 cells = textureSize(index_texture, 0);
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    ivec3 cell = clamp(node + ivec3(dx, dy, dz), ivec3(0), cells - 1);
+                    float index = texelFetch(index_texture, cell, 0).r;
+#if EIKON_HAS_EXTINCTION
+                    vec3 kappa3 = texelFetch(extinction_texture, cell, 0).rgb;
+                    float kappa = max(kappa3.r, max(kappa3.g, kappa3.b));
+#else
+                    float kappa = 0.0f;
+#endif
+                    range = merged(range, vec4(index, index, kappa, kappa));
+                }
+    } else {
+        ivec3 finer = imageSize(finer_level);
+        for (int child = 0; child < 8; ++child) {
+            ivec3 c = 2 * node + ivec3(child & 1, (child >> 1) & 1, (child >> 2) & 1);
+            if (any(greaterThanEqual(c, finer))) continue;
+            range = merged(range, imageLoad(finer_level, c));
+        }
+    }
+    imageStore(this_level, node, range);
+}

@@ -1,0 +1,66 @@
+#include "tests/integration/TraceHelpers.h"
+
+#include "render/graph/FrameRenderer.h"
+#include "sim/voxelize/AnalyticVoxelizer.h"
+#include "tests/integration/GlTestContext.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace eikon::test {
+
+Scene emptyScene(glm::dvec3 boundsMin, glm::dvec3 boundsMax, int resolution) {
+    Scene scene;
+    scene.grid.resolution = glm::ivec3(resolution);
+    scene.grid.boundsMin = boundsMin;
+    scene.grid.boundsMax = boundsMax;
+    scene.render.width = 8;
+    scene.render.height = 8;
+    return scene;
+}
+
+ReceiverDesc floorReceiver(double y, double size, int resolution) {
+    ReceiverDesc receiver;
+    receiver.point = glm::dvec3(0.0, y, 0.0);
+    receiver.normal = glm::dvec3(0.0, 1.0, 0.0);
+    receiver.size = size;
+    receiver.resolution = resolution;
+    return receiver;
+}
+
+LightDesc directionalLight(glm::dvec3 direction, double irradiance) {
+    LightDesc light;
+    light.kind = LightDesc::Kind::Directional;
+    light.direction = glm::normalize(direction);
+    light.irradiance = Rgb(irradiance);
+    return light;
+}
+
+TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::PhotonProgramOptions options) {
+    glContext();
+    render::FrameRenderer renderer(scene, fields, options);
+    TraceResult result;
+    result.stats = renderer.render(fields).photons;
+    if (!scene.receivers.empty()) result.map = renderer.receivers().download(0);
+    result.fluence = renderer.photonStage().downloadFluence();
+    result.paths = renderer.photonStage().downloadPaths();
+    EXPECT_LT(result.stats.balanceError(), 1e-3);
+    for (float value : result.map) EXPECT_TRUE(std::isfinite(value)) << "receiver map";
+    for (float value : result.fluence) EXPECT_TRUE(std::isfinite(value)) << "fluence";
+    return result;
+}
+
+TraceResult trace(const Scene& scene, render::PhotonProgramOptions options) {
+    return traceFields(scene, sim::voxelizeScene(scene), options);
+}
+
+double channelMean(const std::vector<float>& map, int channel) {
+    double sum = 0.0;
+    for (std::size_t i = static_cast<std::size_t>(channel); i < map.size(); i += 3) sum += map[i];
+    return sum / static_cast<double>(map.size() / 3);
+}
+
+}  // namespace eikon::test

@@ -1,0 +1,38 @@
+// Small scenes and a one-frame trace for the photon tests.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/scene/Scene.h"
+#include "render/stages/PhotonStage.h"
+
+#include <glm/vec4.hpp>
+
+#include <vector>
+
+namespace eikon::test {
+
+// A grid with no objects, lights or receivers, and a tiny image.
+Scene emptyScene(glm::dvec3 boundsMin, glm::dvec3 boundsMax, int resolution);
+ReceiverDesc floorReceiver(double y, double size, int resolution);
+LightDesc directionalLight(glm::dvec3 direction, double irradiance);
+
+struct TraceResult {
+    render::PhotonStats stats;
+    std::vector<float> map;      // receiver 0, RGB per texel
+    std::vector<float> fluence;  // RGB per cell, when stored
+    std::vector<glm::vec4> paths;
+};
+
+inline const TracerDesc::Integrator kIntegrators[] = {TracerDesc::Integrator::Euler, TracerDesc::Integrator::Leapfrog,
+                                                      TracerDesc::Integrator::Rk4};
+inline const char* const kIntegratorNames[] = {"euler", "leapfrog", "rk4"};
+
+// Traces one frame of `fields`; every scene must balance its energy to 0.1%
+// and write only finite values (checked here, as test expectations).
+TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::PhotonProgramOptions options = {});
+// The same for the scene's own voxelized fields.
+TraceResult trace(const Scene& scene, render::PhotonProgramOptions options = {});
+
+double channelMean(const std::vector<float>& rgb, int channel);
+
+}  // namespace eikon::test
