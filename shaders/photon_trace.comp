@@ -111,6 +111,16 @@ uniform uint max_steps;        // trapped-ray cap
 uniform float power_cutoff;    // stop once every channel is below this fraction of the emitted power
 uniform vec3 power_unit;       // W per fixed-point tally unit, per channel
 
+// Tallies of this work group, flushed to PhotonStats once by its first
+// invocation: a global atomic per work group instead of per photon (64
+// photons of at most 2^24 units each cannot overflow a 32-bit word here).
+shared uint group_power[18];    // [3·tally + channel]
+shared uint group_photons[4];
+shared uint group_steps;
+shared uint group_max_invariant_bits;
+shared uint group_deposits;
+shared float group_invariant_sum;
+
 // Adds to a 64-bit counter held as two words, carrying into the high word.
 void add_wide_power(uint low_word, uint value) {
     uint before = atomicAdd(power_tallies[low_word], value);
@@ -129,7 +139,7 @@ uvec3 power_units(vec3 power) {
 void add_power(int tally, vec3 power) {
     uvec3 units = power_units(power);
     for (int channel = 0; channel < 3; ++channel)
-        if (units[channel] != 0u) add_wide_power(uint(2 * (3 * tally + channel)), units[channel]);
+        if (units[channel] != 0u) atomicAdd(group_power[3 * tally + channel], units[channel]);
 }
 
 void record_vertex(uint photon, uint vertex, vec3 x) {
@@ -235,7 +245,9 @@ vec2 emission_sample(Emitter emitter, uint photon) {
 // smoothstep in cos θ to 0 at the outer cone.
 float spot_profile(Emitter emitter, vec3 direction) {
     if (emitter.spot.w < -1.5f) return 1.0f;
-    return smoothstep(emitter.spot.w, emitter.spot_edge.x, dot(direction, emitter.spot.xyz));
+    float cos_theta = dot(direction, emitter.spot.xyz);
+    if (emitter.spot_edge.x <= emitter.spot.w) return cos_theta >= emitter.spot.w ? 1.0f : 0.0f;  // hard edge
+    return smoothstep(emitter.spot.w, emitter.spot_edge.x, cos_theta);
 }
 
 float next_step(vec3 x, vec3 v) {
@@ -257,10 +269,7 @@ void integrate(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) fie
 #endif
 }
 
-void main() {
-    uint id = gl_GlobalInvocationID.x;
-    if (id >= batch_size) return;
-    uint photon = photon_offset + id;
+void trace_photon(uint photon) {
     Emitter emitter = emitters[emitter_of(photon)];
     vec2 u = emission_sample(emitter, photon);
 
@@ -368,13 +377,37 @@ void main() {
     add_power(TALLY_EMITTED, emitted);
     add_power(TALLY_ABSORBED, absorbed);
     add_power(fate, power);
-    atomicAdd(photon_tallies[fate - TALLY_ESCAPED], 1u);
-    uint steps_before = atomicAdd(step_tallies[0], steps);
-    if (steps_before + steps < steps_before) atomicAdd(step_tallies[1], 1u);
-    atomicMax(step_tallies[2], floatBitsToUint(max_invariant_error));
-    if (deposits > 0u) {
-        uint deposits_before = atomicAdd(deposit_tallies[0], deposits);
-        if (deposits_before + deposits < deposits_before) atomicAdd(deposit_tallies[1], 1u);
+    atomicAdd(group_photons[fate - TALLY_ESCAPED], 1u);
+    atomicAdd(group_steps, steps);
+    atomicMax(group_max_invariant_bits, floatBitsToUint(max_invariant_error));
+    atomicAdd(group_deposits, deposits);
+    atomicAdd(group_invariant_sum, invariant_error_sum);
+}
+
+void flush_group_tallies() {
+    for (int i = 0; i < 18; ++i)
+        if (group_power[i] != 0u) add_wide_power(uint(2 * i), group_power[i]);
+    for (int i = 0; i < 4; ++i) atomicAdd(photon_tallies[i], group_photons[i]);
+    uint steps_before = atomicAdd(step_tallies[0], group_steps);
+    if (steps_before + group_steps < steps_before) atomicAdd(step_tallies[1], 1u);
+    atomicMax(step_tallies[2], group_max_invariant_bits);
+    uint deposits_before = atomicAdd(deposit_tallies[0], group_deposits);
+    if (deposits_before + group_deposits < deposits_before) atomicAdd(deposit_tallies[1], 1u);
+    atomicAdd(invariant_sum, group_invariant_sum);
+}
+
+void main() {
+    if (gl_LocalInvocationIndex == 0u) {
+        for (int i = 0; i < 18; ++i) group_power[i] = 0u;
+        for (int i = 0; i < 4; ++i) group_photons[i] = 0u;
+        group_steps = 0u;
+        group_max_invariant_bits = 0u;
+        group_deposits = 0u;
+        group_invariant_sum = 0.0f;
     }
-    atomicAdd(invariant_sum, invariant_error_sum);
+    barrier();
+    uint id = gl_GlobalInvocationID.x;
+    if (id < batch_size) trace_photon(photon_offset + id);
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) flush_group_tallies();
 }

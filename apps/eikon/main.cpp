@@ -1,6 +1,7 @@
 // eikon: the command-line front end. Composition only: parse the command
 // line, hand over to a command, map failures to exit codes
 // (0 success, 2 bad input, 1 anything else).
+#include "apps/eikon/BenchCommand.h"
 #include "apps/eikon/InfoCommand.h"
 #include "apps/eikon/RunCommand.h"
 #include "bridge/core/Error.h"
@@ -15,6 +16,8 @@ int main(int argc, char** argv) {
     eikon::app::RunOptions runOptions;
     eikon::app::addRunCommand(app, runOptions);
     eikon::app::addInfoCommand(app);
+    eikon::app::BenchOptions benchOptions;
+    eikon::app::addBenchCommand(app, benchOptions);
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& success) {
@@ -25,6 +28,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("run")) return eikon::app::runCommand(runOptions);
+        if (app.got_subcommand("bench")) return eikon::app::benchCommand(benchOptions);
         return eikon::app::infoCommand();
     } catch (const eikon::InputError& error) {
         std::cerr << "eikon: error: " << error.what() << "\n";

@@ -40,6 +40,14 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, PhotonP
     viewMaxSteps_ = defaultMaxSteps(fields.grid, viewStepLength_);
 }
 
+const gl::Texture3D* FrameRenderer::stepTexture() const {
+    return stepStructure_ ? &stepStructure_->stepTexture() : nullptr;
+}
+
+StageReport FrameRenderer::relight(PhotonStats& stats) {
+    return runStage("photons", true, [&] { stats = photons_->run(fields_, stepTexture(), photonSettings_); });
+}
+
 void FrameRenderer::setCamera(const CameraDesc& camera) {
     scene_.camera = camera;
     view_->setCamera(camera);
@@ -58,9 +66,8 @@ FrameResult FrameRenderer::render(const FieldSet& fields) {
     if (stepStructure_)
         result.stages.push_back(runStage("step_structure", indexChanged || extinctionChanged,
                                          [&] { stepStructure_->run(prepare_->smoothedIndex(fields_), fields_); }));
-    const gl::Texture3D* stepTexture = stepStructure_ ? &stepStructure_->stepTexture() : nullptr;
     result.stages.push_back(runStage("photons", fieldsChanged, [&] {
-        last_.photons = photons_->run(fields_, stepTexture, photonSettings_);
+        last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
     }));
     const bool viewNeeded = fieldsChanged || cameraChanged_;
     result.stages.push_back(runStage("view", viewNeeded, [&] {

@@ -41,12 +41,17 @@ public:
 
     FrameResult render(const FieldSet& fields);
     void setCamera(const CameraDesc& camera);
+    // Traces the photons of the last rendered fields again (a relight, as
+    // when a light moves), timed to completion; for benchmarks.
+    StageReport relight(PhotonStats& stats);
 
     const ReceiverMaps& receivers() const { return receivers_; }
     const PhotonStage& photonStage() const { return *photons_; }
     const PhotonSettings& photonSettings() const { return photonSettings_; }
 
 private:
+    const gl::Texture3D* stepTexture() const;  // null for uniform steps
+
     Scene scene_;
     FieldTextures fields_;
     ReceiverMaps receivers_;

@@ -1,0 +1,97 @@
+#include "apps/eikon/BenchCommand.h"
+
+#include "bridge/io/AtomicFile.h"
+#include "bridge/scene/SceneParser.h"
+#include "render/gl/GlContext.h"
+#include "render/graph/FrameRenderer.h"
+#include "sim/voxelize/AnalyticVoxelizer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace eikon::app {
+
+namespace {
+
+struct Measurement {
+    std::string name;
+    double medianMs = 0.0;
+    render::PhotonStats stats;
+};
+
+// Median wall time of `repeats` relights after one full frame (compilation,
+// upload, prepare and step structure are not timed).
+Measurement measure(const std::string& name, const Scene& scene, const FieldSet& fields,
+                    render::PhotonProgramOptions options, int repeats) {
+    render::FrameRenderer renderer(scene, fields, options);
+    renderer.render(fields);
+    Measurement measurement{name, 0.0, {}};
+    std::vector<double> times;
+    for (int i = 0; i < repeats; ++i) times.push_back(renderer.relight(measurement.stats).milliseconds);
+    std::sort(times.begin(), times.end());
+    measurement.medianMs = times[times.size() / 2];
+    return measurement;
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app, BenchOptions& options) {
+    CLI::App* bench = app.add_subcommand("bench", "Measure photon-tracer throughput (steps/s, deposits/s, ms per relight)");
+    bench->add_option("scene", options.scenePath, "Scene file (default: scenes/default.json)");
+    bench->add_option("--resolution", options.resolution, "Grid cells per axis")->check(CLI::Range(4, 512));
+    bench->add_option("--photons", options.photons, "Photons per relight")->check(CLI::Range(1LL, 2147483647LL));
+    bench->add_option("--repeats", options.repeats, "Timed relights; the median is reported")->check(CLI::Range(1, 1000));
+    bench->add_option("--set", options.overrides, "Override a scene value")->type_name("KEY.PATH=VALUE");
+    bench->add_option("--out", options.outFile, "Also write the figures as JSON to this file");
+}
+
+int benchCommand(const BenchOptions& options) {
+    std::vector<std::string> overrides = options.overrides;
+    const std::string r = std::to_string(options.resolution);
+    overrides.push_back("grid.resolution=[" + r + "," + r + "," + r + "]");
+    overrides.push_back("render.photons=" + std::to_string(options.photons));
+    const Scene scene = loadSceneFile(options.scenePath, overrides);
+    Scene storing = scene;
+    storing.tracer.storeFluence = true;
+    const FieldSet fields = sim::voxelizeScene(scene);
+    validateFields(fields, options.scenePath);
+    const auto context = gl::createHeadlessContext();
+
+    const std::vector<Measurement> measurements = {
+        measure("tracer", scene, fields, {}, options.repeats),
+        measure("tracer+fluence", storing, fields, {}, options.repeats),
+        measure("bare march", scene, fields, {.bareMarch = true}, options.repeats),
+    };
+    nlohmann::json summary = {{"scene", options.scenePath},
+                              {"resolution", options.resolution},
+                              {"photons", options.photons},
+                              {"renderer", context->info().renderer},
+                              {"runs", nlohmann::json::array()}};
+    std::printf("%s, %d^3, %lld photons, on %s\n", options.scenePath.c_str(), options.resolution, options.photons,
+                context->info().renderer.c_str());
+    std::printf("%-16s %12s %14s %16s %18s\n", "kernel", "ms/relight", "steps", "M steps/s", "M deposits/s");
+    for (const auto& m : measurements) {
+        const double seconds = m.medianMs / 1000.0;
+        const double stepsPerSecond = static_cast<double>(m.stats.steps) / seconds;
+        const double depositsPerSecond = static_cast<double>(m.stats.voxelDeposits) / seconds;
+        std::printf("%-16s %12.1f %14llu %16.1f %18.1f\n", m.name.c_str(), m.medianMs,
+                    static_cast<unsigned long long>(m.stats.steps), stepsPerSecond / 1e6, depositsPerSecond / 1e6);
+        summary["runs"].push_back({{"kernel", m.name},
+                                   {"ms_per_relight", m.medianMs},
+                                   {"steps", m.stats.steps},
+                                   {"voxel_deposits", m.stats.voxelDeposits},
+                                   {"steps_per_second", stepsPerSecond},
+                                   {"deposits_per_second", depositsPerSecond}});
+    }
+    const double ratio = static_cast<double>(measurements[0].stats.steps) / measurements[0].medianMs /
+                         (static_cast<double>(measurements[2].stats.steps) / measurements[2].medianMs);
+    std::printf("tracer step rate / bare march step rate = %.2f\n", ratio);
+    summary["tracer_over_bare_march_step_rate"] = ratio;
+    if (!options.outFile.empty()) io::writeFileAtomically(options.outFile, summary.dump(2) + "\n");
+    return 0;
+}
+
+}  // namespace eikon::app
