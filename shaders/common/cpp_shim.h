@@ -18,6 +18,7 @@ using uint = glm::uint;
 // GLSL built-ins GLM spells differently.
 inline uint floatBitsToUint(float value) { return glm::floatBitsToUint(value); }
 inline float uintBitsToFloat(uint value) { return glm::uintBitsToFloat(value); }
+inline vec3 xyz_of(vec4 v) { return vec3(v); }
 
 #include "shaders/common/random.glsl"
 #include "shaders/common/ray_step.glsl"

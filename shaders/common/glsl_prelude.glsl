@@ -4,5 +4,7 @@
 // Rules for shared files: float literals carry an `f`, parameters that are
 // written use INOUT(T), no GLSL-only built-ins beyond what GLM provides;
 // `precise` (no reassociation) is honoured by GLSL and is a no-op in C++,
-// which does not reassociate without -ffast-math.
+// which does not reassociate without -ffast-math. GLM has no member
+// swizzles: shared files write xyz_of(v) for v.xyz.
 #define INOUT(T) inout T
+vec3 xyz_of(vec4 v) { return v.xyz; }

@@ -9,7 +9,7 @@
 
 // Forward Euler (Sun et al. 2008, Eqs. 4–5): first order, one sample per step.
 void integrate_euler(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field, float ds) {
-    eikonal_euler_step(x, x_lost, v, field.w, field.xyz, ds);
+    eikonal_euler_step(x, x_lost, v, field.w, xyz_of(field), ds);
     field = field_at(x);
 }
 
@@ -20,29 +20,29 @@ void integrate_euler(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec
 // cost of one field sample per step.
 void integrate_leapfrog(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field, float ds) {
     float half_dsigma = 0.5f * ds / field.w;
-    v = v + (half_dsigma * field.w) * field.xyz;
+    v = v + (half_dsigma * field.w) * xyz_of(field);
     compensated_add(x, x_lost, (2.0f * half_dsigma) * v);
     field = field_at(x);
-    v = v + (half_dsigma * field.w) * field.xyz;
+    v = v + (half_dsigma * field.w) * xyz_of(field);
 }
 
 // Classical fourth-order Runge–Kutta on (x, v) with dx/ds = v/n, dv/ds = ∇n:
 // four field samples per step.
 void integrate_rk4(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field, float ds) {
     vec3 k1x = v / field.w;
-    vec3 k1v = field.xyz;
+    vec3 k1v = xyz_of(field);
     vec4 f2 = field_at(x + (0.5f * ds) * k1x);
     vec3 v2 = v + (0.5f * ds) * k1v;
     vec3 k2x = v2 / f2.w;
-    vec3 k2v = f2.xyz;
+    vec3 k2v = xyz_of(f2);
     vec4 f3 = field_at(x + (0.5f * ds) * k2x);
     vec3 v3 = v + (0.5f * ds) * k2v;
     vec3 k3x = v3 / f3.w;
-    vec3 k3v = f3.xyz;
+    vec3 k3v = xyz_of(f3);
     vec4 f4 = field_at(x + ds * k3x);
     vec3 v4 = v + ds * k3v;
     vec3 k4x = v4 / f4.w;
-    vec3 k4v = f4.xyz;
+    vec3 k4v = xyz_of(f4);
     compensated_add(x, x_lost, (ds / 6.0f) * (k1x + 2.0f * k2x + 2.0f * k3x + k4x));
     v = v + (ds / 6.0f) * (k1v + 2.0f * k2v + 2.0f * k3v + k4v);
     field = field_at(x);
