@@ -90,8 +90,11 @@ const int TALLY_ESCAPED = 2;
 const int TALLY_RECEIVED = 3;
 const int TALLY_CUT_OFF = 4;
 const int TALLY_BLOCKED = 5;
+const int TALLY_REFLECTED = 6;  // sent back out by bouncing receivers: a source
+const int TALLY_COUNT = 7;
+const uint MAX_BOUNCES = 16u;
 layout(std430, binding = 6) buffer PhotonStats {
-    uint power_tallies[36];   // [2·(3·tally + channel) + word]
+    uint power_tallies[42];   // [2·(3·tally + channel) + word]
     uint photon_tallies[4];   // escaped, received, cut off, blocked
     uint step_tallies[4];     // low word, high word, max invariant error bits
     uint deposit_tallies[4];  // low word, high word
@@ -114,7 +117,7 @@ uniform vec3 power_unit;       // W per fixed-point tally unit, per channel
 // Tallies of this work group, flushed to PhotonStats once by its first
 // invocation: a global atomic per work group instead of per photon (64
 // photons of at most 2^24 units each cannot overflow a 32-bit word here).
-shared uint group_power[18];    // [3·tally + channel]
+shared uint group_power[3 * TALLY_COUNT];  // [3·tally + channel]
 shared uint group_photons[4];
 shared uint group_steps;
 shared uint group_max_invariant_bits;
@@ -250,6 +253,37 @@ float spot_profile(Emitter emitter, vec3 direction) {
     return smoothstep(emitter.spot.w, emitter.spot_edge.x, cos_theta);
 }
 
+// A photon meets a receiver at x: the lit side records it and, if the
+// receiver bounces, sends power × albedo back out in a cosine-distributed
+// direction (returns true: the photon goes on); otherwise it stops there
+// as received, or as blocked on the back.
+bool land_on_receiver(ReceiverHit hit, uint photon, INOUT(uint) bounces, INOUT(vec3) x, INOUT(vec3) x_lost,
+                      INOUT(vec3) v, INOUT(vec4) field, INOUT(vec3) power, INOUT(vec3) reflected, INOUT(int) fate) {
+    if (!hit.lit_side) {
+        fate = TALLY_BLOCKED;
+        return false;
+    }
+    deposit_on_receiver(hit, power);
+    Receiver receiver = receivers[hit.receiver];
+    if (receiver.map.z == 0u || bounces >= MAX_BOUNCES) {
+        fate = TALLY_RECEIVED;
+        return false;
+    }
+    // The arriving power is received; what the albedo sends back is a new source.
+    add_power(TALLY_RECEIVED, power);
+    power *= receiver.albedo.rgb;
+    reflected += power;
+    vec3 direction = sample_cosine_hemisphere(receiver.normal.xyz, receiver.axis_u.xyz, receiver.axis_v.xyz,
+                                              random_uniform(seed, photon, 2u + 2u * bounces),
+                                              random_uniform(seed, photon, 3u + 2u * bounces));
+    ++bounces;
+    x = x + 1e-4f * grid.voxel_size.x * receiver.normal.xyz;
+    x_lost = vec3(0.0f);
+    field = grid_contains(x) ? field_at(x) : vec4(0.0f, 0.0f, 0.0f, reference_index());
+    v = field.w * direction;
+    return true;
+}
+
 float next_step(vec3 x, vec3 v) {
 #if EIKON_OCTREE_STEPS
     vec2 node = texelFetch(step_structure, grid_cell(x), 0).rg;
@@ -297,6 +331,8 @@ void trace_photon(uint photon) {
 
     vec3 power = emitted;
     vec3 absorbed = vec3(0.0f);
+    vec3 reflected = vec3(0.0f);
+    uint bounces = 0u;
     float cutoff = power_cutoff * max(power.r, max(power.g, power.b));
     vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
     vec3 v = reference_index() * direction;
@@ -316,8 +352,7 @@ void trace_photon(uint photon) {
             if (flight.hit.receiver >= 0) {
                 x = x + flight.distance * d;
                 record_vertex(photon, vertex++, x);
-                fate = flight.hit.lit_side ? TALLY_RECEIVED : TALLY_BLOCKED;
-                if (flight.hit.lit_side) deposit_on_receiver(flight.hit, power);
+                if (land_on_receiver(flight.hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
                 break;
             }
 #endif
@@ -361,8 +396,7 @@ void trace_photon(uint photon) {
         if (hit.receiver >= 0) {
             x = mix(start, x, hit.fraction);
             record_vertex(photon, vertex++, x);
-            fate = hit.lit_side ? TALLY_RECEIVED : TALLY_BLOCKED;
-            if (hit.lit_side) deposit_on_receiver(hit, power);
+            if (land_on_receiver(hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
             break;
         }
 #endif
@@ -375,6 +409,7 @@ void trace_photon(uint photon) {
     }
 
     add_power(TALLY_EMITTED, emitted);
+    add_power(TALLY_REFLECTED, reflected);
     add_power(TALLY_ABSORBED, absorbed);
     add_power(fate, power);
     atomicAdd(group_photons[fate - TALLY_ESCAPED], 1u);
@@ -385,7 +420,7 @@ void trace_photon(uint photon) {
 }
 
 void flush_group_tallies() {
-    for (int i = 0; i < 18; ++i)
+    for (int i = 0; i < 3 * TALLY_COUNT; ++i)
         if (group_power[i] != 0u) add_wide_power(uint(2 * i), group_power[i]);
     for (int i = 0; i < 4; ++i) atomicAdd(photon_tallies[i], group_photons[i]);
     uint steps_before = atomicAdd(step_tallies[0], group_steps);
@@ -398,7 +433,7 @@ void flush_group_tallies() {
 
 void main() {
     if (gl_LocalInvocationIndex == 0u) {
-        for (int i = 0; i < 18; ++i) group_power[i] = 0u;
+        for (int i = 0; i < 3 * TALLY_COUNT; ++i) group_power[i] = 0u;
         for (int i = 0; i < 4; ++i) group_photons[i] = 0u;
         group_steps = 0u;
         group_max_invariant_bits = 0u;

@@ -73,7 +73,7 @@ struct GpuReceiver {
     glm::vec4 axisU;    // unit tangent; w unused
     glm::vec4 axisV;    // unit tangent; w unused
     glm::vec4 albedo;   // rgb in [0,1]; w unused
-    glm::uvec4 map;     // x: first texel in ReceiverMaps, y: texels per edge
+    glm::uvec4 map;     // x: first texel in ReceiverMaps, y: texels per edge, z: 1 if photons bounce
 };
 static_assert(sizeof(GpuReceiver) == 96);
 static_assert(offsetof(GpuReceiver, map) == 80);
@@ -86,7 +86,8 @@ static_assert(offsetof(GpuReceiver, map) == 80);
 // units of the largest per-photon power / 2^24 per channel: float atomics
 // adding a million equal values drift by a percent, these stay exact to the
 // per-photon rounding and are independent of summation order.
-enum PowerTally : unsigned { kEmitted = 0, kAbsorbed, kEscaped, kReceived, kCutOff, kBlocked, kTallyCount };
+// kReflected is power receivers send back out (bounce): a source, like kEmitted.
+enum PowerTally : unsigned { kEmitted = 0, kAbsorbed, kEscaped, kReceived, kCutOff, kBlocked, kReflected, kTallyCount };
 constexpr double kPowerUnitsPerPhoton = 16777216.0;  // 2^24
 
 struct GpuPhotonStats {
@@ -96,11 +97,14 @@ struct GpuPhotonStats {
     glm::uvec4 deposits;  // x: low 32 bits of the voxel deposits, y: high bits
     glm::vec4 invariant;  // x: sum over steps of the relative invariant error (float atomics; for the mean only)
 };
-static_assert(sizeof(GpuPhotonStats) == 208);
-static_assert(offsetof(GpuPhotonStats, photons) == 144);
-static_assert(offsetof(GpuPhotonStats, steps) == 160);
-static_assert(offsetof(GpuPhotonStats, deposits) == 176);
-static_assert(offsetof(GpuPhotonStats, invariant) == 192);
+// GLSL declares every member as a scalar array (uint/float), so std430 packs
+// them with 4-byte alignment, as GLM's unaligned vectors do here.
+static_assert(alignof(glm::uvec4) == 4);
+static_assert(sizeof(GpuPhotonStats) == 232);
+static_assert(offsetof(GpuPhotonStats, photons) == 168);
+static_assert(offsetof(GpuPhotonStats, steps) == 184);
+static_assert(offsetof(GpuPhotonStats, deposits) == 200);
+static_assert(offsetof(GpuPhotonStats, invariant) == 216);
 
 
 // uniform CameraBlock (std140): a pinhole camera.

@@ -68,6 +68,7 @@ struct ReceiverDesc {
     Rgb albedo{0.8};             // each channel in [0, 1]
     double size = 2.0;           // metres, edge of the recorded square, > 0
     int resolution = 256;        // texels per edge, >= 1
+    bool bounce = false;         // reflect photons diffusely (power × albedo) instead of stopping them
 };
 
 struct CameraDesc {

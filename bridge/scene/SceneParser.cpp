@@ -179,7 +179,7 @@ LightDesc readLight(const JsonReader& node) {
 ReceiverDesc readReceiver(const JsonReader& node) {
     ReceiverDesc receiver;
     node.member("type").oneOf({"plane"});
-    const auto fields = node.object({"type", "point", "normal", "albedo", "size", "resolution"});
+    const auto fields = node.object({"type", "point", "normal", "albedo", "size", "resolution", "bounce"});
     receiver.point = fields.member("point").vec3();
     receiver.normal = readDirection(fields.member("normal"));
     if (auto albedo = fields.optional("albedo")) receiver.albedo = albedo->rgb(NumberRange::closed(0.0, 1.0));
@@ -187,6 +187,7 @@ ReceiverDesc readReceiver(const JsonReader& node) {
     if (auto resolution = fields.optional("resolution")) {
         receiver.resolution = static_cast<int>(resolution->integer(1, kMaxReceiverResolution));
     }
+    if (auto bounce = fields.optional("bounce")) receiver.bounce = bounce->boolean();
     return receiver;
 }
 

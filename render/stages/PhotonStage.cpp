@@ -40,10 +40,11 @@ int integratorNumber(TracerDesc::Integrator integrator) {
 }  // namespace
 
 double PhotonStats::balanceError() const {
-    const Rgb accounted = absorbed + escaped + received + cutOff + blocked;
+    const Rgb sources = emitted + reflected;
+    const Rgb sinks = absorbed + escaped + received + cutOff + blocked;
     double worst = 0.0;
     for (int c = 0; c < 3; ++c)
-        if (emitted[c] > 0.0) worst = std::max(worst, std::abs(emitted[c] - accounted[c]) / emitted[c]);
+        if (sources[c] > 0.0) worst = std::max(worst, std::abs(sources[c] - sinks[c]) / sources[c]);
     return worst;
 }
 
@@ -151,6 +152,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     stats.received = tallyOf(gpu, layout::kReceived, unit);
     stats.cutOff = tallyOf(gpu, layout::kCutOff, unit);
     stats.blocked = tallyOf(gpu, layout::kBlocked, unit);
+    stats.reflected = tallyOf(gpu, layout::kReflected, unit);
     stats.photonsEscaped = gpu.photons.x;
     stats.photonsReceived = gpu.photons.y;
     stats.photonsCutOff = gpu.photons.z;

@@ -36,13 +36,15 @@ struct PhotonProgramOptions {
 struct PhotonStats {
     long long photons = 0;
     Rgb emitted{0.0}, absorbed{0.0}, escaped{0.0}, received{0.0}, cutOff{0.0}, blocked{0.0};
+    Rgb reflected{0.0};  // sent back out by bouncing receivers (a source, like emitted)
     std::uint64_t photonsEscaped = 0, photonsReceived = 0, photonsCutOff = 0, photonsBlocked = 0;
     std::uint64_t steps = 0;
     std::uint64_t voxelDeposits = 0;
     double maxInvariantError = 0.0;   // max over photons and steps of | |v| − n | / n
     double meanInvariantError = 0.0;  // mean over steps
 
-    // |emitted − (absorbed + escaped + received + cutOff + blocked)| / emitted, worst channel.
+    // |emitted + reflected − (absorbed + escaped + received + cutOff + blocked)| / (emitted + reflected),
+    // worst channel.
     double balanceError() const;
 };
 

@@ -25,7 +25,7 @@ std::vector<layout::GpuReceiver> buildReceivers(const std::vector<ReceiverDesc>&
         receiver.axisU = glm::vec4(glm::vec3(axisU), 0.0f);
         receiver.axisV = glm::vec4(glm::vec3(axisV), 0.0f);
         receiver.albedo = glm::vec4(glm::vec3(desc.albedo), 0.0f);
-        receiver.map = glm::uvec4(firstTexel, static_cast<unsigned>(desc.resolution), 0u, 0u);
+        receiver.map = glm::uvec4(firstTexel, static_cast<unsigned>(desc.resolution), desc.bounce ? 1u : 0u, 0u);
         firstTexel += static_cast<unsigned>(desc.resolution * desc.resolution);
         result.push_back(receiver);
     }

@@ -6,7 +6,7 @@ struct Receiver {
     vec4 axis_u;
     vec4 axis_v;
     vec4 albedo;
-    uvec4 map;     // x: first texel, y: texels per edge
+    uvec4 map;     // x: first texel, y: texels per edge, z: 1 if photons bounce
 };
 
 layout(std430, binding = 3) readonly buffer Receivers { Receiver receivers[]; };

@@ -20,3 +20,11 @@ vec2 sample_disk_concentric(float u1, float u2) {
     if (abs(a) > abs(b)) return a * vec2(cos(quarter_pi * b / a), sin(quarter_pi * b / a));
     return b * vec2(cos(2.0f * quarter_pi - quarter_pi * a / b), sin(2.0f * quarter_pi - quarter_pi * a / b));
 }
+
+// A direction about the unit normal with pdf cos θ / π (Lambertian
+// reflection), by projecting a uniform disk sample up onto the hemisphere.
+vec3 sample_cosine_hemisphere(vec3 normal, vec3 tangent, vec3 bitangent, float u1, float u2) {
+    vec2 disk = sample_disk_concentric(u1, u2);
+    float up = sqrt(max(0.0f, 1.0f - dot(disk, disk)));
+    return disk.x * tangent + disk.y * bitangent + up * normal;
+}

@@ -230,5 +230,44 @@ TEST(TracerAccuracy, DispersionSeparatesColours) {
     EXPECT_NEAR(result.stats.emitted.r / result.stats.emitted.b, 1.0, 0.01) << "each channel keeps its power";
 }
 
+
+// View factor from a small patch to a parallel a × b rectangle with one
+// corner straight below it at distance c (Howell's catalogue, B-3).
+double cornerViewFactor(double a, double b, double c) {
+    const double x = a / c, y = b / c;
+    return (x / std::sqrt(1 + x * x) * std::atan(y / std::sqrt(1 + x * x)) +
+            y / std::sqrt(1 + y * y) * std::atan(x / std::sqrt(1 + y * y))) /
+           (2.0 * std::numbers::pi);
+}
+
+// A bouncing floor of albedo ρ under a vertical beam E0 is a Lambertian
+// emitter of radiance ρE0/π; a small downward-facing receiver at height h
+// above its centre then sees E = ρ·E0·(F_floor − F_shadow), with F the view
+// factors of the floor square and of the receiver's own shadow (within 3%).
+TEST(TracerAccuracy, BouncingFloorLightsACeilingByItsViewFactor) {
+    Scene scene = emptyScene(glm::dvec3(-1.0, -0.1, -1.0), glm::dvec3(1.0, 0.6, 1.0), 8);
+    scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 2.0));
+    ReceiverDesc ceiling = floorReceiver(0.5, 0.1, 4);
+    ceiling.normal = glm::dvec3(0.0, -1.0, 0.0);
+    scene.receivers.push_back(ceiling);
+    ReceiverDesc floor = floorReceiver(0.0, 2.0, 16);
+    floor.albedo = Rgb(0.5, 0.7, 0.9);
+    floor.bounce = true;
+    scene.receivers.push_back(floor);
+    scene.render.photons = 1 << 22;
+    const TraceResult result = trace(scene);
+
+    const double floorFactor = 4.0 * cornerViewFactor(1.0, 1.0, 0.5);
+    const double shadowFactor = 4.0 * cornerViewFactor(0.05, 0.05, 0.5);
+    for (int c = 0; c < 3; ++c) {
+        const double expected = floor.albedo[c] * 2.0 * (floorFactor - shadowFactor);
+        const double measured = channelMean(result.map, c);
+        reportFigure(("bounce_ceiling_over_view_factor_channel_" + std::to_string(c)).c_str(), measured / expected);
+        EXPECT_NEAR(measured / expected, 1.0, 0.03) << "channel " << c;
+    }
+    EXPECT_GT(result.stats.reflected.g, 0.0);
+    EXPECT_LT(result.stats.balanceError(), 1e-6);
+}
+
 }  // namespace
 }  // namespace eikon

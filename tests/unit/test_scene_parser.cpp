@@ -473,6 +473,15 @@ TEST(SceneParserErrors, PowerCutoffOfOne) {
     expectErrorAt(scene, "tracer.power_cutoff", "a number in [0, 1), found 1");
 }
 
+TEST(SceneParser, ReceiverBounceIsReadAndDefaultsToStopping) {
+    json scene = validScene();
+    EXPECT_FALSE(parseScene(scene, "test.json").receivers[0].bounce);
+    scene["receivers"][0]["bounce"] = true;
+    EXPECT_TRUE(parseScene(scene, "test.json").receivers[0].bounce);
+    scene["receivers"][0]["bounce"] = "yes";
+    expectErrorAt(scene, "receivers[0].bounce", "expected true or false");
+}
+
 TEST(SceneParserErrors, BooleanGivenAsNumberOrString) {
     json scene = sceneWithNewKeys();
     scene["tracer"]["renormalize"] = 1;
