@@ -297,7 +297,7 @@ void registerKernel(const char* name, SparseSamplingBench& bench, Kernel kernel)
         ->ArgNames({"N", "blobs"})
         ->ArgsProduct({{128, 256}, {8, 64}})
         ->UseManualTime()
-        ->MinTime(2.0)
+        ->MinTime(6.0)
         ->Unit(benchmark::kMillisecond);
 }
 
