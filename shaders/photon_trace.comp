@@ -12,6 +12,7 @@
 //   EIKON_RENORMALIZE      1: |v| = n(x) after every step
 //   EIKON_DISPERSION       1: each photon carries one RGB channel with its own index scale
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
+//   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].bounce)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
 //   EIKON_RECORD_PATHS     vertices recorded for each of the first EIKON_RECORDED_PHOTONS photons
 layout(local_size_x = 64) in;
@@ -40,6 +41,9 @@ layout(local_size_x = 64) in;
 #endif
 #ifndef EIKON_STORE_FLUENCE
 #define EIKON_STORE_FLUENCE 0
+#endif
+#ifndef EIKON_BOUNCE
+#define EIKON_BOUNCE 0
 #endif
 #ifndef EIKON_BARE_MARCH
 #define EIKON_BARE_MARCH 0
@@ -264,6 +268,7 @@ bool land_on_receiver(ReceiverHit hit, uint photon, INOUT(uint) bounces, INOUT(v
         return false;
     }
     deposit_on_receiver(hit, power);
+#if EIKON_BOUNCE
     Receiver receiver = receivers[hit.receiver];
     if (receiver.map.z == 0u || bounces >= MAX_BOUNCES) {
         fate = TALLY_RECEIVED;
@@ -282,6 +287,10 @@ bool land_on_receiver(ReceiverHit hit, uint photon, INOUT(uint) bounces, INOUT(v
     field = grid_contains(x) ? field_at(x) : vec4(0.0f, 0.0f, 0.0f, reference_index());
     v = field.w * direction;
     return true;
+#else
+    fate = TALLY_RECEIVED;
+    return false;
+#endif
 }
 
 float next_step(vec3 x, vec3 v) {

@@ -67,6 +67,8 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
         {"EIKON_DISPERSION", dispersive(tracer.dispersion) ? "1" : "0"},
         {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
+        {"EIKON_BOUNCE", std::any_of(scene.receivers.begin(), scene.receivers.end(),
+                                     [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
         {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)}};
