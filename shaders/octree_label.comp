@@ -14,7 +14,9 @@
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(binding = 0) uniform sampler3D pyramid;  // (min δn, max δn, min κ, max κ), one mip level per octree level
-layout(rg32f, binding = 0) writeonly uniform image3D step_structure;  // (level, step cap in m)
+// (level, step cap in m, 1 if the node holds no extinction — hence no
+// scattering, so a camera ray may cross it in one step — 0)
+layout(rgba32f, binding = 0) writeonly uniform image3D step_structure;
 
 uniform int levels;
 uniform float epsilon;
@@ -28,19 +30,20 @@ uniform float optical_depth_tolerance;
 void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(cell, imageSize(step_structure)))) return;
-    vec2 result = vec2(0.0f, min_step);
+    vec3 result = vec3(0.0f, min_step, 0.0f);
     for (int level = levels - 1; level >= 0; --level) {
         vec4 range = texelFetch(pyramid, cell >> level, level);
         if ((range.w - range.z) * node_edge * exp2(float(level)) >= optical_depth_tolerance) continue;
         float variation = index_scale * (range.y - range.x);
+        float empty = range.w <= 0.0f ? 1.0f : 0.0f;
         if (variation < epsilon) {
-            result = vec2(float(level), 1e30f);
+            result = vec3(float(level), 1e30f, empty);
             break;
         }
         if (variation < epsilon_prime) {
-            result = vec2(float(level), capped_step);
+            result = vec3(float(level), capped_step, empty);
             break;
         }
     }
-    imageStore(step_structure, cell, vec4(result, 0.0f, 0.0f));
+    imageStore(step_structure, cell, vec4(result, 0.0f));
 }

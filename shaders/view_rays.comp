@@ -1,41 +1,104 @@
 // Viewing pass (Sun et al. 2008, §4.5; image formation of Ihrke et al. 2007,
-// §3): one camera ray per pixel, bent by the same ray equation as photons
-// inside the field grid, straight outside it. Along the way it gathers
-// in-scattered light σs·φ·p with an isotropic phase function (p = 1/4π)
-// under the Beer–Lambert transmittance; a receiver it meets shows
-// albedo/π × its photon irradiance; a ray that escapes sees the background.
+// §3 and §5.3): one camera ray per pixel, bent by the same ray equation as
+// photons inside the field grid, straight outside it. Inside media it steps
+// a fixed `step_length` (one voxel by default: no voxel is missed and
+// neighbouring pixels agree); through nodes of the step structure that are
+// uniform in index and empty of extinction it jumps to the node's face.
+// Along the way it gathers in-scattered light σs·φ·p(θ) — Henyey–Greenstein
+// against the stored mean photon direction — under the Beer–Lambert
+// transmittance, and at interfaces the environment reflected about ∇n/|∇n|
+// weighted by the Fresnel term (total internal reflection is left to the ray
+// equation). A receiver it meets shows albedo/π × its photon irradiance; a
+// ray that escapes sees the environment.
+//
+// Program options: EIKON_HAS_EXTINCTION, EIKON_HAS_SCATTERING,
+// EIKON_HAS_ANISOTROPY, EIKON_STEP_STRUCTURE (1: large steps through empty
+// nodes), EIKON_FRESNEL, EIKON_ENVIRONMENT (layout::EnvironmentKind),
+// EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/grid_sampling.glsl"
 #include "common/ray_step.glsl"
 #include "common/attenuation.glsl"
 #include "common/phase.glsl"
+#include "common/fresnel.glsl"
+#include "common/step_size.glsl"
 #include "common/receiver.glsl"
 #include "common/receiver_blocks.glsl"
 #include "common/straight_flight.glsl"
+
+#ifndef EIKON_STEP_STRUCTURE
+#define EIKON_STEP_STRUCTURE 0
+#endif
+#ifndef EIKON_FRESNEL
+#define EIKON_FRESNEL 1
+#endif
+#ifndef EIKON_HAS_ANISOTROPY
+#define EIKON_HAS_ANISOTROPY 0
+#endif
+#ifndef EIKON_RECORD_EXIT
+#define EIKON_RECORD_EXIT 0
+#endif
 
 layout(std140, binding = 1) uniform CameraBlock {
     vec4 position;    // w: tan(fov / 2)
     vec4 forward;     // w: aspect
     vec4 right;
     vec4 up;
-    vec4 background;  // rgb radiance
-    uvec4 image;      // width, height
+    uvec4 image;      // width, height, environment kind
+    vec4 radiance;    // uniform: rgb; hdr: intensity, rotation
+    vec4 zenith;
+    vec4 horizon;
+    vec4 ground_a;
+    vec4 ground_b;
+    vec4 ground;      // height, checker size
 } camera;
+
+#include "common/environment.glsl"
 
 #if EIKON_HAS_SCATTERING
 layout(std430, binding = 5) readonly buffer Fluence { float fluence[]; };
+layout(std430, binding = 12) readonly buffer FluenceDirection { float fluence_direction[]; };
+#endif
+#if EIKON_HAS_ANISOTROPY
+layout(binding = 6) uniform sampler3D anisotropy_texture;
+#endif
+#if EIKON_STEP_STRUCTURE
+layout(binding = 4) uniform sampler3D step_structure;
 #endif
 layout(std430, binding = 7) writeonly buffer HdrImage { vec4 hdr_radiance[]; };
+#if EIKON_RECORD_EXIT
+layout(std430, binding = 15) writeonly buffer ViewExit { vec4 view_exit[]; };  // xyz direction; w: 1 escaped, 2 receiver, 0 cut
+#endif
 
 uniform float step_length;
 uniform uint max_steps;
+uniform float interface_half_width;  // m: beyond the smoothing kernel, where n is the bulk value
 
-vec3 in_scattered_radiance(vec3 x) {
+// σs·φ·p toward the camera (d: the ray's direction of travel). The radiance
+// stored per voxel is its fluence φ and the power-weighted mean direction
+// m of the photons through it (|m| ≤ 1); the phase function mixes
+// isotropic and Henyey–Greenstein scattering about m by |m| (Sun et al.
+// 2008, §4.4: the mean direction stands for the distribution).
+vec3 in_scattered_radiance(vec3 x, vec3 d) {
 #if EIKON_HAS_SCATTERING
     uint index = 3u * uint(grid_linear_index(grid_cell(x)));
     vec3 phi = vec3(fluence[index], fluence[index + 1u], fluence[index + 2u]);
-    return sample_scattering(x) * phi * henyey_greenstein(0.0f, 0.0f);
+    float total = phi.r + phi.g + phi.b;
+    vec3 direction_sum = vec3(fluence_direction[index], fluence_direction[index + 1u], fluence_direction[index + 2u]);
+    float isotropic = 1.0f / (4.0f * 3.14159265358979f);
+    float phase = isotropic;
+    float coherence = total > 0.0f ? min(length(direction_sum) / total, 1.0f) : 0.0f;
+    if (coherence > 0.0f) {
+#if EIKON_HAS_ANISOTROPY
+        float g = textureLod(anisotropy_texture, grid_uvw(x), 0.0f).r;
+#else
+        float g = 0.0f;
+#endif
+        float cos_theta = dot(normalize(direction_sum), -d);
+        phase = mix(isotropic, henyey_greenstein(cos_theta, g), coherence);
+    }
+    return sample_scattering(x) * phi * phase;
 #else
     return vec3(0.0f);
 #endif
@@ -46,6 +109,39 @@ vec3 receiver_radiance(ReceiverHit hit) {
     return receivers[hit.receiver].albedo.rgb / 3.14159265358979f * receiver_irradiance_at(hit.receiver, hit.map_uv);
 }
 
+float view_step(vec3 x, vec3 d) {
+#if EIKON_STEP_STRUCTURE
+    vec4 node = texelFetch(step_structure, grid_cell(x), 0);
+    if (node.z > 0.5f && node.x > 0.0f)
+        return octree_step(x, d, grid.bounds_min.xyz, grid.voxel_size.xyz, node.x, step_length, node.y);
+#endif
+    return step_length;
+}
+
+// The share of an interface's reflection a step takes: a graded interface
+// from n_lo to n_hi (sampled past the smoothing kernel on either side along
+// ∇n) reflects R(θ, n_from, n_to) once in all; each step adds R times the
+// fraction of the index jump it crosses. No term under total internal
+// reflection: the ray equation turns the ray back itself.
+float fresnel_share(vec3 start, vec3 end, vec3 d, float n_start, vec3 gradient, INOUT(vec3) normal) {
+#if EIKON_FRESNEL
+    float strength = length(gradient);
+    if (strength * grid.voxel_size.x < 1e-4f) return 0.0f;
+    normal = gradient / strength;
+    float n_lo = reference_index() + sample_gradient_and_delta(start - interface_half_width * normal).w;
+    float n_hi = reference_index() + sample_gradient_and_delta(start + interface_half_width * normal).w;
+    float jump = n_hi - n_lo;
+    if (jump < 1e-3f) return 0.0f;
+    float cos_i = dot(d, normal);
+    float reflectance = cos_i > 0.0f ? fresnel_reflectance(cos_i, n_lo, n_hi) : fresnel_reflectance(-cos_i, n_hi, n_lo);
+    if (reflectance >= 1.0f) return 0.0f;
+    float n_end = reference_index() + sample_gradient_and_delta(end).w;
+    return reflectance * clamp(abs(n_end - n_start) / jump, 0.0f, 1.0f);
+#else
+    return 0.0f;
+#endif
+}
+
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, camera.image.xy))) return;
@@ -54,45 +150,61 @@ void main() {
                                ndc.y * camera.position.w * camera.up.xyz);
     vec3 x = camera.position.xyz;
     vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
-    vec3 v = reference_index() * direction;
+    vec3 v = (reference_index() + (grid_contains(x) ? sample_gradient_and_delta(x).w : 0.0f)) * direction;
     vec3 radiance = vec3(0.0f);
-    vec3 transmittance = vec3(1.0f);
+    vec3 throughput = vec3(1.0f);
     uint steps = 0u;
-    bool done = false;
+    float exit_kind = 0.0f;
 
-    while (!done) {
+    for (;;) {
         if (!grid_contains(x)) {
             vec3 d = normalize(v);
             StraightFlight flight = fly_straight(x, d);
             if (flight.hit.receiver >= 0) {
-                radiance += transmittance * receiver_radiance(flight.hit);
-                done = true;
-            } else if (!flight.enters_grid) {
-                radiance += transmittance * camera.background.rgb;
-                done = true;
-            } else {
-                x = grid_entry_point(x, d, flight);
-                x_lost = vec3(0.0f);
-                if (grid_contains(x)) v = (reference_index() + sample_gradient_and_delta(x).w) * d;
+                radiance += throughput * receiver_radiance(flight.hit);
+                exit_kind = 2.0f;
+                break;
             }
+            if (!flight.enters_grid) {
+                radiance += throughput * environment_radiance(x, d);
+                exit_kind = 1.0f;
+                break;
+            }
+            x = grid_entry_point(x, d, flight);
+            x_lost = vec3(0.0f);
+            if (grid_contains(x)) v = (reference_index() + sample_gradient_and_delta(x).w) * d;
             continue;
         }
         if (steps >= max_steps) break;
         vec4 field = sample_gradient_and_delta(x);
+        float n_start = reference_index() + field.w;
+        vec3 d = normalize(v);
+        float ds = view_step(x, d);
         vec3 start = x;
-        eikonal_euler_step(x, x_lost, v, reference_index() + field.w, field.xyz, step_length);
+        eikonal_euler_step(x, x_lost, v, n_start, field.xyz, ds);
         ++steps;
         ReceiverHit hit = first_receiver_crossing(start, x);
-        float travelled = hit.receiver >= 0 ? hit.fraction * step_length : step_length;
+        float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
         vec3 kappa = sample_extinction(start);
-        radiance += transmittance * in_scattered_radiance(start) * attenuated_track_length(kappa, travelled);
-        transmittance *= beer_lambert_transmittance(kappa, travelled);
-        if (hit.receiver >= 0) {
-            radiance += transmittance * receiver_radiance(hit);
-            done = true;
-        } else if (!grid_contains(x)) {
-            v = reference_index() * normalize(v);
+        radiance += throughput * in_scattered_radiance(start, d) * attenuated_track_length(kappa, travelled);
+        throughput *= beer_lambert_transmittance(kappa, travelled);
+        vec3 normal = vec3(0.0f);
+        float reflection = fresnel_share(start, x, d, n_start, field.xyz, normal);
+        if (reflection > 0.0f) {
+            radiance += throughput * reflection * environment_radiance(start, reflect(d, normal));
+            throughput *= 1.0f - reflection;
         }
+        if (hit.receiver >= 0) {
+            radiance += throughput * receiver_radiance(hit);
+            exit_kind = 2.0f;
+            v = d;
+            break;
+        }
+        if (!grid_contains(x)) v = reference_index() * normalize(v);
     }
-    hdr_radiance[pixel.y * camera.image.x + pixel.x] = vec4(radiance, 1.0f);
+    uint index = pixel.y * camera.image.x + pixel.x;
+    hdr_radiance[index] = vec4(radiance, 1.0f);
+#if EIKON_RECORD_EXIT
+    view_exit[index] = vec4(normalize(v), exit_kind);
+#endif
 }

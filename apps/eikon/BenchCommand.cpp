@@ -25,7 +25,7 @@ struct Measurement {
 // Median wall time of `repeats` relights after one full frame (compilation,
 // upload, prepare and step structure are not timed).
 Measurement measure(const std::string& name, const Scene& scene, const FieldSet& fields,
-                    render::PhotonProgramOptions options, int repeats) {
+                    render::RendererOptions options, int repeats) {
     render::FrameRenderer renderer(scene, fields, options);
     renderer.render(fields);
     Measurement measurement{name, 0.0, {}};
@@ -63,7 +63,7 @@ int benchCommand(const BenchOptions& options) {
     const std::vector<Measurement> measurements = {
         measure("tracer", scene, fields, {}, options.repeats),
         measure("tracer+fluence", storing, fields, {}, options.repeats),
-        measure("bare march", scene, fields, {.bareMarch = true}, options.repeats),
+        measure("bare march", scene, fields, {.photons = {.bareMarch = true}}, options.repeats),
     };
     nlohmann::json summary = {{"scene", options.scenePath},
                               {"resolution", options.resolution},

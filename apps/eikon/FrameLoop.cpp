@@ -50,6 +50,9 @@ void runFrames(const Scene& scene, const FieldSet& fields, int frames, io::Outpu
     for (int frame = 0; frame < frames; ++frame) {
         const render::FrameResult result = renderer.render(fields);
         io::writePng(output.framePath(frame), result.image.width, result.image.height, result.image.rgba);
+        if (!result.hdr.empty())
+            io::writeHdr(output.framePath(frame).replace_extension(".hdr"), result.image.width, result.image.height,
+                         result.hdr);
         output.appendReport(frameReportJson(frame, result));
         progress.advance();
     }

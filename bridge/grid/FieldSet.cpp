@@ -34,6 +34,13 @@ void validateFields(const FieldSet& fields, const std::string& source) {
     }
     if (fields.hasExtinction()) checkSize(fields.extinction, 3 * cells, source + ": field extinction");
     if (fields.hasScattering()) checkSize(fields.scattering, 3 * cells, source + ": field scattering");
+    if (fields.hasAnisotropy()) {
+        checkSize(fields.anisotropy, cells, source + ": field anisotropy");
+        for (std::size_t c = 0; c < cells; ++c)
+            if (!(std::abs(fields.anisotropy[c]) < 1.0f))
+                throw InputError(source + ": field anisotropy, " + cellName(fields.grid, c), "a value in (-1, 1)",
+                                 std::to_string(fields.anisotropy[c]));
+    }
     for (std::size_t v = 0; v < 3 * cells; ++v) {
         const float kappa = fields.hasExtinction() ? fields.extinction[v] : 0.0f;
         const float sigma = fields.hasScattering() ? fields.scattering[v] : 0.0f;

@@ -19,12 +19,14 @@ struct FieldSet {
     std::vector<float> deltaIndex;    // one per cell
     std::vector<float> extinction;    // three per cell (RGB), empty when κ = 0 everywhere
     std::vector<float> scattering;    // three per cell (RGB), empty when σs = 0 everywhere
+    std::vector<float> anisotropy;    // Henyey–Greenstein g, one per cell, empty when g = 0 everywhere
     std::uint64_t indexVersion = 0;
     std::uint64_t extinctionVersion = 0;
-    std::uint64_t scatteringVersion = 0;
+    std::uint64_t scatteringVersion = 0;  // σs and g together
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }
+    bool hasAnisotropy() const { return !anisotropy.empty(); }
 };
 
 // Throws InputError naming the field and cell of the first value that is not

@@ -18,4 +18,17 @@ struct Rgba8Image {
 // Throws InputError naming the path when the file cannot be read as an image.
 Rgba8Image readImage(const std::filesystem::path& path);
 
+struct FloatImage {
+    int width = 0, height = 0;
+    std::vector<float> rgba;  // linear, row 0 at the top
+};
+
+// Linear radiance as Radiance .hdr (RGBE), written atomically; rgba has
+// width·height·4 floats (alpha ignored).
+void writeHdr(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgba);
+
+// Any image stb_image reads (Radiance .hdr keeps its linear values), as RGBA
+// floats. Throws InputError naming the path when it cannot be read.
+FloatImage readFloatImage(const std::filesystem::path& path);
+
 }  // namespace eikon::io

@@ -30,6 +30,7 @@ enum Binding : unsigned {
     kFluenceDirection = 12,// buffer FluenceDirection { float direction[]; } — xyz per cell, power-weighted
     kRawFluence = 13,      // the photon pass's unsmoothed fluence, RGB per cell
     kRawFluenceDirection = 14,  // and its unsmoothed direction sums
+    kViewExit = 15,        // buffer ViewExit { vec4 exit[]; } — per pixel: direction leaving the scene, w: how (tests)
 };
 
 // Texture units.
@@ -38,7 +39,9 @@ enum TextureUnit : unsigned {
     kGradientTexture = 1,    // rgba32f (∇n, δn)
     kExtinctionTexture = 2,  // rgba32f (κ rgb, 0)
     kScatteringTexture = 3,  // rgba32f (σs rgb, 0)
-    kStepTexture = 4,        // rg32f (octree level, step cap in m)
+    kStepTexture = 4,        // rgba32f (octree level, step cap in m, 1 if the node is empty of extinction, 0)
+    kEnvironmentTexture = 5, // rgba32f equirectangular environment
+    kAnisotropyTexture = 6,  // r32f Henyey–Greenstein g
 };
 
 // uniform GridBlock (std140): the world box of the field grid.
@@ -107,16 +110,24 @@ static_assert(offsetof(GpuPhotonStats, deposits) == 200);
 static_assert(offsetof(GpuPhotonStats, invariant) == 216);
 
 
-// uniform CameraBlock (std140): a pinhole camera.
+// uniform CameraBlock (std140): a pinhole camera and the environment.
+enum EnvironmentKind : unsigned { kUniformEnvironment = 0, kSkyEnvironment = 1, kHdrEnvironment = 2 };
+
 struct GpuCamera {
     glm::vec4 position;    // xyz metres; w = tan(vertical fov / 2)
     glm::vec4 forward;     // unit; w = width / height
     glm::vec4 right;       // unit
     glm::vec4 up;          // unit
-    glm::vec4 background;  // rgb radiance of the environment, W/(m²·sr)
-    glm::uvec4 image;      // x: width, y: height
+    glm::uvec4 image;      // x: width, y: height, z: EnvironmentKind
+    glm::vec4 radiance;    // uniform: rgb radiance W/(m²·sr); hdr: x intensity, y rotation about +y (rad)
+    glm::vec4 zenith;      // sky: rgb
+    glm::vec4 horizon;     // sky: rgb
+    glm::vec4 groundA;     // sky: rgb of one checker colour
+    glm::vec4 groundB;     // sky: rgb of the other
+    glm::vec4 ground;      // sky: x ground height (m), y checker size (m)
 };
-static_assert(sizeof(GpuCamera) == 96);
-static_assert(offsetof(GpuCamera, image) == 80);
+static_assert(sizeof(GpuCamera) == 176);
+static_assert(offsetof(GpuCamera, image) == 64);
+static_assert(offsetof(GpuCamera, ground) == 160);
 
 }  // namespace eikon::layout

@@ -31,6 +31,7 @@ struct Material {
     double index = 1.0;
     Rgb extinction{0.0};
     Rgb scattering{0.0};
+    double anisotropy = 0.0;  // Henyey–Greenstein g of the scattering, in (−1, 1)
 };
 
 struct SphereShape {
@@ -78,14 +79,32 @@ struct CameraDesc {
     double fovDeg = 40.0;     // vertical field of view, in (0, 180)
 };
 
+// What a camera ray sees when it leaves the scene.
+struct EnvironmentDesc {
+    enum class Kind { Uniform, Sky, Hdr } kind = Kind::Uniform;
+    Rgb radiance{0.02, 0.025, 0.03};  // uniform: W/(m²·sr)
+    // sky: a zenith-to-horizon gradient above a checkerboard ground plane
+    Rgb zenith{0.10, 0.16, 0.30};
+    Rgb horizon{0.45, 0.50, 0.55};
+    Rgb groundA{0.30, 0.30, 0.30};
+    Rgb groundB{0.05, 0.05, 0.05};
+    double groundHeight = 0.0;   // m
+    double checkerSize = 0.1;    // m, > 0
+    // hdr: an equirectangular Radiance .hdr image (+y up), scaled
+    std::string path;            // resolved against the scene file's folder
+    double intensity = 1.0;      // >= 0
+    double rotationDeg = 0.0;    // about +y
+};
+
 struct RenderDesc {
     long long photons = 1 << 20;  // >= 1
     int width = 640;              // >= 1
     int height = 480;             // >= 1
     unsigned seed = 1;
     double exposureEv = 0.0;      // exposure compensation in stops
-    double stepVoxels = 0.5;      // camera-ray step in voxels, > 0
-    Rgb background{0.02, 0.025, 0.03};  // radiance of the environment, W/(m²·sr)
+    double stepVoxels = 1.0;      // camera-ray step in media, in voxels, > 0 (Sun et al. §4.5: one voxel)
+    EnvironmentDesc environment;  // `background` in the file sets a uniform environment's radiance
+    bool writeHdr = true;         // also write the linear image as Radiance .hdr
 };
 
 // How photons are marched (Sun et al. 2008, §4.2–4.4 and §5.3).
@@ -107,6 +126,61 @@ struct TracerDesc {
     bool storeFluence = false;    // keep the fluence grid even where nothing scatters
 };
 
+// The built-in fluid solver (sim/fluid) and the optics that turn its
+// temperature, concentration and dye into n, κ, σs (sim/optics). Defaults
+// here are those of air; the parser switches to the liquid defaults
+// (docs/scene-format.md, `sim`) when `fluid` is "liquid".
+struct SimDesc {
+    enum class Fluid { Air, Liquid } fluid = Fluid::Air;
+    enum class Boundary { Closed, Open };   // closed: wall, no flow through; open: pressure 0, free outflow
+    enum class Mixing { Linear, LorentzLorenz };
+
+    struct Obstacle {
+        enum class Kind { Box, Sphere } kind = Kind::Box;
+        BoxShape box;        // valid when kind == Box
+        SphereShape sphere;  // valid when kind == Sphere
+    };
+    struct Source {
+        enum class Kind { HotPlate, Jet } kind = Kind::HotPlate;
+        BoxShape region;                // cells whose centres lie inside are driven
+        double temperature = 373.15;    // hot plate: K, > 0, held fixed
+        glm::dvec3 velocity{0.0};       // jet: m/s, imposed on the faces inside the region
+        double concentration = 1.0;     // jet: fraction of liquid B in [0, 1]
+        double dye = 0.0;               // jet: dye concentration, >= 0
+    };
+
+    glm::ivec3 resolution{32, 32, 32};  // solver cells per axis, each >= 1
+    std::optional<BoxShape> bounds;     // metres; absent: the render grid's bounds
+    double frameTime = 1.0 / 30.0;      // s of simulated time per rendered frame, > 0
+    int substeps = 1;                   // at least this many substeps per frame, >= 1
+    double cfl = 2.0;                   // largest |u|·Δt/h of a substep, > 0 (more substeps are taken)
+    glm::dvec3 gravity{0.0, -9.81, 0.0};      // m/s²
+    double thermalExpansion = 1.0 / 293.15;   // β in 1/K, >= 0 (ideal gas: 1/T_ambient)
+    double concentrationExpansion = 0.0;      // α: relative density excess per unit concentration, >= 0
+    double viscosity = 1.5e-5;                // kinematic, m²/s, >= 0
+    double thermalDiffusivity = 2.2e-5;       // m²/s, >= 0
+    double concentrationDiffusivity = 1.6e-5; // m²/s, >= 0
+    double dyeDiffusivity = 0.0;              // m²/s, >= 0
+    double pressureTolerance = 1e-6;          // relative max-norm residual of the pressure solve, in (0, 1)
+    std::array<Boundary, 6> boundaries{};     // x min, x max, y min, y max, z min, z max
+    std::vector<Obstacle> obstacles;
+    std::vector<Source> sources;
+    double ambientTemperature = 293.15;  // K, > 0: initial temperature, and zero buoyancy
+    double ambientPressure = 101325.0;   // Pa, > 0
+
+    // Air: Gladstone–Dale, n − 1 = refractivity · (p/p0) · (T0/T).
+    double refractivity = 2.93e-4;        // n0 − 1 at T0, p0, > 0
+    double referenceTemperature = 273.15; // T0 in K, > 0
+    double referencePressure = 101325.0;  // p0 in Pa, > 0
+    // Liquid: index of liquid A (concentration 0) and B (concentration 1), mixed by `mixing`.
+    double indexA = 1.333;   // water
+    double indexB = 1.4418;  // 60 % w/w sucrose syrup
+    Mixing mixing = Mixing::Linear;
+    // Dye: κ and σs in 1/m per unit dye concentration, σs <= κ per channel.
+    Rgb dyeExtinction{0.0};
+    Rgb dyeScattering{0.0};
+};
+
 struct Scene {
     std::string sourcePath;  // file the scene came from, for messages
     GridDesc grid;
@@ -117,6 +191,7 @@ struct Scene {
     CameraDesc camera;
     RenderDesc render;
     TracerDesc tracer;
+    std::optional<SimDesc> sim;  // present when the scene runs the built-in fluid solver
 };
 
 }  // namespace eikon

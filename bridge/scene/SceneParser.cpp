@@ -22,6 +22,7 @@ constexpr int kMaxSupersampling = 16;
 constexpr long long kMaxSeed = 4294967295LL;  // 2^32 - 1
 constexpr int kMaxSmoothingWindow = 63;
 constexpr long long kMaxTracerSteps = 2147483647LL;  // 2^31 - 1
+constexpr long long kMaxSubsteps = 10000;
 
 const NumberRange kPositive = NumberRange::above(0.0);
 const NumberRange kNonNegative = NumberRange::atLeast(0.0);
@@ -58,6 +59,7 @@ void requireNonEmpty(const JsonReader& minNode, const glm::dvec3& min, const Jso
 // Optional extinction and scattering (default 0), with scattering <= extinction.
 void readAttenuation(const JsonObjectReader& fields, Material& material) {
     if (auto node = fields.optional("extinction")) material.extinction = node->rgb(kNonNegative);
+    if (auto node = fields.optional("anisotropy")) material.anisotropy = node->number(NumberRange::open(-1.0, 1.0));
     if (auto node = fields.optional("scattering")) {
         material.scattering = node->rgb(kNonNegative);
         for (int channel = 0; channel < 3; ++channel) {
@@ -108,7 +110,7 @@ GridDesc readGrid(const JsonReader& node) {
 
 Material readMedium(const JsonReader& node) {
     Material medium;
-    const auto fields = node.object({"index", "extinction", "scattering"});
+    const auto fields = node.object({"index", "extinction", "scattering", "anisotropy"});
     if (auto index = fields.optional("index")) medium.index = index->number(kPositive);
     readAttenuation(fields, medium);
     return medium;
@@ -118,14 +120,15 @@ ObjectDesc readObject(const JsonReader& node) {
     ObjectDesc object;
     const std::string type = node.member("type").oneOf({"sphere", "box"});
     if (type == "sphere") {
-        const auto fields = node.object({"type", "center", "radius", "index", "extinction", "scattering"});
+        const auto fields =
+            node.object({"type", "center", "radius", "index", "extinction", "scattering", "anisotropy"});
         object.kind = ObjectDesc::Kind::Sphere;
         object.sphere.center = fields.member("center").vec3();
         object.sphere.radius = fields.member("radius").number(kPositive);
         object.material.index = fields.member("index").number(kPositive);
         readAttenuation(fields, object.material);
     } else {
-        const auto fields = node.object({"type", "min", "max", "index", "extinction", "scattering"});
+        const auto fields = node.object({"type", "min", "max", "index", "extinction", "scattering", "anisotropy"});
         object.kind = ObjectDesc::Kind::Box;
         object.box.min = fields.member("min").vec3();
         object.box.max = fields.member("max").vec3();
@@ -212,17 +215,49 @@ CameraDesc readCamera(const JsonReader& node) {
     return camera;
 }
 
-RenderDesc readRender(const JsonReader& node) {
+EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& sceneFolder) {
+    EnvironmentDesc environment;
+    const std::string type = node.member("type").oneOf({"uniform", "sky", "hdr"});
+    if (type == "uniform") {
+        const auto fields = node.object({"type", "radiance"});
+        if (auto radiance = fields.optional("radiance")) environment.radiance = radiance->rgb(kNonNegative);
+    } else if (type == "sky") {
+        environment.kind = EnvironmentDesc::Kind::Sky;
+        const auto fields = node.object(
+            {"type", "zenith", "horizon", "ground_a", "ground_b", "ground_height", "checker_size"});
+        if (auto value = fields.optional("zenith")) environment.zenith = value->rgb(kNonNegative);
+        if (auto value = fields.optional("horizon")) environment.horizon = value->rgb(kNonNegative);
+        if (auto value = fields.optional("ground_a")) environment.groundA = value->rgb(kNonNegative);
+        if (auto value = fields.optional("ground_b")) environment.groundB = value->rgb(kNonNegative);
+        if (auto value = fields.optional("ground_height")) environment.groundHeight = value->number();
+        if (auto value = fields.optional("checker_size")) environment.checkerSize = value->number(kPositive);
+    } else {
+        environment.kind = EnvironmentDesc::Kind::Hdr;
+        const auto fields = node.object({"type", "path", "intensity", "rotation_deg"});
+        const std::filesystem::path path = fields.member("path").string();
+        environment.path = (path.is_absolute() ? path : std::filesystem::path(sceneFolder) / path).string();
+        if (auto value = fields.optional("intensity")) environment.intensity = value->number(kNonNegative);
+        if (auto value = fields.optional("rotation_deg")) environment.rotationDeg = value->number();
+    }
+    return environment;
+}
+
+RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     RenderDesc render;
-    const auto fields =
-        node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background"});
+    const auto fields = node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background",
+                                     "environment", "write_hdr"});
     if (auto photons = fields.optional("photons")) render.photons = photons->integer(1, kMaxPhotons);
     if (auto width = fields.optional("width")) render.width = static_cast<int>(width->integer(1, kMaxImageEdge));
     if (auto height = fields.optional("height")) render.height = static_cast<int>(height->integer(1, kMaxImageEdge));
     if (auto seed = fields.optional("seed")) render.seed = static_cast<unsigned>(seed->integer(0, kMaxSeed));
     if (auto exposure = fields.optional("exposure_ev")) render.exposureEv = exposure->number();
     if (auto step = fields.optional("step_voxels")) render.stepVoxels = step->number(kPositive);
-    if (auto background = fields.optional("background")) render.background = background->rgb(kNonNegative);
+    if (auto background = fields.optional("background")) {
+        if (fields.optional("environment")) background->fail("either background or environment, not both", "both");
+        render.environment.radiance = background->rgb(kNonNegative);
+    }
+    if (auto environment = fields.optional("environment")) render.environment = readEnvironment(*environment, sceneFolder);
+    if (auto writeHdr = fields.optional("write_hdr")) render.writeHdr = writeHdr->boolean();
     return render;
 }
 
@@ -279,6 +314,128 @@ std::vector<Item> readList(const JsonObjectReader& fields, const std::string& ke
         for (const JsonReader& element : list->array()) items.push_back(readItem(element));
     }
     return items;
+}
+
+BoxShape readRegion(const JsonObjectReader& fields) {
+    BoxShape box{fields.member("min").vec3(), fields.member("max").vec3()};
+    requireNonEmpty(fields.member("min"), box.min, fields.member("max"), box.max);
+    return box;
+}
+
+SimDesc::Obstacle readSimObstacle(const JsonReader& node) {
+    SimDesc::Obstacle obstacle;
+    if (node.member("type").oneOf({"box", "sphere"}) == "box") {
+        obstacle.kind = SimDesc::Obstacle::Kind::Box;
+        obstacle.box = readRegion(node.object({"type", "min", "max"}));
+    } else {
+        const auto fields = node.object({"type", "center", "radius"});
+        obstacle.kind = SimDesc::Obstacle::Kind::Sphere;
+        obstacle.sphere.center = fields.member("center").vec3();
+        obstacle.sphere.radius = fields.member("radius").number(kPositive);
+    }
+    return obstacle;
+}
+
+SimDesc::Source readSimSource(const JsonReader& node) {
+    SimDesc::Source source;
+    if (node.member("type").oneOf({"hot_plate", "jet"}) == "hot_plate") {
+        const auto fields = node.object({"type", "min", "max", "temperature"});
+        source.kind = SimDesc::Source::Kind::HotPlate;
+        source.region = readRegion(fields);
+        source.temperature = fields.member("temperature").number(kPositive);
+    } else {
+        const auto fields = node.object({"type", "min", "max", "velocity", "concentration", "dye"});
+        source.kind = SimDesc::Source::Kind::Jet;
+        source.region = readRegion(fields);
+        source.velocity = fields.member("velocity").vec3();
+        if (auto c = fields.optional("concentration")) source.concentration = c->number(NumberRange::closed(0.0, 1.0));
+        if (auto dye = fields.optional("dye")) source.dye = dye->number(kNonNegative);
+    }
+    return source;
+}
+
+void readSimBoundaries(const JsonReader& node, SimDesc& sim) {
+    const char* const faces[] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+    const auto fields = node.object({"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"});
+    for (int face = 0; face < 6; ++face) {
+        if (auto kind = fields.optional(faces[face])) {
+            sim.boundaries[face] =
+                kind->oneOf({"closed", "open"}) == "open" ? SimDesc::Boundary::Open : SimDesc::Boundary::Closed;
+        }
+    }
+}
+
+void readSimOptics(const JsonReader& node, SimDesc& sim) {
+    const auto fields = node.object({"refractivity", "reference_temperature", "reference_pressure", "index_a",
+                                     "index_b", "mixing", "dye_extinction", "dye_scattering"});
+    if (auto v = fields.optional("refractivity")) sim.refractivity = v->number(kPositive);
+    if (auto v = fields.optional("reference_temperature")) sim.referenceTemperature = v->number(kPositive);
+    if (auto v = fields.optional("reference_pressure")) sim.referencePressure = v->number(kPositive);
+    if (auto v = fields.optional("index_a")) sim.indexA = v->number(kPositive);
+    if (auto v = fields.optional("index_b")) sim.indexB = v->number(kPositive);
+    if (auto v = fields.optional("mixing")) {
+        sim.mixing = v->oneOf({"linear", "lorentz_lorenz"}) == "linear" ? SimDesc::Mixing::Linear
+                                                                        : SimDesc::Mixing::LorentzLorenz;
+    }
+    Material dye;  // dye coefficients obey the same rule as a material's: σs <= κ per channel
+    if (auto v = fields.optional("dye_extinction")) dye.extinction = v->rgb(kNonNegative);
+    if (auto v = fields.optional("dye_scattering")) {
+        dye.scattering = v->rgb(kNonNegative);
+        for (int channel = 0; channel < 3; ++channel) {
+            if (dye.scattering[channel] <= dye.extinction[channel]) continue;
+            v->fail("dye_scattering <= dye_extinction " + formatVector(dye.extinction) + " in every channel",
+                    formatVector(dye.scattering));
+        }
+    }
+    sim.dyeExtinction = dye.extinction;
+    sim.dyeScattering = dye.scattering;
+}
+
+// The `sim` section; fluid-dependent defaults (docs/scene-format.md) apply to
+// keys left out.
+SimDesc readSim(const JsonReader& node) {
+    SimDesc sim;
+    const auto fields = node.object({"fluid", "resolution", "bounds", "frame_time", "substeps", "cfl", "gravity",
+                                     "thermal_expansion", "concentration_expansion", "viscosity",
+                                     "thermal_diffusivity", "concentration_diffusivity", "dye_diffusivity",
+                                     "pressure_tolerance", "boundaries", "obstacles", "sources",
+                                     "ambient_temperature", "ambient_pressure", "optics"});
+    if (auto fluid = fields.optional("fluid"); fluid && fluid->oneOf({"air", "liquid"}) == "liquid") {
+        sim.fluid = SimDesc::Fluid::Liquid;  // water at 20 °C, sucrose syrup as liquid B
+        sim.thermalExpansion = 2.07e-4;
+        sim.concentrationExpansion = 0.289;  // (1286.5 − 998.2) / 998.2 kg/m³, 60 % sucrose against water
+        sim.viscosity = 1.0e-6;
+        sim.thermalDiffusivity = 1.43e-7;
+        sim.concentrationDiffusivity = 5.2e-10;  // sucrose in water
+    }
+    if (auto resolution = fields.optional("resolution")) {
+        sim.resolution = resolution->ivec3(1, static_cast<int>(kMaxGridCells));
+        const double cells = static_cast<double>(sim.resolution.x) * sim.resolution.y * sim.resolution.z;
+        if (cells > static_cast<double>(kMaxGridCells)) {
+            resolution->fail("at most " + std::to_string(kMaxGridCells) + " cells (512^3) in total",
+                             formatNumber(cells) + " cells");
+        }
+    }
+    if (auto bounds = fields.optional("bounds")) sim.bounds = readRegion(bounds->object({"min", "max"}));
+    if (auto v = fields.optional("frame_time")) sim.frameTime = v->number(kPositive);
+    if (auto v = fields.optional("substeps")) sim.substeps = static_cast<int>(v->integer(1, kMaxSubsteps));
+    if (auto v = fields.optional("cfl")) sim.cfl = v->number(kPositive);
+    if (auto v = fields.optional("gravity")) sim.gravity = v->vec3();
+    if (auto v = fields.optional("ambient_temperature")) sim.ambientTemperature = v->number(kPositive);
+    if (auto v = fields.optional("ambient_pressure")) sim.ambientPressure = v->number(kPositive);
+    if (sim.fluid == SimDesc::Fluid::Air) sim.thermalExpansion = 1.0 / sim.ambientTemperature;  // ideal gas
+    if (auto v = fields.optional("thermal_expansion")) sim.thermalExpansion = v->number(kNonNegative);
+    if (auto v = fields.optional("concentration_expansion")) sim.concentrationExpansion = v->number(kNonNegative);
+    if (auto v = fields.optional("viscosity")) sim.viscosity = v->number(kNonNegative);
+    if (auto v = fields.optional("thermal_diffusivity")) sim.thermalDiffusivity = v->number(kNonNegative);
+    if (auto v = fields.optional("concentration_diffusivity")) sim.concentrationDiffusivity = v->number(kNonNegative);
+    if (auto v = fields.optional("dye_diffusivity")) sim.dyeDiffusivity = v->number(kNonNegative);
+    if (auto v = fields.optional("pressure_tolerance")) sim.pressureTolerance = v->number(NumberRange::open(0.0, 1.0));
+    if (auto boundaries = fields.optional("boundaries")) readSimBoundaries(*boundaries, sim);
+    sim.obstacles = readList<SimDesc::Obstacle>(fields, "obstacles", readSimObstacle);
+    sim.sources = readList<SimDesc::Source>(fields, "sources", readSimSource);
+    if (auto optics = fields.optional("optics")) readSimOptics(*optics, sim);
+    return sim;
 }
 
 // 1-based line and column of a parse error at byte offset `byte` (1-based, as
@@ -371,7 +528,7 @@ nlohmann::json parseOverrideValue(const std::string& text) {
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const auto fields = JsonReader(root, sourceName)
                             .object({"description", "grid", "medium", "objects", "lights", "receivers", "camera",
-                                     "render", "tracer"});
+                                     "render", "tracer", "sim"});
     Scene scene;
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
@@ -382,8 +539,10 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     if (scene.lights.empty()) fields.member("lights").fail("an array of at least one light");
     scene.receivers = readList<ReceiverDesc>(fields, "receivers", readReceiver);
     if (auto camera = fields.optional("camera")) scene.camera = readCamera(*camera);
-    if (auto render = fields.optional("render")) scene.render = readRender(*render);
+    if (auto render = fields.optional("render"))
+        scene.render = readRender(*render, std::filesystem::path(sourceName).parent_path().string());
     if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
+    if (auto sim = fields.optional("sim")) scene.sim = readSim(*sim);
     return scene;
 }
 

@@ -53,6 +53,18 @@ void Texture3D::bindImage(GLuint unit, GLenum access) const {
     glBindImageTexture(unit, id(), 0, GL_TRUE, 0, access, internalFormat_);
 }
 
+Texture2D::Texture2D(int width, int height, const float* rgba) {
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_2D, 1, &id);
+    name_ = GlName<deleteTexture>(id);
+    glTextureStorage2D(id, 1, GL_RGBA32F, width, height);
+    glTextureSubImage2D(id, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);
+    glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX,
                                GLuint localY, GLuint localZ) const {
     auto groups = [](std::size_t count, GLuint local) { return static_cast<GLuint>((count + local - 1) / local); };

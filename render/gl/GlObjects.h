@@ -87,6 +87,20 @@ private:
     int width_ = 0, height_ = 0, depth_ = 0;
 };
 
+// A 2D RGBA32F texture for equirectangular maps: bilinear, repeating in u
+// (longitude), clamped in v.
+class Texture2D {
+public:
+    Texture2D() = default;
+    Texture2D(int width, int height, const float* rgba);
+
+    GLuint id() const { return name_.id(); }
+    void bindSampler(GLuint unit) const { glBindTextureUnit(unit, id()); }
+
+private:
+    GlName<deleteTexture> name_;
+};
+
 // A linked compute program.
 class Program {
 public:

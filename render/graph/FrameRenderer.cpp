@@ -21,14 +21,14 @@ StageReport runStage(const char* name, bool needed, Work&& work) {
 
 }  // namespace
 
-FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, PhotonProgramOptions options)
+FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options)
     : scene_(scene), receivers_(scene.receivers), post_(scene.render.width, scene.render.height) {
     pendingUploadBytes_ = fields_.upload(fields);  // before the stages: they compile for the fields present
     prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
     if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree)
         stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction());
-    photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options);
-    view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_);
+    photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
+    view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr, options.recordViewExits);
     const double voxel = fields.grid.smallestVoxelEdge();
     photonSettings_.photons = scene.render.photons;
     photonSettings_.seed = scene.render.seed;
@@ -36,8 +36,6 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, PhotonP
     photonSettings_.maxSteps = scene.tracer.maxSteps > 0 ? static_cast<unsigned>(scene.tracer.maxSteps)
                                                           : defaultMaxSteps(fields.grid, photonSettings_.stepLength);
     photonSettings_.powerCutoff = scene.tracer.powerCutoff;
-    viewStepLength_ = scene.render.stepVoxels * voxel;
-    viewMaxSteps_ = defaultMaxSteps(fields.grid, viewStepLength_);
 }
 
 const gl::Texture3D* FrameRenderer::stepTexture() const {
@@ -71,7 +69,7 @@ FrameResult FrameRenderer::render(const FieldSet& fields) {
     }));
     const bool viewNeeded = fieldsChanged || cameraChanged_;
     result.stages.push_back(runStage("view", viewNeeded, [&] {
-        view_->run(fields_, photons_->fluence(), viewStepLength_, viewMaxSteps_);
+        view_->run(fields_, {&photons_->fluence(), &photons_->fluenceDirection(), stepTexture()});
     }));
     result.stages.push_back(runStage("post", viewNeeded, [&] {
         last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
@@ -80,7 +78,9 @@ FrameResult FrameRenderer::render(const FieldSet& fields) {
     tracedExtinctionVersion_ = fields.extinctionVersion;
     tracedScatteringVersion_ = fields.scatteringVersion;
     cameraChanged_ = false;
+    if (viewNeeded && scene_.render.writeHdr) last_.hdr = view_->downloadHdr();
     result.image = last_.image;
+    result.hdr = last_.hdr;
     result.photons = last_.photons;
     return result;
 }

@@ -30,14 +30,20 @@ struct StageReport {
 
 struct FrameResult {
     Image8 image;
+    std::vector<float> hdr;       // linear RGBA radiance, when the scene writes HDR
     PhotonStats photons;          // of the latest photon pass
     std::vector<StageReport> stages;
     std::size_t hostBytesUploaded = 0;
 };
 
+struct RendererOptions {
+    PhotonProgramOptions photons;
+    bool recordViewExits = false;  // keep each pixel's exit direction (tests)
+};
+
 class FrameRenderer {
 public:
-    FrameRenderer(const Scene& scene, const FieldSet& fields, PhotonProgramOptions options = {});
+    FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options = {});
 
     FrameResult render(const FieldSet& fields);
     void setCamera(const CameraDesc& camera);
@@ -48,6 +54,7 @@ public:
     const ReceiverMaps& receivers() const { return receivers_; }
     const PhotonStage& photonStage() const { return *photons_; }
     const PhotonSettings& photonSettings() const { return photonSettings_; }
+    const ViewStage& viewStage() const { return *view_; }
 
 private:
     const gl::Texture3D* stepTexture() const;  // null for uniform steps
@@ -61,8 +68,6 @@ private:
     std::unique_ptr<ViewStage> view_;
     PostStage post_;
     PhotonSettings photonSettings_;
-    double viewStepLength_ = 0.0;
-    unsigned viewMaxSteps_ = 0;
 
     std::uint64_t tracedIndexVersion_ = ~0ull, tracedExtinctionVersion_ = ~0ull, tracedScatteringVersion_ = ~0ull;
     bool cameraChanged_ = true;

@@ -34,6 +34,7 @@ std::size_t FieldTextures::upload(const FieldSet& fields) {
         gradient_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z);
         extinction_ = {};
         scattering_ = {};
+        anisotropy_ = {};
         indexVersion_ = extinctionVersion_ = scatteringVersion_ = ~0ull;
         bytes += sizeof block;
     }
@@ -47,6 +48,13 @@ std::size_t FieldTextures::upload(const FieldSet& fields) {
     extinctionVersion_ = fields.extinctionVersion;
     if (!fields.hasScattering()) scattering_ = {};
     else if (fields.scatteringVersion != scatteringVersion_) bytes += uploadRgb(scattering_, grid_, fields.scattering);
+    if (!fields.hasAnisotropy()) {
+        anisotropy_ = {};
+    } else if (fields.scatteringVersion != scatteringVersion_) {
+        if (!anisotropy_.id()) anisotropy_ = gl::Texture3D(GL_R32F, grid_.resolution.x, grid_.resolution.y, grid_.resolution.z);
+        anisotropy_.upload(GL_RED, GL_FLOAT, fields.anisotropy.data());
+        bytes += fields.anisotropy.size() * sizeof(float);
+    }
     scatteringVersion_ = fields.scatteringVersion;
     return bytes;
 }
@@ -56,6 +64,7 @@ void FieldTextures::bindForTracing() const {
     gradient_.bindSampler(layout::kGradientTexture);
     if (hasExtinction()) extinction_.bindSampler(layout::kExtinctionTexture);
     if (hasScattering()) scattering_.bindSampler(layout::kScatteringTexture);
+    if (hasAnisotropy()) anisotropy_.bindSampler(layout::kAnisotropyTexture);
 }
 
 }  // namespace eikon::render

@@ -20,6 +20,7 @@ public:
     gl::Texture3D& gradient() { return gradient_; }
     bool hasExtinction() const { return static_cast<bool>(extinction_.id()); }
     bool hasScattering() const { return static_cast<bool>(scattering_.id()); }
+    bool hasAnisotropy() const { return static_cast<bool>(anisotropy_.id()); }
     const GridSpec& grid() const { return grid_; }
     std::uint64_t indexVersion() const { return indexVersion_; }
 
@@ -33,9 +34,10 @@ private:
     gl::Texture3D gradient_;
     gl::Texture3D extinction_;
     gl::Texture3D scattering_;
+    gl::Texture3D anisotropy_;
     std::uint64_t indexVersion_ = ~0ull;
     std::uint64_t extinctionVersion_ = ~0ull;
-    std::uint64_t scatteringVersion_ = ~0ull;
+    std::uint64_t scatteringVersion_ = ~0ull;  // also covers anisotropy, which scattering owns
 };
 
 }  // namespace eikon::render

@@ -60,6 +60,7 @@ public:
     // Smoothed fluence φ (W/m², RGB per cell) and power-weighted mean
     // direction (xyz per cell); empty unless storesFluence().
     const gl::Buffer& fluence() const { return fluence_; }
+    const gl::Buffer& fluenceDirection() const { return direction_; }
     std::vector<float> downloadFluence() const;
     // Recorded vertices (xyz, w = 1 where written) of the first photons.
     std::vector<glm::vec4> downloadPaths() const;

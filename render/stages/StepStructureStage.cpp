@@ -32,7 +32,7 @@ StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& t
     const int coarsest = 1 << (levels_ - 1);
     paddedSize_ = (grid.resolution + coarsest - 1) / coarsest * coarsest;
     pyramid_ = gl::Texture3D(GL_RGBA32F, paddedSize_.x, paddedSize_.y, paddedSize_.z, levels_);
-    step_ = gl::Texture3D(GL_RG32F, grid.resolution.x, grid.resolution.y, grid.resolution.z);
+    step_ = gl::Texture3D(GL_RGBA32F, grid.resolution.x, grid.resolution.y, grid.resolution.z);
 }
 
 void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields) {

@@ -22,7 +22,8 @@ public:
     StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction);
 
     void run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields);
-    // rg32f per voxel: (octree level, step cap in metres; 1e30 for none).
+    // rgba32f per voxel: (octree level, step cap in metres or 1e30 for none,
+    // 1 where the node holds no extinction, 0).
     const gl::Texture3D& stepTexture() const { return step_; }
     int levels() const { return levels_; }
 

@@ -1,8 +1,10 @@
 #include "render/stages/ViewStage.h"
 
-#include "bridge/layout/GpuLayouts.h"
+#include "bridge/io/ImageIo.h"
 #include "render/gl/GlDebug.h"
 #include "render/gl/ShaderLibrary.h"
+#include "render/stages/GaussianKernel.h"
+#include "render/stages/PhotonStage.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -11,28 +13,71 @@
 
 namespace eikon::render {
 
+namespace {
+
+glm::vec4 rgb(const Rgb& value) { return glm::vec4(glm::vec3(value), 0.0f); }
+
+unsigned environmentKind(const EnvironmentDesc& environment) {
+    switch (environment.kind) {
+        case EnvironmentDesc::Kind::Uniform: return layout::kUniformEnvironment;
+        case EnvironmentDesc::Kind::Sky: return layout::kSkyEnvironment;
+        case EnvironmentDesc::Kind::Hdr: return layout::kHdrEnvironment;
+    }
+    return layout::kUniformEnvironment;
+}
+
+}  // namespace
+
 layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render) {
     const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
     const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
     const glm::dvec3 up = glm::cross(right, forward);
+    const EnvironmentDesc& environment = render.environment;
     layout::GpuCamera block{};
     block.position = glm::vec4(glm::vec3(camera.position), static_cast<float>(std::tan(glm::radians(camera.fovDeg) / 2)));
     block.forward = glm::vec4(glm::vec3(forward), static_cast<float>(render.width) / static_cast<float>(render.height));
     block.right = glm::vec4(glm::vec3(right), 0.0f);
     block.up = glm::vec4(glm::vec3(up), 0.0f);
-    block.background = glm::vec4(glm::vec3(render.background), 0.0f);
-    block.image = glm::uvec4(static_cast<unsigned>(render.width), static_cast<unsigned>(render.height), 0u, 0u);
+    block.image = glm::uvec4(static_cast<unsigned>(render.width), static_cast<unsigned>(render.height),
+                             environmentKind(environment), 0u);
+    block.radiance = environment.kind == EnvironmentDesc::Kind::Hdr
+                         ? glm::vec4(static_cast<float>(environment.intensity),
+                                     static_cast<float>(glm::radians(environment.rotationDeg)), 0.0f, 0.0f)
+                         : rgb(environment.radiance);
+    block.zenith = rgb(environment.zenith);
+    block.horizon = rgb(environment.horizon);
+    block.groundA = rgb(environment.groundA);
+    block.groundB = rgb(environment.groundB);
+    block.ground = glm::vec4(static_cast<float>(environment.groundHeight), static_cast<float>(environment.checkerSize),
+                             0.0f, 0.0f);
     return block;
 }
 
-ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers)
+ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers,
+                     bool hasStepStructure, bool recordExit)
     : receivers_(receivers), render_(scene.render), width_(scene.render.width), height_(scene.render.height) {
+    const double voxel = fields.grid().smallestVoxelEdge();
+    stepLength_ = scene.render.stepVoxels * voxel;
+    maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
+    // Past the smoothing kernel (plus a voxel) the index is the bulk value on either side of an interface.
+    const auto kernel = gaussianHalfKernel(scene.grid.smoothingSigmaVoxels, scene.grid.smoothingWindowVoxels);
+    interfaceHalfWidth_ = static_cast<float>((static_cast<double>(kernel.size()) + 1.0) * voxel);
     program_ = gl::compileComputeProgram(
         "view_rays.comp", {{"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
-                           {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"}});
+                           {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"},
+                           {"EIKON_HAS_ANISOTROPY", fields.hasAnisotropy() ? "1" : "0"},
+                           {"EIKON_STEP_STRUCTURE", hasStepStructure ? "1" : "0"},
+                           {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
+                           {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"}});
+    if (scene.render.environment.kind == EnvironmentDesc::Kind::Hdr) {
+        const io::FloatImage image = io::readFloatImage(scene.render.environment.path);
+        environment_ = gl::Texture2D(image.width, image.height, image.rgba.data());
+    }
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
-    hdr_ = gl::Buffer(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * sizeof(glm::vec4));
+    const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+    hdr_ = gl::Buffer(pixels * sizeof(glm::vec4));
+    if (recordExit) exits_ = gl::Buffer(pixels * sizeof(glm::vec4));
 }
 
 void ViewStage::setCamera(const CameraDesc& camera) {
@@ -40,19 +85,38 @@ void ViewStage::setCamera(const CameraDesc& camera) {
     camera_.upload(&block, sizeof block);
 }
 
-void ViewStage::run(const FieldTextures& fields, const gl::Buffer& fluence, double stepLength, unsigned maxSteps) {
+void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     fields.bindForTracing();
     receivers_.bind();
     camera_.bindUniform(layout::kCameraBlock);
-    if (fields.hasScattering()) fluence.bindStorage(layout::kFluence);
+    if (fields.hasScattering()) {
+        inputs.fluence->bindStorage(layout::kFluence);
+        inputs.fluenceDirection->bindStorage(layout::kFluenceDirection);
+    }
+    if (inputs.stepTexture) inputs.stepTexture->bindSampler(layout::kStepTexture);
+    if (environment_.id()) environment_.bindSampler(layout::kEnvironmentTexture);
     hdr_.bindStorage(layout::kHdrImage);
+    if (exits_.id()) exits_.bindStorage(layout::kViewExit);
     program_.use();
     glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
-    glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength));
-    glUniform1ui(program_.uniform("max_steps"), maxSteps);
+    glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength_));
+    glUniform1ui(program_.uniform("max_steps"), maxSteps_);
+    glUniform1f(program_.uniform("interface_half_width"), interfaceHalfWidth_);
     program_.dispatchCovering(static_cast<std::size_t>(width_), static_cast<std::size_t>(height_), 1, 8, 8, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     gl::checkpoint("view stage");
+}
+
+std::vector<float> ViewStage::downloadHdr() const {
+    std::vector<float> rgba(hdr_.bytes() / sizeof(float));
+    hdr_.download(rgba.data(), rgba.size() * sizeof(float));
+    return rgba;
+}
+
+std::vector<glm::vec4> ViewStage::downloadExits() const {
+    std::vector<glm::vec4> exits(exits_.bytes() / sizeof(glm::vec4));
+    if (!exits.empty()) exits_.download(exits.data(), exits.size() * sizeof(glm::vec4));
+    return exits;
 }
 
 }  // namespace eikon::render

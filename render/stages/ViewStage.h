@@ -1,25 +1,40 @@
 // The viewing pass (shaders/view_rays.comp): curved camera rays into a
-// linear HDR radiance image.
+// linear HDR radiance image. Runs alone when only the camera changes.
 #pragma once
 
+#include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/ReceiverMaps.h"
 
+#include <glm/vec4.hpp>
+
+#include <vector>
+
 namespace eikon::render {
 
 layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render);
 
+struct ViewInputs {
+    const gl::Buffer* fluence = nullptr;           // smoothed φ, when the scene scatters
+    const gl::Buffer* fluenceDirection = nullptr;  // and its mean direction
+    const gl::Texture3D* stepTexture = nullptr;    // step structure, when built
+};
+
 class ViewStage {
 public:
-    ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers);
+    // recordExit: also keep each pixel's exit direction (tests).
+    ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers, bool hasStepStructure,
+              bool recordExit = false);
 
-    // Fluence is the photon stage's buffer (ignored when the scene does not scatter).
-    void run(const FieldTextures& fields, const gl::Buffer& fluence, double stepLength, unsigned maxSteps);
+    void run(const FieldTextures& fields, const ViewInputs& inputs);
     void setCamera(const CameraDesc& camera);
 
     const gl::Buffer& hdrImage() const { return hdr_; }
+    std::vector<float> downloadHdr() const;  // RGBA per pixel, row 0 at the top
+    // Per pixel: the direction the ray left in; w = 1 environment, 2 receiver, 0 step cap.
+    std::vector<glm::vec4> downloadExits() const;
     int width() const { return width_; }
     int height() const { return height_; }
 
@@ -27,9 +42,14 @@ private:
     const ReceiverMaps& receivers_;
     RenderDesc render_;
     int width_, height_;
+    double stepLength_;
+    unsigned maxSteps_;
+    float interfaceHalfWidth_;
     gl::Program program_;
     gl::Buffer camera_;
     gl::Buffer hdr_;
+    gl::Buffer exits_;
+    gl::Texture2D environment_;
 };
 
 }  // namespace eikon::render

@@ -26,5 +26,6 @@ inline vec3 xyz_of(vec4 v) { return vec3(v); }
 #include "shaders/common/phase.glsl"
 #include "shaders/common/sampling.glsl"
 #include "shaders/common/receiver.glsl"
+#include "shaders/common/fresnel.glsl"
 
 }  // namespace eikon::shader

@@ -55,14 +55,17 @@ FieldSet voxelizeScene(const Scene& scene) {
     fields.referenceIndex = scene.medium.index;
     bool anyExtinction = positive(scene.medium.extinction);
     bool anyScattering = positive(scene.medium.scattering);
+    bool anyAnisotropy = scene.medium.anisotropy != 0.0;
     for (const auto& object : scene.objects) {
         anyExtinction = anyExtinction || positive(object.material.extinction);
         anyScattering = anyScattering || positive(object.material.scattering);
+        anyAnisotropy = anyAnisotropy || object.material.anisotropy != 0.0;
     }
     const std::size_t cells = fields.grid.cellCount();
     fields.deltaIndex.assign(cells, 0.0f);
     if (anyExtinction) fields.extinction.assign(3 * cells, 0.0f);
     if (anyScattering) fields.scattering.assign(3 * cells, 0.0f);
+    if (anyAnisotropy) fields.anisotropy.assign(cells, 0.0f);
 
     const glm::ivec3 r = fields.grid.resolution;
     tbb::parallel_for(0, r.z, [&](int k) {
@@ -75,8 +78,10 @@ FieldSet voxelizeScene(const Scene& scene) {
                     m.index += c * (object.material.index - m.index);
                     m.extinction += c * (object.material.extinction - m.extinction);
                     m.scattering += c * (object.material.scattering - m.scattering);
+                    m.anisotropy += c * (object.material.anisotropy - m.anisotropy);
                 }
                 const std::size_t cell = fields.grid.linearIndex(i, j, k);
+                if (anyAnisotropy) fields.anisotropy[cell] = static_cast<float>(m.anisotropy);
                 fields.deltaIndex[cell] = static_cast<float>(m.index - scene.medium.index);
                 for (int channel = 0; channel < 3; ++channel) {
                     if (anyExtinction) fields.extinction[3 * cell + channel] = static_cast<float>(m.extinction[channel]);

@@ -113,7 +113,7 @@ TEST(SceneParser, ParsesAFullScene) {
     EXPECT_EQ(scene.render.seed, 7u);
     EXPECT_DOUBLE_EQ(scene.render.exposureEv, -1.5);
     EXPECT_DOUBLE_EQ(scene.render.stepVoxels, 0.25);
-    EXPECT_EQ(scene.render.background, Rgb(0.1));
+    EXPECT_EQ(scene.render.environment.radiance, Rgb(0.1));
 }
 
 // validScene() with every key added since the first format: a spot light as

@@ -1,0 +1,64 @@
+#include "sim/fluid/ParallelOps.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+namespace eikon::sim {
+
+namespace {
+
+using Range = tbb::blocked_range<std::size_t>;
+constexpr std::size_t kGrain = 4096;
+
+template <class Body>
+double reduceSum(std::size_t n, Body body) {
+    return tbb::parallel_reduce(
+        Range(0, n, kGrain), 0.0,
+        [&](const Range& r, double partial) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) partial += body(i);
+            return partial;
+        },
+        std::plus<>());
+}
+
+}  // namespace
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+    return reduceSum(a.size(), [&](std::size_t i) { return a[i] * b[i]; });
+}
+
+double sum(const std::vector<double>& a) {
+    return reduceSum(a.size(), [&](std::size_t i) { return a[i]; });
+}
+
+double maxAbs(const std::vector<double>& a) {
+    return tbb::parallel_reduce(
+        Range(0, a.size(), kGrain), 0.0,
+        [&](const Range& r, double partial) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) partial = std::max(partial, std::abs(a[i]));
+            return partial;
+        },
+        [](double x, double y) { return std::max(x, y); });
+}
+
+void axpy(double alpha, const std::vector<double>& x, std::vector<double>& y) {
+    tbb::parallel_for(Range(0, x.size(), kGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) y[i] += alpha * x[i];
+    });
+}
+
+void removeMean(std::vector<double>& values, const std::vector<double>& mask) {
+    const double count = reduceSum(mask.size(), [&](std::size_t i) { return mask[i] != 0.0 ? 1.0 : 0.0; });
+    if (count == 0.0) return;
+    const double mean = reduceSum(values.size(), [&](std::size_t i) { return mask[i] != 0.0 ? values[i] : 0.0; }) / count;
+    tbb::parallel_for(Range(0, values.size(), kGrain), [&](const Range& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i) values[i] = mask[i] != 0.0 ? values[i] - mean : 0.0;
+    });
+}
+
+}  // namespace eikon::sim
