@@ -1,7 +1,10 @@
 // Per-voxel octree level and step cap (Sun et al. 2008, §4.2 and §5.3): from
 // the coarsest level down, the first node around the voxel whose index range
 // is below ε gives the level with no cap; one whose range is below ε′ gives
-// the level with the finite cap. Voxels that find neither step by Δs_min —
+// the level with the finite cap. Unlike the paper, ε and ε′ are fractions of
+// the whole field's index range (read off the pyramid's top), so one setting
+// serves glass (Δn ≈ 0.5) and hot air (Δn ≈ 1e-4) alike; an absolute ε
+// fit for glass would call a whole mirage uniform. Voxels that find neither step by Δs_min —
 // where the paper stepped to the voxel's face, up to √3 voxels: in the
 // steepest part of an interface that doubled the caustic's error against
 // uniform half-voxel steps.
@@ -31,16 +34,18 @@ void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(cell, imageSize(step_structure)))) return;
     vec3 result = vec3(0.0f, min_step, 0.0f);
+    vec4 whole = texelFetch(pyramid, ivec3(0), levels - 1);
+    float field_range = index_scale * (whole.y - whole.x);
     for (int level = levels - 1; level >= 0; --level) {
         vec4 range = texelFetch(pyramid, cell >> level, level);
         if ((range.w - range.z) * node_edge * exp2(float(level)) >= optical_depth_tolerance) continue;
         float variation = index_scale * (range.y - range.x);
         float empty = range.w <= 0.0f ? 1.0f : 0.0f;
-        if (variation < epsilon) {
+        if (variation <= epsilon * field_range) {
             result = vec3(float(level), 1e30f, empty);
             break;
         }
-        if (variation < epsilon_prime) {
+        if (variation <= epsilon_prime * field_range) {
             result = vec3(float(level), capped_step, empty);
             break;
         }

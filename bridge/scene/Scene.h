@@ -112,13 +112,15 @@ struct TracerDesc {
     enum class Integrator { Euler, Leapfrog, Rk4 } integrator = Integrator::Leapfrog;
     enum class StepPolicy { Uniform, Octree } stepPolicy = StepPolicy::Octree;
     double stepVoxels = 0.5;      // uniform: Δs; octree: Δs_min. In voxels, > 0
-    // Octree tolerances. Sun et al. used ε = 0.005, ε′ = 0.02 with an 8-voxel
-    // cap; on the glass-sphere caustic that doubled the error of uniform
-    // half-voxel steps, while ε = ε′ = 0.001 beats uniform steps with 3.6×
-    // fewer (docs/accuracy.md), so the capped tier is off by default.
+    // Octree tolerances, as fractions of the field's whole index range (so
+    // glass and hot air need no retuning). Sun et al. used absolute ε = 0.005,
+    // ε′ = 0.02 (0.01, 0.04 of a glass sphere's range) with an 8-voxel cap; on
+    // the glass-sphere caustic that doubled the error of uniform half-voxel
+    // steps, while ε = ε′ = 0.002 beats uniform steps with 3.6× fewer
+    // (docs/accuracy.md), so the capped tier is off by default.
     double maxStepVoxels = 8.0;   // octree: step cap in nodes whose index varies by ε..ε′, >= stepVoxels
-    double epsilon = 0.001;       // octree: index variation below which a node counts as uniform, > 0
-    double epsilonPrime = 0.001;  // octree: variation below which the capped step applies, >= epsilon
+    double epsilon = 0.002;       // octree: relative index variation below which a node counts as uniform, > 0
+    double epsilonPrime = 0.002;  // octree: relative variation below which the capped step applies, >= epsilon
     bool renormalize = false;     // rescale |v| to n(x) after every step
     double powerCutoff = 1e-4;    // stop a photon below this fraction of its emitted power, in [0, 1)
     long long maxSteps = 0;       // per photon; 0: four grid crossings at the smallest step

@@ -183,8 +183,8 @@ TEST(SceneParser, NewKeysTakeDefaults) {
         EXPECT_EQ(tracer.stepPolicy, TracerDesc::StepPolicy::Octree);
         EXPECT_DOUBLE_EQ(tracer.stepVoxels, 0.5);
         EXPECT_DOUBLE_EQ(tracer.maxStepVoxels, 8.0);
-        EXPECT_DOUBLE_EQ(tracer.epsilon, 0.001);
-        EXPECT_DOUBLE_EQ(tracer.epsilonPrime, 0.001);
+        EXPECT_DOUBLE_EQ(tracer.epsilon, 0.002);
+        EXPECT_DOUBLE_EQ(tracer.epsilonPrime, 0.002);
         EXPECT_FALSE(tracer.renormalize);
         EXPECT_DOUBLE_EQ(tracer.powerCutoff, 1e-4);
         EXPECT_EQ(tracer.maxSteps, 0);

@@ -1,0 +1,59 @@
+#include "sim/fluid/ConjugateGradient.h"
+
+#include "sim/fluid/ParallelOps.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+namespace eikon::sim {
+
+SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<double>& b, std::vector<double>& x,
+                             const Preconditioner& preconditioner, double tolerance, int maxIterations,
+                             bool singular) {
+    const std::size_t n = b.size();
+    const double bNorm = maxAbs(b);
+    if (bNorm == 0.0) {
+        x.assign(n, 0.0);
+        return {};
+    }
+    std::vector<double> r(n), z(n), q(n);
+    a.residual(b, x, r);
+    if (singular) removeMean(r, a.diag);
+    SolveStats stats{0, maxAbs(r) / bNorm};
+    if (stats.relativeResidual <= tolerance) return stats;
+
+    preconditioner(r, z);
+    if (singular) removeMean(z, a.diag);
+    std::vector<double> p = z;
+    double rho = dot(r, z);
+    while (stats.iterations < maxIterations) {
+        a.apply(p, q);
+        const double alpha = rho / dot(p, q);
+        axpy(alpha, p, x);
+        axpy(-alpha, q, r);
+        ++stats.iterations;
+        stats.relativeResidual = maxAbs(r) / bNorm;
+        if (stats.relativeResidual <= tolerance) break;
+        preconditioner(r, z);
+        if (singular) removeMean(z, a.diag);
+        const double rhoNext = dot(r, z);
+        const double beta = rhoNext / rho;
+        rho = rhoNext;
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t i = range.begin(); i < range.end(); ++i) p[i] = z[i] + beta * p[i];
+        });
+    }
+    return stats;
+}
+
+Preconditioner jacobiPreconditioner(const SevenPointOperator& a) {
+    return [&a](const std::vector<double>& r, std::vector<double>& z) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, r.size(), 4096),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              for (std::size_t i = range.begin(); i < range.end(); ++i)
+                                  z[i] = a.diag[i] == 0.0 ? 0.0 : r[i] / a.diag[i];
+                          });
+    };
+}
+
+}  // namespace eikon::sim

@@ -1,0 +1,32 @@
+// Preconditioned conjugate gradients on a SevenPointOperator (Saad,
+// "Iterative Methods for Sparse Linear Systems", Alg. 9.1; McAdams et al.
+// 2010, "A parallel multigrid Poisson solver for fluids simulation on large
+// grids", Alg. 2 with their multigrid V-cycle as the preconditioner).
+#pragma once
+
+#include "sim/fluid/StencilOperator.h"
+
+#include <functional>
+#include <vector>
+
+namespace eikon::sim {
+
+struct SolveStats {
+    int iterations = 0;
+    double relativeResidual = 0.0;  // max|b − A x| / max|b| at the end
+};
+
+// z ≈ A⁻¹ r; must be symmetric positive definite for CG to converge.
+using Preconditioner = std::function<void(const std::vector<double>& r, std::vector<double>& z)>;
+
+// Solves A x = b from the x given, until max|r| <= tolerance · max|b| or
+// maxIterations. With `singular` (a pure-Neumann problem whose null space is
+// the constants over the active cells), b must have zero mean over them and
+// residuals and preconditioned residuals are kept so.
+SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<double>& b, std::vector<double>& x,
+                             const Preconditioner& preconditioner, double tolerance, int maxIterations, bool singular);
+
+// The Jacobi preconditioner z = r / diag.
+Preconditioner jacobiPreconditioner(const SevenPointOperator& a);
+
+}  // namespace eikon::sim

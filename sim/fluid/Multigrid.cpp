@@ -1,0 +1,179 @@
+#include "sim/fluid/Multigrid.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+namespace eikon::sim {
+
+namespace {
+
+constexpr int kSmoothingSweeps = 2;  // red–black pairs before and after the coarse correction
+constexpr int kMinCoarsenSize = 4;   // an axis shorter than this is not coarsened
+
+}  // namespace
+
+MultigridPreconditioner::AxisTransfer MultigridPreconditioner::makeTransfer(int fine, bool coarsen) {
+    AxisTransfer t;
+    const int coarse = coarsen ? (fine + 1) / 2 : fine;
+    if (!coarsen) t.parentWeight = t.neighbourWeight = 0.5;
+    t.parent.resize(fine);
+    t.neighbour.resize(fine);
+    for (int f = 0; f < fine; ++f) {
+        const int p = coarsen ? f / 2 : f;
+        t.parent[f] = p;
+        t.neighbour[f] = coarsen ? std::clamp(f % 2 == 0 ? p - 1 : p + 1, 0, coarse - 1) : p;
+    }
+    // Pᵀ: coarse cell C collects ¾ from each fine cell with parent C and ¼
+    // from each whose neighbour is C; those fine cells lie in [2C − 1, 2C + 2].
+    t.firstChild.resize(coarse);
+    t.weights.resize(coarse);
+    for (int c = 0; c < coarse; ++c) {
+        const int first = coarsen ? 2 * c - 1 : c;
+        t.firstChild[c] = first;
+        for (int s = 0; s < 4; ++s) {
+            const int f = first + s;
+            double w = 0.0;
+            if (f >= 0 && f < fine) {
+                if (t.parent[f] == c) w += t.parentWeight;
+                if (t.neighbour[f] == c) w += t.neighbourWeight;
+            }
+            t.weights[c][s] = w;
+        }
+    }
+    return t;
+}
+
+MultigridPreconditioner::MultigridPreconditioner(glm::ivec3 size, glm::dvec3 h,
+                                                 const std::vector<std::uint8_t>& active, const bool openFaces[6]) {
+    std::vector<std::uint8_t> levelActive = active;
+    while (true) {
+        Level level;
+        level.op = poissonOperator(size, h, levelActive, openFaces);
+        level.x.assign(level.op.cellCount(), 0.0);
+        level.b = level.x;
+        level.r = level.x;
+        const bool coarsen[3] = {size.x >= kMinCoarsenSize, size.y >= kMinCoarsenSize, size.z >= kMinCoarsenSize};
+        if (!coarsen[0] && !coarsen[1] && !coarsen[2]) {
+            levels_.push_back(std::move(level));
+            return;
+        }
+        glm::ivec3 coarseSize = size;
+        for (int axis = 0; axis < 3; ++axis) {
+            level.toCoarser[axis] = makeTransfer(size[axis], coarsen[axis]);
+            if (coarsen[axis]) {
+                coarseSize[axis] = (size[axis] + 1) / 2;
+                h[axis] *= 2.0;
+                level.restrictionScale *= 0.5;
+            }
+        }
+        std::vector<std::uint8_t> coarseActive(static_cast<std::size_t>(coarseSize.x) * coarseSize.y * coarseSize.z, 0);
+        const SevenPointOperator& op = level.op;
+        for (int k = 0; k < size.z; ++k)
+            for (int j = 0; j < size.y; ++j)
+                for (int i = 0; i < size.x; ++i) {
+                    if (!levelActive[op.index(i, j, k)]) continue;
+                    const int ci = level.toCoarser[0].parent[i];
+                    const int cj = level.toCoarser[1].parent[j];
+                    const int ck = level.toCoarser[2].parent[k];
+                    coarseActive[ci + static_cast<std::size_t>(coarseSize.x) * (cj + static_cast<std::size_t>(coarseSize.y) * ck)] = 1;
+                }
+        levels_.push_back(std::move(level));
+        size = coarseSize;
+        levelActive = std::move(coarseActive);
+    }
+}
+
+void MultigridPreconditioner::apply(const std::vector<double>& r, std::vector<double>& z) const {
+    levels_.front().b = r;
+    vcycle(0);
+    z = levels_.front().x;
+}
+
+void MultigridPreconditioner::vcycle(std::size_t l) const {
+    const Level& level = levels_[l];
+    std::fill(level.x.begin(), level.x.end(), 0.0);
+    if (l + 1 == levels_.size()) {
+        // Coarsest level: symmetric Gauss–Seidel sweeps, enough to cross it a few times.
+        const int sweeps = 2 * std::max({level.op.size.x, level.op.size.y, level.op.size.z});
+        for (int s = 0; s < sweeps; ++s) {
+            level.op.relaxColour(level.b, level.x, 0);
+            level.op.relaxColour(level.b, level.x, 1);
+            level.op.relaxColour(level.b, level.x, 1);
+            level.op.relaxColour(level.b, level.x, 0);
+        }
+        return;
+    }
+    for (int s = 0; s < kSmoothingSweeps; ++s) {
+        level.op.relaxColour(level.b, level.x, 0);
+        level.op.relaxColour(level.b, level.x, 1);
+    }
+    level.op.residual(level.b, level.x, level.r);
+    restrictResidual(level, levels_[l + 1]);
+    vcycle(l + 1);
+    prolongAndAdd(levels_[l + 1], level);
+    for (int s = 0; s < kSmoothingSweeps; ++s) {
+        level.op.relaxColour(level.b, level.x, 1);
+        level.op.relaxColour(level.b, level.x, 0);
+    }
+}
+
+void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& coarse) const {
+    const glm::ivec3 cs = coarse.op.size;
+    const auto& tx = fine.toCoarser[0];
+    const auto& ty = fine.toCoarser[1];
+    const auto& tz = fine.toCoarser[2];
+    tbb::parallel_for(0, cs.z, [&](int ck) {
+        for (int cj = 0; cj < cs.y; ++cj)
+            for (int ci = 0; ci < cs.x; ++ci) {
+                const std::size_t c = coarse.op.index(ci, cj, ck);
+                double s = 0.0;
+                if (coarse.op.diag[c] != 0.0) {
+                    for (int a = 0; a < 4; ++a) {
+                        const double wz = tz.weights[ck][a];
+                        if (wz == 0.0) continue;
+                        const int fk = tz.firstChild[ck] + a;
+                        for (int b = 0; b < 4; ++b) {
+                            const double wyz = wz * ty.weights[cj][b];
+                            if (wyz == 0.0) continue;
+                            const int fj = ty.firstChild[cj] + b;
+                            for (int d = 0; d < 4; ++d) {
+                                const double w = wyz * tx.weights[ci][d];
+                                if (w != 0.0) s += w * fine.r[fine.op.index(tx.firstChild[ci] + d, fj, fk)];
+                            }
+                        }
+                    }
+                }
+                coarse.b[c] = fine.restrictionScale * s;
+            }
+    });
+}
+
+void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fine) const {
+    const glm::ivec3 fs = fine.op.size;
+    const auto& tx = fine.toCoarser[0];
+    const auto& ty = fine.toCoarser[1];
+    const auto& tz = fine.toCoarser[2];
+    tbb::parallel_for(0, fs.z, [&](int k) {
+        const int zs[2] = {tz.parent[k], tz.neighbour[k]};
+        const double wzs[2] = {tz.parentWeight, tz.neighbourWeight};
+        for (int j = 0; j < fs.y; ++j) {
+            const int ys[2] = {ty.parent[j], ty.neighbour[j]};
+            const double wys[2] = {ty.parentWeight, ty.neighbourWeight};
+            for (int i = 0; i < fs.x; ++i) {
+                const std::size_t f = fine.op.index(i, j, k);
+                if (fine.op.diag[f] == 0.0) continue;
+                const int xs[2] = {tx.parent[i], tx.neighbour[i]};
+                const double wxs[2] = {tx.parentWeight, tx.neighbourWeight};
+                double s = 0.0;
+                for (int a = 0; a < 2; ++a)
+                    for (int b = 0; b < 2; ++b)
+                        for (int d = 0; d < 2; ++d)
+                            s += wzs[a] * wys[b] * wxs[d] * coarse.x[coarse.op.index(xs[d], ys[b], zs[a])];
+                fine.x[f] += s;
+            }
+        }
+    });
+}
+
+}  // namespace eikon::sim

@@ -1,0 +1,71 @@
+#include "sim/fluid/PressureSolver.h"
+
+#include "sim/fluid/ParallelOps.h"
+
+#include <tbb/parallel_for.h>
+
+namespace eikon::sim {
+
+namespace {
+
+std::vector<std::uint8_t> fluidCells(const FluidDomain& domain) {
+    std::vector<std::uint8_t> fluid(domain.solid.size());
+    for (std::size_t c = 0; c < fluid.size(); ++c) fluid[c] = domain.solid[c] ? 0 : 1;
+    return fluid;
+}
+
+struct OpenFaces {
+    bool open[6];
+    explicit OpenFaces(const FluidDomain& domain) {
+        for (int face = 0; face < 6; ++face) open[face] = domain.isOpen(face / 2, face % 2);
+    }
+};
+
+}  // namespace
+
+PressureSolver::PressureSolver(const FluidDomain& domain, glm::dvec3 h)
+    : domain_(domain),
+      multigrid_(domain.cells, h, fluidCells(domain), OpenFaces(domain).open),
+      singular_(!domain.anyOpenFace()) {}
+
+SolveStats PressureSolver::project(MacGrid& mac, GridField& pressure, double tolerance, int maxIterations) const {
+    const SevenPointOperator& a = multigrid_.fineOperator();
+    const glm::ivec3 n = domain_.cells;
+    std::vector<double> rhs(a.cellCount(), 0.0);
+    tbb::parallel_for(0, n.z, [&](int k) {
+        for (int j = 0; j < n.y; ++j)
+            for (int i = 0; i < n.x; ++i) {
+                const std::size_t c = a.index(i, j, k);
+                if (a.diag[c] != 0.0) rhs[c] = -mac.divergence(i, j, k);
+            }
+    });
+    if (singular_) removeMean(rhs, a.diag);  // closed box: Σ∇·u = 0 up to rounding
+    const SolveStats stats = conjugateGradient(
+        a, rhs, pressure.values,
+        [this](const std::vector<double>& r, std::vector<double>& z) { multigrid_.apply(r, z); }, tolerance,
+        maxIterations, singular_);
+
+    // u −= ∇p on every free face; open faces see p = 0 outside.
+    for (int axis = 0; axis < 3; ++axis) {
+        GridField& u = mac.velocity[axis];
+        const double invH = 1.0 / mac.h[axis];
+        tbb::parallel_for(0, u.size.z, [&](int k) {
+            for (int j = 0; j < u.size.y; ++j)
+                for (int i = 0; i < u.size.x; ++i) {
+                    if (domain_.faceIsFixed(axis, i, j, k)) {
+                        u(i, j, k) = 0.0;
+                        continue;
+                    }
+                    glm::ivec3 upper(i, j, k);
+                    glm::ivec3 lower = upper;
+                    lower[axis] -= 1;
+                    const double pLower = lower[axis] >= 0 ? pressure(lower.x, lower.y, lower.z) : 0.0;
+                    const double pUpper = upper[axis] < n[axis] ? pressure(upper.x, upper.y, upper.z) : 0.0;
+                    u(i, j, k) -= (pUpper - pLower) * invH;
+                }
+        });
+    }
+    return stats;
+}
+
+}  // namespace eikon::sim

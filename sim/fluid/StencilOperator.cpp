@@ -1,0 +1,82 @@
+#include "sim/fluid/StencilOperator.h"
+
+#include <tbb/parallel_for.h>
+
+namespace eikon::sim {
+
+double SevenPointOperator::neighbourSum(const std::vector<double>& x, std::size_t c) const {
+    const std::uint8_t bits = coupled[c];
+    const std::size_t sx = 1;
+    const std::size_t sy = static_cast<std::size_t>(size.x);
+    const std::size_t sz = sy * static_cast<std::size_t>(size.y);
+    double s = 0.0;
+    if (bits & bit(0, 0)) s += weight.x * x[c - sx];
+    if (bits & bit(0, 1)) s += weight.x * x[c + sx];
+    if (bits & bit(1, 0)) s += weight.y * x[c - sy];
+    if (bits & bit(1, 1)) s += weight.y * x[c + sy];
+    if (bits & bit(2, 0)) s += weight.z * x[c - sz];
+    if (bits & bit(2, 1)) s += weight.z * x[c + sz];
+    return s;
+}
+
+void SevenPointOperator::apply(const std::vector<double>& x, std::vector<double>& y) const {
+    tbb::parallel_for(0, size.z, [&](int k) {
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i) {
+                const std::size_t c = index(i, j, k);
+                y[c] = diag[c] == 0.0 ? 0.0 : diag[c] * x[c] - neighbourSum(x, c);
+            }
+    });
+}
+
+void SevenPointOperator::residual(const std::vector<double>& b, const std::vector<double>& x,
+                                  std::vector<double>& r) const {
+    tbb::parallel_for(0, size.z, [&](int k) {
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i) {
+                const std::size_t c = index(i, j, k);
+                r[c] = diag[c] == 0.0 ? 0.0 : b[c] - (diag[c] * x[c] - neighbourSum(x, c));
+            }
+    });
+}
+
+void SevenPointOperator::relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const {
+    tbb::parallel_for(0, size.z, [&](int k) {
+        for (int j = 0; j < size.y; ++j)
+            for (int i = (j + k + colour) & 1; i < size.x; i += 2) {
+                const std::size_t c = index(i, j, k);
+                if (diag[c] != 0.0) x[c] = (b[c] + neighbourSum(x, c)) / diag[c];
+            }
+    });
+}
+
+SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vector<std::uint8_t>& active,
+                                   const bool openFaces[6]) {
+    SevenPointOperator op;
+    op.size = size;
+    op.weight = 1.0 / (h * h);
+    op.diag.assign(active.size(), 0.0);
+    op.coupled.assign(active.size(), 0);
+    tbb::parallel_for(0, size.z, [&](int k) {
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i) {
+                const std::size_t c = op.index(i, j, k);
+                if (!active[c]) continue;
+                const glm::ivec3 cell(i, j, k);
+                for (int axis = 0; axis < 3; ++axis)
+                    for (int side = 0; side < 2; ++side) {
+                        glm::ivec3 n = cell;
+                        n[axis] += side == 0 ? -1 : 1;
+                        if (n[axis] < 0 || n[axis] >= size[axis]) {
+                            if (openFaces[2 * axis + side]) op.diag[c] += op.weight[axis];
+                        } else if (active[op.index(n.x, n.y, n.z)]) {
+                            op.diag[c] += op.weight[axis];
+                            op.coupled[c] |= SevenPointOperator::bit(axis, side);
+                        }
+                    }
+            }
+    });
+    return op;
+}
+
+}  // namespace eikon::sim

@@ -1,0 +1,47 @@
+// A symmetric seven-point operator on a cell lattice, matrix-free:
+//   (A x)_c = diag_c · x_c − Σ_{n coupled to c} w_axis(c,n) · x_n
+// for active cells (diag_c > 0); inactive cells (solids) map to 0. Both the
+// pressure Poisson matrix (Bridson 2nd ed. §5.3) and the backward-Euler
+// diffusion matrix (I + Δt·D·L) have this form; Dirichlet neighbours (open
+// boundaries, fixed cells) add to diag_c without a coupling.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace eikon::sim {
+
+struct SevenPointOperator {
+    glm::ivec3 size{0};
+    glm::dvec3 weight{0.0};              // coupling per axis
+    std::vector<double> diag;            // one per cell; 0 marks an inactive cell
+    std::vector<std::uint8_t> coupled;   // bit 2·axis + side: the lower (0) or upper (1) neighbour is an unknown
+
+    static constexpr std::uint8_t bit(int axis, int side) { return static_cast<std::uint8_t>(1u << (2 * axis + side)); }
+
+    std::size_t cellCount() const { return diag.size(); }
+    std::size_t index(int i, int j, int k) const {
+        return static_cast<std::size_t>(i) +
+               static_cast<std::size_t>(size.x) *
+                   (static_cast<std::size_t>(j) + static_cast<std::size_t>(size.y) * static_cast<std::size_t>(k));
+    }
+
+    // Σ_{n coupled to cell c} w · x_n.
+    double neighbourSum(const std::vector<double>& x, std::size_t c) const;
+
+    void apply(const std::vector<double>& x, std::vector<double>& y) const;
+    // r = b − A x
+    void residual(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r) const;
+    // One Gauss–Seidel half-sweep over the cells with (i + j + k) % 2 == colour.
+    void relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const;
+};
+
+// The pressure operator Σ_n (p_c − p_n)/h² over fluid cells (active != 0):
+// solid neighbours and closed walls are Neumann (no term), open faces are
+// Dirichlet p = 0 (Bridson 2nd ed. §5.3, Eq. 5.14 generalised to 3D).
+SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vector<std::uint8_t>& active,
+                                   const bool openFaces[6]);
+
+}  // namespace eikon::sim
