@@ -20,6 +20,11 @@ inline uint floatBitsToUint(float value) { return glm::floatBitsToUint(value); }
 inline float uintBitsToFloat(uint value) { return glm::uintBitsToFloat(value); }
 inline vec3 xyz_of(vec4 v) { return vec3(v); }
 
+// GLSL has no `inline`: the shared functions get internal linkage instead,
+// so any number of translation units may include this header.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+namespace {
 #include "shaders/common/random.glsl"
 #include "shaders/common/ray_step.glsl"
 #include "shaders/common/attenuation.glsl"
@@ -27,5 +32,7 @@ inline vec3 xyz_of(vec4 v) { return vec3(v); }
 #include "shaders/common/sampling.glsl"
 #include "shaders/common/receiver.glsl"
 #include "shaders/common/fresnel.glsl"
+}  // namespace
+#pragma GCC diagnostic pop
 
 }  // namespace eikon::shader

@@ -8,6 +8,7 @@
 #include <functional>
 
 namespace eikon::shader {
+namespace {
 
 // The field the integrators sample: set per test.
 std::function<vec4(vec3)> currentField;
@@ -15,6 +16,7 @@ vec4 field_at(vec3 x) { return currentField(x); }
 
 #include "shaders/common/integrators.glsl"
 
+}  // namespace
 }  // namespace eikon::shader
 
 namespace eikon {

@@ -1,0 +1,199 @@
+// The viewing pass against closed forms: heat-shimmer deflection through a
+// Gaussian hot-air bump, single scattering in a homogeneous slab, total
+// internal reflection in glass; and the default picture against a reference.
+#include "bridge/io/ImageIo.h"
+#include "bridge/scene/SceneParser.h"
+#include "render/graph/FrameRenderer.h"
+#include "sim/voxelize/AnalyticVoxelizer.h"
+#include "tests/integration/GlTestContext.h"
+#include "tests/integration/TraceHelpers.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace eikon {
+namespace {
+
+using namespace test;
+
+struct ViewResult {
+    std::vector<float> hdr;
+    std::vector<glm::vec4> exits;
+    render::Image8 image;
+};
+
+ViewResult view(const Scene& scene, const FieldSet& fields) {
+    glContext();
+    render::FrameRenderer renderer(scene, fields, {.photons = {}, .recordViewExits = true});
+    ViewResult result;
+    result.image = renderer.render(fields).image;
+    result.hdr = renderer.viewStage().downloadHdr();
+    result.exits = renderer.viewStage().downloadExits();
+    return result;
+}
+
+// The pinhole direction of pixel (i, j), as the view shader computes it.
+glm::dvec3 pixelDirection(const Scene& scene, int i, int j) {
+    const glm::dvec3 forward = glm::normalize(scene.camera.target - scene.camera.position);
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, scene.camera.up));
+    const glm::dvec3 up = glm::cross(right, forward);
+    const double tanHalf = std::tan(scene.camera.fovDeg * std::numbers::pi / 360.0);
+    const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
+    const double ndcX = (i + 0.5) / scene.render.width * 2.0 - 1.0;
+    const double ndcY = (j + 0.5) / scene.render.height * 2.0 - 1.0;
+    return glm::normalize(forward + ndcX * tanHalf * aspect * right - ndcY * tanHalf * up);
+}
+
+// Heat shimmer: hot air lowers the index, δn = A·exp(−r²/2s²) with A < 0. A
+// ray passing at impact parameter b is deflected (thin-lens approximation,
+// n ≈ 1) by α = ∫ ∂n/∂x dz = −A·b·√(2π)/s · exp(−b²/2s²), away from the bump.
+// Each pixel's exit direction must match within 5% wherever α exceeds a
+// fifth of its peak — which is how far a background checkerboard is shifted.
+TEST(ViewPass, HeatShimmerDeflectsByTheAnalyticAngle) {
+    const double amplitude = -1e-3, width = 0.04;
+    Scene scene = emptyScene(glm::dvec3(-0.25), glm::dvec3(0.25), 80);
+    scene.grid.smoothingSigmaVoxels = 0.0;
+    scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 1.0));
+    scene.render.photons = 64;
+    scene.render.width = 161;
+    scene.render.height = 3;
+    scene.camera.position = glm::dvec3(0.0, 0.0, 4.0);
+    scene.camera.target = glm::dvec3(0.0);
+    scene.camera.fovDeg = 0.08;  // × aspect 161/3: the row spans ±0.15 m at the bump, nearly parallel rays
+    FieldSet fields;
+    fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields.deltaIndex.resize(fields.grid.cellCount());
+    for (int k = 0; k < 80; ++k)
+        for (int j = 0; j < 80; ++j)
+            for (int i = 0; i < 80; ++i) {
+                const glm::dvec3 x = fields.grid.cellCentre(i, j, k);
+                fields.deltaIndex[fields.grid.linearIndex(i, j, k)] =
+                    static_cast<float>(amplitude * std::exp(-glm::dot(x, x) / (2 * width * width)));
+            }
+    fields.indexVersion = 1;
+    const ViewResult result = view(scene, fields);
+
+    const double peak = -amplitude * std::sqrt(2 * std::numbers::pi) * std::exp(-0.5);  // at b = s
+    double worst = 0.0;
+    int checked = 0;
+    for (int i = 0; i < scene.render.width; ++i) {
+        const glm::dvec3 initial = pixelDirection(scene, i, 1);
+        const glm::dvec3 exit(result.exits[static_cast<std::size_t>(scene.render.width + i)]);
+        // Impact parameter: closest approach of the undeflected ray to the bump's centre.
+        const glm::dvec3 toCentre = -scene.camera.position;
+        const double b = (scene.camera.position + glm::dot(toCentre, initial) * initial).x;
+        const double expected = -amplitude * b * std::sqrt(2 * std::numbers::pi) / width * std::exp(-b * b / (2 * width * width));
+        if (std::abs(expected) < 0.2 * peak) continue;
+        const double measured = exit.x - initial.x;  // small angles
+        worst = std::max(worst, std::abs(measured / expected - 1.0));
+        ++checked;
+    }
+    reportFigure("heat_shimmer_deflection_worst_relative_error", worst);
+    EXPECT_GT(checked, 40);
+    EXPECT_LT(worst, 0.05);
+}
+
+// Single scattering: a homogeneous slab (σs = κ = 2 /m, g = 0) fills the grid
+// under a vertical beam E0; a horizontal camera ray at depth d crosses
+// L = 0.5 m of it and sees
+//   L = σs · φ(d) · p · (1 − e^{−κL}) / κ,   φ(d) = E0·e^{−κd},  p = 1/4π
+// (no background). The centre pixel must match within 3%.
+TEST(ViewPass, SingleScatteringMatchesTheSlabClosedForm) {
+    Scene scene = emptyScene(glm::dvec3(-0.25, 0.0, -0.25), glm::dvec3(0.25, 0.5, 0.25), 32);
+    scene.medium.extinction = Rgb(2.0);
+    scene.medium.scattering = Rgb(2.0);
+    scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 3.0));
+    scene.render.photons = 1 << 19;
+    scene.render.width = 9;
+    scene.render.height = 9;
+    scene.render.environment.radiance = Rgb(0.0);
+    scene.camera.position = glm::dvec3(-1.0, 0.3, 0.0);
+    scene.camera.target = glm::dvec3(0.0, 0.3, 0.0);
+    scene.camera.fovDeg = 1.0;
+    const ViewResult result = view(scene, sim::voxelizeScene(scene));
+
+    const double kappa = 2.0, sigma = 2.0, depth = 0.2, length = 0.5;
+    const double expected = sigma * 3.0 * std::exp(-kappa * depth) / (4 * std::numbers::pi) *
+                            (1 - std::exp(-kappa * length)) / kappa;
+    const double measured = result.hdr[4 * (4 * 9 + 4) + 1];
+    reportFigure("single_scattering_measured_over_closed_form", measured / expected);
+    EXPECT_NEAR(measured / expected, 1.0, 0.03);
+}
+
+// Total internal reflection: inside glass (n = 1.5) a camera ray meets the
+// flat top surface at 60° from its normal, beyond the critical angle 41.8°,
+// and the ray equation alone must turn it back down; at 30° it leaves
+// upward, bent away from the normal by Snell's law.
+TEST(ViewPass, TotalInternalReflectionComesFromTheRayEquation) {
+    for (double angle : {30.0, 60.0}) {
+        Scene scene = emptyScene(glm::dvec3(-0.5), glm::dvec3(0.5), 64);
+        ObjectDesc glass;
+        glass.kind = ObjectDesc::Kind::Box;
+        glass.box = {glm::dvec3(-2.0), glm::dvec3(2.0, 0.0, 2.0)};
+        glass.material.index = 1.5;
+        scene.objects.push_back(glass);
+        scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 1.0));
+        scene.render.photons = 64;
+        scene.render.width = 3;
+        scene.render.height = 3;
+        const double radians = angle * std::numbers::pi / 180.0;
+        scene.camera.position = glm::dvec3(-0.2, -0.2, 0.0);
+        scene.camera.target = scene.camera.position + glm::dvec3(std::sin(radians), std::cos(radians), 0.0);
+        scene.camera.up = glm::dvec3(0.0, 0.0, 1.0);
+        scene.camera.fovDeg = 1.0;
+        const ViewResult result = view(scene, sim::voxelizeScene(scene));
+        const glm::vec4 exit = result.exits[4];
+        reportFigure(angle > 41.8 ? "tir_reflected_exit_x_minus_sin60" : "refraction_exit_angle_error_rad",
+                     angle > 41.8 ? exit.x - std::sin(radians) : std::asin(exit.x) - std::asin(1.5 * std::sin(radians)));
+        if (angle > 41.8) {
+            EXPECT_LT(exit.y, 0.0f) << "at " << angle << "°, the ray must be reflected back into the glass";
+            EXPECT_NEAR(exit.x, std::sin(radians), 0.02) << "mirror reflection keeps the tangential component";
+        } else {
+            const double refracted = std::asin(1.5 * std::sin(radians));  // Snell, into air
+            EXPECT_GT(exit.y, 0.0f) << "at " << angle << "°, the ray must leave the glass";
+            EXPECT_NEAR(std::asin(exit.x), refracted, 0.01) << "Snell's law";
+        }
+    }
+}
+
+// The default scene (reduced) against a reference picture made by this
+// code: per-pixel absolute difference in 8-bit sRGB, 99th percentile ≤ 6
+// levels and mean ≤ 1 level (room for other GPUs' arithmetic, not for a
+// changed picture), and the picture must not be blank.
+TEST(ViewPass, DefaultPictureMatchesReference) {
+    glContext();
+    const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json",
+                                      {"grid.resolution=[48,40,48]", "render.photons=262144", "render.width=160",
+                                       "render.height=120", "receivers.0.resolution=96"});
+    const FieldSet fields = sim::voxelizeScene(scene);
+    render::FrameRenderer renderer(scene, fields);
+    const render::Image8 image = renderer.render(fields).image;
+    const io::Rgba8Image reference = io::readImage(std::string(EIKON_SOURCE_DIR) + "/tests/data/default_reference.png");
+    ASSERT_EQ(reference.width, image.width);
+    ASSERT_EQ(reference.height, image.height);
+    std::vector<int> differences;
+    double sum = 0.0;
+    int distinct = 0;
+    for (std::size_t p = 0; p < image.rgba.size(); ++p) {
+        if (p % 4 == 3) continue;
+        const int difference = std::abs(int{image.rgba[p]} - int{reference.rgba[p]});
+        differences.push_back(difference);
+        sum += difference;
+        distinct += image.rgba[p] != image.rgba[p % 4];
+    }
+    std::sort(differences.begin(), differences.end());
+    const int percentile99 = differences[differences.size() * 99 / 100];
+    reportFigure("reference_picture_p99_difference_levels", percentile99);
+    reportFigure("reference_picture_mean_difference_levels", sum / static_cast<double>(differences.size()));
+    EXPECT_LE(percentile99, 6);
+    EXPECT_LE(sum / static_cast<double>(differences.size()), 1.0);
+    EXPECT_GT(distinct, static_cast<int>(differences.size() / 4)) << "a picture of one colour is blank";
+}
+
+}  // namespace
+}  // namespace eikon
