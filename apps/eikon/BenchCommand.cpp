@@ -8,7 +8,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <glm/vec3.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -34,6 +37,30 @@ Measurement measure(const std::string& name, const Scene& scene, const FieldSet&
     std::sort(times.begin(), times.end());
     measurement.medianMs = times[times.size() / 2];
     return measurement;
+}
+
+// Median view + post time of camera-only frames: the camera orbits the
+// target a little each frame, so only those two stages run.
+double measureCameraFrames(const Scene& scene, const FieldSet& fields, int repeats, double& postMs) {
+    render::FrameRenderer renderer(scene, fields);
+    renderer.render(fields);
+    std::vector<double> view, post;
+    CameraDesc camera = scene.camera;
+    for (int i = 0; i < repeats; ++i) {
+        const glm::dvec3 offset = camera.position - camera.target;
+        const double angle = 0.05;  // radians about +y
+        camera.position = camera.target + glm::dvec3(std::cos(angle) * offset.x + std::sin(angle) * offset.z, offset.y,
+                                                     -std::sin(angle) * offset.x + std::cos(angle) * offset.z);
+        renderer.setCamera(camera);
+        for (const auto& stage : renderer.render(fields).stages) {
+            if (stage.name == "view") view.push_back(stage.milliseconds);
+            if (stage.name == "post") post.push_back(stage.milliseconds);
+        }
+    }
+    std::sort(view.begin(), view.end());
+    std::sort(post.begin(), post.end());
+    postMs = post[post.size() / 2];
+    return view[view.size() / 2];
 }
 
 }  // namespace
@@ -90,6 +117,12 @@ int benchCommand(const BenchOptions& options) {
                          (static_cast<double>(measurements[2].stats.steps) / measurements[2].medianMs);
     std::printf("tracer step rate / bare march step rate = %.2f\n", ratio);
     summary["tracer_over_bare_march_step_rate"] = ratio;
+    double postMs = 0.0;
+    const double viewMs = measureCameraFrames(scene, fields, options.repeats, postMs);
+    std::printf("camera-only frame at %dx%d: view %.1f ms, post %.1f ms\n", scene.render.width, scene.render.height,
+                viewMs, postMs);
+    summary["camera_only_view_ms"] = viewMs;
+    summary["camera_only_post_ms"] = postMs;
     if (!options.outFile.empty()) io::writeFileAtomically(options.outFile, summary.dump(2) + "\n");
     return 0;
 }

@@ -1,6 +1,7 @@
 // `eikon bench`: photon-tracer throughput on a scene at a given size —
 // steps/s, voxel deposits/s, ms per relight, and a bare march kernel (no
-// deposits, attenuation or receivers) as the limit the tracer is held to.
+// deposits, attenuation or receivers) as the limit the tracer is held to —
+// and the view pass of camera-only frames.
 #pragma once
 
 #include <CLI/CLI.hpp>
