@@ -12,7 +12,7 @@ nlohmann::json rgbJson(const Rgb& rgb) { return {rgb.r, rgb.g, rgb.b}; }
 
 }  // namespace
 
-std::string frameReportJson(int frame, const render::FrameResult& result) {
+std::string frameReportJson(int frame, const sim::SceneFields& fields, const render::FrameResult& result) {
     nlohmann::json stages = nlohmann::json::array();
     for (const auto& stage : result.stages)
         stages.push_back({{"name", stage.name}, {"ran", stage.ran}, {"ms", stage.milliseconds}});
@@ -38,22 +38,34 @@ std::string frameReportJson(int frame, const render::FrameResult& result) {
         {"voxel_deposits", p.voxelDeposits},
         {"max_invariant_error", p.maxInvariantError},
         {"mean_invariant_error", p.meanInvariantError}};
-    return nlohmann::json{{"frame", frame},
+    nlohmann::json report{{"frame", frame},
+                          {"time_s", fields.time()},
                           {"stages", stages},
                           {"host_bytes_uploaded", result.hostBytesUploaded},
-                          {"photons", photons}}
-        .dump();
+                          {"photons", photons}};
+    if (fields.changesOverTime()) {
+        nlohmann::json phases = nlohmann::json::array();
+        for (const auto& phase : fields.lastTimings())
+            phases.push_back({{"phase", phase.phase},
+                              {"ms", phase.milliseconds},
+                              {"iterations", phase.iterations},
+                              {"residual", phase.residual}});
+        report["simulation"] = phases;
+    }
+    return report.dump();
 }
 
-void runFrames(const Scene& scene, const FieldSet& fields, int frames, io::OutputFolder& output, ProgressBar& progress) {
-    render::FrameRenderer renderer(scene, fields);
+void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
+               ProgressBar& progress) {
+    render::FrameRenderer renderer(scene, fields.fields());
     for (int frame = 0; frame < frames; ++frame) {
-        const render::FrameResult result = renderer.render(fields);
+        if (frame > 0) fields.advanceFrame();
+        const render::FrameResult result = renderer.render(fields.fields());
         io::writePng(output.framePath(frame), result.image.width, result.image.height, result.image.rgba);
         if (!result.hdr.empty())
             io::writeHdr(output.framePath(frame).replace_extension(".hdr"), result.image.width, result.image.height,
                          result.hdr);
-        output.appendReport(frameReportJson(frame, result));
+        output.appendReport(frameReportJson(frame, fields, result));
         progress.advance();
     }
     progress.finish();

@@ -3,18 +3,21 @@
 #pragma once
 
 #include "apps/eikon/ProgressBar.h"
-#include "bridge/grid/FieldSet.h"
 #include "bridge/io/OutputFolder.h"
 #include "bridge/scene/Scene.h"
 #include "render/graph/FrameRenderer.h"
+#include "sim/SceneFields.h"
 
 #include <string>
 
 namespace eikon::app {
 
-// One line of report.jsonl: stages (ran, ms), host bytes, energy balance.
-std::string frameReportJson(int frame, const render::FrameResult& result);
+// One line of report.jsonl: simulated time and solver phases, stages (ran,
+// ms), host bytes, photon figures and energy balance.
+std::string frameReportJson(int frame, const sim::SceneFields& fields, const render::FrameResult& result);
 
-void runFrames(const Scene& scene, const FieldSet& fields, int frames, io::OutputFolder& output, ProgressBar& progress);
+// Renders `frames` frames, advancing the simulation (if any) between them.
+void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
+               ProgressBar& progress);
 
 }  // namespace eikon::app

@@ -2,11 +2,10 @@
 
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/ProgressBar.h"
-#include "bridge/grid/FieldSet.h"
 #include "bridge/io/OutputFolder.h"
 #include "bridge/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
-#include "sim/voxelize/AnalyticVoxelizer.h"
+#include "sim/SceneFields.h"
 
 #include <filesystem>
 
@@ -26,8 +25,7 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
 int runCommand(const RunOptions& options) {
     // Everything the user supplied is checked before anything is written.
     const Scene scene = loadSceneFile(options.scenePath, options.overrides);
-    FieldSet fields = sim::voxelizeScene(scene);
-    validateFields(fields, options.scenePath);
+    sim::SceneFields fields(scene);
     const std::filesystem::path outDir =
         options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
                                : std::filesystem::path(options.outDir);

@@ -21,4 +21,9 @@ double coverage(const ObjectDesc& object, const GridSpec& grid, int i, int j, in
 // Extinction and scattering are left empty when zero everywhere.
 FieldSet voxelizeScene(const Scene& scene);
 
+// Composites the scene's objects over fields that already hold a medium
+// (the fluid solver's, say), in list order by coverage; creates κ, σs or g
+// where an object needs them. Versions are left to the caller.
+void paintObjects(const Scene& scene, FieldSet& fields);
+
 }  // namespace eikon::sim

@@ -1,0 +1,35 @@
+#include "sim/fluid/FiniteCheck.h"
+
+#include "bridge/core/Error.h"
+#include "bridge/scene/JsonReader.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace eikon::sim {
+
+void requireFinite(const GridField& field, const std::string& name, const std::string& sample,
+                   const std::string& when) {
+    using Range = tbb::blocked_range<std::size_t>;
+    const std::size_t none = field.count();
+    const std::size_t first = tbb::parallel_reduce(
+        Range(0, field.count(), 4096), none,
+        [&](const Range& r, std::size_t found) {
+            for (std::size_t i = r.begin(); i < r.end() && i < found; ++i)
+                if (!std::isfinite(field.values[i])) return i;
+            return found;
+        },
+        [](std::size_t a, std::size_t b) { return std::min(a, b); });
+    if (first == none) return;
+    const auto nx = static_cast<std::size_t>(field.size.x);
+    const auto ny = static_cast<std::size_t>(field.size.y);
+    const std::string where = "sim: field " + name + ", " + sample + " (" + std::to_string(first % nx) + ", " +
+                              std::to_string((first / nx) % ny) + ", " + std::to_string(first / (nx * ny)) +
+                              ") " + when;
+    throw InputError(where, "a finite value", formatNumber(field.values[first]));
+}
+
+}  // namespace eikon::sim

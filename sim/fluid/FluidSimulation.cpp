@@ -1,0 +1,202 @@
+#include "sim/fluid/FluidSimulation.h"
+
+#include "bridge/core/Error.h"
+#include "sim/fluid/Advection.h"
+#include "sim/fluid/Diffusion.h"
+#include "sim/fluid/FiniteCheck.h"
+#include "sim/fluid/MassCorrection.h"
+#include "sim/fluid/ParallelOps.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace eikon::sim {
+
+namespace {
+
+enum Phase { kSources, kAdvection, kDiffusion, kProjection };
+
+constexpr double kDiffusionTolerance = 1e-8;  // relative max-norm residual of each implicit diffusion solve
+constexpr int kMaxSolverIterations = 1000;
+
+GridSpec solverGridOf(const SimDesc& desc, const GridSpec& renderGrid) {
+    GridSpec grid{desc.resolution, renderGrid.boundsMin, renderGrid.boundsMax};
+    if (desc.bounds) {
+        grid.boundsMin = desc.bounds->min;
+        grid.boundsMax = desc.bounds->max;
+    }
+    return grid;
+}
+
+FluidDomain domainOf(const SimDesc& desc, const MacGrid& mac) {
+    FluidDomain domain(desc.resolution, desc.boundaries);
+    addObstacles(domain, mac, desc.obstacles);
+    return domain;
+}
+
+// Times a phase into a PhaseTiming.
+class PhaseClock {
+public:
+    explicit PhaseClock(PhaseTiming& timing) : timing_(timing), start_(std::chrono::steady_clock::now()) {}
+    ~PhaseClock() {
+        timing_.milliseconds +=
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+    }
+    PhaseClock(const PhaseClock&) = delete;
+    PhaseClock& operator=(const PhaseClock&) = delete;
+
+private:
+    PhaseTiming& timing_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+void record(PhaseTiming& timing, const SolveStats& stats) {
+    timing.iterations += stats.iterations;
+    timing.residual = std::max(timing.residual, stats.relativeResidual);
+}
+
+}  // namespace
+
+FluidSimulation::FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid, double referenceIndex)
+    : desc_(desc),
+      renderGrid_(renderGrid),
+      referenceIndex_(referenceIndex),
+      state_(solverGridOf(desc, renderGrid), desc.ambientTemperature),
+      domain_(domainOf(desc, state_.flow)),
+      sources_(desc_, state_.flow, domain_),
+      pressure_(std::make_unique<PressureSolver>(domain_, state_.flow.h)),
+      optics_(desc) {
+    rebuildRoles();
+    sources_.applyScalars(state_);
+    timings_ = {{"sources"}, {"advection"}, {"diffusion"}, {"projection"}};
+}
+
+void FluidSimulation::rebuildRoles() {
+    scalarRoles_.assign(domain_.solid.size(), DiffusionRole::Free);
+    for (std::size_t c = 0; c < scalarRoles_.size(); ++c)
+        if (domain_.solid[c]) scalarRoles_[c] = DiffusionRole::Excluded;
+    temperatureRoles_ = scalarRoles_;
+    sources_.holdTemperature(temperatureRoles_);
+    for (int axis = 0; axis < 3; ++axis) {
+        const GridField& u = state_.flow.velocity[axis];
+        velocityRoles_[axis].assign(u.count(), DiffusionRole::Free);
+        for (int k = 0; k < u.size.z; ++k)
+            for (int j = 0; j < u.size.y; ++j)
+                for (int i = 0; i < u.size.x; ++i)
+                    if (domain_.faceIsFixed(axis, i, j, k)) velocityRoles_[axis][u.index(i, j, k)] = DiffusionRole::Fixed;
+    }
+}
+
+void FluidSimulation::addSolidMask(const std::vector<std::uint8_t>& solid) {
+    EIKON_CHECK(solid.size() == domain_.solid.size());
+    for (std::size_t c = 0; c < solid.size(); ++c)
+        if (solid[c]) domain_.solid[c] = 1;
+    pressure_ = std::make_unique<PressureSolver>(domain_, state_.flow.h);
+    rebuildRoles();
+    enforceVelocityBoundaries(state_.flow, domain_);
+}
+
+void FluidSimulation::advanceFrame() {
+    for (PhaseTiming& t : timings_) t = {t.phase};
+    double remaining = desc_.frameTime;
+    int minimumLeft = desc_.substeps;
+    lastSubsteps_ = 0;
+    while (true) {
+        // Substeps left: at least the requested count, and enough that the
+        // fastest face crosses at most `cfl` cells in one.
+        const double needed = std::ceil(remaining * state_.flow.maxCellCrossingRate() / desc_.cfl);
+        const int left = std::max(minimumLeft, static_cast<int>(std::min(needed, 1e9)));
+        const double dt = left <= 1 ? remaining : remaining / left;
+        substep(dt);
+        ++lastSubsteps_;
+        if (left <= 1) break;
+        remaining -= dt;
+        minimumLeft = std::max(minimumLeft - 1, 1);
+    }
+}
+
+void FluidSimulation::step(double dt) {
+    for (PhaseTiming& t : timings_) t = {t.phase};
+    substep(dt);
+    lastSubsteps_ = 1;
+}
+
+void FluidSimulation::substep(double dt) {
+    checkFinite("at the start of a substep");  // what was handed in from outside
+    {
+        PhaseClock clock(timing(kSources));
+        sources_.applyScalars(state_);
+        addBuoyancy(state_, domain_, desc_, dt);
+        sources_.applyVelocity(state_);
+        enforceVelocityBoundaries(state_.flow, domain_);
+        checkFinite("after sources");
+    }
+    {
+        PhaseClock clock(timing(kAdvection));
+        const std::vector<GridField*> scalars{&state_.temperature, &state_.concentration, &state_.dye};
+        if (domain_.anyOpenFace()) {
+            advectScalars(state_.flow, scalars, dt);
+        } else {
+            advectConserving(scalars, dt);
+        }
+        advectVelocity(state_.flow, dt);
+        enforceVelocityBoundaries(state_.flow, domain_);
+        sources_.applyScalars(state_);
+        checkFinite("after advection");
+    }
+    {
+        PhaseClock clock(timing(kDiffusion));
+        const glm::dvec3 h = state_.flow.h;
+        auto run = [&](GridField& field, const std::vector<DiffusionRole>& roles, double diffusivity) {
+            record(timing(kDiffusion), diffuse(field, roles, h, dt * diffusivity, kDiffusionTolerance, kMaxSolverIterations));
+        };
+        for (int axis = 0; axis < 3; ++axis) run(state_.flow.velocity[axis], velocityRoles_[axis], desc_.viscosity);
+        run(state_.temperature, temperatureRoles_, desc_.thermalDiffusivity);
+        run(state_.concentration, scalarRoles_, desc_.concentrationDiffusivity);
+        run(state_.dye, scalarRoles_, desc_.dyeDiffusivity);
+        checkFinite("after diffusion");
+    }
+    {
+        PhaseClock clock(timing(kProjection));
+        sources_.applyVelocity(state_);
+        record(timing(kProjection),
+               pressure_->project(state_.flow, state_.pressure, desc_.pressureTolerance, kMaxSolverIterations));
+        checkFinite("after projection");
+    }
+    time_ += dt;
+}
+
+void FluidSimulation::advectConserving(const std::vector<GridField*>& scalars, double dt) {
+    struct Budget {
+        double total, low, high;
+    };
+    std::vector<Budget> budgets;
+    for (const GridField* field : scalars) {
+        const auto [low, high] = std::minmax_element(field->values.begin(), field->values.end());
+        budgets.push_back({sum(field->values), *low, *high});
+    }
+    advectScalars(state_.flow, scalars, dt);
+    for (std::size_t f = 0; f < scalars.size(); ++f)
+        restoreTotal(*scalars[f], budgets[f].total, budgets[f].low, budgets[f].high);
+}
+
+void FluidSimulation::checkFinite(const std::string& phase) const {
+    // Scalars first: buoyancy carries a bad temperature into the velocity.
+    requireFinite(state_.temperature, "temperature", "cell", phase);
+    requireFinite(state_.concentration, "concentration", "cell", phase);
+    requireFinite(state_.dye, "dye", "cell", phase);
+    const char* const axes[3] = {"velocity_x", "velocity_y", "velocity_z"};
+    for (int axis = 0; axis < 3; ++axis) requireFinite(state_.flow.velocity[axis], axes[axis], "face", phase);
+    requireFinite(state_.pressure, "pressure", "cell", phase);
+}
+
+void FluidSimulation::writeFields(FieldSet& fields) const {
+    fields.grid = renderGrid_;
+    fields.referenceIndex = referenceIndex_;
+    writeOpticalFields(optics_,
+                       {solverGrid(), state_.temperature, state_.concentration, state_.dye, desc_.ambientTemperature},
+                       fields);
+}
+
+}  // namespace eikon::sim

@@ -1,0 +1,94 @@
+// The built-in fluid and mixing solver, as the frame loop sees it.
+//
+// One substep (Stam 1999, "Stable Fluids", §2; Bridson 2nd ed. ch. 2–6):
+//   sources   hot plates, jet scalars, Boussinesq buoyancy, jet velocities
+//   advection MacCormack with the extrema limiter (Advection.h), velocity and
+//             scalars; in a closed domain scalar totals are restored (MassCorrection.h)
+//   diffusion backward Euler by CG: viscosity, heat, concentration, dye (Diffusion.h)
+//   projection MG-preconditioned CG to the pressure tolerance (PressureSolver.h)
+// Every field is checked for NaN/Inf after every phase (FiniteCheck.h).
+// A frame advances SimDesc::frameTime in at least SimDesc::substeps equal
+// substeps, more where the fastest face would cross more than SimDesc::cfl cells.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/scene/Scene.h"
+#include "sim/fluid/Boundaries.h"
+#include "sim/fluid/FluidState.h"
+#include "sim/fluid/PressureSolver.h"
+#include "sim/fluid/Sources.h"
+#include "sim/optics/OpticalMapping.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace eikon::sim {
+
+// Wall time of one phase summed over the substeps of the last frame, with the
+// solver iterations it took (CG iterations of diffusion, PCG iterations of
+// the pressure) and the worst relative residual they reached.
+struct PhaseTiming {
+    std::string phase;  // "sources", "advection", "diffusion", "projection"
+    double milliseconds = 0.0;
+    int iterations = 0;
+    double residual = 0.0;
+};
+
+class FluidSimulation {
+public:
+    // The solver grid is desc.resolution over desc.bounds (the render grid's
+    // bounds when absent); fields are written on renderGrid with n_ref =
+    // referenceIndex. Throws InputError for a source region without cells.
+    FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid, double referenceIndex);
+
+    // Runs the substeps of one frame. Throws InputError naming field, cell and
+    // phase the moment a NaN or Inf appears.
+    void advanceFrame();
+
+    // One substep of dt seconds (tests, benchmarks); lastTimings() then holds its phases.
+    void step(double dt);
+
+    // Fills δn, κ, σs on the render grid, bumping the versions of the fields
+    // whose values changed, and validates them.
+    void writeFields(FieldSet& fields) const;
+
+    double time() const { return time_; }
+    int lastSubsteps() const { return lastSubsteps_; }
+    const std::vector<PhaseTiming>& lastTimings() const { return timings_; }
+
+    // Adds solid cells (one byte per solver cell, x fastest; non-zero = solid)
+    // to the obstacles of the scene, e.g. from a voxelized mesh.
+    void addSolidMask(const std::vector<std::uint8_t>& solid);
+
+    const GridSpec& solverGrid() const { return state_.flow.grid; }
+    const FluidDomain& domain() const { return domain_; }
+    FluidState& state() { return state_; }
+    const FluidState& state() const { return state_; }
+
+private:
+    void substep(double dt);
+    // Advection in a closed domain, with each scalar's total restored (MassCorrection.h).
+    void advectConserving(const std::vector<GridField*>& scalars, double dt);
+    void rebuildRoles();
+    void checkFinite(const std::string& phase) const;
+    PhaseTiming& timing(int phase) { return timings_[static_cast<std::size_t>(phase)]; }
+
+    SimDesc desc_;
+    GridSpec renderGrid_;
+    double referenceIndex_;
+    FluidState state_;
+    FluidDomain domain_;
+    SceneSources sources_;
+    std::unique_ptr<PressureSolver> pressure_;
+    OpticalModel optics_;
+    std::vector<DiffusionRole> scalarRoles_, temperatureRoles_;
+    std::array<std::vector<DiffusionRole>, 3> velocityRoles_;
+    std::vector<PhaseTiming> timings_;
+    double time_ = 0.0;
+    int lastSubsteps_ = 0;
+};
+
+}  // namespace eikon::sim

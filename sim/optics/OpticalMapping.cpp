@@ -1,0 +1,75 @@
+#include "sim/optics/OpticalMapping.h"
+
+#include "sim/optics/LiquidOptics.h"
+
+#include <tbb/parallel_for.h>
+
+namespace eikon::sim {
+
+namespace {
+
+bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
+
+// Replaces `current` with `next` and bumps `version` if they differ.
+void publish(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version) {
+    if (current == next) return;
+    current = std::move(next);
+    ++version;
+}
+
+}  // namespace
+
+OpticalModel::OpticalModel(const SimDesc& desc)
+    : fluid_(desc.fluid),
+      air_{desc.refractivity, desc.referenceTemperature, desc.referencePressure},
+      pressure_(desc.ambientPressure),
+      indexA_(desc.indexA),
+      indexB_(desc.indexB),
+      mixing_(desc.mixing),
+      dyeExtinction_(desc.dyeExtinction),
+      dyeScattering_(desc.dyeScattering) {}
+
+double OpticalModel::index(double temperature, double concentration) const {
+    if (fluid_ == SimDesc::Fluid::Air) return 1.0 + air_.refractivityAt(temperature, pressure_);
+    return mixedIndex(indexA_, indexB_, concentration, mixing_);
+}
+
+bool OpticalModel::absorbs() const { return positive(dyeExtinction_); }
+bool OpticalModel::scatters() const { return positive(dyeScattering_); }
+
+void writeOpticalFields(const OpticalModel& model, const SolverScalars& scalars, FieldSet& fields) {
+    const GridSpec& render = fields.grid;
+    const std::size_t cells = render.cellCount();
+    std::vector<float> deltaIndex(cells);
+    std::vector<float> extinction(model.absorbs() ? 3 * cells : 0);
+    std::vector<float> scattering(model.scatters() ? 3 * cells : 0);
+    const glm::dvec3 solverH = scalars.solverGrid.voxelSize();
+    const glm::ivec3 r = render.resolution;
+    tbb::parallel_for(0, r.z, [&](int k) {
+        for (int j = 0; j < r.y; ++j)
+            for (int i = 0; i < r.x; ++i) {
+                const glm::dvec3 x = render.cellCentre(i, j, k);
+                double temperature = scalars.ambientTemperature, concentration = 0.0, dye = 0.0;
+                if (scalars.solverGrid.contains(x)) {
+                    const glm::dvec3 g = (x - scalars.solverGrid.boundsMin) / solverH - 0.5;
+                    temperature = sampleTrilinear(scalars.temperature, g);
+                    concentration = sampleTrilinear(scalars.concentration, g);
+                    dye = sampleTrilinear(scalars.dye, g);
+                }
+                const std::size_t cell = render.linearIndex(i, j, k);
+                deltaIndex[cell] = static_cast<float>(model.index(temperature, concentration) - fields.referenceIndex);
+                const Rgb kappa = model.extinction(dye);
+                const Rgb sigma = model.scattering(dye);
+                for (int channel = 0; channel < 3; ++channel) {
+                    if (!extinction.empty()) extinction[3 * cell + channel] = static_cast<float>(kappa[channel]);
+                    if (!scattering.empty()) scattering[3 * cell + channel] = static_cast<float>(sigma[channel]);
+                }
+            }
+    });
+    publish(fields.deltaIndex, std::move(deltaIndex), fields.indexVersion);
+    publish(fields.extinction, std::move(extinction), fields.extinctionVersion);
+    publish(fields.scattering, std::move(scattering), fields.scatteringVersion);
+    validateFields(fields, "sim");
+}
+
+}  // namespace eikon::sim

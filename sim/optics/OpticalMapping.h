@@ -1,0 +1,51 @@
+// From the solver's temperature, concentration and dye to what the tracer
+// needs: δn = n − n_ref (float32, DESIGN.md), extinction κ and scattering σs
+// per RGB channel, resampled trilinearly from the solver grid onto the render
+// grid (they may differ; render cells outside the solver box see the ambient
+// fluid). Air: Gladstone–Dale in temperature (AirOptics.h); liquid: the two
+// liquids mixed by concentration (LiquidOptics.h); dye: κ = κ_dye·dye,
+// σs = σ_dye·dye per channel (Beer–Lambert coefficients linear in concentration).
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/scene/Scene.h"
+#include "sim/fluid/GridField.h"
+#include "sim/optics/AirOptics.h"
+
+namespace eikon::sim {
+
+class OpticalModel {
+public:
+    explicit OpticalModel(const SimDesc& desc);
+
+    double index(double temperature, double concentration) const;
+    Rgb extinction(double dye) const { return dyeExtinction_ * dye; }
+    Rgb scattering(double dye) const { return dyeScattering_ * dye; }
+    bool absorbs() const;    // some κ_dye channel > 0
+    bool scatters() const;   // some σ_dye channel > 0
+
+private:
+    SimDesc::Fluid fluid_;
+    GladstoneDale air_;
+    double pressure_;
+    double indexA_, indexB_;
+    SimDesc::Mixing mixing_;
+    Rgb dyeExtinction_, dyeScattering_;
+};
+
+// The solver's scalars on its grid (cell-centred GridFields over `solverGrid`).
+struct SolverScalars {
+    const GridSpec& solverGrid;
+    const GridField& temperature;
+    const GridField& concentration;
+    const GridField& dye;
+    double ambientTemperature;
+};
+
+// Fills fields.deltaIndex, .extinction, .scattering on fields.grid (κ and σs
+// left empty when the model has none) with n_ref = fields.referenceIndex, and
+// increments each field's version only where its values changed. Then checks
+// the result with validateFields (InputError naming field and cell).
+void writeOpticalFields(const OpticalModel& model, const SolverScalars& scalars, FieldSet& fields);
+
+}  // namespace eikon::sim
