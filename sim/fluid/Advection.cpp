@@ -17,14 +17,20 @@ glm::dvec3 trace(const MacGrid& flow, const glm::dvec3& x, double t) {
 // MacCormack step for fields that share one lattice (size and offset):
 // sources hold φⁿ, targets receive φⁿ⁺¹ (they may alias the sources).
 void advectGroup(const MacGrid& flow, const std::vector<const GridField*>& sources,
-                 const std::vector<GridField*>& targets, double dt) {
+                 const std::vector<GridField*>& targets, double dt, AdvectionScratch& scratch) {
     const GridField& layout = *sources.front();
     const glm::ivec3 n = layout.size;
     const std::size_t fieldCount = sources.size();
-    std::vector<GridField> forward;  // φ̂ⁿ⁺¹ = A(φⁿ), the semi-Lagrangian result
-    std::vector<std::vector<double>> low(fieldCount), high(fieldCount);
+    std::vector<GridField>& forward = scratch.forward;  // φ̂ⁿ⁺¹ = A(φⁿ), the semi-Lagrangian result
+    std::vector<std::vector<double>>& low = scratch.low;
+    std::vector<std::vector<double>>& high = scratch.high;
+    forward.resize(fieldCount);
+    low.resize(fieldCount);
+    high.resize(fieldCount);
     for (std::size_t f = 0; f < fieldCount; ++f) {
-        forward.push_back(layout);
+        forward[f].size = layout.size;
+        forward[f].offset = layout.offset;
+        forward[f].values.resize(layout.count());  // every sample is written below
         low[f].resize(layout.count());
         high[f].resize(layout.count());
     }
@@ -57,15 +63,32 @@ void advectGroup(const MacGrid& flow, const std::vector<const GridField*>& sourc
 
 }  // namespace
 
-void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt) {
+void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt,
+                   AdvectionScratch& scratch) {
     if (scalars.empty()) return;
     const std::vector<const GridField*> sources(scalars.begin(), scalars.end());
-    advectGroup(flow, sources, scalars, dt);
+    advectGroup(flow, sources, scalars, dt, scratch);
+}
+
+void advectVelocity(MacGrid& mac, double dt, AdvectionScratch& scratch) {
+    if (scratch.start) {
+        *scratch.start = mac;  // reuses the buffers of the last call
+    } else {
+        scratch.start.emplace(mac);
+    }
+    const MacGrid& start = *scratch.start;
+    for (int axis = 0; axis < 3; ++axis)
+        advectGroup(start, {&start.velocity[axis]}, {&mac.velocity[axis]}, dt, scratch);
+}
+
+void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt) {
+    AdvectionScratch scratch;
+    advectScalars(flow, scalars, dt, scratch);
 }
 
 void advectVelocity(MacGrid& mac, double dt) {
-    const MacGrid start = mac;
-    for (int axis = 0; axis < 3; ++axis) advectGroup(start, {&start.velocity[axis]}, {&mac.velocity[axis]}, dt);
+    AdvectionScratch scratch;
+    advectVelocity(mac, dt, scratch);
 }
 
 }  // namespace eikon::sim

@@ -10,15 +10,28 @@
 
 #include "sim/fluid/MacGrid.h"
 
+#include <optional>
 #include <vector>
 
 namespace eikon::sim {
 
+// Buffers of the MacCormack steps kept between calls, so that advection
+// allocates nothing once they have their size. One call at a time.
+struct AdvectionScratch {
+    std::vector<GridField> forward;               // φ̂ⁿ⁺¹ = A(φⁿ) per field
+    std::vector<std::vector<double>> low, high;   // limiter bounds per field
+    std::optional<MacGrid> start;                 // the velocity at the start of the step
+};
+
 // Advects cell-centred scalars through flow.velocity over dt, in place.
-void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt);
+void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt, AdvectionScratch& scratch);
 
 // Advects each velocity component of mac through mac's own velocity at the
 // start of the step (u·∇u), in place.
+void advectVelocity(MacGrid& mac, double dt, AdvectionScratch& scratch);
+
+// The same with buffers of their own, for one-off calls.
+void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt);
 void advectVelocity(MacGrid& mac, double dt);
 
 }  // namespace eikon::sim

@@ -9,14 +9,20 @@ namespace eikon::sim {
 
 SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<double>& b, std::vector<double>& x,
                              const Preconditioner& preconditioner, double tolerance, int maxIterations,
-                             bool singular) {
+                             bool singular, CgWorkspace& work) {
     const std::size_t n = b.size();
     const double bNorm = maxAbs(b);
     if (bNorm == 0.0) {
         x.assign(n, 0.0);
         return {};
     }
-    std::vector<double> r(n), z(n), q(n);
+    std::vector<double>& r = work.r;
+    std::vector<double>& z = work.z;
+    std::vector<double>& q = work.q;
+    std::vector<double>& p = work.p;
+    r.resize(n);
+    z.resize(n);
+    q.resize(n);
     a.residual(b, x, r);
     if (singular) removeMean(r, a.diag);
     SolveStats stats{0, maxAbs(r) / bNorm};
@@ -24,7 +30,7 @@ SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<doub
 
     preconditioner(r, z);
     if (singular) removeMean(z, a.diag);
-    std::vector<double> p = z;
+    p = z;
     double rho = dot(r, z);
     while (stats.iterations < maxIterations) {
         a.apply(p, q);

@@ -19,12 +19,19 @@ struct SolveStats {
 // z ≈ A⁻¹ r; must be symmetric positive definite for CG to converge.
 using Preconditioner = std::function<void(const std::vector<double>& r, std::vector<double>& z)>;
 
+// The vectors CG works in, kept by the caller between solves so that a solve
+// allocates nothing once they have their size.
+struct CgWorkspace {
+    std::vector<double> r, z, q, p;
+};
+
 // Solves A x = b from the x given, until max|r| <= tolerance · max|b| or
 // maxIterations. With `singular` (a pure-Neumann problem whose null space is
 // the constants over the active cells), b must have zero mean over them and
 // residuals and preconditioned residuals are kept so.
 SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<double>& b, std::vector<double>& x,
-                             const Preconditioner& preconditioner, double tolerance, int maxIterations, bool singular);
+                             const Preconditioner& preconditioner, double tolerance, int maxIterations, bool singular,
+                             CgWorkspace& work);
 
 // The Jacobi preconditioner z = r / diag.
 Preconditioner jacobiPreconditioner(const SevenPointOperator& a);

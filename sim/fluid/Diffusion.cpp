@@ -4,45 +4,80 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <utility>
+
 namespace eikon::sim {
 
-SolveStats diffuse(GridField& field, const std::vector<DiffusionRole>& roles, glm::dvec3 h, double dtTimesD,
-                   double tolerance, int maxIterations) {
-    if (dtTimesD <= 0.0) return {};
-    const glm::ivec3 n = field.size;
-    SevenPointOperator a;
-    a.size = n;
-    a.weight = dtTimesD / (h * h);
-    a.diag.assign(field.count(), 0.0);
-    a.coupled.assign(field.count(), 0);
-    std::vector<double> rhs(field.count(), 0.0);
-    tbb::parallel_for(0, n.z, [&](int k) {
-        for (int j = 0; j < n.y; ++j)
-            for (int i = 0; i < n.x; ++i) {
-                const std::size_t c = a.index(i, j, k);
-                if (roles[c] != DiffusionRole::Free) continue;
+ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole> roles)
+    : roles_(std::move(roles)), exchanging_(roles_.size(), 0) {
+    a_.size = size;
+    a_.diag.assign(roles_.size(), 0.0);
+    a_.coupled.assign(roles_.size(), 0);
+    tbb::parallel_for(0, size.z, [&](int k) {
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i) {
+                const std::size_t c = a_.index(i, j, k);
+                if (roles_[c] != DiffusionRole::Free) continue;
                 const glm::ivec3 cell(i, j, k);
-                double diag = 1.0;
-                double flux = 0.0;  // Σ w (φ_c − φ_n): −(Δt D ∇²φ)_c
                 for (int axis = 0; axis < 3; ++axis)
                     for (int side = 0; side < 2; ++side) {
                         glm::ivec3 m = cell;
                         m[axis] += side == 0 ? -1 : 1;
-                        if (m[axis] < 0 || m[axis] >= n[axis]) continue;
-                        const std::size_t neighbour = a.index(m.x, m.y, m.z);
-                        if (roles[neighbour] == DiffusionRole::Excluded) continue;
-                        diag += a.weight[axis];
-                        flux += a.weight[axis] * (field.values[c] - field.values[neighbour]);
-                        if (roles[neighbour] == DiffusionRole::Free) a.coupled[c] |= SevenPointOperator::bit(axis, side);
+                        if (m[axis] < 0 || m[axis] >= size[axis]) continue;
+                        const DiffusionRole role = roles_[a_.index(m.x, m.y, m.z)];
+                        if (role == DiffusionRole::Excluded) continue;
+                        exchanging_[c] |= SevenPointOperator::bit(axis, side);
+                        if (role == DiffusionRole::Free) a_.coupled[c] |= SevenPointOperator::bit(axis, side);
                     }
-                a.diag[c] = diag;
-                rhs[c] = -flux;
             }
     });
-    std::vector<double> increment(field.count(), 0.0);
+    increment_.assign(roles_.size(), 0.0);
+    rhs_.assign(roles_.size(), 0.0);
+}
+
+void ImplicitDiffusion::setWeight(glm::dvec3 weight) {
+    if (weighted_ && weight == a_.weight) return;
+    a_.weight = weight;
+    weighted_ = true;
+    tbb::parallel_for(0, a_.size.z, [&](int k) {
+        for (std::size_t c = a_.index(0, 0, k), end = a_.index(0, 0, k + 1); c < end; ++c) {
+            if (roles_[c] != DiffusionRole::Free) continue;
+            double diag = 1.0;
+            for (int axis = 0; axis < 3; ++axis)
+                for (int side = 0; side < 2; ++side)
+                    if (exchanging_[c] & SevenPointOperator::bit(axis, side)) diag += weight[axis];
+            a_.diag[c] = diag;
+        }
+    });
+}
+
+SolveStats ImplicitDiffusion::diffuse(GridField& field, glm::dvec3 h, double dtTimesD, double tolerance,
+                                      int maxIterations) {
+    if (dtTimesD <= 0.0) return {};
+    setWeight(dtTimesD / (h * h));
+    const glm::dvec3 w = a_.weight;
+    const std::size_t sy = static_cast<std::size_t>(a_.size.x);
+    const std::size_t sz = sy * static_cast<std::size_t>(a_.size.y);
+    const std::vector<double>& phi = field.values;
+    // rhs = −Σ w (φ_c − φ_n) over the exchanging neighbours: (Δt D ∇²φ)_c.
+    tbb::parallel_for(0, a_.size.z, [&](int k) {
+        for (std::size_t c = a_.index(0, 0, k), end = a_.index(0, 0, k + 1); c < end; ++c) {
+            const std::uint8_t bits = exchanging_[c];
+            double flux = 0.0;
+            if (bits & SevenPointOperator::bit(0, 0)) flux += w.x * (phi[c] - phi[c - 1]);
+            if (bits & SevenPointOperator::bit(0, 1)) flux += w.x * (phi[c] - phi[c + 1]);
+            if (bits & SevenPointOperator::bit(1, 0)) flux += w.y * (phi[c] - phi[c - sy]);
+            if (bits & SevenPointOperator::bit(1, 1)) flux += w.y * (phi[c] - phi[c + sy]);
+            if (bits & SevenPointOperator::bit(2, 0)) flux += w.z * (phi[c] - phi[c - sz]);
+            if (bits & SevenPointOperator::bit(2, 1)) flux += w.z * (phi[c] - phi[c + sz]);
+            rhs_[c] = -flux;
+        }
+    });
+    std::fill(increment_.begin(), increment_.end(), 0.0);
     const SolveStats stats =
-        conjugateGradient(a, rhs, increment, jacobiPreconditioner(a), tolerance, maxIterations, false);
-    axpy(1.0, increment, field.values);
+        conjugateGradient(a_, rhs_, increment_, jacobiPreconditioner(a_), tolerance, maxIterations, false, work_);
+    axpy(1.0, increment_, field.values);
     return stats;
 }
 

@@ -19,7 +19,27 @@ namespace eikon::sim {
 // Edges of the lattice are Neumann: no flux leaves the grid.
 enum class DiffusionRole : std::uint8_t { Free, Fixed, Excluded };
 
-SolveStats diffuse(GridField& field, const std::vector<DiffusionRole>& roles, glm::dvec3 h, double dtTimesD,
-                   double tolerance, int maxIterations);
+// Backward-Euler diffusion of the fields of one lattice with fixed roles. The
+// operator's structure depends only on the roles, so it is built once; a solve
+// only rescales the diagonal when Δt·D/h² changes, and reuses its scratch.
+// Rebuild it when the roles change (new solids, held cells).
+class ImplicitDiffusion {
+public:
+    ImplicitDiffusion() = default;
+    ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole> roles);
+
+    SolveStats diffuse(GridField& field, glm::dvec3 h, double dtTimesD, double tolerance, int maxIterations);
+
+private:
+    // Sets the operator's diagonal 1 + Σ w over the neighbours that exchange.
+    void setWeight(glm::dvec3 weight);
+
+    std::vector<DiffusionRole> roles_;
+    std::vector<std::uint8_t> exchanging_;  // per Free sample, SevenPointOperator::bit of each non-Excluded neighbour
+    SevenPointOperator a_;                  // coupled bits fixed; diag valid for a_.weight
+    bool weighted_ = false;                 // a_.diag has been set for a_.weight
+    std::vector<double> rhs_, increment_;
+    CgWorkspace work_;
+};
 
 }  // namespace eikon::sim

@@ -1,8 +1,6 @@
 #include "sim/fluid/FluidSimulation.h"
 
 #include "bridge/core/Error.h"
-#include "sim/fluid/Advection.h"
-#include "sim/fluid/Diffusion.h"
 #include "sim/fluid/FiniteCheck.h"
 #include "sim/fluid/MassCorrection.h"
 #include "sim/fluid/ParallelOps.h"
@@ -10,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace eikon::sim {
 
@@ -73,18 +72,23 @@ FluidSimulation::FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid
 }
 
 void FluidSimulation::rebuildRoles() {
-    scalarRoles_.assign(domain_.solid.size(), DiffusionRole::Free);
-    for (std::size_t c = 0; c < scalarRoles_.size(); ++c)
-        if (domain_.solid[c]) scalarRoles_[c] = DiffusionRole::Excluded;
-    temperatureRoles_ = scalarRoles_;
-    sources_.holdTemperature(temperatureRoles_);
+    std::vector<DiffusionRole> scalarRoles(domain_.solid.size(), DiffusionRole::Free);
+    for (std::size_t c = 0; c < scalarRoles.size(); ++c)
+        if (domain_.solid[c]) scalarRoles[c] = DiffusionRole::Excluded;
+    std::vector<DiffusionRole> temperatureRoles = scalarRoles;
+    sources_.holdTemperature(temperatureRoles);
+    const glm::ivec3 cells = state_.flow.grid.resolution;
+    temperatureDiffusion_ = ImplicitDiffusion(cells, std::move(temperatureRoles));
+    concentrationDiffusion_ = ImplicitDiffusion(cells, scalarRoles);
+    dyeDiffusion_ = ImplicitDiffusion(cells, std::move(scalarRoles));
     for (int axis = 0; axis < 3; ++axis) {
         const GridField& u = state_.flow.velocity[axis];
-        velocityRoles_[axis].assign(u.count(), DiffusionRole::Free);
+        std::vector<DiffusionRole> roles(u.count(), DiffusionRole::Free);
         for (int k = 0; k < u.size.z; ++k)
             for (int j = 0; j < u.size.y; ++j)
                 for (int i = 0; i < u.size.x; ++i)
-                    if (domain_.faceIsFixed(axis, i, j, k)) velocityRoles_[axis][u.index(i, j, k)] = DiffusionRole::Fixed;
+                    if (domain_.faceIsFixed(axis, i, j, k)) roles[u.index(i, j, k)] = DiffusionRole::Fixed;
+        velocityDiffusion_[axis] = ImplicitDiffusion(u.size, std::move(roles));
     }
 }
 
@@ -136,11 +140,11 @@ void FluidSimulation::substep(double dt) {
         PhaseClock clock(timing(kAdvection));
         const std::vector<GridField*> scalars{&state_.temperature, &state_.concentration, &state_.dye};
         if (domain_.anyOpenFace()) {
-            advectScalars(state_.flow, scalars, dt);
+            advectScalars(state_.flow, scalars, dt, advection_);
         } else {
             advectConserving(scalars, dt);
         }
-        advectVelocity(state_.flow, dt);
+        advectVelocity(state_.flow, dt, advection_);
         enforceVelocityBoundaries(state_.flow, domain_);
         sources_.applyScalars(state_);
         checkFinite("after advection");
@@ -148,13 +152,15 @@ void FluidSimulation::substep(double dt) {
     {
         PhaseClock clock(timing(kDiffusion));
         const glm::dvec3 h = state_.flow.h;
-        auto run = [&](GridField& field, const std::vector<DiffusionRole>& roles, double diffusivity) {
-            record(timing(kDiffusion), diffuse(field, roles, h, dt * diffusivity, kDiffusionTolerance, kMaxSolverIterations));
+        auto run = [&](ImplicitDiffusion& diffusion, GridField& field, double diffusivity) {
+            record(timing(kDiffusion),
+                   diffusion.diffuse(field, h, dt * diffusivity, kDiffusionTolerance, kMaxSolverIterations));
         };
-        for (int axis = 0; axis < 3; ++axis) run(state_.flow.velocity[axis], velocityRoles_[axis], desc_.viscosity);
-        run(state_.temperature, temperatureRoles_, desc_.thermalDiffusivity);
-        run(state_.concentration, scalarRoles_, desc_.concentrationDiffusivity);
-        run(state_.dye, scalarRoles_, desc_.dyeDiffusivity);
+        for (int axis = 0; axis < 3; ++axis)
+            run(velocityDiffusion_[axis], state_.flow.velocity[axis], desc_.viscosity);
+        run(temperatureDiffusion_, state_.temperature, desc_.thermalDiffusivity);
+        run(concentrationDiffusion_, state_.concentration, desc_.concentrationDiffusivity);
+        run(dyeDiffusion_, state_.dye, desc_.dyeDiffusivity);
         checkFinite("after diffusion");
     }
     {
@@ -176,7 +182,7 @@ void FluidSimulation::advectConserving(const std::vector<GridField*>& scalars, d
         const auto [low, high] = std::minmax_element(field->values.begin(), field->values.end());
         budgets.push_back({sum(field->values), *low, *high});
     }
-    advectScalars(state_.flow, scalars, dt);
+    advectScalars(state_.flow, scalars, dt, advection_);
     for (std::size_t f = 0; f < scalars.size(); ++f)
         restoreTotal(*scalars[f], budgets[f].total, budgets[f].low, budgets[f].high);
 }

@@ -13,7 +13,9 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
+#include "sim/fluid/Advection.h"
 #include "sim/fluid/Boundaries.h"
+#include "sim/fluid/Diffusion.h"
 #include "sim/fluid/FluidState.h"
 #include "sim/fluid/PressureSolver.h"
 #include "sim/fluid/Sources.h"
@@ -84,8 +86,10 @@ private:
     SceneSources sources_;
     std::unique_ptr<PressureSolver> pressure_;
     OpticalModel optics_;
-    std::vector<DiffusionRole> scalarRoles_, temperatureRoles_;
-    std::array<std::vector<DiffusionRole>, 3> velocityRoles_;
+    AdvectionScratch advection_;
+    // One implicit diffusion per field: each caches its operator for its diffusivity.
+    std::array<ImplicitDiffusion, 3> velocityDiffusion_;
+    ImplicitDiffusion temperatureDiffusion_, concentrationDiffusion_, dyeDiffusion_;
     std::vector<PhaseTiming> timings_;
     double time_ = 0.0;
     int lastSubsteps_ = 0;

@@ -18,11 +18,6 @@ MacGrid::MacGrid(const GridSpec& cells) : grid(cells), h(cells.voxelSize()) {
 
 GridField MacGrid::cellField(double value) const { return GridField(grid.resolution, glm::dvec3(0.5), value); }
 
-glm::dvec3 MacGrid::velocityAt(const glm::dvec3& x) const {
-    return {sampleTrilinear(velocity[0], lattice(velocity[0], x)), sampleTrilinear(velocity[1], lattice(velocity[1], x)),
-            sampleTrilinear(velocity[2], lattice(velocity[2], x))};
-}
-
 double MacGrid::divergence(int i, int j, int k) const {
     return (velocity[0](i + 1, j, k) - velocity[0](i, j, k)) / h.x +
            (velocity[1](i, j + 1, k) - velocity[1](i, j, k)) / h.y +

@@ -31,7 +31,11 @@ struct MacGrid {
     }
 
     // Velocity at a world point: each component interpolated on its own faces.
-    glm::dvec3 velocityAt(const glm::dvec3& x) const;
+    glm::dvec3 velocityAt(const glm::dvec3& x) const {
+        return {sampleTrilinear(velocity[0], lattice(velocity[0], x)),
+                sampleTrilinear(velocity[1], lattice(velocity[1], x)),
+                sampleTrilinear(velocity[2], lattice(velocity[2], x))};
+    }
 
     // (∇·u) of cell (i, j, k): Σ_a (u_a(upper face) − u_a(lower face)) / h_a.
     double divergence(int i, int j, int k) const;

@@ -31,19 +31,20 @@ PressureSolver::PressureSolver(const FluidDomain& domain, glm::dvec3 h)
 SolveStats PressureSolver::project(MacGrid& mac, GridField& pressure, double tolerance, int maxIterations) const {
     const SevenPointOperator& a = multigrid_.fineOperator();
     const glm::ivec3 n = domain_.cells;
-    std::vector<double> rhs(a.cellCount(), 0.0);
+    std::vector<double>& rhs = rhs_;
+    rhs.resize(a.cellCount());
     tbb::parallel_for(0, n.z, [&](int k) {
         for (int j = 0; j < n.y; ++j)
             for (int i = 0; i < n.x; ++i) {
                 const std::size_t c = a.index(i, j, k);
-                if (a.diag[c] != 0.0) rhs[c] = -mac.divergence(i, j, k);
+                rhs[c] = a.diag[c] != 0.0 ? -mac.divergence(i, j, k) : 0.0;
             }
     });
     if (singular_) removeMean(rhs, a.diag);  // closed box: Σ∇·u = 0 up to rounding
     const SolveStats stats = conjugateGradient(
         a, rhs, pressure.values,
         [this](const std::vector<double>& r, std::vector<double>& z) { multigrid_.apply(r, z); }, tolerance,
-        maxIterations, singular_);
+        maxIterations, singular_, work_);
 
     // u −= ∇p on every free face; open faces see p = 0 outside.
     for (int axis = 0; axis < 3; ++axis) {

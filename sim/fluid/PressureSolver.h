@@ -27,6 +27,9 @@ private:
     FluidDomain domain_;
     MultigridPreconditioner multigrid_;
     bool singular_;  // no open face: p is determined up to a constant
+    // Scratch of project(), kept so a projection allocates nothing: one call at a time.
+    mutable std::vector<double> rhs_;
+    mutable CgWorkspace work_;
 };
 
 }  // namespace eikon::sim
