@@ -72,4 +72,9 @@ void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size
     glDispatchCompute(groups(countX, localX), groups(countY, localY), groups(countZ, localZ));
 }
 
+void Program::dispatchOverCells(const glm::ivec3& cells) const {
+    dispatchCovering(static_cast<std::size_t>(cells.x), static_cast<std::size_t>(cells.y),
+                     static_cast<std::size_t>(cells.z), 4, 4, 4);
+}
+
 }  // namespace eikon::gl

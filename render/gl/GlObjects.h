@@ -4,6 +4,8 @@
 
 #include <epoxy/gl.h>
 
+#include <glm/vec3.hpp>
+
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -113,6 +115,8 @@ public:
     // Dispatches enough work groups of `localSize` to cover `count` items.
     void dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX, GLuint localY,
                           GLuint localZ) const;
+    // Covers a 3D grid of cells with 4×4×4 work groups (the grid shaders' local size).
+    void dispatchOverCells(const glm::ivec3& cells) const;
 
 private:
     GlName<deleteProgram> name_;

@@ -138,8 +138,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
         fluence_.bindStorage(layout::kFluence);
         direction_.bindStorage(layout::kFluenceDirection);
         const glm::ivec3 r = fields.grid().resolution;
-        fluenceSmoothProgram_.dispatchCovering(static_cast<std::size_t>(r.x), static_cast<std::size_t>(r.y),
-                                               static_cast<std::size_t>(r.z), 4, 4, 4);
+        fluenceSmoothProgram_.dispatchOverCells(r);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     }
     gl::checkpoint("photon stage");

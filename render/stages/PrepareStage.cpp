@@ -7,15 +7,6 @@
 
 namespace eikon::render {
 
-namespace {
-
-void dispatchOverGrid(const gl::Program& program, const glm::ivec3& r) {
-    program.dispatchCovering(static_cast<std::size_t>(r.x), static_cast<std::size_t>(r.y),
-                             static_cast<std::size_t>(r.z), 4, 4, 4);
-}
-
-}  // namespace
-
 PrepareStage::PrepareStage(const GridDesc& grid, const FieldTextures& fields)
     : kernel_(gaussianHalfKernel(grid.smoothingSigmaVoxels, grid.smoothingWindowVoxels)),
       gradientProgram_(gl::compileComputeProgram("prepare_gradient.comp")) {
@@ -45,7 +36,7 @@ void PrepareStage::run(FieldTextures& fields) {
             glUniform3i(smoothProgram_.uniform("axis"), axes[pass].x, axes[pass].y, axes[pass].z);
             sources[pass]->bindSampler(0);
             targets[pass]->bindImage(0, GL_WRITE_ONLY);
-            dispatchOverGrid(smoothProgram_, r);
+            smoothProgram_.dispatchOverCells(r);
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
         std::swap(scratch_[0], scratch_[1]);  // the result now lives in scratch_[1]
@@ -53,7 +44,7 @@ void PrepareStage::run(FieldTextures& fields) {
     fields.gridBlock().bindUniform(layout::kGridBlock);
     smoothedIndex(fields).bindSampler(layout::kIndexTexture);
     fields.gradient().bindImage(0, GL_WRITE_ONLY);
-    dispatchOverGrid(gradientProgram_, r);
+    gradientProgram_.dispatchOverCells(r);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("prepare stage");
 }

@@ -11,15 +11,6 @@
 
 namespace eikon::render {
 
-namespace {
-
-void dispatchOver(const gl::Program& program, const glm::ivec3& size) {
-    program.dispatchCovering(static_cast<std::size_t>(size.x), static_cast<std::size_t>(size.y),
-                             static_cast<std::size_t>(size.z), 4, 4, 4);
-}
-
-}  // namespace
-
 StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction)
     : grid_(grid), tracer_(tracer),
       minmaxProgram_(gl::compileComputeProgram("octree_minmax.comp",
@@ -43,7 +34,7 @@ void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldText
         glUniform1i(minmaxProgram_.uniform("level"), level);
         if (level > 0) glBindImageTexture(0, pyramid_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
         glBindImageTexture(1, pyramid_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        dispatchOver(minmaxProgram_, glm::max(paddedSize_ >> level, glm::ivec3(1)));
+        minmaxProgram_.dispatchOverCells(glm::max(paddedSize_ >> level, glm::ivec3(1)));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     const float maxDispersion = static_cast<float>(std::max({tracer_.dispersion.r, tracer_.dispersion.g, tracer_.dispersion.b}));
@@ -60,7 +51,7 @@ void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldText
     const glm::dvec3 h = grid_.voxelSize();
     glUniform1f(labelProgram_.uniform("node_edge"), static_cast<float>(std::max({h.x, h.y, h.z}) * std::sqrt(3.0)));
     glUniform1f(labelProgram_.uniform("optical_depth_tolerance"), static_cast<float>(kOpticalDepthTolerance));
-    dispatchOver(labelProgram_, grid_.resolution);
+    labelProgram_.dispatchOverCells(grid_.resolution);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("step structure stage");
 }
