@@ -234,8 +234,12 @@ EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& scene
     } else {
         environment.kind = EnvironmentDesc::Kind::Hdr;
         const auto fields = node.object({"type", "path", "intensity", "rotation_deg"});
-        const std::filesystem::path path = fields.member("path").string();
+        const JsonReader pathNode = fields.member("path");
+        const std::filesystem::path path = pathNode.string();
         environment.path = (path.is_absolute() ? path : std::filesystem::path(sceneFolder) / path).string();
+        if (!std::filesystem::is_regular_file(environment.path))
+            pathNode.fail("an existing .hdr file (relative paths start at the scene file's folder)",
+                          "\"" + environment.path + "\", which does not exist");
         if (auto value = fields.optional("intensity")) environment.intensity = value->number(kNonNegative);
         if (auto value = fields.optional("rotation_deg")) environment.rotationDeg = value->number();
     }

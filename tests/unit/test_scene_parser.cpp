@@ -473,6 +473,13 @@ TEST(SceneParserErrors, PowerCutoffOfOne) {
     expectErrorAt(scene, "tracer.power_cutoff", "a number in [0, 1), found 1");
 }
 
+TEST(SceneParserErrors, MissingEnvironmentImage) {
+    json scene = validScene();
+    scene["render"].erase("background");
+    scene["render"]["environment"] = {{"type", "hdr"}, {"path", "no/such/sky.hdr"}};
+    expectErrorAt(scene, "render.environment.path", "which does not exist");
+}
+
 TEST(SceneParser, ReceiverBounceIsReadAndDefaultsToStopping) {
     json scene = validScene();
     EXPECT_FALSE(parseScene(scene, "test.json").receivers[0].bounce);
