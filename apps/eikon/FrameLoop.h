@@ -16,8 +16,9 @@ namespace eikon::app {
 // ms), host bytes, photon figures and energy balance.
 std::string frameReportJson(int frame, const sim::SceneFields& fields, const render::FrameResult& result);
 
-// Renders `frames` frames, advancing the simulation (if any) between them.
+// Renders `frames` frames, advancing the simulation (if any) between them;
+// with `exportVtk`, each frame's fields also go to DIR/vtk/ for ParaView.
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
-               ProgressBar& progress);
+               ProgressBar& progress, bool exportVtk = false);
 
 }  // namespace eikon::app

@@ -15,6 +15,7 @@ struct RunOptions {
     std::vector<std::string> overrides;
     bool quiet = false;
     bool force = false;
+    bool vtk = false;  // also export every frame's fields as a ParaView time series
 };
 
 void addRunCommand(CLI::App& app, RunOptions& options);

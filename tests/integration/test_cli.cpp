@@ -85,6 +85,20 @@ TEST_F(Cli, RunWritesFramesAndReport) {
     EXPECT_EQ(lines, 2);
 }
 
+TEST_F(Cli, VtkExportWritesATimeSeries) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const fs::path out = dir_ / "out";
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet --vtk");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00000.vti"));
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00001.vti"));
+    std::ifstream collection(out / "vtk" / "fields.pvd");
+    std::stringstream text;
+    text << collection.rdbuf();
+    EXPECT_NE(text.str().find("fields_00001.vti"), std::string::npos) << text.str();
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields.vti.series"));
+}
+
 TEST_F(Cli, SecondFrameOfStaticSceneRunsOnlyUpload) {
     const std::string scene = writeScene("ok.json", validScene());
     const fs::path out = dir_ / "out";

@@ -1,0 +1,56 @@
+// Per-frame export of a FieldSet as VTK ImageData (.vti) for ParaView time
+// series. Each frame becomes DIR/vtk/NAME_NNNNN.vti; after every frame both
+// DIR/vtk/NAME.pvd (a VTK "Collection") and DIR/vtk/NAME.vti.series
+// (ParaView's JSON file-series sidecar) are rewritten, so ParaView can open a
+// run that is still going. Every file is written atomically (temporary name,
+// fsync, rename): a reader never sees a truncated frame or index.
+//
+// The header keeps VTK out of its includes; only VtkSeriesWriter.cpp sees it.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eikon::io {
+
+// An additional cell array a caller exports next to the fields, e.g. fluence
+// (3 components). `values` holds `components` floats per cell, x fastest.
+struct NamedArray {
+    std::string name;
+    int components = 1;
+    std::vector<float> values;
+};
+
+class VtkSeriesWriter {
+public:
+    // Creates DIR/vtk/. `baseName` may hold only letters, digits, '_', '-'
+    // and '.' (it lands unescaped in XML and JSON); InputError otherwise.
+    // `compress` selects zlib compression of the appended binary data.
+    VtkSeriesWriter(const std::filesystem::path& outputFolder, std::string baseName, bool compress = true);
+
+    // Writes DIR/vtk/NAME_NNNNN.vti, then rewrites NAME.pvd and
+    // NAME.vti.series. Writing a frame number again replaces that entry.
+    // Throws std::runtime_error naming the path when a file cannot be
+    // written; InternalError (EIKON_CHECK) for a negative frame, a time that
+    // is not finite, or arrays whose size does not match the grid.
+    void writeFrame(int frame, double time, const FieldSet& fields, const std::vector<NamedArray>& extra = {});
+
+    const std::filesystem::path& directory() const { return directory_; }
+    std::filesystem::path framePath(int frame) const;
+    std::filesystem::path collectionPath() const;  // NAME.pvd
+    std::filesystem::path seriesPath() const;      // NAME.vti.series
+
+private:
+    void writeIndexFiles() const;
+
+    std::filesystem::path directory_;
+    std::string baseName_;
+    bool compress_;
+    std::map<int, double> frameTimes_;  // frame -> time, ordered by frame
+};
+
+}  // namespace eikon::io
