@@ -2,6 +2,8 @@
 
 #include "sim/voxelize/AnalyticVoxelizer.h"
 
+#include "bridge/core/Error.h"
+
 namespace eikon::sim {
 
 SceneFields::SceneFields(const Scene& scene) : scene_(scene), fields_(voxelizeScene(scene)) {
@@ -16,6 +18,19 @@ void SceneFields::advanceFrame() {
     if (!fluid_) return;
     fluid_->advanceFrame();
     refreshFromSimulation();
+}
+
+void SceneFields::simulateFrame() {
+    if (fluid_) fluid_->advanceFrame();
+}
+
+void SceneFields::writeFrameInto(const FieldViews& target) const {
+    EIKON_CHECK_MSG(fluid_, "only a simulated scene writes frames into GPU memory");
+    FieldViews frame = target;
+    frame.referenceIndex = fields_.referenceIndex;
+    fluid_->writeFields(frame);
+    paintObjects(scene_, frame);
+    validateFields(frame, scene_.sourcePath);
 }
 
 std::vector<PhaseTiming> SceneFields::lastTimings() const {

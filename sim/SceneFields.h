@@ -21,9 +21,21 @@ public:
     bool changesOverTime() const { return fluid_ != nullptr; }
     // Simulated time of the current fields, s (0 without a simulation).
     double time() const { return fluid_ ? fluid_->time() : 0.0; }
-    // Advances the simulation by one frame and refreshes the fields; a
-    // static scene stays as it is.
+    // Advances the simulation by one frame and refreshes fields(); a static
+    // scene stays as it is.
     void advanceFrame();
+
+    // The live loop's two halves of advanceFrame, for fields that go straight
+    // into GPU memory (render/stages/FieldRing.h): simulateFrame() runs the
+    // solver only — fields() then stays as it was — and writeFrameInto()
+    // writes the current frame's fields into `target`, which has the layout
+    // of fields() (same grid, same fields present), and validates them. Both
+    // may run on a thread other than the renderer's.
+    void simulateFrame();
+    void writeFrameInto(const FieldViews& target) const;
+    // Whether κ (σs) values change from frame to frame (dye in the solver).
+    bool extinctionChangesOverTime() const { return fluid_ && fluid_->absorbs(); }
+    bool scatteringChangesOverTime() const { return fluid_ && fluid_->scatters(); }
     // Phase timings of the last simulated frame (empty without a simulation).
     std::vector<PhaseTiming> lastTimings() const;
 

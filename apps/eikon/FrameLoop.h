@@ -1,7 +1,10 @@
 // The frame loop shared by `eikon run` and the viewer: fields → renderer →
-// frame image and report line.
+// frame image and report line. A static scene's fields are uploaded once; a
+// simulated scene's go through the zero-copy field ring (LiveFrames.h),
+// simulated one frame ahead of the renderer when pipelined.
 #pragma once
 
+#include "apps/eikon/LiveFrames.h"
 #include "apps/eikon/ProgressBar.h"
 #include "bridge/io/OutputFolder.h"
 #include "bridge/scene/Scene.h"
@@ -12,13 +15,27 @@
 
 namespace eikon::app {
 
-// One line of report.jsonl: simulated time and solver phases, stages (ran,
-// ms), host bytes, photon figures and energy balance.
-std::string frameReportJson(int frame, const sim::SceneFields& fields, const render::FrameResult& result);
+struct LoopOptions {
+    bool exportVtk = false;  // each frame's fields also go to DIR/vtk/ for ParaView
+    bool pipelined = true;   // simulate frame k+1 while frame k renders
+};
 
-// Renders `frames` frames, advancing the simulation (if any) between them;
-// with `exportVtk`, each frame's fields also go to DIR/vtk/ for ParaView.
+// Wall times of one turn of the loop: the whole frame, the renderer's
+// stages, and the simulation of the next frame (which runs during the
+// render when pipelined); hidden = simulate + render − frame.
+struct LoopTiming {
+    double frameMs = 0.0;
+    double renderMs = 0.0;
+    double produceNextMs = 0.0;
+};
+
+// One line of report.jsonl: simulated time, stages (ran, ms) including the
+// simulation's, host and GPU bytes copied, photon figures and energy balance.
+std::string frameReportJson(int frame, const ProducedFrame& produced, bool simulated,
+                            const render::FrameResult& result, const LoopTiming& timing, bool pipelined);
+
+// Renders `frames` frames, advancing the simulation (if any) between them.
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
-               ProgressBar& progress, bool exportVtk = false);
+               ProgressBar& progress, const LoopOptions& options = {});
 
 }  // namespace eikon::app

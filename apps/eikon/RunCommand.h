@@ -15,7 +15,8 @@ struct RunOptions {
     std::vector<std::string> overrides;
     bool quiet = false;
     bool force = false;
-    bool vtk = false;  // also export every frame's fields as a ParaView time series
+    bool vtk = false;
+    bool noPipelining = false;  // simulate frame k+1 after frame k rendered, not during  // also export every frame's fields as a ParaView time series
 };
 
 void addRunCommand(CLI::App& app, RunOptions& options);

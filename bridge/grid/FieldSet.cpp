@@ -1,5 +1,7 @@
 #include "bridge/grid/FieldSet.h"
 
+#include "bridge/grid/FieldViews.h"
+
 #include "bridge/core/Error.h"
 
 #include <cmath>
@@ -16,14 +18,14 @@ std::string cellName(const GridSpec& grid, std::size_t index) {
            std::to_string(index / (nx * ny)) + ")";
 }
 
-void checkSize(const std::vector<float>& values, std::size_t expected, const std::string& where) {
+void checkSize(std::span<const float> values, std::size_t expected, const std::string& where) {
     if (values.size() != expected)
         throw InputError(where, std::to_string(expected) + " values", std::to_string(values.size()));
 }
 
 }  // namespace
 
-void validateFields(const FieldSet& fields, const std::string& source) {
+void validateFields(const ConstFieldViews& fields, const std::string& source) {
     const std::size_t cells = fields.grid.cellCount();
     checkSize(fields.deltaIndex, cells, source + ": field delta_index");
     for (std::size_t c = 0; c < cells; ++c) {
@@ -53,6 +55,10 @@ void validateFields(const FieldSet& fields, const std::string& source) {
                              std::to_string(sigma));
         if (!fields.hasExtinction() && !fields.hasScattering()) break;
     }
+}
+
+void validateFields(const FieldSet& fields, const std::string& source) {
+    validateFields(viewsOf(fields), source);
 }
 
 }  // namespace eikon

@@ -1,5 +1,7 @@
 #include "render/graph/FrameRenderer.h"
 
+#include "bridge/core/Error.h"
+
 #include <chrono>
 #include <utility>
 
@@ -22,12 +24,21 @@ StageReport runStage(const char* name, bool needed, Work&& work) {
 }  // namespace
 
 FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options)
+    : FrameRenderer(scene, hostUpload(fields), nullptr, options) {}
+
+FrameRenderer::FrameRenderer(const Scene& scene, FieldRing& ring, RendererOptions options)
+    : FrameRenderer(scene, ring.current(), &ring, options) {}
+
+FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, FieldRing* ring, RendererOptions options)
     : scene_(scene), receivers_(scene.receivers), post_(scene.render.width, scene.render.height) {
-    pendingUploadBytes_ = fields_.upload(fields);  // before the stages: they compile for the fields present
+    pendingUpload_ = fields_.upload(fields);  // before the stages: they compile for the fields present
+    if (ring) ring->fenceCurrent();
     prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
     if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree)
         stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction());
-    photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
+    // Photons light receivers and in-scattering; a scene with neither has no photon stage.
+    if (!scene.receivers.empty() || fields_.hasScattering() || scene.tracer.storeFluence)
+        photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
     view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr, options.recordViewExits);
     const double voxel = fields.grid.smallestVoxelEdge();
     photonSettings_.photons = scene.render.photons;
@@ -43,6 +54,7 @@ const gl::Texture3D* FrameRenderer::stepTexture() const {
 }
 
 StageReport FrameRenderer::relight(PhotonStats& stats) {
+    EIKON_CHECK_MSG(photons_, "relight of a scene without a photon stage");
     return runStage("photons", true, [&] { stats = photons_->run(fields_, stepTexture(), photonSettings_); });
 }
 
@@ -52,24 +64,40 @@ void FrameRenderer::setCamera(const CameraDesc& camera) {
     cameraChanged_ = true;
 }
 
-FrameResult FrameRenderer::render(const FieldSet& fields) {
+void FrameRenderer::setLight(std::size_t index, const LightDesc& light) {
+    EIKON_CHECK_MSG(index < scene_.lights.size(), "no such light");
+    scene_.lights[index] = light;
+    if (photons_) photons_->setEmitters(scene_);
+    lightsChanged_ = true;
+}
+
+FrameResult FrameRenderer::render(const FieldSet& fields) { return render(hostUpload(fields), nullptr); }
+
+FrameResult FrameRenderer::render(FieldRing& ring) { return render(ring.current(), &ring); }
+
+FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     FrameResult result;
-    result.stages.push_back(runStage("upload", true, [&] {
-        result.hostBytesUploaded = std::exchange(pendingUploadBytes_, 0) + fields_.upload(fields);
-    }));
     const bool indexChanged = fields.indexVersion != tracedIndexVersion_;
     const bool extinctionChanged = fields.extinctionVersion != tracedExtinctionVersion_;
     const bool fieldsChanged = indexChanged || extinctionChanged || fields.scatteringVersion != tracedScatteringVersion_;
+    result.stages.push_back(runStage("upload", fieldsChanged, [&] {
+        const UploadBytes bytes = fields_.upload(fields);
+        result.copied = {std::exchange(pendingUpload_, {}).host + bytes.host, bytes.gpu};
+    }));
+    if (ring) ring->fenceCurrent();  // the slot is free again once the copies issued so far ran
+    const bool photonsNeeded = fieldsChanged || lightsChanged_;
     result.stages.push_back(runStage("prepare", indexChanged, [&] { prepare_->run(fields_); }));
     if (stepStructure_)
         result.stages.push_back(runStage("step_structure", indexChanged || extinctionChanged,
                                          [&] { stepStructure_->run(prepare_->smoothedIndex(fields_), fields_); }));
-    result.stages.push_back(runStage("photons", fieldsChanged, [&] {
-        last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
-    }));
-    const bool viewNeeded = fieldsChanged || cameraChanged_;
+    if (photons_)
+        result.stages.push_back(runStage("photons", photonsNeeded, [&] {
+            last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
+        }));
+    const bool viewNeeded = photonsNeeded || cameraChanged_;
     result.stages.push_back(runStage("view", viewNeeded, [&] {
-        view_->run(fields_, {&photons_->fluence(), &photons_->fluenceDirection(), stepTexture()});
+        view_->run(fields_, {photons_ ? &photons_->fluence() : nullptr,
+                             photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture()});
     }));
     result.stages.push_back(runStage("post", viewNeeded, [&] {
         last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
@@ -77,7 +105,7 @@ FrameResult FrameRenderer::render(const FieldSet& fields) {
     tracedIndexVersion_ = fields.indexVersion;
     tracedExtinctionVersion_ = fields.extinctionVersion;
     tracedScatteringVersion_ = fields.scatteringVersion;
-    cameraChanged_ = false;
+    cameraChanged_ = lightsChanged_ = false;
     if (viewNeeded && scene_.render.writeHdr) last_.hdr = view_->downloadHdr();
     result.image = last_.image;
     result.hdr = last_.hdr;

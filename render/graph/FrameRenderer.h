@@ -2,12 +2,13 @@
 // → view → post. A stage runs only when one of its inputs changed since it
 // last ran (field versions, camera); stages the scene does not need are not
 // created (uniform steps → no step structure, no receivers → no maps, no
-// scattering → no fluence). Each frame reports every stage it has with
-// whether it ran and its wall time.
+// scattering → no fluence, neither receivers nor scattering → no photons).
+// Each frame reports every stage it has with whether it ran and its wall time.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
+#include "render/stages/FieldRing.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/PhotonStage.h"
 #include "render/stages/PostStage.h"
@@ -33,7 +34,7 @@ struct FrameResult {
     std::vector<float> hdr;       // linear RGBA radiance, when the scene writes HDR
     PhotonStats photons;          // of the latest photon pass
     std::vector<StageReport> stages;
-    std::size_t hostBytesUploaded = 0;
+    UploadBytes copied;           // host bytes the driver read, bytes copied on the GPU
 };
 
 struct RendererOptions {
@@ -44,20 +45,31 @@ struct RendererOptions {
 class FrameRenderer {
 public:
     FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options = {});
+    // Fields from the ring's current slot, which also gives the layout.
+    FrameRenderer(const Scene& scene, FieldRing& ring, RendererOptions options = {});
 
+    // Renders fields from host memory (copied to the GPU where they changed).
     FrameResult render(const FieldSet& fields);
+    // Renders the ring's current slot (no host copy) and fences it.
+    FrameResult render(FieldRing& ring);
     void setCamera(const CameraDesc& camera);
+    // Moves or re-powers light `index` of the scene: photons are traced anew.
+    void setLight(std::size_t index, const LightDesc& light);
     // Traces the photons of the last rendered fields again (a relight, as
     // when a light moves), timed to completion; for benchmarks.
     StageReport relight(PhotonStats& stats);
 
     const ReceiverMaps& receivers() const { return receivers_; }
-    const PhotonStage& photonStage() const { return *photons_; }
+    // Null when the scene has nothing for photons to light (no receivers, no scattering).
+    const PhotonStage* photonStage() const { return photons_.get(); }
     const PhotonSettings& photonSettings() const { return photonSettings_; }
     const ViewStage& viewStage() const { return *view_; }
 
 private:
     const gl::Texture3D* stepTexture() const;  // null for uniform steps
+    FrameRenderer(const Scene& scene, const FieldUpload& fields, FieldRing* ring, RendererOptions options);
+    // Uploads, then the stages that depend on what changed.
+    FrameResult render(const FieldUpload& fields, FieldRing* ring);
 
     Scene scene_;
     FieldTextures fields_;
@@ -71,7 +83,8 @@ private:
 
     std::uint64_t tracedIndexVersion_ = ~0ull, tracedExtinctionVersion_ = ~0ull, tracedScatteringVersion_ = ~0ull;
     bool cameraChanged_ = true;
-    std::size_t pendingUploadBytes_ = 0;  // uploaded while constructing, reported with the first frame
+    bool lightsChanged_ = false;
+    UploadBytes pendingUpload_;  // uploaded while constructing, reported with the first frame
     FrameResult last_;
 };
 

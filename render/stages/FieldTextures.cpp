@@ -10,17 +10,41 @@ bool sameGrid(const GridSpec& a, const GridSpec& b) {
     return a.resolution == b.resolution && a.boundsMin == b.boundsMin && a.boundsMax == b.boundsMax;
 }
 
-// Uploads a three-channel field into an RGBA32F texture (created on demand).
-std::size_t uploadRgb(gl::Texture3D& texture, const GridSpec& grid, const std::vector<float>& values) {
-    if (!texture.id()) texture = gl::Texture3D(GL_RGBA32F, grid.resolution.x, grid.resolution.y, grid.resolution.z);
-    texture.upload(GL_RGB, GL_FLOAT, values.data());
-    return values.size() * sizeof(float);
+FieldSource hostSource(const std::vector<float>& values) { return {values.data(), 0, values.size()}; }
+
+// Copies `source` into `texture` (created on demand with `internalFormat`):
+// from a buffer bound as the pixel unpack buffer the copy stays on the GPU.
+void uploadField(gl::Texture3D& texture, GLenum internalFormat, GLenum format, const GridSpec& grid,
+                 const FieldSource& source, UploadBytes& bytes) {
+    if (!texture.id()) texture = gl::Texture3D(internalFormat, grid.resolution.x, grid.resolution.y, grid.resolution.z);
+    const std::size_t size = source.floats * sizeof(float);
+    if (source.buffer) {
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, source.buffer);
+        texture.upload(format, GL_FLOAT, nullptr);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        bytes.gpu += size;
+    } else {
+        texture.upload(format, GL_FLOAT, source.host);
+        bytes.host += size;
+    }
 }
 
 }  // namespace
 
-std::size_t FieldTextures::upload(const FieldSet& fields) {
-    std::size_t bytes = 0;
+FieldUpload hostUpload(const FieldSet& fields) {
+    return {fields.grid,
+            fields.referenceIndex,
+            hostSource(fields.deltaIndex),
+            hostSource(fields.extinction),
+            hostSource(fields.scattering),
+            hostSource(fields.anisotropy),
+            fields.indexVersion,
+            fields.extinctionVersion,
+            fields.scatteringVersion};
+}
+
+UploadBytes FieldTextures::upload(const FieldUpload& fields) {
+    UploadBytes bytes;
     if (!gridBlock_.id() || !sameGrid(grid_, fields.grid)) {
         grid_ = fields.grid;
         const glm::ivec3 r = grid_.resolution;
@@ -30,31 +54,25 @@ std::size_t FieldTextures::upload(const FieldSet& fields) {
         block.voxelSize = glm::vec4(glm::vec3(grid_.voxelSize()), static_cast<float>(grid_.voxelVolume()));
         block.resolution = glm::ivec4(r, 0);
         gridBlock_ = gl::Buffer(sizeof block, &block);
-        index_ = gl::Texture3D(GL_R32F, r.x, r.y, r.z);
+        index_ = {};
         gradient_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z);
         extinction_ = {};
         scattering_ = {};
         anisotropy_ = {};
         indexVersion_ = extinctionVersion_ = scatteringVersion_ = ~0ull;
-        bytes += sizeof block;
+        bytes.host += sizeof block;
     }
-    if (fields.indexVersion != indexVersion_) {
-        index_.upload(GL_RED, GL_FLOAT, fields.deltaIndex.data());
-        bytes += fields.deltaIndex.size() * sizeof(float);
-        indexVersion_ = fields.indexVersion;
-    }
-    if (!fields.hasExtinction()) extinction_ = {};
-    else if (fields.extinctionVersion != extinctionVersion_) bytes += uploadRgb(extinction_, grid_, fields.extinction);
+    if (fields.indexVersion != indexVersion_) uploadField(index_, GL_R32F, GL_RED, grid_, fields.deltaIndex, bytes);
+    indexVersion_ = fields.indexVersion;
+    if (!fields.extinction.floats) extinction_ = {};
+    else if (fields.extinctionVersion != extinctionVersion_)
+        uploadField(extinction_, GL_RGBA32F, GL_RGB, grid_, fields.extinction, bytes);
     extinctionVersion_ = fields.extinctionVersion;
-    if (!fields.hasScattering()) scattering_ = {};
-    else if (fields.scatteringVersion != scatteringVersion_) bytes += uploadRgb(scattering_, grid_, fields.scattering);
-    if (!fields.hasAnisotropy()) {
-        anisotropy_ = {};
-    } else if (fields.scatteringVersion != scatteringVersion_) {
-        if (!anisotropy_.id()) anisotropy_ = gl::Texture3D(GL_R32F, grid_.resolution.x, grid_.resolution.y, grid_.resolution.z);
-        anisotropy_.upload(GL_RED, GL_FLOAT, fields.anisotropy.data());
-        bytes += fields.anisotropy.size() * sizeof(float);
-    }
+    const bool scatteringChanged = fields.scatteringVersion != scatteringVersion_;
+    if (!fields.scattering.floats) scattering_ = {};
+    else if (scatteringChanged) uploadField(scattering_, GL_RGBA32F, GL_RGB, grid_, fields.scattering, bytes);
+    if (!fields.anisotropy.floats) anisotropy_ = {};
+    else if (scatteringChanged) uploadField(anisotropy_, GL_R32F, GL_RED, grid_, fields.anisotropy, bytes);
     scatteringVersion_ = fields.scatteringVersion;
     return bytes;
 }

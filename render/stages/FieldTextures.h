@@ -1,6 +1,9 @@
 // The field grid on the GPU: the GridBlock uniform and one 3D texture per
 // field the scene has (δn always; κ and σs only when present). Re-uploads a
-// field only when its version changed.
+// field only when its version changed. Values come either from host memory
+// (the driver copies them: host bytes) or from a GL buffer the simulation
+// wrote in place (render/stages/FieldRing.h; the copy into the texture runs
+// on the GPU: no host bytes).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -10,10 +13,32 @@
 
 namespace eikon::render {
 
+// Where one field's values are: host memory, or a GL buffer (offset 0).
+struct FieldSource {
+    const float* host = nullptr;
+    GLuint buffer = 0;
+    std::size_t floats = 0;  // 0: the scene has no such field
+};
+
+// One frame's fields as the textures take them.
+struct FieldUpload {
+    GridSpec grid;
+    double referenceIndex = 1.0;
+    FieldSource deltaIndex, extinction, scattering, anisotropy;
+    std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0;
+};
+
+FieldUpload hostUpload(const FieldSet& fields);
+
+struct UploadBytes {
+    std::size_t host = 0;  // read by the driver from host memory
+    std::size_t gpu = 0;   // copied from GL buffers to textures on the GPU
+};
+
 class FieldTextures {
 public:
-    // Uploads what changed; returns the host bytes handed to the driver.
-    std::size_t upload(const FieldSet& fields);
+    // Uploads what changed.
+    UploadBytes upload(const FieldUpload& fields);
 
     const gl::Buffer& gridBlock() const { return gridBlock_; }
     const gl::Texture3D& index() const { return index_; }

@@ -73,15 +73,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)}};
     program_ = gl::compileComputeProgram("photon_trace.comp", defines);
-    const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), scene.render.photons);
-    for (const auto& emitter : emitters)
-        for (int c = 0; c < 3; ++c) powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c]);
-    // Dispersion gives each photon three times one channel's power.
-    const float headroom = dispersive(tracer.dispersion) ? 3.0f : 1.0f;
-    for (int c = 0; c < 3; ++c)
-        powerUnit_[c] = std::max(headroom * powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);
-    emitterCount_ = static_cast<unsigned>(emitters.size());
-    emitters_ = gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
+    setEmitters(scene);
     if (storeFluence_ > 0) {
         const std::size_t bytes = 3 * fields.grid().cellCount() * sizeof(float);
         rawFluence_ = gl::Buffer(bytes);
@@ -93,6 +85,19 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
     stats_ = gl::Buffer(sizeof(layout::GpuPhotonStats));
     paths_ = gl::Buffer(static_cast<std::size_t>(options.recordPathVertices) *
                         static_cast<std::size_t>(options.recordedPhotons) * sizeof(glm::vec4));
+}
+
+void PhotonStage::setEmitters(const Scene& scene) {
+    const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), scene.render.photons);
+    powerUnit_ = glm::vec3(0.0f);
+    for (const auto& emitter : emitters)
+        for (int c = 0; c < 3; ++c) powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c]);
+    // Dispersion gives each photon three times one channel's power.
+    const float headroom = dispersive(scene.tracer.dispersion) ? 3.0f : 1.0f;
+    for (int c = 0; c < 3; ++c)
+        powerUnit_[c] = std::max(headroom * powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);
+    emitterCount_ = static_cast<unsigned>(emitters.size());
+    emitters_ = gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
 }
 
 PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* stepTexture,

@@ -53,6 +53,9 @@ public:
     PhotonStage(const Scene& scene, const FieldTextures& fields, ReceiverMaps& receivers,
                 PhotonProgramOptions options = {});
 
+    // Rebuilds the emitters from the scene's lights (a light moved).
+    void setEmitters(const Scene& scene);
+
     // stepTexture: the octree step structure, when the scene's tracer uses it.
     PhotonStats run(const FieldTextures& fields, const gl::Texture3D* stepTexture, const PhotonSettings& settings);
 

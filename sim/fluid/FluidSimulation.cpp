@@ -200,9 +200,18 @@ void FluidSimulation::checkFinite(const std::string& phase) const {
 void FluidSimulation::writeFields(FieldSet& fields) const {
     fields.grid = renderGrid_;
     fields.referenceIndex = referenceIndex_;
-    writeOpticalFields(optics_,
-                       {solverGrid(), state_.temperature, state_.concentration, state_.dye, desc_.ambientTemperature},
-                       fields);
+    writeOpticalFields(optics_, scalars(), fields);
+}
+
+void FluidSimulation::writeFields(const FieldViews& fields) const {
+    EIKON_CHECK_MSG(fields.grid.resolution == renderGrid_.resolution, "field views on another grid");
+    EIKON_CHECK_MSG((fields.hasExtinction() || !optics_.absorbs()) && (fields.hasScattering() || !optics_.scatters()),
+                    "field views without the fields the optical model writes");
+    mapOpticalFields(optics_, scalars(), fields);
+}
+
+SolverScalars FluidSimulation::scalars() const {
+    return {solverGrid(), state_.temperature, state_.concentration, state_.dye, desc_.ambientTemperature};
 }
 
 }  // namespace eikon::sim

@@ -56,6 +56,15 @@ public:
     // Fills δn, κ, σs on the render grid, bumping the versions of the fields
     // whose values changed, and validates them.
     void writeFields(FieldSet& fields) const;
+    // The same values written in place into memory the caller owns (a GPU
+    // ring slot), which has at least the fields the optical model writes (κ
+    // and σs of a medium without dye are written as 0 where present);
+    // versions and validation are the caller's.
+    void writeFields(const FieldViews& fields) const;
+    // The fields whose values change from frame to frame: δn always, κ and σs
+    // when dye absorbs or scatters.
+    bool absorbs() const { return optics_.absorbs(); }
+    bool scatters() const { return optics_.scatters(); }
 
     double time() const { return time_; }
     int lastSubsteps() const { return lastSubsteps_; }
@@ -72,6 +81,7 @@ public:
 
 private:
     void substep(double dt);
+    SolverScalars scalars() const;
     // Advection in a closed domain, with each scalar's total restored (MassCorrection.h).
     void advectConserving(const std::vector<GridField*>& scalars, double dt);
     void rebuildRoles();

@@ -37,12 +37,8 @@ double OpticalModel::index(double temperature, double concentration) const {
 bool OpticalModel::absorbs() const { return positive(dyeExtinction_); }
 bool OpticalModel::scatters() const { return positive(dyeScattering_); }
 
-void writeOpticalFields(const OpticalModel& model, const SolverScalars& scalars, FieldSet& fields) {
+void mapOpticalFields(const OpticalModel& model, const SolverScalars& scalars, const FieldViews& fields) {
     const GridSpec& render = fields.grid;
-    const std::size_t cells = render.cellCount();
-    std::vector<float> deltaIndex(cells);
-    std::vector<float> extinction(model.absorbs() ? 3 * cells : 0);
-    std::vector<float> scattering(model.scatters() ? 3 * cells : 0);
     const glm::dvec3 solverH = scalars.solverGrid.voxelSize();
     const glm::ivec3 r = render.resolution;
     tbb::parallel_for(0, r.z, [&](int k) {
@@ -57,18 +53,29 @@ void writeOpticalFields(const OpticalModel& model, const SolverScalars& scalars,
                     dye = sampleTrilinear(scalars.dye, g);
                 }
                 const std::size_t cell = render.linearIndex(i, j, k);
-                deltaIndex[cell] = static_cast<float>(model.index(temperature, concentration) - fields.referenceIndex);
+                fields.deltaIndex[cell] = static_cast<float>(model.index(temperature, concentration) - fields.referenceIndex);
                 const Rgb kappa = model.extinction(dye);
                 const Rgb sigma = model.scattering(dye);
                 for (int channel = 0; channel < 3; ++channel) {
-                    if (!extinction.empty()) extinction[3 * cell + channel] = static_cast<float>(kappa[channel]);
-                    if (!scattering.empty()) scattering[3 * cell + channel] = static_cast<float>(sigma[channel]);
+                    if (fields.hasExtinction()) fields.extinction[3 * cell + channel] = static_cast<float>(kappa[channel]);
+                    if (fields.hasScattering()) fields.scattering[3 * cell + channel] = static_cast<float>(sigma[channel]);
                 }
             }
     });
-    publish(fields.deltaIndex, std::move(deltaIndex), fields.indexVersion);
-    publish(fields.extinction, std::move(extinction), fields.extinctionVersion);
-    publish(fields.scattering, std::move(scattering), fields.scatteringVersion);
+}
+
+void writeOpticalFields(const OpticalModel& model, const SolverScalars& scalars, FieldSet& fields) {
+    const std::size_t cells = fields.grid.cellCount();
+    FieldSet next;
+    next.grid = fields.grid;
+    next.referenceIndex = fields.referenceIndex;
+    next.deltaIndex.resize(cells);
+    next.extinction.resize(model.absorbs() ? 3 * cells : 0);
+    next.scattering.resize(model.scatters() ? 3 * cells : 0);
+    mapOpticalFields(model, scalars, viewsOf(next));
+    publish(fields.deltaIndex, std::move(next.deltaIndex), fields.indexVersion);
+    publish(fields.extinction, std::move(next.extinction), fields.extinctionVersion);
+    publish(fields.scattering, std::move(next.scattering), fields.scatteringVersion);
     validateFields(fields, "sim");
 }
 

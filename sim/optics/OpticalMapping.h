@@ -8,6 +8,7 @@
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
+#include "bridge/grid/FieldViews.h"
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/GridField.h"
 #include "sim/optics/AirOptics.h"
@@ -41,6 +42,11 @@ struct SolverScalars {
     const GridField& dye;
     double ambientTemperature;
 };
+
+// Writes δn (and κ, σs where `fields` has them) of every render cell straight
+// into `fields`' memory, with n_ref = fields.referenceIndex. Versions and
+// validation are the caller's.
+void mapOpticalFields(const OpticalModel& model, const SolverScalars& scalars, const FieldViews& fields);
 
 // Fills fields.deltaIndex, .extinction, .scattering on fields.grid (κ and σs
 // left empty when the model has none) with n_ref = fields.referenceIndex, and

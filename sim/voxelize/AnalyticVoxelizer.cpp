@@ -70,7 +70,10 @@ void paintObjects(const Scene& scene, FieldSet& fields) {
     if (anyPositive(scene.objects, &Material::extinction)) ensureSized(fields.extinction, 3 * cells, 0.0f);
     if (anyPositive(scene.objects, &Material::scattering)) ensureSized(fields.scattering, 3 * cells, 0.0f);
     if (anyAnisotropy) ensureSized(fields.anisotropy, cells, 0.0f);
+    paintObjects(scene, viewsOf(fields));
+}
 
+void paintObjects(const Scene& scene, const FieldViews& fields) {
     const glm::ivec3 r = fields.grid.resolution;
     tbb::parallel_for(0, r.z, [&](int k) {
         for (int j = 0; j < r.y; ++j)

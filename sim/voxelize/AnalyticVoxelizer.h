@@ -8,6 +8,7 @@
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
+#include "bridge/grid/FieldViews.h"
 #include "bridge/scene/Scene.h"
 
 #include <vector>
@@ -25,5 +26,7 @@ FieldSet voxelizeScene(const Scene& scene);
 // (the fluid solver's, say), in list order by coverage; creates κ, σs or g
 // where an object needs them. Versions are left to the caller.
 void paintObjects(const Scene& scene, FieldSet& fields);
+// The same in place, over memory that already has every field an object needs.
+void paintObjects(const Scene& scene, const FieldViews& fields);
 
 }  // namespace eikon::sim

@@ -3,13 +3,17 @@
 // output layout of a run.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <iterator>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -99,7 +103,7 @@ TEST_F(Cli, VtkExportWritesATimeSeries) {
     EXPECT_TRUE(fs::exists(out / "vtk" / "fields.vti.series"));
 }
 
-TEST_F(Cli, SecondFrameOfStaticSceneRunsOnlyUpload) {
+TEST_F(Cli, SecondFrameOfStaticSceneRunsNoStage) {
     const std::string scene = writeScene("ok.json", validScene());
     const fs::path out = dir_ / "out";
     ASSERT_EQ(runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet").exitCode, 0);
@@ -110,6 +114,48 @@ TEST_F(Cli, SecondFrameOfStaticSceneRunsOnlyUpload) {
     EXPECT_NE(first.find("\"name\":\"photons\",\"ran\":true"), std::string::npos) << first;
     EXPECT_NE(second.find("\"name\":\"photons\",\"ran\":false"), std::string::npos) << second;
     EXPECT_NE(second.find("\"name\":\"view\",\"ran\":false"), std::string::npos) << second;
+    EXPECT_NE(second.find("\"name\":\"upload\",\"ran\":false"), std::string::npos) << second;
+    EXPECT_EQ(first.find("\"simulate\""), std::string::npos) << "a scene without fluid has no simulation stage";
+}
+
+std::vector<nlohmann::json> readReport(const fs::path& path) {
+    std::ifstream report(path);
+    std::vector<nlohmann::json> lines;
+    for (std::string line; std::getline(report, line);) lines.push_back(nlohmann::json::parse(line));
+    return lines;
+}
+
+std::string fileBytes(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// A simulated scene's fields reach the GPU through the field ring: no field
+// byte is copied on the host, and simulating the next frame during the
+// render changes no pixel.
+TEST_F(Cli, LiveSimulationCopiesNoHostBytesAndPipeliningChangesNoPixel) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string small = " --frames 3 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
+                              " --set render.width=48 --set render.height=36";
+    const fs::path pipelined = dir_ / "pipelined", sequential = dir_ / "sequential";
+    ASSERT_EQ(runEikon("run " + scene + " --out " + pipelined.string() + small).exitCode, 0);
+    ASSERT_EQ(runEikon("run " + scene + " --out " + sequential.string() + small + " --no-pipelining").exitCode, 0);
+    const auto report = readReport(pipelined / "report.jsonl");
+    ASSERT_EQ(report.size(), 3u);
+    EXPECT_LE(report[0]["host_bytes_copied"].get<std::size_t>(), 64u);  // the grid's uniform block only
+    for (std::size_t frame = 1; frame < report.size(); ++frame) {
+        EXPECT_EQ(report[frame]["host_bytes_copied"].get<std::size_t>(), 0u) << report[frame].dump();
+        EXPECT_EQ(report[frame]["gpu_bytes_copied"].get<std::size_t>(), 16u * 16u * 16u * sizeof(float));
+        EXPECT_EQ(report[frame]["stages"][0]["name"], "simulate");
+        EXPECT_EQ(report[frame]["stages"][0]["ran"], true);
+        EXPECT_GT(report[frame]["time_s"].get<double>(), report[frame - 1]["time_s"].get<double>());
+    }
+    EXPECT_EQ(report[0]["loop"]["pipelined"], true);
+    EXPECT_EQ(readReport(sequential / "report.jsonl")[0]["loop"]["pipelined"], false);
+    for (const char* frame : {"frame_00001.png", "frame_00002.png"})
+        EXPECT_EQ(fileBytes(pipelined / "frames" / frame), fileBytes(sequential / "frames" / frame)) << frame;
+    EXPECT_NE(fileBytes(pipelined / "frames" / "frame_00000.png"), fileBytes(pipelined / "frames" / "frame_00002.png"))
+        << "the plume rises between frames";
 }
 
 TEST_F(Cli, RefusesEarlierRunUnlessForced) {

@@ -141,7 +141,7 @@ TEST_F(DefaultRender, ReportsEveryStageAndBalancesEnergy) {
     }
     EXPECT_EQ(names, (std::vector<std::string>{"upload", "prepare", "step_structure", "photons", "view", "post"}));
     EXPECT_LT(result_->photons.balanceError(), 1e-6);
-    EXPECT_GT(result_->hostBytesUploaded, 0u);
+    EXPECT_GT(result_->copied.host, 0u);
 }
 
 }  // namespace

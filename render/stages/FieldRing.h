@@ -1,0 +1,70 @@
+// The zero-copy bridge between the simulation and the GPU.
+//
+// Sun et al. 2008 (§5.2) lost about a tenth of every frame copying volumes
+// between OpenGL and CUDA. Here each field the scene has (δn, κ, σs, g) lives
+// in a ring of persistently mapped GL buffers (render/gl/MappedBuffer.h): the
+// simulation writes frame k+1 straight into one slot, from any thread, while
+// the GPU copies frame k from another slot into the 3D textures the tracer
+// samples (a GPU-side copy: the shaders need hardware trilinear filtering,
+// which buffer textures lack). A fence placed after that copy guards each
+// slot; acquire() waits on it before the slot is written again. No host
+// memory is copied on this path.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/grid/FieldViews.h"
+#include "render/gl/MappedBuffer.h"
+#include "render/stages/FieldTextures.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace eikon::render {
+
+struct FieldRingStats {
+    int slots = 0;
+    std::uint64_t acquisitions = 0;
+    std::uint64_t busyAcquisitions = 0;  // the slot's fence had not signalled yet: acquire() waited
+    double waitMilliseconds = 0.0;       // spent in those waits
+};
+
+class FieldRing {
+public:
+    // Slots shaped like `layout`: its grid and the fields it has. At least two.
+    explicit FieldRing(const FieldSet& layout, int slots = 2);
+
+    // GL thread. Hands out the next slot once the GPU no longer reads it. Its
+    // views stay valid for the ring's life; write them from any thread, then
+    // publish().
+    FieldViews acquire();
+    // GL thread. The acquired slot becomes current, with these versions.
+    void publish(std::uint64_t indexVersion, std::uint64_t extinctionVersion, std::uint64_t scatteringVersion);
+
+    // The current slot for FieldTextures::upload; after issuing the commands
+    // that read it, call fenceCurrent().
+    FieldUpload current() const;
+    ConstFieldViews currentViews() const;
+    void fenceCurrent();
+
+    const FieldRingStats& stats() const { return stats_; }
+    std::size_t bytesPerSlot() const;
+
+private:
+    struct Slot {
+        std::array<gl::MappedBuffer, 4> buffers;  // δn, κ, σs, g (empty when absent)
+        gl::Fence readByGpu;
+        std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0;
+    };
+    FieldViews views(const Slot& slot) const;
+
+    GridSpec grid_;
+    double referenceIndex_ = 1.0;
+    std::array<std::size_t, 4> floats_{};  // per field; 0 when the scene lacks it
+    std::vector<Slot> slots_;
+    int current_ = -1;
+    int acquired_ = -1;
+    FieldRingStats stats_;
+};
+
+}  // namespace eikon::render
