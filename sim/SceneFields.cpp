@@ -1,6 +1,7 @@
 #include "sim/SceneFields.h"
 
 #include "sim/voxelize/AnalyticVoxelizer.h"
+#include "sim/voxelize/VolumePainter.h"
 
 #include "bridge/core/Error.h"
 
@@ -30,6 +31,7 @@ void SceneFields::writeFrameInto(const FieldViews& target) const {
     frame.referenceIndex = fields_.referenceIndex;
     fluid_->writeFields(frame);
     paintObjects(scene_, frame);
+    paintStrokes(scene_, frame);
     validateFields(frame, scene_.sourcePath);
 }
 
@@ -42,6 +44,7 @@ std::vector<PhaseTiming> SceneFields::lastTimings() const {
 void SceneFields::refreshFromSimulation() {
     fluid_->writeFields(fields_);
     paintObjects(scene_, fields_);
+    paintStrokes(scene_, fields_);
 }
 
 }  // namespace eikon::sim

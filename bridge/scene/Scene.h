@@ -51,6 +51,25 @@ struct ObjectDesc {
     Material material;
 };
 
+// A brush dragged along a path through the volume (Sun et al. 2008, §6.2.1,
+// volume painting): a pattern of material added to the fields, scaled to the
+// brush radius and turned to follow the path.
+struct PaintStroke {
+    enum class Brush {
+        Soft,   // Gaussian, σ = radius/2
+        Smoke,  // the Gaussian modulated by fractal value noise fixed to the brush
+    } brush = Brush::Soft;
+    enum class Where { Everywhere, InsideObjects, OutsideObjects } where = Where::Everywhere;
+    std::vector<glm::dvec3> path;  // metres; one point stamps once, more drag the brush along the polyline
+    double radius = 0.05;          // metres, > 0
+    // Added on the stroke's centre line: index Δn (any sign; n > 0 is checked
+    // after painting), extinction κ and scattering σs in 1/m (σs ≤ κ).
+    double index = 0.0;
+    Rgb extinction{0.0};
+    Rgb scattering{0.0};
+    unsigned seed = 1;  // the smoke pattern
+};
+
 struct LightDesc {
     enum class Kind { Point, Spot, Directional } kind = Kind::Point;
     glm::dvec3 position{0.0};        // point, spot: metres
@@ -188,6 +207,7 @@ struct Scene {
     GridDesc grid;
     Material medium;         // background medium; medium.index is n_ref
     std::vector<ObjectDesc> objects;
+    std::vector<PaintStroke> paint;  // applied after the objects, in order
     std::vector<LightDesc> lights;
     std::vector<ReceiverDesc> receivers;
     CameraDesc camera;

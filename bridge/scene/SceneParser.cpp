@@ -2,6 +2,7 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/scene/JsonReader.h"
+#include "bridge/scene/PaintParser.h"
 
 #include <glm/geometric.hpp>
 
@@ -531,14 +532,15 @@ nlohmann::json parseOverrideValue(const std::string& text) {
 
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const auto fields = JsonReader(root, sourceName)
-                            .object({"description", "grid", "medium", "objects", "lights", "receivers", "camera",
-                                     "render", "tracer", "sim"});
+                            .object({"description", "grid", "medium", "objects", "paint", "lights", "receivers",
+                                     "camera", "render", "tracer", "sim"});
     Scene scene;
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
     if (auto grid = fields.optional("grid")) scene.grid = readGrid(*grid);
     if (auto medium = fields.optional("medium")) scene.medium = readMedium(*medium);
     scene.objects = readList<ObjectDesc>(fields, "objects", readObject);
+    scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
     scene.lights = readList<LightDesc>(fields, "lights", readLight);
     if (scene.lights.empty()) fields.member("lights").fail("an array of at least one light");
     scene.receivers = readList<ReceiverDesc>(fields, "receivers", readReceiver);

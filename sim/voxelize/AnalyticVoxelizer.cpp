@@ -1,5 +1,7 @@
 #include "sim/voxelize/AnalyticVoxelizer.h"
 
+#include "sim/voxelize/VolumePainter.h"
+
 #include <tbb/parallel_for.h>
 
 #include <glm/geometric.hpp>
@@ -122,6 +124,7 @@ FieldSet voxelizeScene(const Scene& scene) {
     if (positive(scene.medium.scattering)) uniform(fields.scattering, scene.medium.scattering);
     if (scene.medium.anisotropy != 0.0) fields.anisotropy.assign(cells, static_cast<float>(scene.medium.anisotropy));
     paintObjects(scene, fields);
+    paintStrokes(scene, fields);
     fields.indexVersion = fields.extinctionVersion = fields.scatteringVersion = 1;
     return fields;
 }

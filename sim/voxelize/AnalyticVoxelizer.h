@@ -18,7 +18,8 @@ namespace eikon::sim {
 // Fraction of the voxel at `cell` inside `object`, in [0, 1].
 double coverage(const ObjectDesc& object, const GridSpec& grid, int i, int j, int k, int supersampling);
 
-// Index, extinction and scattering of the scene's medium and objects.
+// Index, extinction and scattering of the scene's medium, objects and paint
+// strokes (VolumePainter.h).
 // Extinction and scattering are left empty when zero everywhere.
 FieldSet voxelizeScene(const Scene& scene);
 
