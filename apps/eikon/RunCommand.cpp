@@ -20,8 +20,10 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
         ->type_name("KEY.PATH=VALUE");
     run->add_flag("--quiet", options.quiet, "No progress bar");
     run->add_flag("--force", options.force, "Clear the output folder if it holds an earlier run");
-    run->add_flag("--no-pipelining", options.noPipelining,
-                  "Simulate each frame after the previous one rendered instead of while it renders");
+    run->add_option("--pipelining", options.pipelining,
+                    "Simulate frame k+1 while frame k renders: on, off, or auto (on unless OpenGL renders on the CPU "
+                    "cores the simulation uses, as llvmpipe does)")
+        ->check(CLI::IsMember({"auto", "on", "off"}));
     run->add_flag("--vtk", options.vtk,
                   "Also write DIR/vtk/fields_NNNNN.vti (index, extinction, scattering, fluence when stored) with a "
                   ".pvd and .series for ParaView");
@@ -37,7 +39,9 @@ int runCommand(const RunOptions& options) {
     auto context = gl::createHeadlessContext();  // before the folder: a machine without GL leaves nothing behind
     io::OutputFolder output(outDir, options.force);
     ProgressBar progress(options.frames, options.quiet);
-    runFrames(scene, fields, options.frames, output, progress, {options.vtk, !options.noPipelining});
+    const bool pipelined =
+        options.pipelining == "on" || (options.pipelining == "auto" && !context->info().rendersOnCpu());
+    runFrames(scene, fields, options.frames, output, progress, {options.vtk, pipelined});
     return 0;
 }
 

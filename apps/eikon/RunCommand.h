@@ -16,7 +16,7 @@ struct RunOptions {
     bool quiet = false;
     bool force = false;
     bool vtk = false;
-    bool noPipelining = false;  // simulate frame k+1 after frame k rendered, not during  // also export every frame's fields as a ParaView time series
+    std::string pipelining = "auto";  // on, off, or auto: on unless OpenGL renders on the CPU  // also export every frame's fields as a ParaView time series
 };
 
 void addRunCommand(CLI::App& app, RunOptions& options);

@@ -13,6 +13,12 @@ struct GlInfo {
     std::string version;
     std::string glslVersion;
     std::string platform;  // how the context was made, e.g. "EGL surfaceless (Mesa)"
+
+    // Mesa's llvmpipe or softpipe: "GPU" work runs on the same CPU cores as
+    // the simulation.
+    bool rendersOnCpu() const {
+        return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+    }
 };
 
 class GlContext {

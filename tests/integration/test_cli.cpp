@@ -138,8 +138,8 @@ TEST_F(Cli, LiveSimulationCopiesNoHostBytesAndPipeliningChangesNoPixel) {
     const std::string small = " --frames 3 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
                               " --set render.width=48 --set render.height=36";
     const fs::path pipelined = dir_ / "pipelined", sequential = dir_ / "sequential";
-    ASSERT_EQ(runEikon("run " + scene + " --out " + pipelined.string() + small).exitCode, 0);
-    ASSERT_EQ(runEikon("run " + scene + " --out " + sequential.string() + small + " --no-pipelining").exitCode, 0);
+    ASSERT_EQ(runEikon("run " + scene + " --out " + pipelined.string() + small + " --pipelining on").exitCode, 0);
+    ASSERT_EQ(runEikon("run " + scene + " --out " + sequential.string() + small + " --pipelining off").exitCode, 0);
     const auto report = readReport(pipelined / "report.jsonl");
     ASSERT_EQ(report.size(), 3u);
     EXPECT_LE(report[0]["host_bytes_copied"].get<std::size_t>(), 64u);  // the grid's uniform block only
