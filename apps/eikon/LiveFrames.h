@@ -30,6 +30,8 @@ public:
     ~LiveFrames();
 
     render::FieldRing& ring() { return ring_; }
+    // Takes effect at the next beginNext().
+    void setPipelined(bool pipelined) { pipelined_ = pipelined; }
     const ProducedFrame& current() const { return current_; }
 
     // Acquires the next slot and, when pipelined, starts producing the next

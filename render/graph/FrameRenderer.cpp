@@ -71,6 +71,20 @@ void FrameRenderer::setLight(std::size_t index, const LightDesc& light) {
     lightsChanged_ = true;
 }
 
+void FrameRenderer::setPhotonCount(long long photons) {
+    if (photons == scene_.render.photons) return;
+    scene_.render.photons = photons;
+    photonSettings_.photons = photons;
+    if (photons_) photons_->setEmitters(scene_);  // photons are shared among lights by power
+    lightsChanged_ = true;
+}
+
+void FrameRenderer::setExposure(double exposureEv) {
+    if (exposureEv == scene_.render.exposureEv) return;
+    scene_.render.exposureEv = exposureEv;
+    exposureChanged_ = true;
+}
+
 FrameResult FrameRenderer::render(const FieldSet& fields) { return render(hostUpload(fields), nullptr); }
 
 FrameResult FrameRenderer::render(FieldRing& ring) { return render(ring.current(), &ring); }
@@ -99,13 +113,13 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         view_->run(fields_, {photons_ ? &photons_->fluence() : nullptr,
                              photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture()});
     }));
-    result.stages.push_back(runStage("post", viewNeeded, [&] {
+    result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
     }));
     tracedIndexVersion_ = fields.indexVersion;
     tracedExtinctionVersion_ = fields.extinctionVersion;
     tracedScatteringVersion_ = fields.scatteringVersion;
-    cameraChanged_ = lightsChanged_ = false;
+    cameraChanged_ = lightsChanged_ = exposureChanged_ = false;
     if (viewNeeded && scene_.render.writeHdr) last_.hdr = view_->downloadHdr();
     result.image = last_.image;
     result.hdr = last_.hdr;

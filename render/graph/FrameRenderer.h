@@ -55,6 +55,12 @@ public:
     void setCamera(const CameraDesc& camera);
     // Moves or re-powers light `index` of the scene: photons are traced anew.
     void setLight(std::size_t index, const LightDesc& light);
+    // Photons per trace (the viewer lowers it while the user drags a light);
+    // a changed count traces anew.
+    void setPhotonCount(long long photons);
+    // Exposure of the tone map: post runs again.
+    void setExposure(double exposureEv);
+    const Scene& scene() const { return scene_; }
     // Traces the photons of the last rendered fields again (a relight, as
     // when a light moves), timed to completion; for benchmarks.
     StageReport relight(PhotonStats& stats);
@@ -84,6 +90,7 @@ private:
     std::uint64_t tracedIndexVersion_ = ~0ull, tracedExtinctionVersion_ = ~0ull, tracedScatteringVersion_ = ~0ull;
     bool cameraChanged_ = true;
     bool lightsChanged_ = false;
+    bool exposureChanged_ = false;
     UploadBytes pendingUpload_;  // uploaded while constructing, reported with the first frame
     FrameResult last_;
 };

@@ -1,0 +1,270 @@
+#include "apps/eikon-view/Viewer.h"
+
+#include "apps/eikon-view/CameraControls.h"
+#include "apps/eikon-view/ControlPanel.h"
+#include "apps/eikon-view/ImagePresenter.h"
+#include "apps/eikon-view/ViewerSession.h"
+#include "bridge/core/Error.h"
+#include "bridge/io/ImageIo.h"
+#include "bridge/scene/SceneParser.h"
+#include "render/gl/GlContext.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+namespace eikon::view {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double photonMilliseconds(const render::FrameResult& result) {
+    for (const auto& stage : result.stages)
+        if (stage.name == "photons" && stage.ran) return stage.milliseconds;
+    return 0.0;
+}
+
+std::filesystem::file_time_type modificationTime(const std::string& path) {
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(path, error);
+    return error ? std::filesystem::file_time_type{} : time;
+}
+
+class Viewer {
+public:
+    explicit Viewer(const ViewerOptions& options)
+        : options_(options),
+          scene_(loadSceneFile(options.scenePath, options.overrides)),
+          window_(gl::createWindowContext(options.width, options.height, "eikon-view — " + options.scenePath)),
+          panel_(scene_),
+          sceneTime_(modificationTime(options.scenePath)) {
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+        ImGui_ImplGlfw_InitForOpenGL(static_cast<GLFWwindow*>(window_->nativeWindow()), true);
+        ImGui_ImplOpenGL3_Init("#version 450 core");
+        start(scene_);
+        status_.sceneName = std::filesystem::path(options.scenePath).filename().string();
+        pipelined_ = !window_->info().rendersOnCpu();
+    }
+
+    ~Viewer() {
+        session_.reset();  // GL objects go before the context
+        ImGui_ImplOpenGL3_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+
+    int run() {
+        int rendered = 0;
+        auto runStart = Clock::now();  // from the end of the first frame: steady state
+        while (!window_->shouldClose()) {
+            window_->pollEvents();
+            const auto frameStart = Clock::now();
+            ImGui_ImplOpenGL3_NewFrame();
+            ImGui_ImplGlfw_NewFrame();
+            ImGui::NewFrame();
+            handleInput();
+            const bool advance = session_->simulated() && (!paused_ || stepOnce_);
+            stepOnce_ = false;
+            last_ = session_->renderFrame(advance, pipelined_);
+            adaptPhotons();
+            if (!last_.image.rgba.empty()) image_ = last_.image;
+            int width = 0, height = 0;
+            window_->framebufferSize(width, height);
+            presenter_.present(image_, width, height);
+            status_.simulated = session_->simulated();
+            status_.simulatedTime = session_->simulatedTime();
+            status_.photonsInUse = photons_;
+            const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);
+            act(requests);
+            ImGui::Render();
+            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            const bool lastFrame = options_.frames > 0 && rendered + 1 >= options_.frames;
+            if (lastFrame && !options_.windowShotPath.empty()) saveWindow(options_.windowShotPath, width, height);
+            window_->swapBuffers();
+            reloadIfChanged();
+            const double ms = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
+            status_.framesPerSecond = 0.9 * status_.framesPerSecond + 0.1 * 1000.0 / std::max(ms, 1e-3);
+            if (++rendered == 1) runStart = Clock::now();
+            if (options_.frames > 0 && rendered >= options_.frames) {
+                if (!options_.screenshotPath.empty()) saveImage(options_.screenshotPath);
+                if (!options_.animate.empty()) {
+                    const double seconds = std::chrono::duration<double>(Clock::now() - runStart).count();
+                    std::printf("eikon-view: %s: %d frames after the first in %.2f s, %.2f frames/s, last photon "
+                                "count %lld\n",
+                                options_.animate.c_str(), rendered - 1, seconds, (rendered - 1) / seconds, photons_);
+                }
+                break;
+            }
+        }
+        return 0;
+    }
+
+private:
+    void start(const Scene& scene) {
+        session_.reset();
+        session_ = std::make_unique<ViewerSession>(scene);
+        orbit_ = orbitOf(scene.camera);
+        exposure_ = scene.render.exposureEv;
+        fullPhotons_ = photons_ = scene.render.photons;
+        panel_.reset(scene);
+    }
+
+    void handleInput() {
+        const ImGuiIO& io = ImGui::GetIO();
+        int width = 0, height = 0;
+        window_->framebufferSize(width, height);
+        render::FrameRenderer& renderer = session_->renderer();
+        const CameraDesc& camera = renderer.scene().camera;
+        draggingLight_ = false;
+        if (!io.WantCaptureMouse) {
+            Orbit orbit = orbit_;
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) orbit = orbitDrag(orbit, io.MouseDelta.x, io.MouseDelta.y);
+            if (options_.animate == "orbit") orbit = orbitDrag(orbit, 6.0, 0.0);
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle))
+                orbit = panDrag(orbit, camera, io.MouseDelta.x, io.MouseDelta.y, height);
+            if (io.MouseWheel != 0.0f) orbit = zoom(orbit, io.MouseWheel);
+            if (orbit.target != orbit_.target || orbit.distance != orbit_.distance ||
+                orbit.azimuthDeg != orbit_.azimuthDeg || orbit.elevationDeg != orbit_.elevationDeg) {
+                orbit_ = orbit;
+                renderer.setCamera(cameraOn(orbit_, camera));
+            }
+            if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) && !renderer.scene().lights.empty()) {
+                draggingLight_ = true;
+                if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)
+                    renderer.setLight(0, lightDrag(renderer.scene().lights[0], camera, io.MouseDelta.x,
+                                                   io.MouseDelta.y, height));
+            }
+            if (options_.animate == "light" && !renderer.scene().lights.empty()) {
+                draggingLight_ = true;
+                renderer.setLight(0, lightDrag(renderer.scene().lights[0], camera, 6.0, 0.0, height));
+            }
+        }
+        if (!io.WantCaptureKeyboard) {
+            if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) paused_ = !paused_;
+            if (ImGui::IsKeyPressed(GLFW_KEY_N, false)) stepOnce_ = true;
+            if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) start(session_->scene());
+            if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) screenshot();
+        }
+        renderer.setExposure(exposure_);
+    }
+
+    // While a light is dragged, fewer photons keep the target frame time;
+    // when it is let go, the full count traces once more (progressive).
+    void adaptPhotons() {
+        render::FrameRenderer& renderer = session_->renderer();
+        long long wanted = fullPhotons_;
+        if (draggingLight_) {
+            const double ms = photonMilliseconds(last_);
+            if (ms > 0.0) {
+                const double scale = std::clamp(options_.targetFrameMs / ms, 0.25, 2.0);
+                wanted = std::clamp(static_cast<long long>(static_cast<double>(photons_) * scale), 4096LL, fullPhotons_);
+            } else {
+                wanted = photons_;
+            }
+        }
+        photons_ = wanted;
+        renderer.setPhotonCount(photons_);
+    }
+
+    void act(const PanelRequests& requests) {
+        if (requests.step) stepOnce_ = true;
+        if (requests.reset) start(session_->scene());
+        if (requests.screenshot) screenshot();
+        if (requests.apply) {
+            Scene edited = panel_.edited();
+            edited.camera = session_->renderer().scene().camera;
+            edited.lights = session_->renderer().scene().lights;
+            edited.render.exposureEv = exposure_;
+            edited.render.photons = fullPhotons_;
+            rebuild(edited, "settings applied");
+        }
+    }
+
+    void rebuild(const Scene& scene, const std::string& note) {
+        try {
+            start(scene);
+            status_.message = note;
+        } catch (const InputError& error) {
+            status_.message = std::string("not applied: ") + error.what();
+            start(scene_);
+        }
+        scene_ = session_->scene();
+    }
+
+    void reloadIfChanged() {
+        const auto now = Clock::now();
+        if (now - lastReloadCheck_ < std::chrono::milliseconds(500)) return;
+        lastReloadCheck_ = now;
+        const auto time = modificationTime(options_.scenePath);
+        if (time == sceneTime_) return;
+        sceneTime_ = time;
+        try {
+            const Scene reloaded = loadSceneFile(options_.scenePath, options_.overrides);
+            rebuild(reloaded, "reloaded " + options_.scenePath);
+        } catch (const InputError& error) {
+            status_.message = std::string("reload failed, keeping the last scene: ") + error.what();
+        }
+    }
+
+    void saveImage(const std::filesystem::path& path) {
+        io::writePng(path, image_.width, image_.height, image_.rgba);
+        status_.message = "wrote " + path.string();
+    }
+
+    // The default framebuffer as the user sees it (bottom row first in GL).
+    void saveWindow(const std::filesystem::path& path, int width, int height) {
+        std::vector<std::uint8_t> pixels(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+        const std::size_t row = static_cast<std::size_t>(width) * 4;
+        std::vector<std::uint8_t> flipped(pixels.size());
+        for (int y = 0; y < height; ++y)
+            std::copy_n(pixels.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(height - 1 - y)),
+                        row, flipped.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)));
+        io::writePng(path, width, height, flipped);
+    }
+
+    void screenshot() {
+        const std::filesystem::path folder =
+            std::filesystem::path("out") / std::filesystem::path(options_.scenePath).stem();
+        std::filesystem::create_directories(folder);
+        char name[32];
+        std::snprintf(name, sizeof name, "screenshot_%04d.png", screenshots_++);
+        saveImage(folder / name);
+    }
+
+    ViewerOptions options_;
+    Scene scene_;
+    std::unique_ptr<gl::WindowContext> window_;
+    ImagePresenter presenter_;
+    ControlPanel panel_;
+    std::unique_ptr<ViewerSession> session_;
+    render::FrameResult last_;
+    render::Image8 image_;
+    ViewerStatus status_;
+    Orbit orbit_;
+    double exposure_ = 0.0;
+    long long fullPhotons_ = 0, photons_ = 0;
+    bool paused_ = false, stepOnce_ = false, pipelined_ = false, draggingLight_ = false;
+    int screenshots_ = 0;
+    std::filesystem::file_time_type sceneTime_;
+    Clock::time_point lastReloadCheck_ = Clock::now();
+};
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) { return Viewer(options).run(); }
+
+}  // namespace eikon::view

@@ -1,0 +1,47 @@
+// eikon-view: the interactive viewer. Composition only: parse the command
+// line, run the viewer, map failures to exit codes (0 success, 2 bad input,
+// 1 anything else).
+#include "apps/eikon-view/Viewer.h"
+#include "bridge/core/Error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    CLI::App app{"eikon-view: watch a scene live — orbit (left drag), pan (middle), zoom (wheel), move the light "
+                 "(right drag); space pauses the simulation, n steps, r resets, p saves a screenshot"};
+    eikon::view::ViewerOptions options;
+    app.add_option("scene", options.scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
+    app.add_option("--set", options.overrides, "Override a scene value, e.g. --set render.photons=100000")
+        ->type_name("KEY.PATH=VALUE");
+    app.add_option("--width", options.width, "Window width in pixels")->check(CLI::Range(64, 8192));
+    app.add_option("--height", options.height, "Window height in pixels")->check(CLI::Range(64, 8192));
+    app.add_option("--frames", options.frames, "Close after this many frames (0: when the window is closed)")
+        ->check(CLI::Range(0, 1000000));
+    app.add_option("--screenshot", options.screenshotPath, "With --frames: write the last frame's image here (PNG)");
+    app.add_option("--window-shot", options.windowShotPath,
+                   "With --frames: write the whole window, panel included, here (PNG)");
+    app.add_option("--animate", options.animate,
+                   "Scripted input: orbit (turn the camera each frame) or light (drag the light each frame)")
+        ->check(CLI::IsMember({"orbit", "light"}));
+    app.add_option("--target-ms", options.targetFrameMs, "Frame time to keep while a light is dragged")
+        ->check(CLI::Range(5.0, 10000.0));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& success) {
+        return app.exit(success);
+    } catch (const CLI::ParseError& error) {
+        app.exit(error);
+        return 2;
+    }
+    try {
+        return eikon::view::runViewer(options);
+    } catch (const eikon::InputError& error) {
+        std::cerr << "eikon-view: error: " << error.what() << "\n";
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << "eikon-view: error: " << error.what() << "\n";
+        return 1;
+    }
+}

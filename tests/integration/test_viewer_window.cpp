@@ -1,0 +1,85 @@
+// eikon-view in a window under Xvfb (Mesa): it runs the same frame loop as
+// `eikon run` — its frame is the headless render, pixel for pixel — and the
+// window shows that frame with the control panel over it.
+#include "bridge/io/ImageIo.h"
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+int run(const std::string& command) {
+    const int status = std::system((command + " > /dev/null 2>&1").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+const std::string kSmallDefault = std::string(EIKON_SOURCE_DIR) +
+                                  "/scenes/default.json --set grid.resolution=[48,40,48] --set render.photons=262144 "
+                                  "--set render.width=160 --set render.height=120 --set receivers.0.resolution=96";
+
+double luminanceSpread(const eikon::io::Rgba8Image& image, int x0, int y0, int x1, int y1) {
+    double sum = 0.0, sumSquares = 0.0;
+    int count = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const std::size_t p = 4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                                       static_cast<std::size_t>(x));
+            const double l = 0.2126 * image.rgba[p] + 0.7152 * image.rgba[p + 1] + 0.0722 * image.rgba[p + 2];
+            sum += l;
+            sumSquares += l * l;
+            ++count;
+        }
+    const double mean = sum / count;
+    return std::sqrt(std::max(sumSquares / count - mean * mean, 0.0));
+}
+
+class ViewerWindow : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / "eikon_viewer_window";
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+TEST_F(ViewerWindow, ShowsTheHeadlessFrameWithThePanel) {
+    const fs::path frame = dir_ / "frame.png", window = dir_ / "window.png", headless = dir_ / "headless";
+    ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
+                  kSmallDefault + " --frames 3 --width 640 --height 480 --screenshot " + frame.string() +
+                  " --window-shot " + window.string()),
+              0);
+    ASSERT_EQ(run(std::string(EIKON_EXECUTABLE) + " run " + kSmallDefault + " --quiet --out " + headless.string()), 0);
+    const auto viewed = eikon::io::readImage(frame);
+    const auto rendered = eikon::io::readImage(headless / "frames" / "frame_00000.png");
+    ASSERT_EQ(viewed.width, rendered.width);
+    ASSERT_EQ(viewed.height, rendered.height);
+    EXPECT_EQ(viewed.rgba, rendered.rgba);  // the headless test checks this image's caustic
+
+    const auto shown = eikon::io::readImage(window);
+    ASSERT_EQ(shown.width, 640);
+    ASSERT_EQ(shown.height, 480);
+    // Not blank: the scaled frame on the right half has contrast, and the
+    // panel's text at the top left has its own.
+    EXPECT_GT(luminanceSpread(shown, 400, 100, 640, 480), 20.0);
+    EXPECT_GT(luminanceSpread(shown, 10, 10, 300, 200), 20.0);
+}
+
+TEST_F(ViewerWindow, BadSceneIsExitCodeTwoWithoutAWindow) {
+    const fs::path scene = dir_ / "bad.json";
+    std::FILE* file = std::fopen(scene.c_str(), "w");
+    std::fputs("{\"grid\": {\"resolution\": [0, 8, 8]}}", file);
+    std::fclose(file);
+    EXPECT_EQ(run(std::string(EIKON_VIEW_EXECUTABLE) + " " + scene.string()), 2);  // no DISPLAY needed to refuse
+}
+
+}  // namespace
