@@ -34,6 +34,19 @@ struct Material {
     double anisotropy = 0.0;  // Henyey–Greenstein g of the scattering, in (−1, 1)
 };
 
+// Still air over a hot (or cold) ground: T(y) = T_air + (T_ground − T_air)·
+// exp(−(y − y0)/H) above the ground height y0 (T_ground below it), turned
+// into index by Gladstone–Dale (sim/optics/AirOptics.h, its reference state).
+// The thin hot layer over a road in the sun bends grazing rays up: the
+// inferior mirage.
+struct AirTemperatureProfile {
+    double groundHeight = 0.0;         // y0, m
+    double groundTemperature = 330.0;  // K, > 0
+    double airTemperature = 300.0;     // K, > 0: far above the ground
+    double scaleHeight = 0.1;          // H, m, > 0
+    double pressure = 101325.0;        // Pa, > 0
+};
+
 struct SphereShape {
     glm::dvec3 center{0.0};
     double radius = 1.0;  // > 0
@@ -206,6 +219,7 @@ struct Scene {
     std::string sourcePath;  // file the scene came from, for messages
     GridDesc grid;
     Material medium;         // background medium; medium.index is n_ref
+    std::optional<AirTemperatureProfile> airProfile;  // replaces the medium's index when present
     std::vector<ObjectDesc> objects;
     std::vector<PaintStroke> paint;  // applied after the objects, in order
     std::vector<LightDesc> lights;

@@ -109,12 +109,23 @@ GridDesc readGrid(const JsonReader& node) {
     return grid;
 }
 
-Material readMedium(const JsonReader& node) {
-    Material medium;
-    const auto fields = node.object({"index", "extinction", "scattering", "anisotropy"});
+AirTemperatureProfile readAirProfile(const JsonReader& node) {
+    const auto fields = node.object({"ground_height", "ground_temperature", "air_temperature", "scale_height", "pressure"});
+    AirTemperatureProfile profile;
+    if (auto v = fields.optional("ground_height")) profile.groundHeight = v->number();
+    profile.groundTemperature = fields.member("ground_temperature").number(kPositive);
+    profile.airTemperature = fields.member("air_temperature").number(kPositive);
+    profile.scaleHeight = fields.member("scale_height").number(kPositive);
+    if (auto v = fields.optional("pressure")) profile.pressure = v->number(kPositive);
+    return profile;
+}
+
+void readMedium(const JsonReader& node, Scene& scene) {
+    Material& medium = scene.medium;
+    const auto fields = node.object({"index", "extinction", "scattering", "anisotropy", "air_temperature_profile"});
     if (auto index = fields.optional("index")) medium.index = index->number(kPositive);
     readAttenuation(fields, medium);
-    return medium;
+    if (auto profile = fields.optional("air_temperature_profile")) scene.airProfile = readAirProfile(*profile);
 }
 
 ObjectDesc readObject(const JsonReader& node) {
@@ -538,7 +549,7 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
     if (auto grid = fields.optional("grid")) scene.grid = readGrid(*grid);
-    if (auto medium = fields.optional("medium")) scene.medium = readMedium(*medium);
+    if (auto medium = fields.optional("medium")) readMedium(*medium, scene);
     scene.objects = readList<ObjectDesc>(fields, "objects", readObject);
     scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
     scene.lights = readList<LightDesc>(fields, "lights", readLight);
@@ -549,6 +560,9 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
         scene.render = readRender(*render, std::filesystem::path(sourceName).parent_path().string());
     if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
     if (auto sim = fields.optional("sim")) scene.sim = readSim(*sim);
+    if (scene.sim && scene.airProfile)
+        fields.member("medium").member("air_temperature_profile")
+            .fail("no air_temperature_profile in a scene whose medium comes from the sim section", "both");
     return scene;
 }
 

@@ -11,8 +11,10 @@ layout(binding = 5) uniform sampler2D environment_texture;
 
 vec3 environment_radiance(vec3 x, vec3 d) {
 #if EIKON_ENVIRONMENT == 1
-    float height = x.y - camera.ground.x;
-    if (d.y < 0.0f && height > 0.0f) {
+    // A ray leaving downward meets the ground; one that left the grid at or
+    // just below the ground plane (a grid floor on the ground) meets it there.
+    float height = max(x.y - camera.ground.x, 0.0f);
+    if (d.y < 0.0f) {
         vec3 hit = x + (height / -d.y) * d;
         ivec2 square = ivec2(floor(hit.xz / camera.ground.y));
         return ((square.x + square.y) & 1) == 0 ? camera.ground_a.rgb : camera.ground_b.rgb;

@@ -1,5 +1,6 @@
 #include "sim/voxelize/AnalyticVoxelizer.h"
 
+#include "sim/optics/AirOptics.h"
 #include "sim/voxelize/VolumePainter.h"
 
 #include <tbb/parallel_for.h>
@@ -109,12 +110,30 @@ void paintObjects(const Scene& scene, const FieldViews& fields) {
     });
 }
 
+double airProfileIndex(const AirTemperatureProfile& profile, double y) {
+    const double height = std::max(y - profile.groundHeight, 0.0);
+    const double temperature =
+        profile.airTemperature + (profile.groundTemperature - profile.airTemperature) * std::exp(-height / profile.scaleHeight);
+    return 1.0 + GladstoneDale{}.refractivityAt(temperature, profile.pressure);
+}
+
+void writeAirProfile(const AirTemperatureProfile& profile, FieldSet& fields) {
+    const glm::ivec3 r = fields.grid.resolution;
+    for (int j = 0; j < r.y; ++j) {
+        const auto delta =
+            static_cast<float>(airProfileIndex(profile, fields.grid.cellCentre(0, j, 0).y) - fields.referenceIndex);
+        for (int k = 0; k < r.z; ++k)
+            for (int i = 0; i < r.x; ++i) fields.deltaIndex[fields.grid.linearIndex(i, j, k)] = delta;
+    }
+}
+
 FieldSet voxelizeScene(const Scene& scene) {
     FieldSet fields;
     fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
     fields.referenceIndex = scene.medium.index;
     const std::size_t cells = fields.grid.cellCount();
     fields.deltaIndex.assign(cells, 0.0f);
+    if (scene.airProfile) writeAirProfile(*scene.airProfile, fields);
     auto uniform = [&](std::vector<float>& field, const Rgb& value) {
         field.resize(3 * cells);
         for (std::size_t c = 0; c < cells; ++c)

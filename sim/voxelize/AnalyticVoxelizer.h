@@ -18,6 +18,11 @@ namespace eikon::sim {
 // Fraction of the voxel at `cell` inside `object`, in [0, 1].
 double coverage(const ObjectDesc& object, const GridSpec& grid, int i, int j, int k, int supersampling);
 
+// n(y) of an air temperature profile (Scene.h) by Gladstone–Dale.
+double airProfileIndex(const AirTemperatureProfile& profile, double y);
+// δn of the profile, cell-centre heights, into every cell of `fields`.
+void writeAirProfile(const AirTemperatureProfile& profile, FieldSet& fields);
+
 // Index, extinction and scattering of the scene's medium, objects and paint
 // strokes (VolumePainter.h).
 // Extinction and scattering are left empty when zero everywhere.
