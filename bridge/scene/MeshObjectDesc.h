@@ -31,8 +31,8 @@ struct AmountKey {
     double value = 0.0;
 };
 
-// A group of vertices (those whose placed rest position lies in `region`)
-// moved rigidly by keyed poses about the region's centre.
+// A group of vertices (those whose placed rest position lies in the region)
+// moved rigidly by keyed poses about their centroid at rest.
 struct HandleDesc {
     glm::dvec3 regionMin{0.0};
     glm::dvec3 regionMax{0.0};

@@ -2,28 +2,20 @@
 //
 // Follows Sun et al. 2008, §4.1: fractional coverage per voxel from
 // supersampling (s³ samples, 4³ by default, only in voxels the surface
-// crosses), materials composited in list order by coverage. The Gaussian
-// smoothing of the index that follows runs on the GPU, for fields from any
-// source (render/stages/PrepareStage).
+// crosses); the objects are composited by coverage (Compositor.h).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
 
-#include <vector>
-
 namespace eikon::sim {
 
-// Fraction of the voxel at `cell` inside `object`, in [0, 1].
+// Fraction of the voxel at `cell` inside `object` (a sphere or a box), in [0, 1].
 double coverage(const ObjectDesc& object, const GridSpec& grid, int i, int j, int k, int supersampling);
 
-// Index, extinction and scattering of the scene's medium and objects.
-// Extinction and scattering are left empty when zero everywhere.
+// Index, extinction and scattering of a scene's medium and spheres and
+// boxes (a scene with mesh or water objects needs SceneFields). Extinction
+// and scattering are left empty when zero everywhere.
 FieldSet voxelizeScene(const Scene& scene);
-
-// Composites the scene's objects over fields that already hold a medium
-// (the fluid solver's, say), in list order by coverage; creates κ, σs or g
-// where an object needs them. Versions are left to the caller.
-void paintObjects(const Scene& scene, FieldSet& fields);
 
 }  // namespace eikon::sim
