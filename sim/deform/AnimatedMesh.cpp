@@ -1,5 +1,6 @@
 #include "sim/deform/AnimatedMesh.h"
 
+#include "bridge/core/Error.h"
 #include "bridge/io/MeshReader.h"
 #include "sim/deform/Keyframes.h"
 
@@ -13,7 +14,11 @@ AnimatedMesh::AnimatedMesh(const ObjectDesc& object, const std::string& where) {
         current_ = water_->mesh();
         return;
     }
-    rest_ = io::readMesh(object.mesh.path, io::MeshClosure::Closed);
+    try {
+        rest_ = io::readMesh(object.mesh.path, io::MeshClosure::Closed);
+    } catch (const InputError& error) {  // the mesh's own message, told where the scene names it
+        throw InputError(where + ".mesh.path: " + error.what());
+    }
     const glm::dmat4 placement = placementMatrix(object.mesh.placement);
     for (glm::dvec3& v : rest_.vertices) v = glm::dvec3(placement * glm::dvec4(v, 1.0));
     current_ = rest_;
