@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <chrono>
 #include <mutex>
 
 namespace eikon::sim {
@@ -31,6 +32,7 @@ MeshCoverage::MeshCoverage(const GridSpec& grid) : grid_(grid), coverage_(grid.c
 CellBox MeshCoverage::update(const TriangleMesh& mesh) {
     EIKON_CHECK(!mesh.triangles.empty());
     const CellBox region = movedRegion(mesh);
+    levelSetMs_ = coverageMs_ = 0.0;
     if (!region.empty()) recompute(mesh, region);
     lastRecomputed_ = region.cellCount();
     previous_ = mesh;
@@ -89,9 +91,12 @@ void MeshCoverage::recompute(const TriangleMesh& mesh, const CellBox& region) {
     for (std::size_t t = 0; t < triangles.size(); ++t)
         triangles[t] = openvdb::Vec3I(mesh.triangles[t].x, mesh.triangles[t].y, mesh.triangles[t].z);
     const openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(h);
+    auto start = std::chrono::steady_clock::now();
     const openvdb::FloatGrid::Ptr distance =
         openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles, halfWidth);
 
+    levelSetMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    start = std::chrono::steady_clock::now();
     const glm::dvec3 step = 0.5 * voxel;
     const double certain = halfDiagonal + 0.5 * h;  // beyond this from the centre φ cannot change sign in the cell
     tbb::parallel_for(region.min.z, region.max.z, [&](int k) {
@@ -121,6 +126,7 @@ void MeshCoverage::recompute(const TriangleMesh& mesh, const CellBox& region) {
                 coverage_[grid_.linearIndex(i, j, k)] = static_cast<float>(value);
             }
     });
+    coverageMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace eikon::sim

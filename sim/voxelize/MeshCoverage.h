@@ -39,8 +39,11 @@ public:
     const std::vector<float>& values() const { return coverage_; }  // one per cell, in [0, 1]
     // Σ coverage · voxel volume, m³.
     double coveredVolume() const;
-    // Cells recomputed by the last update.
+    // Cells recomputed by the last update, and its time in OpenVDB's
+    // meshToLevelSet and in the coverage of those cells, ms.
     long long lastRecomputedCells() const { return lastRecomputed_; }
+    double lastLevelSetMilliseconds() const { return levelSetMs_; }
+    double lastCoverageMilliseconds() const { return coverageMs_; }
 
 private:
     CellBox movedRegion(const TriangleMesh& mesh) const;
@@ -51,6 +54,8 @@ private:
     TriangleMesh previous_;
     bool first_ = true;
     long long lastRecomputed_ = 0;
+    double levelSetMs_ = 0.0;
+    double coverageMs_ = 0.0;
 };
 
 }  // namespace eikon::sim
