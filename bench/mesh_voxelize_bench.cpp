@@ -5,15 +5,21 @@
 //     to frame, so only the band around it is recomputed.
 //   BM_GlobalDeformation: every vertex moves (the whole sphere breathes), so
 //     the whole surface band is recomputed — the worst case.
+//   BM_TwistDeformer, BM_ArapDeformer: the scene's deformers on the same mesh
+//     (a twist about y growing each frame; ARAP with the south cap held and
+//     the north cap lifted and turned, 8 iterations per frame).
 // Counters: triangles, recomputed cells per frame, and the mean ms per frame
 // in OpenVDB's meshToLevelSet and in the coverage of the recomputed cells.
+#include "sim/deform/ArapDeformer.h"
 #include "sim/deform/MeshShapes.h"
+#include "sim/deform/SpatialDeformers.h"
 #include "sim/voxelize/MeshCoverage.h"
 
 #include <benchmark/benchmark.h>
 
 #include <glm/geometric.hpp>
 
+#include <chrono>
 #include <cmath>
 
 namespace {
@@ -53,11 +59,53 @@ void runFrames(benchmark::State& state, bool local) {
     state.counters["coverage_ms"] = coverageMs / frames;
 }
 
+void runDeformer(benchmark::State& state, sim::Deformer& deformer, TriangleMesh& mesh) {
+    sim::MeshCoverage coverage(kGrid);
+    coverage.update(mesh);
+    double time = 0.0, deformMs = 0.0, levelSetMs = 0.0, coverageMs = 0.0;
+    for (auto _ : state) {
+        time += 0.04;
+        const auto start = std::chrono::steady_clock::now();
+        deformer.deform(time, mesh.vertices);
+        deformMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        coverage.update(mesh);
+        levelSetMs += coverage.lastLevelSetMilliseconds();
+        coverageMs += coverage.lastCoverageMilliseconds();
+    }
+    const double frames = static_cast<double>(state.iterations());
+    state.counters["triangles"] = static_cast<double>(mesh.triangles.size());
+    state.counters["deform_ms"] = deformMs / frames;
+    state.counters["level_set_ms"] = levelSetMs / frames;
+    state.counters["coverage_ms"] = coverageMs / frames;
+}
+
+void BM_TwistDeformer(benchmark::State& state) {
+    TriangleMesh mesh = subject();
+    DeformerDesc desc;
+    desc.kind = DeformerDesc::Kind::Twist;
+    desc.amount = {{0.0, 0.0}, {100.0, 10000.0}};  // 100°/m more every second
+    sim::TwistDeformer twist(desc, mesh);
+    runDeformer(state, twist, mesh);
+}
+
+void BM_ArapDeformer(benchmark::State& state) {
+    TriangleMesh mesh = subject();
+    DeformerDesc desc;
+    desc.kind = DeformerDesc::Kind::Arap;
+    desc.handles.push_back({glm::dvec3(-1, -1, -1), glm::dvec3(1, -0.3, 1), {}});
+    desc.handles.push_back({glm::dvec3(-1, 0.3, -1), glm::dvec3(1, 1, 1),
+                            {{0.0, {}}, {10.0, {glm::dvec3(0, 0.5, 0), glm::dvec3(0, 0, 300), 1.0}}}});
+    sim::ArapDeformer arap(desc, mesh, "bench");
+    runDeformer(state, arap, mesh);
+}
+
 void BM_LocalDeformation(benchmark::State& state) { runFrames(state, true); }
 void BM_GlobalDeformation(benchmark::State& state) { runFrames(state, false); }
 
 BENCHMARK(BM_LocalDeformation)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_GlobalDeformation)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_TwistDeformer)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ArapDeformer)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
