@@ -12,7 +12,7 @@ struct SceneFields::MeshObject {
     std::size_t object;  // index into scene.objects
     AnimatedMesh shape;
     MeshCoverage coverage;
-    CellBox changed;     // cells whose coverage the last update recomputed
+    CellBlocks changed;  // cells whose coverage the last update recomputed
 };
 
 namespace {
@@ -32,7 +32,7 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
         if (object.kind != ObjectDesc::Kind::Mesh && object.kind != ObjectDesc::Kind::Water) continue;
         const std::string where = scene.sourcePath + ": objects[" + std::to_string(o) + "]";
         meshes_.push_back(std::unique_ptr<MeshObject>(
-            new MeshObject{o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBox{}}));
+            new MeshObject{o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBlocks(fields_.grid)}));
     }
     updateMeshes();
     fillMedium(scene_, fields_, CellBox::whole(fields_.grid));
@@ -91,14 +91,16 @@ void SceneFields::advanceFrame() {
         refreshFromSimulation();
         return;
     }
-    CellBox changed;
-    for (const auto& mesh : meshes_) changed = changed.merged(mesh->changed);
+    CellBlocks changed(fields_.grid);
+    for (const auto& mesh : meshes_) changed.add(mesh->changed);
     if (changed.empty()) return;
     const auto start = std::chrono::steady_clock::now();
-    fillMedium(scene_, fields_, changed);
     CoverageGrids grids(scene_.objects.size(), nullptr);
     for (const auto& mesh : meshes_) grids[mesh->object] = &mesh->coverage.values();
-    paintObjects(scene_, fields_, grids, &changed);
+    for (const CellBox& box : changed.boxes()) {
+        fillMedium(scene_, fields_, box);
+        paintObjects(scene_, fields_, grids, &box);
+    }
     voxelizeMs_ += millisecondsSince(start);
     ++fields_.indexVersion;
     if (fields_.hasExtinction()) ++fields_.extinctionVersion;

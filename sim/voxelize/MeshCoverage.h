@@ -19,7 +19,7 @@
 
 #include "bridge/grid/GridSpec.h"
 #include "bridge/mesh/TriangleMesh.h"
-#include "sim/voxelize/CellBox.h"
+#include "sim/voxelize/CellBlocks.h"
 
 #include <vector>
 
@@ -30,10 +30,11 @@ public:
     explicit MeshCoverage(const GridSpec& grid);
 
     // Brings the coverage up to date with `mesh` (which must be closed) and
-    // returns the cells whose coverage may have changed: on the first call
-    // the mesh's bounds, later the bounds of the triangles that moved (old
-    // and new positions) plus the band, or nothing when no vertex moved.
-    CellBox update(const TriangleMesh& mesh);
+    // returns the blocks of cells whose coverage may have changed: on the
+    // first call those around the whole mesh, later those around each
+    // triangle that moved (its old and new positions plus the band), or none
+    // when no vertex moved.
+    CellBlocks update(const TriangleMesh& mesh);
 
     const GridSpec& grid() const { return grid_; }
     const std::vector<float>& values() const { return coverage_; }  // one per cell, in [0, 1]
@@ -46,8 +47,8 @@ public:
     double lastCoverageMilliseconds() const { return coverageMs_; }
 
 private:
-    CellBox movedRegion(const TriangleMesh& mesh) const;
-    void recompute(const TriangleMesh& mesh, const CellBox& region);
+    CellBlocks movedRegion(const TriangleMesh& mesh) const;
+    void recompute(const TriangleMesh& mesh, const std::vector<CellBox>& region);
 
     GridSpec grid_;
     std::vector<float> coverage_;
