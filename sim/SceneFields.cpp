@@ -1,50 +1,151 @@
 #include "sim/SceneFields.h"
 
-#include "sim/voxelize/AnalyticVoxelizer.h"
+#include "sim/deform/AnimatedMesh.h"
+#include "sim/voxelize/Compositor.h"
+#include "sim/voxelize/MeshCoverage.h"
 #include "sim/voxelize/VolumePainter.h"
 
 #include "bridge/core/Error.h"
 
+#include <chrono>
+
 namespace eikon::sim {
 
-SceneFields::SceneFields(const Scene& scene) : scene_(scene), fields_(voxelizeScene(scene)) {
+struct SceneFields::MeshObject {
+    std::size_t object;  // index into scene.objects
+    AnimatedMesh shape;
+    MeshCoverage coverage;
+    CellBlocks changed;  // cells whose coverage the last update recomputed
+};
+
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
+    fields_.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields_.referenceIndex = scene.medium.index;
+    fields_.deltaIndex.assign(fields_.grid.cellCount(), 0.0f);
+    for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+        const ObjectDesc& object = scene.objects[o];
+        if (object.kind != ObjectDesc::Kind::Mesh && object.kind != ObjectDesc::Kind::Water) continue;
+        const std::string where = scene.sourcePath + ": objects[" + std::to_string(o) + "]";
+        meshes_.push_back(std::unique_ptr<MeshObject>(
+            new MeshObject{o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBlocks(fields_.grid)}));
+    }
+    updateMeshes();
+    fillMedium(scene_, fields_, CellBox::whole(fields_.grid));
     if (scene.sim) {
         fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid, fields_.referenceIndex);
         refreshFromSimulation();
+    } else {
+        paintObjects(scene_, fields_, coverageGrids());
+        paintStrokes(scene_, fields_);
     }
+    fields_.indexVersion = fields_.extinctionVersion = fields_.scatteringVersion = 1;
     validateFields(fields_, scene.sourcePath);
 }
 
+SceneFields::~SceneFields() = default;
+
+bool SceneFields::changesOverTime() const {
+    if (fluid_) return true;
+    for (const auto& mesh : meshes_)
+        if (mesh->shape.changesOverTime()) return true;
+    return false;
+}
+
+std::vector<const TriangleMesh*> SceneFields::deformedMeshes() const {
+    std::vector<const TriangleMesh*> meshes;
+    for (const auto& mesh : meshes_) meshes.push_back(&mesh->shape.mesh());
+    return meshes;
+}
+
+// Deform, then voxelize: each object's coverage is redone only where its
+// surface moved.
+void SceneFields::updateMeshes() {
+    deformMs_ = voxelizeMs_ = 0.0;
+    recomputedCells_ = 0;
+    for (auto& mesh : meshes_) {
+        auto start = std::chrono::steady_clock::now();
+        mesh->shape.advanceTo(time());
+        deformMs_ += millisecondsSince(start);
+        start = std::chrono::steady_clock::now();
+        mesh->changed = mesh->coverage.update(mesh->shape.mesh());
+        voxelizeMs_ += millisecondsSince(start);
+        recomputedCells_ += mesh->coverage.lastRecomputedCells();
+    }
+}
+
 void SceneFields::advanceFrame() {
-    if (!fluid_) return;
-    fluid_->advanceFrame();
-    refreshFromSimulation();
-}
-
-void SceneFields::simulateFrame() {
-    if (fluid_) fluid_->advanceFrame();
-}
-
-void SceneFields::writeFrameInto(const FieldViews& target) const {
-    EIKON_CHECK_MSG(fluid_, "only a simulated scene writes frames into GPU memory");
-    FieldViews frame = target;
-    frame.referenceIndex = fields_.referenceIndex;
-    fluid_->writeFields(frame);
-    paintObjects(scene_, frame);
-    paintStrokes(scene_, frame);
-    validateFields(frame, scene_.sourcePath);
+    if (!changesOverTime()) return;
+    if (fluid_) {
+        fluid_->advanceFrame();
+    } else {
+        time_ += scene_.frameTime;
+    }
+    updateMeshes();
+    if (fluid_) {
+        refreshFromSimulation();
+        return;
+    }
+    CellBlocks changed(fields_.grid);
+    for (const auto& mesh : meshes_) changed.add(mesh->changed);
+    if (changed.empty()) return;
+    const auto start = std::chrono::steady_clock::now();
+    const CoverageGrids grids = coverageGrids();
+    for (const CellBox& box : changed.boxes()) {
+        fillMedium(scene_, fields_, box);
+        paintObjects(scene_, fields_, grids, &box);
+        paintStrokes(scene_, fields_, &box);
+    }
+    voxelizeMs_ += millisecondsSince(start);
+    ++fields_.indexVersion;
+    if (fields_.hasExtinction()) ++fields_.extinctionVersion;
+    if (fields_.hasScattering()) ++fields_.scatteringVersion;
 }
 
 std::vector<PhaseTiming> SceneFields::lastTimings() const {
-    return fluid_ ? fluid_->lastTimings() : std::vector<PhaseTiming>{};
+    std::vector<PhaseTiming> timings = fluid_ ? fluid_->lastTimings() : std::vector<PhaseTiming>{};
+    if (!meshes_.empty()) {
+        timings.push_back({"deform", deformMs_, 0, 0.0});
+        timings.push_back({"voxelize", voxelizeMs_, static_cast<int>(std::min<long long>(recomputedCells_, 2147483647LL)), 0.0});
+    }
+    return timings;
 }
 
 // The solver writes the medium (bumping the versions of what changed), then
 // the objects are composited over it again.
 void SceneFields::refreshFromSimulation() {
     fluid_->writeFields(fields_);
-    paintObjects(scene_, fields_);
+    paintObjects(scene_, fields_, coverageGrids());
     paintStrokes(scene_, fields_);
+}
+
+CoverageGrids SceneFields::coverageGrids() const {
+    CoverageGrids grids(scene_.objects.size(), nullptr);
+    for (const auto& mesh : meshes_) grids[mesh->object] = &mesh->coverage.values();
+    return grids;
+}
+
+void SceneFields::simulateFrame() {
+    EIKON_CHECK_MSG(fluid_, "only a scene with a fluid solver writes its frames into GPU memory");
+    fluid_->advanceFrame();
+    updateMeshes();
+}
+
+void SceneFields::writeFrameInto(const FieldViews& target) const {
+    EIKON_CHECK_MSG(fluid_, "only a scene with a fluid solver writes its frames into GPU memory");
+    FieldViews frame = target;
+    frame.referenceIndex = fields_.referenceIndex;
+    fluid_->writeFields(frame);
+    paintObjects(scene_, frame, coverageGrids());
+    paintStrokes(scene_, frame);
+    validateFields(frame, scene_.sourcePath);
 }
 
 }  // namespace eikon::sim

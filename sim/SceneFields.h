@@ -1,12 +1,17 @@
 // The optical fields of a scene, frame after frame: the medium and objects
 // voxelized once, or — when the scene has a `sim` section — the fluid
 // solver's fields with the objects composited over them, advanced one frame
-// at a time. Fields are validated as they leave here, toward the renderer.
+// at a time. Mesh and water objects move with scene time; only the cells
+// their motion touched are recomputed. Fields are validated as they leave
+// here, toward the renderer.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
+#include "bridge/grid/FieldViews.h"
+#include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/FluidSimulation.h"
+#include "sim/voxelize/Compositor.h"
 
 #include <memory>
 #include <vector>
@@ -16,35 +21,51 @@ namespace eikon::sim {
 class SceneFields {
 public:
     explicit SceneFields(const Scene& scene);
+    ~SceneFields();
 
     const FieldSet& fields() const { return fields_; }
-    bool changesOverTime() const { return fluid_ != nullptr; }
-    // Simulated time of the current fields, s (0 without a simulation).
-    double time() const { return fluid_ ? fluid_->time() : 0.0; }
-    // Advances the simulation by one frame and refreshes fields(); a static
-    // scene stays as it is.
+    bool changesOverTime() const;
+    // Scene time of the current fields, s.
+    double time() const { return fluid_ ? fluid_->time() : time_; }
+    // Advances the simulation and the deforming objects by one frame and
+    // refreshes fields() (only the cells moving objects touched, without a
+    // fluid solver); a static scene stays as it is.
     void advanceFrame();
 
-    // The live loop's two halves of advanceFrame, for fields that go straight
-    // into GPU memory (render/stages/FieldRing.h): simulateFrame() runs the
-    // solver only — fields() then stays as it was — and writeFrameInto()
-    // writes the current frame's fields into `target`, which has the layout
-    // of fields() (same grid, same fields present), and validates them. Both
-    // may run on a thread other than the renderer's.
+    // The live loop's two halves of advanceFrame for a scene with a fluid
+    // solver, whose fields go straight into GPU memory
+    // (render/stages/FieldRing.h): simulateFrame() advances the solver and
+    // the deforming objects — fields() then stays as it was — and
+    // writeFrameInto() writes the current frame's fields into `target`, which
+    // has the layout of fields() (same grid, same fields present), and
+    // validates them. Both may run on a thread other than the renderer's.
+    bool simulatesFluid() const { return fluid_ != nullptr; }
     void simulateFrame();
     void writeFrameInto(const FieldViews& target) const;
     // Whether κ (σs) values change from frame to frame (dye in the solver).
     bool extinctionChangesOverTime() const { return fluid_ && fluid_->absorbs(); }
     bool scatteringChangesOverTime() const { return fluid_ && fluid_->scatters(); }
-    // Phase timings of the last simulated frame (empty without a simulation).
+    // Phase timings of the last frame: the fluid solver's phases, then
+    // "deform" and "voxelize" (iterations: cells recomputed) for scenes with
+    // mesh or water objects.
     std::vector<PhaseTiming> lastTimings() const;
+    // This frame's mesh of every mesh or water object, in scene order.
+    std::vector<const TriangleMesh*> deformedMeshes() const;
 
 private:
+    struct MeshObject;
+    void updateMeshes();
+    CoverageGrids coverageGrids() const;
     void refreshFromSimulation();
 
     Scene scene_;
     FieldSet fields_;
     std::unique_ptr<FluidSimulation> fluid_;
+    std::vector<std::unique_ptr<MeshObject>> meshes_;
+    double time_ = 0.0;  // without a fluid solver
+    double deformMs_ = 0.0;
+    double voxelizeMs_ = 0.0;
+    long long recomputedCells_ = 0;
 };
 
 }  // namespace eikon::sim

@@ -3,7 +3,7 @@
 namespace eikon::view {
 
 ViewerSession::ViewerSession(const Scene& scene) : scene_(scene), fields_(std::make_unique<sim::SceneFields>(scene)) {
-    if (fields_->changesOverTime()) {
+    if (fields_->simulatesFluid()) {
         live_ = std::make_unique<app::LiveFrames>(*fields_, false);
         renderer_ = std::make_unique<render::FrameRenderer>(scene_, live_->ring());
     } else {
@@ -12,7 +12,10 @@ ViewerSession::ViewerSession(const Scene& scene) : scene_(scene), fields_(std::m
 }
 
 render::FrameResult ViewerSession::renderFrame(bool advance, bool pipelined) {
-    if (!live_) return renderer_->render(fields_->fields());
+    if (!live_) {
+        if (advance) fields_->advanceFrame();
+        return renderer_->render(fields_->fields());
+    }
     if (!advance) return renderer_->render(live_->ring());
     live_->setPipelined(pipelined);
     live_->beginNext();

@@ -1,5 +1,6 @@
-// What the viewer shows: a scene, its fields (static, or simulated frame by
-// frame through the zero-copy ring, LiveFrames.h) and the frame renderer —
+// What the viewer shows: a scene, its fields (static; moving meshes and water
+// updated in host memory; or a fluid simulated frame by frame through the
+// zero-copy ring, LiveFrames.h) and the frame renderer —
 // the same pieces `eikon run` drives. The viewer changes the camera, the
 // lights, the photon count and the exposure in place; anything else (a new
 // scene file, panel edits of tracer, material or solver settings) builds a
@@ -21,8 +22,8 @@ public:
 
     const Scene& scene() const { return scene_; }
     render::FrameRenderer& renderer() { return *renderer_; }
-    bool simulated() const { return live_ != nullptr; }
-    double simulatedTime() const { return live_ ? live_->current().time : 0.0; }
+    bool simulated() const { return fields_->changesOverTime(); }
+    double simulatedTime() const { return live_ ? live_->current().time : fields_->time(); }
 
     // Renders the current frame; with `advance`, a simulated scene moves on
     // one frame (simulated during the render when `pipelined`).

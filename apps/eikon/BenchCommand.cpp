@@ -4,7 +4,7 @@
 #include "bridge/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
 #include "render/graph/FrameRenderer.h"
-#include "sim/voxelize/AnalyticVoxelizer.h"
+#include "sim/SceneFields.h"
 
 #include <nlohmann/json.hpp>
 
@@ -83,8 +83,8 @@ int benchCommand(const BenchOptions& options) {
     const Scene scene = loadSceneFile(options.scenePath, overrides);
     Scene storing = scene;
     storing.tracer.storeFluence = true;
-    const FieldSet fields = sim::voxelizeScene(scene);
-    validateFields(fields, options.scenePath);
+    const sim::SceneFields sceneFields(scene);  // validates the fields
+    const FieldSet& fields = sceneFields.fields();
     const auto context = gl::createHeadlessContext();
 
     const std::vector<Measurement> measurements = {

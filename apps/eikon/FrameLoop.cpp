@@ -78,15 +78,27 @@ private:
     std::optional<io::VtkSeriesWriter> vtk_;
 };
 
-void runStaticFrames(const Scene& scene, const sim::SceneFields& fields, int frames, FrameOutputs& outputs,
-                     ProgressBar& progress) {
+// Fields in host memory: a static scene (uploaded once), or one whose mesh
+// and water objects move without a fluid solver (SceneFields recomputes the
+// cells they touched; the changed fields are uploaded).
+void runHostFrames(const Scene& scene, sim::SceneFields& fields, int frames, FrameOutputs& outputs,
+                   ProgressBar& progress) {
     render::FrameRenderer renderer(scene, fields.fields());
+    const bool animated = fields.changesOverTime();
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
+        ProducedFrame produced;
+        if (frame > 0 && animated) {
+            fields.advanceFrame();
+            produced.simulated = true;
+            produced.simulateMs = millisecondsSince(start);
+        }
+        produced.time = fields.time();
+        produced.phases = fields.lastTimings();
         const render::FrameResult result = renderer.render(fields.fields());
         const LoopTiming timing{millisecondsSince(start), renderMilliseconds(result), 0.0};
-        outputs.write(frame, result, frameReportJson(frame, {}, false, result, timing, false), renderer, 0.0,
-                      viewsOf(fields.fields()));
+        outputs.write(frame, result, frameReportJson(frame, produced, animated, result, timing, false), renderer,
+                      produced.time, viewsOf(fields.fields()));
         progress.advance();
     }
 }
@@ -153,8 +165,8 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
                ProgressBar& progress, const LoopOptions& options) {
     FrameOutputs outputs(output, options.exportVtk);
-    if (fields.changesOverTime()) runLiveFrames(scene, fields, frames, outputs, progress, options.pipelined);
-    else runStaticFrames(scene, fields, frames, outputs, progress);
+    if (fields.simulatesFluid()) runLiveFrames(scene, fields, frames, outputs, progress, options.pipelined);
+    else runHostFrames(scene, fields, frames, outputs, progress);
     progress.finish();
 }
 

@@ -1,7 +1,8 @@
 // The frame loop shared by `eikon run` and the viewer: fields → renderer →
-// frame image and report line. A static scene's fields are uploaded once; a
-// simulated scene's go through the zero-copy field ring (LiveFrames.h),
-// simulated one frame ahead of the renderer when pipelined.
+// frame image and report line. A static scene's fields are uploaded once,
+// and those of moving meshes and water as they change; a scene with a fluid
+// solver's go through the zero-copy field ring (LiveFrames.h), simulated one
+// frame ahead of the renderer when pipelined.
 #pragma once
 
 #include "apps/eikon/LiveFrames.h"

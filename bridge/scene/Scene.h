@@ -5,6 +5,8 @@
 // the invariants stated beside each field.
 #pragma once
 
+#include "bridge/scene/MeshObjectDesc.h"
+
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -58,9 +60,11 @@ struct BoxShape {
 };
 
 struct ObjectDesc {
-    enum class Kind { Sphere, Box } kind = Kind::Sphere;
+    enum class Kind { Sphere, Box, Mesh, Water } kind = Kind::Sphere;
     SphereShape sphere;  // valid when kind == Sphere
     BoxShape box;        // valid when kind == Box
+    MeshObjectDesc mesh; // valid when kind == Mesh
+    WaterDesc water;     // valid when kind == Water
     Material material;
 };
 
@@ -228,6 +232,7 @@ struct Scene {
     RenderDesc render;
     TracerDesc tracer;
     std::optional<SimDesc> sim;  // present when the scene runs the built-in fluid solver
+    double frameTime = 1.0 / 30.0;  // s of scene time per frame for deformers, > 0; sim.frame_time when there is a sim
 };
 
 }  // namespace eikon

@@ -2,6 +2,7 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/scene/JsonReader.h"
+#include "bridge/scene/MeshObjectParser.h"
 #include "bridge/scene/PaintParser.h"
 
 #include <glm/geometric.hpp>
@@ -128,9 +129,15 @@ void readMedium(const JsonReader& node, Scene& scene) {
     if (auto profile = fields.optional("air_temperature_profile")) scene.airProfile = readAirProfile(*profile);
 }
 
-ObjectDesc readObject(const JsonReader& node) {
+ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
     ObjectDesc object;
-    const std::string type = node.member("type").oneOf({"sphere", "box"});
+    const std::string type = node.member("type").oneOf({"sphere", "box", "mesh", "water"});
+    if (type == "mesh" || type == "water") {
+        return readMeshOrWaterObject(node, type, sceneFolder, [](const JsonObjectReader& fields, Material& material) {
+            material.index = fields.member("index").number(kPositive);
+            readAttenuation(fields, material);
+        });
+    }
     if (type == "sphere") {
         const auto fields =
             node.object({"type", "center", "radius", "index", "extinction", "scattering", "anisotropy"});
@@ -544,25 +551,31 @@ nlohmann::json parseOverrideValue(const std::string& text) {
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const auto fields = JsonReader(root, sourceName)
                             .object({"description", "grid", "medium", "objects", "paint", "lights", "receivers",
-                                     "camera", "render", "tracer", "sim"});
+                                     "camera", "render", "tracer", "sim", "frame_time"});
     Scene scene;
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
     if (auto grid = fields.optional("grid")) scene.grid = readGrid(*grid);
     if (auto medium = fields.optional("medium")) readMedium(*medium, scene);
-    scene.objects = readList<ObjectDesc>(fields, "objects", readObject);
+    const std::string sceneFolder = std::filesystem::path(sourceName).parent_path().string();
+    scene.objects = readList<ObjectDesc>(fields, "objects",
+                                         [&](const JsonReader& node) { return readObject(node, sceneFolder); });
     scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
     scene.lights = readList<LightDesc>(fields, "lights", readLight);
     if (scene.lights.empty()) fields.member("lights").fail("an array of at least one light");
     scene.receivers = readList<ReceiverDesc>(fields, "receivers", readReceiver);
     if (auto camera = fields.optional("camera")) scene.camera = readCamera(*camera);
-    if (auto render = fields.optional("render"))
-        scene.render = readRender(*render, std::filesystem::path(sourceName).parent_path().string());
+    if (auto render = fields.optional("render")) scene.render = readRender(*render, sceneFolder);
     if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
     if (auto sim = fields.optional("sim")) scene.sim = readSim(*sim);
     if (scene.sim && scene.airProfile)
         fields.member("medium").member("air_temperature_profile")
             .fail("no air_temperature_profile in a scene whose medium comes from the sim section", "both");
+    if (auto frameTime = fields.optional("frame_time")) {
+        if (scene.sim) frameTime->fail("no frame_time beside a sim section (sim.frame_time sets it there)", "both");
+        scene.frameTime = frameTime->number(kPositive);
+    }
+    if (scene.sim) scene.frameTime = scene.sim->frameTime;
     return scene;
 }
 

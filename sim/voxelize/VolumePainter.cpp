@@ -77,20 +77,22 @@ double valueNoise(const glm::dvec3& x, unsigned seed) {
 
 double objectCoverage(const Scene& scene, const GridSpec& grid, int i, int j, int k) {
     double covered = 0.0;
-    for (const auto& object : scene.objects)
+    for (const auto& object : scene.objects) {
+        if (object.kind != ObjectDesc::Kind::Sphere && object.kind != ObjectDesc::Kind::Box) continue;
         covered = std::max(covered, coverage(object, grid, i, j, k, scene.grid.supersampling));
+    }
     return covered;
 }
 
-void paintStroke(const Scene& scene, const PaintStroke& stroke, const FieldViews& fields) {
+void paintStroke(const Scene& scene, const PaintStroke& stroke, const FieldViews& fields, const CellBox& region) {
     const GridSpec& grid = fields.grid;
     const double sigma = 0.5 * stroke.radius;
     const double reach = kCutoffSigmas * sigma;
     const glm::dvec3 h = grid.voxelSize();
     for (const Stamp& stamp : stampsOf(stroke)) {
-        const glm::ivec3 lo = glm::max(glm::ivec3(glm::floor((stamp.centre - reach - grid.boundsMin) / h)), 0);
+        const glm::ivec3 lo = glm::max(glm::ivec3(glm::floor((stamp.centre - reach - grid.boundsMin) / h)), region.min);
         const glm::ivec3 hi =
-            glm::min(glm::ivec3(glm::ceil((stamp.centre + reach - grid.boundsMin) / h)), grid.resolution);
+            glm::min(glm::ivec3(glm::ceil((stamp.centre + reach - grid.boundsMin) / h)), region.max);
         if (glm::any(glm::greaterThanEqual(lo, hi))) continue;
         tbb::parallel_for(lo.z, hi.z, [&](int k) {
             for (int j = lo.y; j < hi.y; ++j)
@@ -135,16 +137,17 @@ double smokePattern(const glm::dvec3& local, unsigned seed) {
     return sum / norm;
 }
 
-void paintStrokes(const Scene& scene, FieldSet& fields) {
+void paintStrokes(const Scene& scene, FieldSet& fields, const CellBox* region) {
     if (scene.paint.empty()) return;
     const std::size_t cells = fields.grid.cellCount();
     if (anyStroke(scene, &PaintStroke::extinction) && fields.extinction.empty()) fields.extinction.assign(3 * cells, 0.0f);
     if (anyStroke(scene, &PaintStroke::scattering) && fields.scattering.empty()) fields.scattering.assign(3 * cells, 0.0f);
-    paintStrokes(scene, viewsOf(fields));
+    paintStrokes(scene, viewsOf(fields), region);
 }
 
-void paintStrokes(const Scene& scene, const FieldViews& fields) {
-    for (const PaintStroke& stroke : scene.paint) paintStroke(scene, stroke, fields);
+void paintStrokes(const Scene& scene, const FieldViews& fields, const CellBox* region) {
+    const CellBox box = region ? *region : CellBox::whole(fields.grid);
+    for (const PaintStroke& stroke : scene.paint) paintStroke(scene, stroke, fields, box);
 }
 
 }  // namespace eikon::sim

@@ -14,13 +14,15 @@
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/FieldViews.h"
 #include "bridge/scene/Scene.h"
+#include "sim/voxelize/CellBox.h"
 
 namespace eikon::sim {
 
-// Adds the scene's strokes, in order; creates κ or σs where a stroke needs them.
-void paintStrokes(const Scene& scene, FieldSet& fields);
+// Adds the scene's strokes, in order, to the cells of `region` (the whole
+// grid by default); creates κ or σs where a stroke needs them.
+void paintStrokes(const Scene& scene, FieldSet& fields, const CellBox* region = nullptr);
 // The same in place, over memory that already has every field a stroke needs.
-void paintStrokes(const Scene& scene, const FieldViews& fields);
+void paintStrokes(const Scene& scene, const FieldViews& fields, const CellBox* region = nullptr);
 
 // The smoke brush's pattern in [0, 1] at a point in brush coordinates
 // (radii along the stroke tangent and two normals): three octaves of value

@@ -205,6 +205,23 @@ TEST_F(Cli, BadSceneInputsExitWithCodeTwoAndNameThePath) {
     }
 }
 
+// A scene whose mesh file is truncated: exit code 2, the scene's JSON path
+// and the mesh file's own complaint, nothing written.
+TEST_F(Cli, BadMeshFileExitsWithCodeTwoAndNamesSceneAndFile) {
+    const fs::path mesh = dir_ / "cut.off";
+    std::ofstream(mesh) << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n";
+    const std::string object = R"({"type": "mesh", "mesh": {"path": ")" + mesh.string() + R"("}, "index": 1.5})";
+    const std::string scene =
+        writeScene("ok.json", replaced(R"({"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5})", object));
+    const fs::path out = dir_ / "never";
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --quiet");
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("ok.json: objects[0].mesh.path"), std::string::npos) << outcome.output;
+    EXPECT_NE(outcome.output.find("cut.off"), std::string::npos) << outcome.output;
+    EXPECT_NE(outcome.output.find("truncated"), std::string::npos) << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, BadOverrideNamesItsPath) {
     const std::string scene = writeScene("ok.json", validScene());
     const Outcome outcome = runEikon("run " + scene + " --out " + (dir_ / "o").string() + " --set render.width=-3");

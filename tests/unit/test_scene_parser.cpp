@@ -280,7 +280,7 @@ TEST(SceneParserErrors, WrongVectorLength) {
 TEST(SceneParserErrors, UnknownObjectType) {
     json scene = validScene();
     scene["objects"][1]["type"] = "cone";
-    expectErrorAt(scene, "objects[1].type", "one of \"sphere\", \"box\", found a string \"cone\"");
+    expectErrorAt(scene, "objects[1].type", "one of \"sphere\", \"box\", \"mesh\", \"water\", found a string \"cone\"");
 }
 
 TEST(SceneParserErrors, UnknownLightType) {

@@ -1,0 +1,49 @@
+// A box of grid cells, [min, max) on each axis: the region of a grid that a
+// frame's change touched and that must be recomputed.
+#pragma once
+
+#include "bridge/grid/GridSpec.h"
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+
+namespace eikon::sim {
+
+struct CellBox {
+    glm::ivec3 min{0};
+    glm::ivec3 max{0};  // exclusive
+
+    bool empty() const { return max.x <= min.x || max.y <= min.y || max.z <= min.z; }
+    long long cellCount() const {
+        return empty() ? 0 : static_cast<long long>(max.x - min.x) * (max.y - min.y) * (max.z - min.z);
+    }
+    // The smallest box holding both (an empty box adds nothing).
+    CellBox merged(const CellBox& other) const {
+        if (empty()) return other;
+        if (other.empty()) return *this;
+        return {glm::min(min, other.min), glm::max(max, other.max)};
+    }
+
+    static CellBox whole(const GridSpec& grid) { return {glm::ivec3(0), grid.resolution}; }
+
+    // Cells whose centres may lie within `margin` metres of the world box
+    // [lo, hi], clipped to the grid.
+    static CellBox around(const GridSpec& grid, const glm::dvec3& lo, const glm::dvec3& hi, double margin) {
+        const glm::dvec3 h = grid.voxelSize();
+        const glm::dvec3 a = (lo - margin - grid.boundsMin) / h - 0.5;
+        const glm::dvec3 b = (hi + margin - grid.boundsMin) / h - 0.5;
+        CellBox box;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!(a[axis] <= b[axis])) return {};  // an empty or non-finite range
+            const double first = std::ceil(std::max(a[axis], -1.0));
+            const double last = std::floor(std::min(b[axis], static_cast<double>(grid.resolution[axis])));
+            box.min[axis] = static_cast<int>(std::max(first, 0.0));
+            box.max[axis] = static_cast<int>(std::min(last + 1.0, static_cast<double>(grid.resolution[axis])));
+        }
+        return box;
+    }
+};
+
+}  // namespace eikon::sim

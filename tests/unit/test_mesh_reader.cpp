@@ -1,0 +1,173 @@
+// Mesh files in every supported format, good and bad: a unit cube must come
+// back closed with volume 1; truncated files, non-finite coordinates, open
+// and non-manifold meshes must each give an InputError naming the file and
+// the reason (with the count of offending edges).
+#include "bridge/core/Error.h"
+#include "bridge/io/MeshReader.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace eikon::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Unit cube [0,1]³, quads counter-clockwise seen from outside.
+const std::array<glm::dvec3, 8> kCubeVertices = {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                                   {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}}};
+const std::array<std::array<int, 4>, 6> kCubeQuads = {
+    {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}}};
+
+class MeshReaderTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("eikon_mesh_reader_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    std::string write(const std::string& name, const std::string& bytes) const {
+        const fs::path path = dir_ / name;
+        std::ofstream(path, std::ios::binary) << bytes;
+        return path.string();
+    }
+    fs::path dir_;
+};
+
+std::string cubeOff(int skipFaces = 0) {
+    std::ostringstream off;
+    off << "OFF\n8 " << 6 - skipFaces << " 0\n";
+    for (const auto& v : kCubeVertices) off << v.x << " " << v.y << " " << v.z << "\n";
+    for (int f = skipFaces; f < 6; ++f)
+        off << "4 " << kCubeQuads[f][0] << " " << kCubeQuads[f][1] << " " << kCubeQuads[f][2] << " " << kCubeQuads[f][3]
+            << "\n";
+    return off.str();
+}
+
+std::string cubeObj() {
+    std::ostringstream obj;
+    for (const auto& v : kCubeVertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (const auto& q : kCubeQuads) obj << "f " << q[0] + 1 << " " << q[1] + 1 << " " << q[2] + 1 << " " << q[3] + 1 << "\n";
+    return obj.str();
+}
+
+std::string cubePly() {
+    std::ostringstream ply;
+    ply << "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face 6\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto& v : kCubeVertices) ply << v.x << " " << v.y << " " << v.z << "\n";
+    for (const auto& q : kCubeQuads) ply << "4 " << q[0] << " " << q[1] << " " << q[2] << " " << q[3] << "\n";
+    return ply.str();
+}
+
+// Binary STL: 80-byte header, triangle count, 50 bytes per triangle.
+std::string cubeStl(float poison = 0.0f) {
+    std::string bytes(80, ' ');
+    const std::uint32_t count = 12;
+    bytes.append(reinterpret_cast<const char*>(&count), 4);
+    for (const auto& q : kCubeQuads)
+        for (const auto& t : {std::array<int, 3>{q[0], q[1], q[2]}, std::array<int, 3>{q[0], q[2], q[3]}}) {
+            float record[12] = {};
+            for (int c = 0; c < 3; ++c)
+                for (int axis = 0; axis < 3; ++axis)
+                    record[3 + 3 * c + axis] = static_cast<float>(kCubeVertices[t[c]][axis]);
+            record[3] += poison;
+            bytes.append(reinterpret_cast<const char*>(record), sizeof record);
+            bytes.append(2, '\0');
+        }
+    return bytes;
+}
+
+std::string messageOf(const std::string& path, MeshClosure closure = MeshClosure::Closed) {
+    try {
+        readMesh(path, closure);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+TEST_F(MeshReaderTest, ReadsAClosedCubeInEveryFormat) {
+    for (const auto& [name, bytes] : {std::pair{"cube.off", cubeOff()}, std::pair{"cube.obj", cubeObj()},
+                                      std::pair{"cube.ply", cubePly()}, std::pair{"cube.stl", cubeStl()}}) {
+        SCOPED_TRACE(name);
+        const TriangleMesh mesh = readMesh(write(name, bytes));
+        EXPECT_EQ(mesh.triangles.size(), 12u);
+        EXPECT_EQ(mesh.vertices.size(), 8u);  // STL corners are merged into shared vertices
+        EXPECT_TRUE(countEdges(mesh).closedManifold());
+        EXPECT_NEAR(std::abs(enclosedVolume(mesh)), 1.0, 1e-12);
+    }
+}
+
+TEST_F(MeshReaderTest, TruncatedFilesAreRefused) {
+    const std::string off = cubeOff();
+    const std::string offMessage = messageOf(write("cut.off", off.substr(0, off.size() / 2)));
+    EXPECT_NE(offMessage.find("cut.off"), std::string::npos) << offMessage;
+    EXPECT_NE(offMessage.find("truncated"), std::string::npos) << offMessage;
+
+    const std::string ply = cubePly();
+    const std::string plyMessage = messageOf(write("cut.ply", ply.substr(0, ply.size() - 20)));
+    EXPECT_NE(plyMessage.find("cut.ply"), std::string::npos) << plyMessage;
+    EXPECT_NE(plyMessage.find("truncated"), std::string::npos) << plyMessage;
+
+    const std::string stl = cubeStl();
+    const std::string stlMessage = messageOf(write("cut.stl", stl.substr(0, stl.size() - 75)));
+    EXPECT_NE(stlMessage.find("cut.stl"), std::string::npos) << stlMessage;
+    EXPECT_EQ(stlMessage.find("no error"), std::string::npos) << stlMessage;
+
+    const std::string obj = cubeObj();
+    const std::string objMessage = messageOf(write("cut.obj", obj.substr(0, obj.size() - 12)));
+    EXPECT_NE(objMessage.find("cut.obj"), std::string::npos) << objMessage;
+    EXPECT_EQ(objMessage.find("no error"), std::string::npos) << objMessage;
+
+    EXPECT_NE(messageOf(write("empty.off", "")).find("empty"), std::string::npos);
+}
+
+TEST_F(MeshReaderTest, NonFiniteCoordinatesAreRefusedWithTheirPlace) {
+    std::string off = cubeOff();
+    off.replace(off.find("1 1 0"), 5, "1 nan 0");
+    const std::string textMessage = messageOf(write("nan.off", off));
+    EXPECT_NE(textMessage.find("nan.off: line 5"), std::string::npos) << textMessage;
+    EXPECT_NE(textMessage.find("finite"), std::string::npos) << textMessage;
+
+    const std::string binaryMessage = messageOf(write("nan.stl", cubeStl(std::numeric_limits<float>::quiet_NaN())));
+    EXPECT_NE(binaryMessage.find("nan.stl: vertex"), std::string::npos) << binaryMessage;
+    EXPECT_NE(binaryMessage.find("finite coordinates"), std::string::npos) << binaryMessage;
+}
+
+TEST_F(MeshReaderTest, OpenMeshIsRefusedWhereClosedIsNeededWithItsEdgeCount) {
+    const std::string path = write("open.off", cubeOff(1));  // the z = 0 face removed: 4 open edges
+    const std::string message = messageOf(path);
+    EXPECT_NE(message.find("open.off"), std::string::npos) << message;
+    EXPECT_NE(message.find("4 open and 0 non-manifold edges"), std::string::npos) << message;
+    EXPECT_EQ(readMesh(path, MeshClosure::Any).triangles.size(), 10u);  // fine where open is allowed
+}
+
+TEST_F(MeshReaderTest, NonManifoldEdgesAreCounted) {
+    // A closed tetrahedron plus a fin on its edge 0–1: that edge is shared by three triangles.
+    const std::string off = "OFF\n5 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.5 -1 0\n"
+                            "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n3 0 1 4\n";
+    const std::string message = messageOf(write("fin.off", off));
+    EXPECT_NE(message.find("2 open and 1 non-manifold edges"), std::string::npos) << message;
+}
+
+TEST_F(MeshReaderTest, BadPathsAndExtensionsAreRefused) {
+    EXPECT_NE(messageOf((dir_ / "missing.obj").string()).find("no such file"), std::string::npos);
+    EXPECT_NE(messageOf(write("cube.txt", cubeOff())).find(".obj, .ply, .off or .stl"), std::string::npos);
+    EXPECT_NE(messageOf(write("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")).find("index 7"),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace eikon::io

@@ -1,0 +1,126 @@
+// Mesh and water objects, their deformers, and the top-level frame_time.
+#include "bridge/scene/SceneParser.h"
+
+#include "tests/unit/SceneParserTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace eikon {
+namespace {
+
+using namespace test;
+
+const char* const kTetrahedron = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+
+json sceneWithObject(const json& object) {
+    json root = validScene();
+    root["objects"] = json::array({object});
+    return root;
+}
+
+json meshObject(const json& deformer = nullptr) {
+    json object = {{"type", "mesh"},
+                   {"mesh", {{"path", writeTempFile("tetra.off", kTetrahedron)}, {"translate", {0, 0.1, 0}},
+                             {"rotate_deg", {0, 90, 0}}, {"scale", 0.5}}},
+                   {"index", 1.5},
+                   {"extinction", {0.1, 0.2, 0.3}}};
+    if (!deformer.is_null()) object["deformer"] = deformer;
+    return object;
+}
+
+TEST(SceneParserMesh, ParsesAMeshWithPlacementMaterialAndTwist) {
+    const Scene scene = parseScene(
+        sceneWithObject(meshObject({{"type", "twist"}, {"origin", {0, 0, 0}}, {"axis", {0, 2, 0}},
+                                    {"keys", {{{"time", 0}, {"deg_per_m", 0}}, {{"time", 1}, {"deg_per_m", 90}}}}})),
+        "test.json");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    const ObjectDesc& object = scene.objects[0];
+    EXPECT_EQ(object.kind, ObjectDesc::Kind::Mesh);
+    EXPECT_NE(object.mesh.path.find("tetra.off"), std::string::npos);
+    EXPECT_EQ(object.mesh.placement.translate, glm::dvec3(0, 0.1, 0));
+    EXPECT_EQ(object.mesh.placement.rotateDeg, glm::dvec3(0, 90, 0));
+    EXPECT_EQ(object.mesh.placement.scale, 0.5);
+    EXPECT_EQ(object.material.index, 1.5);
+    EXPECT_EQ(object.material.extinction, Rgb(0.1, 0.2, 0.3));
+    EXPECT_EQ(object.mesh.deformer.kind, DeformerDesc::Kind::Twist);
+    EXPECT_EQ(object.mesh.deformer.axis, glm::dvec3(0, 1, 0)) << "normalised";
+    ASSERT_EQ(object.mesh.deformer.amount.size(), 2u);
+    EXPECT_EQ(object.mesh.deformer.amount[1].value, 90.0);
+    EXPECT_NEAR(scene.frameTime, 1.0 / 30.0, 1e-15) << "the default frame time";
+}
+
+TEST(SceneParserMesh, ParsesArapHandlesAndRigidKeys) {
+    json arap = {{"type", "arap"},
+                 {"iterations", 4},
+                 {"handles",
+                  {{{"min", {-1, -1, -1}}, {"max", {0.1, 1, 1}}},
+                   {{"min", {0.9, -1, -1}}, {"max", {2, 1, 1}},
+                    {"keys", {{{"time", 0}}, {{"time", 2}, {"translate", {0, 0.2, 0}}, {"rotate_deg", {0, 0, 30}}}}}}}}};
+    const Scene scene = parseScene(sceneWithObject(meshObject(arap)), "test.json");
+    const DeformerDesc& d = scene.objects[0].mesh.deformer;
+    EXPECT_EQ(d.kind, DeformerDesc::Kind::Arap);
+    EXPECT_EQ(d.iterations, 4);
+    ASSERT_EQ(d.handles.size(), 2u);
+    EXPECT_TRUE(d.handles[0].keys.empty());
+    ASSERT_EQ(d.handles[1].keys.size(), 2u);
+    EXPECT_EQ(d.handles[1].keys[1].pose.rotateDeg, glm::dvec3(0, 0, 30));
+
+    const Scene rigid = parseScene(
+        sceneWithObject(meshObject({{"type", "rigid"}, {"keys", {{{"time", 0.5}, {"scale", 2}}}}})), "test.json");
+    EXPECT_EQ(rigid.objects[0].mesh.deformer.keys[0].pose.scale, 2.0);
+}
+
+TEST(SceneParserMesh, ParsesWaterWithDefaultsAndInputs) {
+    json water = {{"type", "water"},
+                  {"basin", {{"min", {-0.5, -0.2, -0.5}}, {"max", {0.5, 0.1, 0.5}}}},
+                  {"swell", {{"amplitude", 0.002}, {"wavelength", 0.1}}},
+                  {"drops", {{{"time", 0.1}, {"position", {0.1, 0.2}}}}},
+                  {"disturbances", {{{"start", {0, 0}}, {"velocity", {0.1, 0}}, {"until", 1}}}},
+                  {"index", 1.333}};
+    json root = sceneWithObject(water);
+    root["frame_time"] = 0.05;
+    const Scene scene = parseScene(root, "test.json");
+    const WaterDesc& w = scene.objects[0].water;
+    EXPECT_EQ(scene.objects[0].kind, ObjectDesc::Kind::Water);
+    EXPECT_EQ(w.basinMax.y, 0.1);
+    EXPECT_EQ(w.cells, glm::ivec2(128, 128));
+    EXPECT_EQ(w.swellAmplitude, 0.002);
+    ASSERT_EQ(w.drops.size(), 1u);
+    EXPECT_EQ(w.drops[0].position, glm::dvec2(0.1, 0.2));
+    ASSERT_EQ(w.disturbances.size(), 1u);
+    EXPECT_EQ(w.disturbances[0].until, 1.0);
+    EXPECT_EQ(scene.frameTime, 0.05);
+}
+
+TEST(SceneParserMesh, BadValuesNameTheirJsonPath) {
+    json missing = meshObject();
+    missing["mesh"]["path"] = "no_such_mesh.obj";
+    expectErrorAt(sceneWithObject(missing), "objects[0].mesh.path", "an existing mesh file");
+
+    expectErrorAt(sceneWithObject(meshObject({{"type", "twist"},
+                                              {"keys", {{{"time", 1}, {"deg_per_m", 0}}, {{"time", 1}, {"deg_per_m", 9}}}}})),
+                  "objects[0].deformer.keys[1].time", "increasing time");
+    expectErrorAt(sceneWithObject(meshObject({{"type", "bend"}, {"axis", {0, 1, 0}}, {"toward", {0, -3, 0}},
+                                              {"keys", {{{"time", 0}, {"deg_per_m", 10}}}}})),
+                  "objects[0].deformer.toward", "not parallel to the axis");
+    expectErrorAt(sceneWithObject(meshObject({{"type", "arap"}, {"handles", json::array()}})),
+                  "objects[0].deformer.handles", "at least one handle");
+    expectErrorAt(sceneWithObject(meshObject({{"type", "melt"}})), "objects[0].deformer.type");
+
+    json water = {{"type", "water"}, {"basin", {{"min", {0, 0, 0}}, {"max", {1, 1, 1}}}}, {"cells", {2, 5}}, {"index", 1.3}};
+    expectErrorAt(sceneWithObject(water), "objects[0].cells[0]", "integer in [3, 4096]");
+    water["cells"] = {8, 8};
+    water["drops"] = {{{"time", 0}, {"position", {1, 2, 3}}}};
+    expectErrorAt(sceneWithObject(water), "objects[0].drops[0].position", "2 numbers");
+
+    json withSim = validScene();
+    withSim["sim"] = json::object();
+    withSim["frame_time"] = 0.1;
+    expectErrorAt(withSim, "frame_time", "sim.frame_time");
+}
+
+}  // namespace
+}  // namespace eikon
