@@ -22,8 +22,17 @@ std::string format(const char* pattern, double value) {
 
 std::string percent(double error) {
     if (!std::isfinite(error)) return "—";
-    if (error >= 0.01) return format("%.2g%%", 100.0 * error);
-    return format("%.2g", error);
+    if (error >= 1e-5) return format("%.2g%%", 100.0 * error);
+    return format("%.1e", error);
+}
+
+// The tracer knobs of a run, without the case-specific grid and smoothing.
+std::string tracerKey(const RunSettings& s) {
+    std::string key = curveLabel(s) + (s.stepPolicy == TracerDesc::StepPolicy::Uniform ? " Δs=" : " Δs_min=") +
+                      format("%g", s.stepVoxels);
+    if (s.stepPolicy == TracerDesc::StepPolicy::Octree)
+        key += format(" ε=%g", s.epsilon) + format(" ε′=%g", s.epsilonPrime) + format(" cap=%g", s.maxStepVoxels);
+    return key;
 }
 
 std::vector<std::string> casesInOrder(const std::vector<RunRecord>& records) {
@@ -76,11 +85,7 @@ std::string curveLabel(const RunSettings& settings) {
 
 std::string settingsLabel(const RunRecord& record) {
     const RunSettings& s = record.settings;
-    std::string label = curveLabel(s) + (s.stepPolicy == TracerDesc::StepPolicy::Uniform ? " Δs=" : " Δs_min=") +
-                        format("%g", s.stepVoxels);
-    if (s.stepPolicy == TracerDesc::StepPolicy::Octree)
-        label += format(" ε=%g", s.epsilon) + format(" ε′=%g", s.epsilonPrime) + format(" cap=%g", s.maxStepVoxels);
-    label += " " + record.grid;
+    std::string label = tracerKey(s) + " " + record.grid;
     if (s.smoothingVoxels > 0.0) label += format(" w=%g", s.smoothingVoxels);
     if (s.sweep == "photons") label += " " + std::to_string(record.photons) + " photons";
     return label;
@@ -190,9 +195,7 @@ void writeMarkdown(const std::filesystem::path& file, const std::vector<RunRecor
         std::set<std::string> reachable;
         for (const auto& r : records) {
             if (r.settings.sweep != "step" || r.measurement.samples == 0) continue;
-            std::string label = settingsLabel(r);
-            label = label.substr(0, label.rfind(' '));  // drop the grid
-            byLabel[label][r.measurement.caseName] = &r;
+            byLabel[tracerKey(r.settings)][r.measurement.caseName] = &r;
             if (r.measurement.error <= budget) reachable.insert(r.measurement.caseName);
         }
         std::string best;
