@@ -27,14 +27,26 @@ std::string readText(const std::filesystem::path& path) {
     return text.str();
 }
 
-// Replaces the text between the markers of `doc` with `section`.
-void updateDocument(const std::filesystem::path& doc, const std::string& section) {
-    const std::string text = readText(doc);
-    const auto begin = text.find(kBegin), end = text.find(kEnd);
+// The text of `doc` and where its generated section starts and ends; an
+// InputError when the markers are missing.
+struct MarkedDocument {
+    std::string text;
+    std::size_t from = 0, to = 0;
+};
+MarkedDocument readMarkedDocument(const std::filesystem::path& doc) {
+    MarkedDocument marked{readText(doc)};
+    const auto begin = marked.text.find(kBegin), end = marked.text.find(kEnd);
     if (begin == std::string::npos || end == std::string::npos || end < begin)
         throw InputError(doc.string(), std::string("the markers '") + kBegin + "' and '" + kEnd + "'", "none");
-    const std::size_t from = begin + std::string(kBegin).size();
-    io::writeFileAtomically(doc, text.substr(0, from) + "\n" + section + text.substr(end));
+    marked.from = begin + std::string(kBegin).size();
+    marked.to = end;
+    return marked;
+}
+
+// Replaces the text between the markers of `doc` with `section`.
+void updateDocument(const std::filesystem::path& doc, const std::string& section) {
+    const MarkedDocument marked = readMarkedDocument(doc);
+    io::writeFileAtomically(doc, marked.text.substr(0, marked.from) + "\n" + section + marked.text.substr(marked.to));
 }
 
 }  // namespace
@@ -53,7 +65,8 @@ int accuracyCommand(const AccuracyOptions& options) {
     const std::filesystem::path out(options.outDir);
     if (std::filesystem::exists(out) && !std::filesystem::is_directory(out))
         throw InputError("--out " + options.outDir, "a folder", "a file");
-    if (!options.docPath.empty()) readText(options.docPath);  // fail before tracing
+    if (!options.docPath.empty()) readMarkedDocument(options.docPath);  // fail before tracing
+    if (!options.caseName.empty()) accuracy::checkCaseName(options.caseName);
     std::filesystem::create_directories(out);
     const auto context = gl::createHeadlessContext();
     const auto start = std::chrono::steady_clock::now();

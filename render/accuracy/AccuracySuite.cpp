@@ -2,7 +2,8 @@
 
 #include "bridge/core/Error.h"
 #include "render/accuracy/AccuracyCase.h"
-#include "render/accuracy/AccuracyCase.h"
+
+#include <algorithm>
 
 namespace eikon::accuracy {
 
@@ -12,17 +13,17 @@ std::vector<std::string> caseNames() {
     return names;
 }
 
+void checkCaseName(const std::string& name) {
+    const auto names = caseNames();
+    if (std::find(names.begin(), names.end(), name) != names.end()) return;
+    std::string list;
+    for (const auto& known : names) list += (list.empty() ? "" : ", ") + known;
+    throw InputError("--case", "one of " + list, "'" + name + "'");
+}
+
 std::vector<RunRecord> runSuite(const SuiteOptions& options) {
+    if (!options.caseName.empty()) checkCaseName(options.caseName);
     const auto cases = allCases();
-    if (!options.caseName.empty()) {
-        bool known = false;
-        for (const auto& c : cases) known = known || c->name() == options.caseName;
-        if (!known) {
-            std::string list;
-            for (const auto& c : cases) list += (list.empty() ? "" : ", ") + c->name();
-            throw InputError("--case", "one of " + list, "'" + options.caseName + "'");
-        }
-    }
     std::vector<RunRecord> records;
     for (const auto& c : cases) {
         if (!options.caseName.empty() && c->name() != options.caseName) continue;

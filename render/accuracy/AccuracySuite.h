@@ -16,6 +16,8 @@ struct SuiteOptions {
 };
 
 std::vector<std::string> caseNames();
+// Throws InputError (listing the cases) unless `name` is one.
+void checkCaseName(const std::string& name);
 
 // Traces every setting of the selected cases in the current OpenGL context.
 // Throws InputError for an unknown case name.

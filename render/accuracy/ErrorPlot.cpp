@@ -14,11 +14,6 @@ namespace {
 
 constexpr Colour kBlack{20, 20, 20}, kGrid{225, 225, 225}, kAxis{90, 90, 90}, kBudget{170, 170, 170};
 
-struct Curve {
-    Colour colour;
-    const char* label;
-};
-
 Colour curveColour(const RunSettings& s) {
     using I = TracerDesc::Integrator;
     const bool octree = s.stepPolicy == TracerDesc::StepPolicy::Octree;
