@@ -45,7 +45,7 @@ struct RunRecord {
     RunSettings settings;
     std::string grid;                  // e.g. 64x64x64
     long long photons = 0;
-    double runtimeSeconds = 0.0;       // the photon pass of a relight after a first frame, wall time with glFinish
+    double runtimeSeconds = 0.0;       // the photon pass, faster of two relights after a first frame, wall time with glFinish
     render::PhotonStats stats;
     Measurement measurement;
     // Uniform steps: each recorded photon's position (in voxels) and unit
@@ -81,9 +81,10 @@ struct TraceRequest {
     int recordStride = 1;              // record every stride-th photon (spreads them over a stratified emitter)
 };
 
-// Traces `fields` on the GPU (the current OpenGL context): one frame, then a
-// timed relight (photon pass only; shader compilation and the per-frame
-// prepare and step-structure stages are not timed). Same seed: same photons.
+// Traces `fields` on the GPU (the current OpenGL context): one frame, then
+// two timed relights, keeping the faster (photon pass only; shader
+// compilation and the per-frame prepare and step-structure stages are not
+// timed). Same seed: same photons.
 GpuTrace traceOnGpu(const Scene& scene, const FieldSet& fields, TraceRequest request = {});
 
 // δn = n − n_ref of `field` sampled at the cell centres of `grid`.

@@ -71,15 +71,14 @@ void drawPanel(Canvas& canvas, double x, double y, double w, double h, const std
     canvas.line(left, bottom, right, bottom, kAxis, 1.5);
     canvas.line(left, top, left, bottom, kAxis, 1.5);
     canvas.text(0.5 * (left + right) - 0.5 * Canvas::textWidth("run time (s)"), bottom + 24, "run time (s)", kAxis);
-    canvas.text(x + 4, top - 20, "error", kAxis);
 
-    // Curves: runs of one integrator, step policy and sweep, in order of run time.
+    // Curves: runs of one integrator, step policy and sweep, in sweep order
+    // (step from coarse to fine, grid and photons upward).
     std::map<std::string, std::vector<const RunRecord*>> curves;
     for (const RunRecord* r : runs)
         if (r->measurement.error > 0.0 && r->runtimeSeconds > 0.0)
             curves[curveLabel(r->settings) + "/" + r->settings.sweep].push_back(r);
-    for (auto& [key, points] : curves) {
-        std::sort(points.begin(), points.end(), [](auto* a, auto* b) { return a->runtimeSeconds < b->runtimeSeconds; });
+    for (const auto& [key, points] : curves) {
         const Colour colour = curveColour(points.front()->settings);
         const bool stepSweep = points.front()->settings.sweep == "step";
         for (std::size_t i = 1; i < points.size(); ++i)
@@ -136,7 +135,10 @@ void writeErrorPlot(const std::filesystem::path& file, const std::vector<RunReco
     }
     canvas.line(x, legendTop + 38, x + 28, legendTop + 38, kBudget, 1.0, 4.0);
     canvas.text(x + 36, legendTop + 32, "1% and 0.1% error", kBlack);
-    canvas.text(20, legendTop + 60, "error against run time, log-log; dashed lines: sweeps of one knob at a fine step", kAxis);
+    canvas.text(20, legendTop + 60,
+                "vertical: error (dimensionless), horizontal: run time of the photon pass (s), log-log; "
+                "dashed lines: sweeps of one knob at a fine step",
+                kAxis);
     io::writePng(file, canvas.width(), canvas.height(), canvas.rgba());
 }
 
