@@ -14,7 +14,8 @@
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].bounce)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
-//   EIKON_RECORD_PATHS     vertices recorded for each of the first EIKON_RECORDED_PHOTONS photons
+//   EIKON_RECORD_PATHS     vertices recorded for each of EIKON_RECORDED_PHOTONS photons,
+//                          every EIKON_RECORD_STRIDE-th from the first
 layout(local_size_x = 64) in;
 
 #include "common/grid_sampling.glsl"
@@ -53,6 +54,9 @@ layout(local_size_x = 64) in;
 #endif
 #ifndef EIKON_RECORDED_PHOTONS
 #define EIKON_RECORDED_PHOTONS 64
+#endif
+#ifndef EIKON_RECORD_STRIDE
+#define EIKON_RECORD_STRIDE 1
 #endif
 
 uniform vec3 dispersion;  // per-channel scale of δn
@@ -151,8 +155,10 @@ void add_power(int tally, vec3 power) {
 
 void record_vertex(uint photon, uint vertex, vec3 x) {
 #if EIKON_RECORD_PATHS > 0
-    if (photon < uint(EIKON_RECORDED_PHOTONS) && vertex < uint(EIKON_RECORD_PATHS))
-        path_vertices[photon * uint(EIKON_RECORD_PATHS) + vertex] = vec4(x, 1.0f);
+    uint recorded = photon / uint(EIKON_RECORD_STRIDE);
+    if (photon % uint(EIKON_RECORD_STRIDE) == 0u && recorded < uint(EIKON_RECORDED_PHOTONS) &&
+        vertex < uint(EIKON_RECORD_PATHS))
+        path_vertices[recorded * uint(EIKON_RECORD_PATHS) + vertex] = vec4(x, 1.0f);
 #endif
 }
 
@@ -344,8 +350,8 @@ void trace_photon(uint photon) {
     uint bounces = 0u;
     float cutoff = power_cutoff * max(power.r, max(power.g, power.b));
     vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
-    vec3 v = reference_index() * direction;
-    vec4 field = vec4(0.0f, 0.0f, 0.0f, reference_index());
+    vec4 field = grid_contains(x) ? field_at(x) : vec4(0.0f, 0.0f, 0.0f, reference_index());
+    vec3 v = field.w * direction;  // |v| = n where the photon starts, inside the grid or out
     uint steps = 0u;
     uint vertex = 0u;
     float max_invariant_error = 0.0f;

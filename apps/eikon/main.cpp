@@ -1,6 +1,7 @@
 // eikon: the command-line front end. Composition only: parse the command
 // line, hand over to a command, map failures to exit codes
 // (0 success, 2 bad input, 1 anything else).
+#include "apps/eikon/AccuracyCommand.h"
 #include "apps/eikon/BenchCommand.h"
 #include "apps/eikon/InfoCommand.h"
 #include "apps/eikon/RunCommand.h"
@@ -18,6 +19,8 @@ int main(int argc, char** argv) {
     eikon::app::addInfoCommand(app);
     eikon::app::BenchOptions benchOptions;
     eikon::app::addBenchCommand(app, benchOptions);
+    eikon::app::AccuracyOptions accuracyOptions;
+    eikon::app::addAccuracyCommand(app, accuracyOptions);
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& success) {
@@ -29,6 +32,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("run")) return eikon::app::runCommand(runOptions);
         if (app.got_subcommand("bench")) return eikon::app::benchCommand(benchOptions);
+        if (app.got_subcommand("accuracy")) return eikon::app::accuracyCommand(accuracyOptions);
         return eikon::app::infoCommand();
     } catch (const eikon::InputError& error) {
         std::cerr << "eikon: error: " << error.what() << "\n";

@@ -71,7 +71,8 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
                                      [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
         {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
-        {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)}};
+        {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
+        {"EIKON_RECORD_STRIDE", std::to_string(std::max(options.recordStride, 1))}};
     program_ = gl::compileComputeProgram("photon_trace.comp", defines);
     setEmitters(scene);
     if (storeFluence_ > 0) {

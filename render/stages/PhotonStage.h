@@ -29,6 +29,7 @@ struct PhotonSettings {
 struct PhotonProgramOptions {
     int recordPathVertices = 0;  // per recorded photon; 0 records nothing
     int recordedPhotons = 64;
+    int recordStride = 1;        // record photons 0, stride, 2·stride, … (spread over a stratified emitter)
     bool bareMarch = false;      // benchmark limit: no attenuation, deposits or receivers
 };
 
@@ -65,7 +66,7 @@ public:
     const gl::Buffer& fluence() const { return fluence_; }
     const gl::Buffer& fluenceDirection() const { return direction_; }
     std::vector<float> downloadFluence() const;
-    // Recorded vertices (xyz, w = 1 where written) of the first photons.
+    // Recorded vertices (xyz, w = 1 where written) of the recorded photons.
     std::vector<glm::vec4> downloadPaths() const;
 
 private:

@@ -274,3 +274,52 @@ TEST_F(Cli, InfoNamesTheOpenGlRenderer) {
 }
 
 }  // namespace
+
+namespace {
+
+// `eikon accuracy` on one case writes the CSV (its columns, one row per run
+// and measure, finite errors), the plot and the report; an unknown case is a
+// command-line error (exit 2) that lists the cases, before anything is traced.
+class AccuracyCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / "eikon_cli_accuracy";
+        fs::remove_all(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+TEST_F(AccuracyCli, WritesCsvPlotAndReportForOneCase) {
+    const Outcome outcome = runEikon("accuracy --quick --case beer_lambert --out " + dir_.string(), "LP_NUM_THREADS=2");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    std::ifstream csv(dir_ / "accuracy.csv");
+    std::string header, row;
+    std::getline(csv, header);
+    EXPECT_EQ(header.rfind("case,integrator,step_policy,sweep,step_voxels", 0), 0u) << header;
+    for (const char* column : {",grid,", ",photons,", ",runtime_s,", ",error,", ",error_metric,", ",invariant_max,",
+                               ",energy_balance"})
+        EXPECT_NE(header.find(column), std::string::npos) << column;
+    int rows = 0;
+    while (std::getline(csv, row)) {
+        ++rows;
+        EXPECT_EQ(row.rfind("beer_lambert,", 0), 0u) << row;
+        EXPECT_EQ(row.find("nan"), std::string::npos) << row;
+    }
+    EXPECT_GE(rows, 10);
+    EXPECT_GT(fs::file_size(dir_ / "accuracy.png"), 10000u);
+    std::ifstream md(dir_ / "accuracy.md");
+    std::stringstream report;
+    report << md.rdbuf();
+    EXPECT_NE(report.str().find("cheapest ≤ 1%"), std::string::npos);
+}
+
+TEST_F(AccuracyCli, UnknownCaseIsAnInputError) {
+    const Outcome outcome = runEikon("accuracy --case nosuch --out " + dir_.string());
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("--case: expected one of point_light, beer_lambert"), std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(dir_ / "accuracy.csv"));
+}
+
+}  // namespace
