@@ -29,6 +29,7 @@ struct Measurement {
 // upload, prepare and step structure are not timed).
 Measurement measure(const std::string& name, const Scene& scene, const FieldSet& fields,
                     render::RendererOptions options, int repeats) {
+    options.tracePhotons = true;
     render::FrameRenderer renderer(scene, fields, options);
     renderer.render(fields);
     Measurement measurement{name, 0.0, {}};

@@ -24,6 +24,7 @@ const char* stepPolicyName(TracerDesc::StepPolicy policy) {
 
 GpuTrace traceOnGpu(const Scene& scene, const FieldSet& fields, TraceRequest request) {
     render::RendererOptions options;
+    options.tracePhotons = true;
     options.photons.recordPathVertices = request.pathVertices;
     options.photons.recordedPhotons = request.recordedPhotons;
     options.photons.recordStride = request.recordStride;
@@ -36,7 +37,7 @@ GpuTrace traceOnGpu(const Scene& scene, const FieldSet& fields, TraceRequest req
     trace.runtimeSeconds = std::min(trace.runtimeSeconds, renderer.relight(trace.stats).milliseconds / 1000.0);
     if (!scene.receivers.empty()) trace.receiverMap = renderer.receivers().download(0);
     if (request.pathVertices > 0) {
-        const std::vector<glm::vec4> vertices = renderer.photonStage().downloadPaths();
+        const std::vector<glm::vec4> vertices = renderer.photonStage()->downloadPaths();
         const std::size_t capacity = static_cast<std::size_t>(request.pathVertices);
         for (std::size_t photon = 0; photon < static_cast<std::size_t>(request.recordedPhotons); ++photon) {
             PhotonPath path;

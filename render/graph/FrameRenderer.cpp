@@ -36,8 +36,11 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
     if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree)
         stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction());
-    // Photons light receivers and in-scattering; a scene with neither has no photon stage.
-    if (!scene.receivers.empty() || fields_.hasScattering() || scene.tracer.storeFluence)
+    // Photons light receivers and in-scattering; a scene with neither has no
+    // photon stage unless the caller asks for the photons' tallies.
+    const bool photonsWanted =
+        !scene.receivers.empty() || fields_.hasScattering() || scene.tracer.storeFluence || options.tracePhotons;
+    if (photonsWanted)
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
     view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr, options.recordViewExits);
     const double voxel = fields.grid.smallestVoxelEdge();

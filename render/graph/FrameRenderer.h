@@ -40,6 +40,7 @@ struct FrameResult {
 struct RendererOptions {
     PhotonProgramOptions photons;
     bool recordViewExits = false;  // keep each pixel's exit direction (tests)
+    bool tracePhotons = false;     // a photon stage even with nothing to light (tallies, paths, benchmarks)
 };
 
 class FrameRenderer {

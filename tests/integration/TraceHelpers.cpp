@@ -41,7 +41,7 @@ LightDesc directionalLight(glm::dvec3 direction, double irradiance) {
 
 TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::PhotonProgramOptions options) {
     glContext();
-    render::FrameRenderer renderer(scene, fields, {.photons = options});
+    render::FrameRenderer renderer(scene, fields, {.photons = options, .tracePhotons = true});
     TraceResult result;
     result.stats = renderer.render(fields).photons;
     if (!scene.receivers.empty()) result.map = renderer.receivers().download(0);
