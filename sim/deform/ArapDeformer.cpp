@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SVD>
+#include <tbb/parallel_for.h>
 
 #include <glm/geometric.hpp>
 
@@ -112,7 +113,7 @@ struct ArapDeformer::Solver {
 
     void localStep() {
         rotations.resize(rest.size());
-        for (std::size_t i = 0; i < rest.size(); ++i) {
+        tbb::parallel_for(std::size_t{0}, rest.size(), [&](std::size_t i) {
             Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
             for (const Neighbour& n : neighbours[i])
                 covariance += n.weight * toEigen(rest[i] - rest[n.vertex]) * toEigen(current[i] - current[n.vertex]).transpose();
@@ -124,7 +125,7 @@ struct ArapDeformer::Solver {
                 r = v * svd.matrixU().transpose();
             }
             rotations[i] = r.allFinite() ? r : Eigen::Matrix3d::Identity();
-        }
+        });
     }
 
     void globalStep() {

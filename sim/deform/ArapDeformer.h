@@ -4,7 +4,7 @@
 //   E = Σ_i Σ_{j∈N(i)} w_ij ‖(p'_i − p'_j) − R_i (p_i − p_j)‖²      (their Eq. 3)
 // with cotangent weights w_ij = ½(cot α_ij + cot β_ij) (Eq. 5, clamped at a
 // small positive floor so the system stays positive definite on meshes with
-// obtuse triangles). Local step: R_i = V·Uᵀ from the SVD of
+// obtuse triangles). Local step (parallel over vertices): R_i = V·Uᵀ from the SVD of
 // S_i = Σ_j w_ij e_ij e'_ijᵀ (Eq. 6, the sign fixed so det R_i = +1). Global
 // step: L p' = b with b_i = Σ_j ½ w_ij (R_i + R_j)(p_i − p_j) (Eqs. 8–9);
 // L restricted to the free vertices does not change with time, so its

@@ -14,8 +14,10 @@
 namespace eikon::sim {
 namespace {
 
+// Named after the running test: ctest runs tests in parallel processes.
 std::string writeOff(const TriangleMesh& mesh, const std::string& name) {
-    const std::string path = ::testing::TempDir() + name;
+    const std::string path =
+        ::testing::TempDir() + ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
     std::ofstream off(path);
     off.precision(17);
     off << "OFF\n" << mesh.vertices.size() << " " << mesh.triangles.size() << " 0\n";

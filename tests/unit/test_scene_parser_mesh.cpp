@@ -23,7 +23,7 @@ json sceneWithObject(const json& object) {
 
 json meshObject(const json& deformer = nullptr) {
     json object = {{"type", "mesh"},
-                   {"mesh", {{"path", writeTempFile("tetra.off", kTetrahedron)}, {"translate", {0, 0.1, 0}},
+                   {"mesh", {{"path", writeTempFile(std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_tetra.off", kTetrahedron)}, {"translate", {0, 0.1, 0}},
                              {"rotate_deg", {0, 90, 0}}, {"scale", 0.5}}},
                    {"index", 1.5},
                    {"extinction", {0.1, 0.2, 0.3}}};
