@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # eikon developer entry point. On a fresh Debian 12 machine:
 #   ./dev.sh run    install missing packages, build, render scenes/default.json into out/default/
-#   ./dev.sh test   install missing packages, build, run every test with ctest
-#   ./dev.sh debug-test   the same tests under AddressSanitizer + UBSan
+#   ./dev.sh test   install missing packages, build, run every test with ctest;
+#                   then build the tests labelled "sanitize" (robustness and
+#                   stability suites) under AddressSanitizer + UBSan and run them
+#   ./dev.sh debug-test   every test under AddressSanitizer + UBSan
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -44,6 +46,9 @@ case "${1:-}" in
         install_packages
         build release
         ctest --preset release -j "$(nproc)"
+        cmake --preset debug >/dev/null
+        cmake --build --preset debug --target eikon_sanitize_tests
+        ctest --preset debug -L sanitize -j "$(nproc)"
         ;;
     debug-test)
         install_packages
