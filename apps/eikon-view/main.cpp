@@ -1,12 +1,10 @@
 // eikon-view: the interactive viewer. Composition only: parse the command
 // line, run the viewer, map failures to exit codes (0 success, 2 bad input,
 // 1 anything else).
+#include "apps/common/ExitCodes.h"
 #include "apps/eikon-view/Viewer.h"
-#include "bridge/core/Error.h"
 
 #include <CLI/CLI.hpp>
-
-#include <iostream>
 
 int main(int argc, char** argv) {
     CLI::App app{"eikon-view: watch a scene live — orbit (left drag), pan (middle), zoom (wheel), move the light "
@@ -27,21 +25,5 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"orbit", "light"}));
     app.add_option("--target-ms", options.targetFrameMs, "Frame time to keep while a light is dragged")
         ->check(CLI::Range(5.0, 10000.0));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success& success) {
-        return app.exit(success);
-    } catch (const CLI::ParseError& error) {
-        app.exit(error);
-        return 2;
-    }
-    try {
-        return eikon::view::runViewer(options);
-    } catch (const eikon::InputError& error) {
-        std::cerr << "eikon-view: error: " << error.what() << "\n";
-        return 2;
-    } catch (const std::exception& error) {
-        std::cerr << "eikon-view: error: " << error.what() << "\n";
-        return 1;
-    }
+    return eikon::app::parseAndRun(app, argc, argv, "eikon-view", [&] { return eikon::view::runViewer(options); });
 }

@@ -1,0 +1,37 @@
+// The exit codes of eikon's programs: 0 success, 2 bad input (command line,
+// scene file, --set), 1 anything else. Parses the command line and runs
+// `body`, mapping each failure to its code with one message.
+#pragma once
+
+#include "bridge/core/Error.h"
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <string>
+
+namespace eikon::app {
+
+template <typename Body>
+int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program, Body&& body) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& success) {
+        return app.exit(success);
+    } catch (const CLI::ParseError& error) {
+        app.exit(error);
+        return 2;
+    }
+    try {
+        return body();
+    } catch (const InputError& error) {
+        std::cerr << program << ": error: " << error.what() << "\n";
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << program << ": error: " << error.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace eikon::app
