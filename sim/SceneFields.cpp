@@ -1,5 +1,6 @@
 #include "sim/SceneFields.h"
 
+#include "sim/fluid/SolverExport.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 
 namespace eikon::sim {
@@ -20,6 +21,11 @@ void SceneFields::advanceFrame() {
 
 std::vector<PhaseTiming> SceneFields::lastTimings() const {
     return fluid_ ? fluid_->lastTimings() : std::vector<PhaseTiming>{};
+}
+
+std::vector<io::NamedArray> SceneFields::exportArrays() const {
+    if (!fluid_) return {};
+    return solverArrays(fluid_->state(), fields_.grid, scene_.sim->ambientTemperature);
 }
 
 // The solver writes the medium (bumping the versions of what changed), then

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
+#include "bridge/io/ExportArrays.h"
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/FluidSimulation.h"
 
@@ -26,6 +27,9 @@ public:
     void advanceFrame();
     // Phase timings of the last simulated frame (empty without a simulation).
     std::vector<PhaseTiming> lastTimings() const;
+    // The simulation's own fields on the render grid, for export (empty for a
+    // static scene): velocity, temperature, concentration, dye.
+    std::vector<io::NamedArray> exportArrays() const;
 
 private:
     void refreshFromSimulation();

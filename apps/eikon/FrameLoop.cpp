@@ -1,11 +1,9 @@
 #include "apps/eikon/FrameLoop.h"
 
+#include "apps/eikon/FrameExport.h"
 #include "bridge/io/ImageIo.h"
-#include "bridge/io/vtk/VtkSeriesWriter.h"
 
 #include <nlohmann/json.hpp>
-
-#include <optional>
 
 namespace eikon::app {
 
@@ -59,10 +57,9 @@ std::string frameReportJson(int frame, const sim::SceneFields& fields, const ren
 }
 
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
-               ProgressBar& progress, bool exportVtk) {
+               ProgressBar& progress) {
     render::FrameRenderer renderer(scene, fields.fields());
-    std::optional<io::VtkSeriesWriter> vtk;
-    if (exportVtk) vtk.emplace(output.root(), "fields");
+    FrameExporter exporter(scene.exports, output.root());
     for (int frame = 0; frame < frames; ++frame) {
         if (frame > 0) fields.advanceFrame();
         const render::FrameResult result = renderer.render(fields.fields());
@@ -71,12 +68,7 @@ void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::Out
             io::writeHdr(output.framePath(frame).replace_extension(".hdr"), result.image.width, result.image.height,
                          result.hdr);
         output.appendReport(frameReportJson(frame, fields, result));
-        if (vtk) {
-            std::vector<io::NamedArray> extra;
-            if (renderer.photonStage().storesFluence())
-                extra.push_back({"fluence", 3, renderer.photonStage().downloadFluence()});
-            vtk->writeFrame(frame, fields.time(), fields.fields(), extra);
-        }
+        if (exporter.wantsFrame(frame)) exporter.write(frame, fields, renderer);
         progress.advance();
     }
     progress.finish();

@@ -17,8 +17,8 @@ namespace eikon::app {
 std::string frameReportJson(int frame, const sim::SceneFields& fields, const render::FrameResult& result);
 
 // Renders `frames` frames, advancing the simulation (if any) between them;
-// with `exportVtk`, each frame's fields also go to DIR/vtk/ for ParaView.
+// frames the scene's `export` section selects also go to DIR/vtk/.
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
-               ProgressBar& progress, bool exportVtk = false);
+               ProgressBar& progress);
 
 }  // namespace eikon::app

@@ -21,13 +21,17 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
     run->add_flag("--quiet", options.quiet, "No progress bar");
     run->add_flag("--force", options.force, "Clear the output folder if it holds an earlier run");
     run->add_flag("--vtk", options.vtk,
-                  "Also write DIR/vtk/fields_NNNNN.vti (index, extinction, scattering, fluence when stored) with a "
-                  ".pvd and .series for ParaView");
+                  "Export every frame's fields as DIR/vtk/fields_NNNNN.vti with a .pvd and .series for ParaView, "
+                  "with the default field set, whatever the scene's export.vtk says");
 }
 
 int runCommand(const RunOptions& options) {
     // Everything the user supplied is checked before anything is written.
-    const Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    if (options.vtk) {  // the default field set, whatever the scene says
+        scene.exports.vtk = VtkExportDesc{};
+        scene.exports.vtk.enabled = true;
+    }
     sim::SceneFields fields(scene);
     const std::filesystem::path outDir =
         options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
@@ -35,7 +39,7 @@ int runCommand(const RunOptions& options) {
     auto context = gl::createHeadlessContext();  // before the folder: a machine without GL leaves nothing behind
     io::OutputFolder output(outDir, options.force);
     ProgressBar progress(options.frames, options.quiet);
-    runFrames(scene, fields, options.frames, output, progress, options.vtk);
+    runFrames(scene, fields, options.frames, output, progress);
     return 0;
 }
 

@@ -5,6 +5,9 @@
 // the invariants stated beside each field.
 #pragma once
 
+#include "bridge/scene/ExportDesc.h"
+#include "bridge/scene/VolumeDesc.h"
+
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -194,6 +197,8 @@ struct Scene {
     RenderDesc render;
     TracerDesc tracer;
     std::optional<SimDesc> sim;  // present when the scene runs the built-in fluid solver
+    std::optional<VolumeDesc> volume;  // present when the scene imports an OpenVDB volume (not with sim)
+    ExportDesc exports;
 };
 
 }  // namespace eikon

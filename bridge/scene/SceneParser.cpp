@@ -1,6 +1,7 @@
 #include "bridge/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/scene/ExportParser.h"
 #include "bridge/scene/JsonReader.h"
 
 #include <glm/geometric.hpp>
@@ -532,7 +533,7 @@ nlohmann::json parseOverrideValue(const std::string& text) {
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const auto fields = JsonReader(root, sourceName)
                             .object({"description", "grid", "medium", "objects", "lights", "receivers", "camera",
-                                     "render", "tracer", "sim"});
+                                     "render", "tracer", "sim", "volume", "export"});
     Scene scene;
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
@@ -547,6 +548,11 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
         scene.render = readRender(*render, std::filesystem::path(sourceName).parent_path().string());
     if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
     if (auto sim = fields.optional("sim")) scene.sim = readSim(*sim);
+    if (auto volume = fields.optional("volume")) {
+        if (scene.sim) volume->fail("either a sim section or a volume, not both", "both");
+        scene.volume = readVolume(*volume, std::filesystem::path(sourceName).parent_path().string());
+    }
+    if (auto exports = fields.optional("export")) readExport(*exports, scene);  // last: it checks the fields exist
     return scene;
 }
 

@@ -173,6 +173,12 @@ std::vector<float> PhotonStage::downloadFluence() const {
     return values;
 }
 
+std::vector<float> PhotonStage::downloadFluenceDirection() const {
+    std::vector<float> values(direction_.bytes() / sizeof(float));
+    if (!values.empty()) direction_.download(values.data(), values.size() * sizeof(float));
+    return values;
+}
+
 std::vector<glm::vec4> PhotonStage::downloadPaths() const {
     std::vector<glm::vec4> vertices(paths_.bytes() / sizeof(glm::vec4));
     if (!vertices.empty()) paths_.download(vertices.data(), vertices.size() * sizeof(glm::vec4));

@@ -62,6 +62,7 @@ public:
     const gl::Buffer& fluence() const { return fluence_; }
     const gl::Buffer& fluenceDirection() const { return direction_; }
     std::vector<float> downloadFluence() const;
+    std::vector<float> downloadFluenceDirection() const;
     // Recorded vertices (xyz, w = 1 where written) of the first photons.
     std::vector<glm::vec4> downloadPaths() const;
 

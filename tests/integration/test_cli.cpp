@@ -99,6 +99,35 @@ TEST_F(Cli, VtkExportWritesATimeSeries) {
     EXPECT_TRUE(fs::exists(out / "vtk" / "fields.vti.series"));
 }
 
+// The scene's export section picks frames, fields and compression; --vtk
+// overrides it with every default.
+TEST_F(Cli, SceneExportSectionSelectsFramesAndFields) {
+    std::string text = validScene();
+    text.insert(text.rfind('}'), R"(, "export": {"vtk": {"every": 2, "fields": ["delta_index", "fluence"], "compression": "none"}})");
+    const std::string scene = writeScene("export.json", text);
+    const fs::path out = dir_ / "out";
+    Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 3 --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00000.vti"));
+    EXPECT_FALSE(fs::exists(out / "vtk" / "fields_00001.vti"));
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00002.vti"));
+    std::ifstream frame(out / "vtk" / "fields_00002.vti", std::ios::binary);
+    std::string head(1500, '\0');
+    frame.read(head.data(), static_cast<std::streamsize>(head.size()));
+    EXPECT_NE(head.find("Name=\"delta_index\""), std::string::npos) << head;
+    EXPECT_NE(head.find("Name=\"fluence\" NumberOfComponents=\"3\""), std::string::npos) << head;
+    EXPECT_EQ(head.find("Name=\"index\""), std::string::npos) << head;
+    EXPECT_EQ(head.find("compressor="), std::string::npos) << head;
+
+    outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet --force --vtk");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00001.vti"));
+    std::ifstream forced(out / "vtk" / "fields_00001.vti", std::ios::binary);
+    forced.read(head.data(), static_cast<std::streamsize>(head.size()));
+    EXPECT_NE(head.find("Name=\"index\""), std::string::npos) << head;
+    EXPECT_NE(head.find("vtkZLibDataCompressor"), std::string::npos) << head;
+}
+
 TEST_F(Cli, SecondFrameOfStaticSceneRunsOnlyUpload) {
     const std::string scene = writeScene("ok.json", validScene());
     const fs::path out = dir_ / "out";

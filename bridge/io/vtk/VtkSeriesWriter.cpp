@@ -69,8 +69,8 @@ bool syncFile(const fs::path& path) {
 
 }  // namespace
 
-VtkSeriesWriter::VtkSeriesWriter(const fs::path& outputFolder, std::string baseName, bool compress)
-    : directory_(outputFolder / "vtk"), baseName_(std::move(baseName)), compress_(compress) {
+VtkSeriesWriter::VtkSeriesWriter(const fs::path& outputFolder, std::string baseName, Compression compression)
+    : directory_(outputFolder / "vtk"), baseName_(std::move(baseName)), compression_(compression) {
     if (!isSafeBaseName(baseName_))
         throw InputError("VTK export base name", "letters, digits, '_', '-' or '.'", "\"" + baseName_ + "\"");
     std::error_code error;
@@ -90,14 +90,16 @@ fs::path VtkSeriesWriter::collectionPath() const { return directory_ / (baseName
 fs::path VtkSeriesWriter::seriesPath() const { return directory_ / (baseName_ + ".vti.series"); }
 
 void VtkSeriesWriter::writeFrame(int frame, double time, const FieldSet& fields, const std::vector<NamedArray>& extra) {
+    ExportFrame arrays{fields.grid, fieldArrays(fields)};
+    arrays.arrays.insert(arrays.arrays.end(), extra.begin(), extra.end());
+    writeFrame(frame, time, arrays);
+}
+
+void VtkSeriesWriter::writeFrame(int frame, double time, const ExportFrame& arrays) {
     EIKON_CHECK_MSG(frame >= 0, "frame " + std::to_string(frame));
     EIKON_CHECK_MSG(std::isfinite(time), "time of frame " + std::to_string(frame));
-    const GridSpec& grid = fields.grid;
+    const GridSpec& grid = arrays.grid;
     const std::size_t cells = grid.cellCount();
-    EIKON_CHECK_MSG(fields.deltaIndex.size() == cells, "deltaIndex size");
-    EIKON_CHECK_MSG(!fields.hasExtinction() || fields.extinction.size() == 3 * cells, "extinction size");
-    EIKON_CHECK_MSG(!fields.hasScattering() || fields.scattering.size() == 3 * cells, "scattering size");
-    EIKON_CHECK_MSG(!fields.hasAnisotropy() || fields.anisotropy.size() == cells, "anisotropy size");
 
     // Cell data, not point data: eikon's samples are cell-centred (GridSpec:
     // cell (i,j,k) is the box boundsMin + [i, i+1]·voxelSize, its value
@@ -114,25 +116,12 @@ void VtkSeriesWriter::writeFrame(int frame, double time, const FieldSet& fields,
     image->SetSpacing(voxel.x, voxel.y, voxel.z);
     EIKON_CHECK(static_cast<std::size_t>(image->GetNumberOfCells()) == cells);
 
-    // n = n_ref + δn for viewing; float32 spacing near 1.0003 is ~1.2e-7, too
-    // coarse for a mirage's Δn ≈ 1e-5 gradients (and for δn's own float32
-    // precision), so δn itself goes out too, exactly as the FieldSet holds it.
-    std::vector<float> index(cells);
-    for (std::size_t c = 0; c < cells; ++c)
-        index[c] = static_cast<float>(fields.referenceIndex + static_cast<double>(fields.deltaIndex[c]));
-    addCellArray(*image, "index", 1, index);
-    index = {};
-    addCellArray(*image, "delta_index", 1, fields.deltaIndex);
-    if (fields.hasExtinction()) addCellArray(*image, "extinction", 3, fields.extinction);
-    if (fields.hasScattering()) addCellArray(*image, "scattering", 3, fields.scattering);
-    if (fields.hasAnisotropy()) addCellArray(*image, "anisotropy", 1, fields.anisotropy);
-
-    std::set<std::string> names{"index", "delta_index", "extinction", "scattering", "anisotropy"};
-    for (const NamedArray& array : extra) {
+    std::set<std::string> names;
+    for (const NamedArray& array : arrays.arrays) {
         EIKON_CHECK_MSG(!array.name.empty() && names.insert(array.name).second,
-                        "extra VTK array name \"" + array.name + "\" empty or repeated");
+                        "VTK array name \"" + array.name + "\" empty or repeated");
         EIKON_CHECK_MSG(array.components >= 1 && array.values.size() == static_cast<std::size_t>(array.components) * cells,
-                        "extra VTK array \"" + array.name + "\" size");
+                        "VTK array \"" + array.name + "\" size");
         addCellArray(*image, array.name, array.components, array.values);
     }
 
@@ -147,13 +136,20 @@ void VtkSeriesWriter::writeFrame(int frame, double time, const FieldSet& fields,
     writer->SetInputData(image);
     writer->SetDataModeToAppended();
     writer->EncodeAppendedDataOff();  // raw binary, not base64
-    if (compress_) {
-        writer->SetCompressorTypeToZLib();
-        // Float fields barely compress past level 1 (level 5, VTK's default: 2.5%
-        // smaller at 128³, ~15% slower).
-        writer->SetCompressionLevel(1);
-    } else {
-        writer->SetCompressorTypeToNone();
+    switch (compression_) {
+        case Compression::Zlib:
+            writer->SetCompressorTypeToZLib();
+            // Float fields barely compress past level 1 (level 5, VTK's default:
+            // 2.5% smaller at 128³, ~15% slower).
+            writer->SetCompressionLevel(1);
+            break;
+        case Compression::Lz4:
+            writer->SetCompressorTypeToLZ4();
+            writer->SetCompressionLevel(1);  // VTK: acceleration 10 − level, so 1 is LZ4 at its fastest
+            break;
+        case Compression::None:
+            writer->SetCompressorTypeToNone();
+            break;
     }
     // VTK streams straight to a temporary beside the target; it is fsync'ed
     // and renamed over the target only when complete, as writeFileAtomically

@@ -1,0 +1,35 @@
+// Per-frame export of a run for analysis, as the scene's `export` section
+// asks: the arrays of a frame (optical fields, fluence and mean photon
+// direction, the simulation's or volume's own fields) are gathered once,
+// then each enabled writer takes its selection of fields and cells.
+#pragma once
+
+#include "bridge/io/ExportArrays.h"
+#include "bridge/io/vtk/VtkSeriesWriter.h"
+#include "bridge/scene/Scene.h"
+#include "render/graph/FrameRenderer.h"
+#include "sim/SceneFields.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace eikon::app {
+
+// The arrays a frame offers: fieldArrays, fluence and photon_direction when
+// the photon stage stores them, and the scene fields' exportArrays.
+io::ExportFrame gatherExportArrays(const sim::SceneFields& fields, const render::FrameRenderer& renderer);
+
+class FrameExporter {
+public:
+    FrameExporter(const ExportDesc& exports, const std::filesystem::path& outputFolder);
+
+    bool wantsFrame(int frame) const;
+    // Writes what frame `frame` exports; call only when wantsFrame(frame).
+    void write(int frame, const sim::SceneFields& fields, const render::FrameRenderer& renderer);
+
+private:
+    ExportDesc exports_;
+    std::optional<io::VtkSeriesWriter> vtk_;
+};
+
+}  // namespace eikon::app
