@@ -9,13 +9,17 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene), fields_(voxelizeSc
     if (scene.sim) {
         fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid, fields_.referenceIndex);
         refreshFromSimulation();
+    } else if (scene.volume) {
+        volume_ = std::make_unique<VolumeSequence>(*scene.volume, scene.medium, fields_.grid);
+        refreshFromSimulation();
     }
     validateFields(fields_, scene.sourcePath);
 }
 
 void SceneFields::advanceFrame() {
-    if (!fluid_) return;
-    fluid_->advanceFrame();
+    if (fluid_) fluid_->advanceFrame();
+    else if (volume_ && volume_->isSequence()) volume_->advanceFrame();
+    else return;
     refreshFromSimulation();
 }
 
@@ -24,15 +28,18 @@ std::vector<PhaseTiming> SceneFields::lastTimings() const {
 }
 
 std::vector<io::NamedArray> SceneFields::exportArrays() const {
+    if (volume_) return volume_->exportArrays();
     if (!fluid_) return {};
     return solverArrays(fluid_->state(), fields_.grid, scene_.sim->ambientTemperature);
 }
 
-// The solver writes the medium (bumping the versions of what changed), then
-// the objects are composited over it again.
+// The solver or the volume writes the medium (bumping the versions of what
+// changed), then the objects are composited over it again.
 void SceneFields::refreshFromSimulation() {
-    fluid_->writeFields(fields_);
+    if (fluid_) fluid_->writeFields(fields_);
+    else volume_->writeFields(fields_);
     paintObjects(scene_, fields_);
+    validateFields(fields_, volume_ ? volume_->currentFile() : scene_.sourcePath);
 }
 
 }  // namespace eikon::sim
