@@ -16,14 +16,19 @@ io::ExportFrame gatherExportArrays(const sim::SceneFields& fields, const render:
 FrameExporter::FrameExporter(const ExportDesc& exports, const std::filesystem::path& outputFolder)
     : exports_(exports) {
     if (exports_.vtk.enabled) vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
+    if (exports_.vdb.enabled) vdb_.emplace(outputFolder, "fields");
 }
 
-bool FrameExporter::wantsFrame(int frame) const { return exports_.vtk.exportsFrame(frame); }
+bool FrameExporter::wantsFrame(int frame) const {
+    return exports_.vtk.exportsFrame(frame) || exports_.vdb.exportsFrame(frame);
+}
 
 void FrameExporter::write(int frame, const sim::SceneFields& fields, const render::FrameRenderer& renderer) {
     const io::ExportFrame arrays = gatherExportArrays(fields, renderer);
     if (vtk_ && exports_.vtk.exportsFrame(frame))
         vtk_->writeFrame(frame, fields.time(), io::selectCells(arrays, exports_.vtk, "export.vtk"));
+    if (vdb_ && exports_.vdb.exportsFrame(frame))
+        vdb_->writeFrame(frame, fields.time(), io::selectCells(arrays, exports_.vdb, "export.vdb"));
 }
 
 }  // namespace eikon::app

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bridge/io/ExportArrays.h"
+#include "bridge/io/vdb/VdbFrameWriter.h"
 #include "bridge/io/vtk/VtkSeriesWriter.h"
 #include "bridge/scene/Scene.h"
 #include "render/graph/FrameRenderer.h"
@@ -30,6 +31,7 @@ public:
 private:
     ExportDesc exports_;
     std::optional<io::VtkSeriesWriter> vtk_;
+    std::optional<io::VdbFrameWriter> vdb_;
 };
 
 }  // namespace eikon::app

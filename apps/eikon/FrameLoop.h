@@ -17,7 +17,7 @@ namespace eikon::app {
 std::string frameReportJson(int frame, const sim::SceneFields& fields, const render::FrameResult& result);
 
 // Renders `frames` frames, advancing the simulation (if any) between them;
-// frames the scene's `export` section selects also go to DIR/vtk/.
+// frames the scene's `export` section selects also go to DIR/vtk/ and DIR/vdb/.
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
                ProgressBar& progress);
 

@@ -1,6 +1,9 @@
 // The eikon executable as users meet it: exit codes, messages that name the
 // file and JSON path of bad input, nothing written on refusal, and the
 // output layout of a run.
+#include "bridge/io/vdb/VdbVolumeFile.h"
+#include "tests/unit/VdbTestFiles.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -126,6 +129,35 @@ TEST_F(Cli, SceneExportSectionSelectsFramesAndFields) {
     forced.read(head.data(), static_cast<std::streamsize>(head.size()));
     EXPECT_NE(head.find("Name=\"index\""), std::string::npos) << head;
     EXPECT_NE(head.find("vtkZLibDataCompressor"), std::string::npos) << head;
+}
+
+// A Blender-style OpenVDB sequence imported for three frames and exported
+// again: the exported temperature of frame f is the mapping of file f + 1.
+TEST_F(Cli, VolumeSequenceRunsAndExportsOpenVdb) {
+    for (int f = 1; f <= 3; ++f) {
+        char name[64];
+        std::snprintf(name, sizeof name, "fluid_data_%04d.vdb", f);
+        eikon::test::writeVdbFile(dir_ / name,
+                                  {{"density", 1, [](double, double, double, int) { return 0.5f; }},
+                                   {"temperature", 1, [f](double, double, double, int) { return float(f); }}},
+                                  0.05, -0.6, 0.6);
+    }
+    std::string text = validScene();
+    text.insert(text.rfind('}'), R"(, "volume": {"path": "fluid_data_####.vdb", "temperature_scale": 10,
+        "density_extinction": 0.5}, "export": {"vdb": {"fields": ["temperature", "extinction", "index"]}})");
+    const std::string scene = writeScene("volume.json", text);
+    const fs::path out = dir_ / "out";
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 3 --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const eikon::GridSpec cell{{1, 1, 1}, {0.1, 0.1, 0.1}, {0.1625, 0.1625, 0.1625}};  // one cell of the 16³ grid, away from the sphere
+    for (int frame = 0; frame < 3; ++frame) {
+        char name[64];
+        std::snprintf(name, sizeof name, "fields_%05d.vdb", frame);
+        const eikon::io::VdbVolumeFile file(out / "vdb" / name);
+        EXPECT_EQ(file.gridNames(), (std::vector<std::string>{"index", "extinction", "temperature"}));
+        EXPECT_FLOAT_EQ(file.sample("temperature", 1, cell, {0, 0, 0})[0], 293.15f + 10.0f * float(frame + 1));
+        EXPECT_FLOAT_EQ(file.sample("extinction", 3, cell, {0, 0, 0})[1], 0.25f);
+    }
 }
 
 TEST_F(Cli, SecondFrameOfStaticSceneRunsOnlyUpload) {

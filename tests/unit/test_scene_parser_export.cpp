@@ -95,7 +95,8 @@ TEST(SceneParserExport, SimFieldsCanBeExportedWithASim) {
 class SceneParserVolume : public ::testing::Test {
 protected:
     void SetUp() override {
-        folder_ = std::filesystem::path(::testing::TempDir()) / "eikon_volume_parse";
+        folder_ = std::filesystem::path(::testing::TempDir()) /  // one per test: ctest runs tests in parallel
+                  ("eikon_volume_parse_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         std::filesystem::create_directories(folder_);
         std::ofstream(folder_ / "fluid_data_0007.vdb") << "not read by the parser";
         std::ofstream(folder_ / "single.vdb") << "not read by the parser";
@@ -114,6 +115,7 @@ protected:
         ADD_FAILURE() << "accepted " << volume.dump();
         return "";
     }
+    void TearDown() override { std::filesystem::remove_all(folder_); }
     std::filesystem::path folder_;
 };
 

@@ -93,7 +93,7 @@ TEST(VdbVolumeFile, ChecksAcceptEveryCompressionOpenVdbWrites) {
         auto grids = linearGrids(compression & 1);
         grids.push_back({"flame", 1, [](double x, double, double, int) { return x > 0 ? 1.0f : 0.0f; }});
         grids.push_back({"staggered vel", 3, [](double, double y, double, int c) { return float(c * y); }, false, true});
-        test::writeVdbFile(path, grids, 0.02, -0.3, 0.25, compression);
+        test::writeVdbFile(path, grids, 0.05, -0.3, 0.3, compression);
         const std::string bytes = readAll(path);
         const VdbFileLayout layout = checkVdbHeader(bytes, path.string());
         ASSERT_EQ(layout.grids.size(), 4u);

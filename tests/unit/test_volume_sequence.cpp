@@ -36,7 +36,8 @@ void writeBlenderFrame(const fs::path& folder, int f) {
 class VolumeSequenceTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        folder_ = fs::path(::testing::TempDir()) / "eikon_blender_sequence";
+        folder_ = fs::path(::testing::TempDir()) /  // one per test: ctest runs tests in parallel
+                  ("eikon_blender_sequence_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(folder_);
         fs::create_directories(folder_);
         for (int f = 1; f <= 3; ++f) writeBlenderFrame(folder_, f);
@@ -49,6 +50,7 @@ protected:
         root["volume"] = nlohmann::json::parse(volumeJson);
         return parseScene(root, (folder_ / "scene.json").string());
     }
+    void TearDown() override { fs::remove_all(folder_); }
     fs::path folder_;
 };
 

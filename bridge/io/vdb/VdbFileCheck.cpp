@@ -141,13 +141,15 @@ void checkDelayedLoadMetadata(Cursor& cursor, std::uint32_t numBytes, std::size_
     cursor.skip(end - cursor.pos(), "the rest of the delayed-load metadata");
 }
 
-// MetaMap::readMeta.
-void checkMetaMap(Cursor& cursor, std::size_t fileBytes) {
+// MetaMap::readMeta. Returns the value of the bool "is_saved_as_half_float",
+// which is what Grid::readTopology reads half floats by (false if absent).
+bool checkMetaMap(Cursor& cursor, std::size_t fileBytes) {
+    bool savedAsHalf = false;
     const auto count = cursor.read<std::uint32_t>("the metadata count");
     if (count > cursor.remaining() / 12)  // each entry holds at least three 4-byte lengths
         cursor.fail("a metadata count that fits the file", std::to_string(count));
     for (std::uint32_t i = 0; i < count; ++i) {
-        cursor.string("a metadata name");
+        const std::string name = cursor.string("a metadata name");
         const std::string type = cursor.string("a metadata type name");
         const auto numBytes = cursor.read<std::uint32_t>("a metadata size");
         if (numBytes > cursor.remaining())
@@ -156,6 +158,11 @@ void checkMetaMap(Cursor& cursor, std::size_t fileBytes) {
         if (const auto it = fixed.find(type); it != fixed.end()) {
             if (numBytes != it->second)
                 cursor.fail(std::to_string(it->second) + " bytes of " + type + " metadata", std::to_string(numBytes));
+            if (type == "bool") {  // a byte other than 0 or 1 is not a valid bool
+                const auto value = cursor.peek(1, "a bool")[0];
+                if (value != 0 && value != 1) cursor.fail("a bool of 0 or 1", std::to_string(int(value)));
+                if (name == "is_saved_as_half_float") savedAsHalf = value == 1;
+            }
             cursor.skip(numBytes, "a metadata value");
         } else if (type == "__delayedload") {
             checkDelayedLoadMetadata(cursor, numBytes, fileBytes);
@@ -165,6 +172,7 @@ void checkMetaMap(Cursor& cursor, std::size_t fileBytes) {
             cursor.fail("metadata of a plain type", "metadata of type \"" + type + "\"");
         }
     }
+    return savedAsHalf;
 }
 
 // Transform::read: the map's type name, then its fixed-size members (Maps.h).
@@ -358,6 +366,8 @@ VdbFileLayout checkVdbHeader(std::string_view bytes, const std::string& fileName
         grid.blockPos = static_cast<std::uint64_t>(blockPos);
         grid.endPos = static_cast<std::uint64_t>(endPos);
         next = grid.endPos;
+        for (const VdbGridEntry& other : layout.grids)
+            if (other.name == grid.name) entry.fail("grids with distinct names", "\"" + grid.name + "\" twice");
         layout.grids.push_back(std::move(grid));
     }
     return layout;
@@ -376,7 +386,9 @@ void checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::s
     const auto compression = cursor.read<std::uint32_t>("the grid's compression flags");
     if (compression > (kCompressZip | kCompressActiveMask | kCompressBlosc))
         cursor.fail("compression flags of at most 7", std::to_string(compression));
-    checkMetaMap(cursor, bytes.size());
+    if (checkMetaMap(cursor, bytes.size()) != grid.halfFloat)
+        cursor.fail(where + " whose metadata is_saved_as_half_float agrees with its type name",
+                    grid.halfFloat ? "half floats by name only" : "half floats by metadata only");
     checkTransform(cursor);
     const auto bufferCount = cursor.read<std::int32_t>("the tree's buffer count");
     if (bufferCount != 1) cursor.fail("a tree with one buffer", std::to_string(bufferCount));

@@ -21,8 +21,6 @@
 #include <system_error>
 #include <utility>
 
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace eikon::io {
 namespace {
@@ -57,14 +55,6 @@ void addCellArray(vtkImageData& image, const std::string& name, int components, 
     array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / static_cast<std::size_t>(components)));
     std::copy(values.begin(), values.end(), array->GetPointer(0));
     image.GetCellData()->AddArray(array);
-}
-
-// Flushes a file VTK has written and closed to the disk before it is renamed.
-bool syncFile(const fs::path& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return false;
-    const bool synced = ::fsync(fd) == 0;
-    return ::close(fd) == 0 && synced;
 }
 
 }  // namespace
@@ -156,17 +146,9 @@ void VtkSeriesWriter::writeFrame(int frame, double time, const ExportFrame& arra
     // does. (Encoding into a string for writeFileAtomically instead took
     // ~745 ms instead of ~100 ms for an uncompressed 128³ frame.)
     const fs::path path = framePath(frame);
-    const fs::path temporary = path.string() + ".tmp" + std::to_string(::getpid());
+    const fs::path temporary = temporaryPathFor(path);
     writer->SetFileName(temporary.c_str());
-    const bool written = writer->Write() == 1 && writer->GetErrorCode() == 0 && syncFile(temporary);
-    std::error_code error;
-    if (written) fs::rename(temporary, path, error);
-    if (!written || error) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw std::runtime_error(path.string() + (written ? ": cannot rename into place (" + error.message() + ")"
-                                                         : ": VTK could not write the frame"));
-    }
+    commitTemporary(temporary, path, writer->Write() == 1 && writer->GetErrorCode() == 0);
 
     frameTimes_[frame] = time;
     writeIndexFiles();
