@@ -1,5 +1,9 @@
 #include "apps/eikon/FrameExport.h"
 
+#include "bridge/io/vtk/ExportGeometry.h"
+
+#include <algorithm>
+
 namespace eikon::app {
 
 io::ExportFrame gatherExportArrays(const sim::SceneFields& fields, const render::FrameRenderer& renderer) {
@@ -13,9 +17,41 @@ io::ExportFrame gatherExportArrays(const sim::SceneFields& fields, const render:
     return frame;
 }
 
-FrameExporter::FrameExporter(const ExportDesc& exports, const std::filesystem::path& outputFolder)
-    : exports_(exports) {
-    if (exports_.vtk.enabled) vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
+namespace {
+
+// The largest prime <= n (n >= 2), or 1: photon i of an emitter takes
+// stratum (i mod s, i / s) of an s × s grid, and a prime stride longer than
+// s shares no factor with it, so the recorded photons spread over all strata.
+long long largestPrimeAtMost(long long n) {
+    for (long long k = n; k >= 2; --k) {
+        bool prime = true;
+        for (long long d = 2; d * d <= k && prime; ++d) prime = k % d != 0;
+        if (prime) return k;
+    }
+    return 1;
+}
+
+}  // namespace
+
+render::RendererOptions rendererOptionsFor(const Scene& scene) {
+    render::RendererOptions options;
+    const VtkExportDesc& vtk = scene.exports.vtk;
+    if (vtk.enabled && vtk.photonPaths > 0) {
+        options.photons.recordPathVertices = vtk.pathVertices;
+        options.photons.recordedPhotons = vtk.photonPaths;
+        options.photons.recordStride = static_cast<int>(largestPrimeAtMost(scene.render.photons / vtk.photonPaths));
+    }
+    return options;
+}
+
+FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder)
+    : exports_(scene.exports) {
+    if (exports_.vtk.enabled) {
+        vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
+        if (exports_.vtk.receivers && !scene.receivers.empty())
+            receivers_.emplace(outputFolder, "receivers", exports_.vtk.compression);
+        if (exports_.vtk.photonPaths > 0) paths_.emplace(outputFolder, "photon_paths", exports_.vtk.compression);
+    }
     if (exports_.vdb.enabled) vdb_.emplace(outputFolder, "fields");
 }
 
@@ -25,8 +61,24 @@ bool FrameExporter::wantsFrame(int frame) const {
 
 void FrameExporter::write(int frame, const sim::SceneFields& fields, const render::FrameRenderer& renderer) {
     const io::ExportFrame arrays = gatherExportArrays(fields, renderer);
-    if (vtk_ && exports_.vtk.exportsFrame(frame))
+    if (vtk_ && exports_.vtk.exportsFrame(frame)) {
         vtk_->writeFrame(frame, fields.time(), io::selectCells(arrays, exports_.vtk, "export.vtk"));
+        if (receivers_) {
+            std::vector<layout::GpuReceiver> geometry;
+            std::vector<std::vector<float>> irradiance;
+            for (unsigned r = 0; r < renderer.receivers().count(); ++r) {
+                geometry.push_back(renderer.receivers().receiver(r));
+                irradiance.push_back(renderer.receivers().download(r));
+            }
+            receivers_->writeFrame(frame, fields.time(), io::receiverQuads(geometry, irradiance));
+        }
+        if (paths_) {
+            const render::PhotonStage& photons = renderer.photonStage();
+            paths_->writeFrame(frame, fields.time(),
+                               io::photonPolylines(photons.downloadPaths(), photons.downloadPathPower(),
+                                                   exports_.vtk.pathVertices));
+        }
+    }
     if (vdb_ && exports_.vdb.exportsFrame(frame))
         vdb_->writeFrame(frame, fields.time(), io::selectCells(arrays, exports_.vdb, "export.vdb"));
 }

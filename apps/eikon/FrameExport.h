@@ -6,6 +6,7 @@
 
 #include "bridge/io/ExportArrays.h"
 #include "bridge/io/vdb/VdbFrameWriter.h"
+#include "bridge/io/vtk/PolyDataWriter.h"
 #include "bridge/io/vtk/VtkSeriesWriter.h"
 #include "bridge/scene/Scene.h"
 #include "render/graph/FrameRenderer.h"
@@ -20,9 +21,15 @@ namespace eikon::app {
 // the photon stage stores them, and the scene fields' exportArrays.
 io::ExportFrame gatherExportArrays(const sim::SceneFields& fields, const render::FrameRenderer& renderer);
 
+// Renderer options the export needs: photon-path recording (every k-th
+// photon, k the largest prime <= photons / photon_paths) when
+// export.vtk.photon_paths > 0;
+// otherwise none, so the photon program is the default one.
+render::RendererOptions rendererOptionsFor(const Scene& scene);
+
 class FrameExporter {
 public:
-    FrameExporter(const ExportDesc& exports, const std::filesystem::path& outputFolder);
+    FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder);
 
     bool wantsFrame(int frame) const;
     // Writes what frame `frame` exports; call only when wantsFrame(frame).
@@ -32,6 +39,8 @@ private:
     ExportDesc exports_;
     std::optional<io::VtkSeriesWriter> vtk_;
     std::optional<io::VdbFrameWriter> vdb_;
+    std::optional<io::PolyDataSeries> receivers_;
+    std::optional<io::PolyDataSeries> paths_;
 };
 
 }  // namespace eikon::app

@@ -58,8 +58,8 @@ std::string frameReportJson(int frame, const sim::SceneFields& fields, const ren
 
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
                ProgressBar& progress) {
-    render::FrameRenderer renderer(scene, fields.fields());
-    FrameExporter exporter(scene.exports, output.root());
+    render::FrameRenderer renderer(scene, fields.fields(), rendererOptionsFor(scene));
+    FrameExporter exporter(scene, output.root());
     for (int frame = 0; frame < frames; ++frame) {
         if (frame > 0) fields.advanceFrame();
         const render::FrameResult result = renderer.render(fields.fields());

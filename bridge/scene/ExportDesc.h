@@ -45,6 +45,9 @@ struct ExportSelection {
 
 struct VtkExportDesc : ExportSelection {
     enum class Compression { Zlib, Lz4, None } compression = Compression::Zlib;
+    bool receivers = true;   // DIR/vtk/receivers_NNNNN.vtp when the scene has receivers
+    int photonPaths = 0;     // photons whose paths go to DIR/vtk/photon_paths_NNNNN.vtp (0: none)
+    int pathVertices = 256;  // most vertices recorded per path, >= 2
 };
 
 using VdbExportDesc = ExportSelection;

@@ -12,6 +12,9 @@ namespace {
 constexpr long long kMaxEvery = 1000000;
 constexpr long long kMaxDownsample = 64;
 constexpr long long kMaxFrameNumber = 99999999;
+constexpr long long kMaxPaths = 100000;
+constexpr long long kMaxPathVertices = 4096;
+constexpr long long kMaxRecordedVertices = 1LL << 22;
 
 const NumberRange kPositive = NumberRange::above(0.0);
 const NumberRange kNonNegative = NumberRange::atLeast(0.0);
@@ -60,8 +63,18 @@ void readSelection(const JsonObjectReader& fields, ExportSelection& selection) {
 
 VtkExportDesc readVtk(const JsonReader& node) {
     VtkExportDesc vtk;
-    const auto fields = node.object({"enabled", "fields", "every", "region", "downsample", "compression"});
+    const auto fields = node.object({"enabled", "fields", "every", "region", "downsample", "compression", "receivers",
+                                     "photon_paths", "path_vertices"});
     readSelection(fields, vtk);
+    if (auto receivers = fields.optional("receivers")) vtk.receivers = receivers->boolean();
+    if (auto paths = fields.optional("photon_paths")) vtk.photonPaths = static_cast<int>(paths->integer(0, kMaxPaths));
+    if (auto vertices = fields.optional("path_vertices"))
+        vtk.pathVertices = static_cast<int>(vertices->integer(2, kMaxPathVertices));
+    const long long recorded = static_cast<long long>(vtk.photonPaths) * vtk.pathVertices;
+    if (recorded > kMaxRecordedVertices)
+        fields.member("photon_paths").fail("photon_paths × path_vertices <= " + std::to_string(kMaxRecordedVertices) +
+                                               " (32 bytes of GPU memory each)",
+                                           std::to_string(recorded));
     if (auto compression = fields.optional("compression")) {
         const std::string name = compression->oneOf({"zlib", "lz4", "none"});
         vtk.compression = name == "zlib" ? VtkExportDesc::Compression::Zlib

@@ -121,6 +121,9 @@ TEST_F(Cli, SceneExportSectionSelectsFramesAndFields) {
     EXPECT_NE(head.find("Name=\"fluence\" NumberOfComponents=\"3\""), std::string::npos) << head;
     EXPECT_EQ(head.find("Name=\"index\""), std::string::npos) << head;
     EXPECT_EQ(head.find("compressor="), std::string::npos) << head;
+    EXPECT_TRUE(fs::exists(out / "vtk" / "receivers_00002.vtp"));  // the scene's receiver, as quads
+    EXPECT_TRUE(fs::exists(out / "vtk" / "receivers.vtp.series"));
+    EXPECT_FALSE(fs::exists(out / "vtk" / "photon_paths_00000.vtp"));  // not asked for
 
     outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet --force --vtk");
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;

@@ -86,6 +86,24 @@ TEST(SceneParserExport, BadValuesAreReportedAtTheirPath) {
                   "export.vdb.fields[1]", "needs a `sim` section or a `volume` grid");
 }
 
+TEST(SceneParserExport, ReceiversAndPhotonPaths) {
+    const Scene defaults = parseScene(sceneWithExport(json::parse(R"({"vtk": {}})")), "test.json");
+    EXPECT_TRUE(defaults.exports.vtk.receivers);
+    EXPECT_EQ(defaults.exports.vtk.photonPaths, 0);
+    const Scene scene = parseScene(
+        sceneWithExport(json::parse(R"({"vtk": {"receivers": false, "photon_paths": 500, "path_vertices": 64}})")),
+        "test.json");
+    EXPECT_FALSE(scene.exports.vtk.receivers);
+    EXPECT_EQ(scene.exports.vtk.photonPaths, 500);
+    EXPECT_EQ(scene.exports.vtk.pathVertices, 64);
+    expectErrorAt(sceneWithExport(json::parse(R"({"vtk": {"path_vertices": 1}})")), "export.vtk.path_vertices",
+                  "integer in [2, 4096]");
+    expectErrorAt(sceneWithExport(json::parse(R"({"vtk": {"photon_paths": 100000, "path_vertices": 4096}})")),
+                  "export.vtk.photon_paths", "photon_paths × path_vertices <= 4194304");
+    expectErrorAt(sceneWithExport(json::parse(R"({"vdb": {"photon_paths": 5}})")), "export.vdb.photon_paths",
+                  "unknown key");
+}
+
 TEST(SceneParserExport, SimFieldsCanBeExportedWithASim) {
     json root = sceneWithExport(json::parse(R"({"vtk": {"fields": ["velocity", "temperature", "dye"]}})"));
     root["sim"] = json::object();

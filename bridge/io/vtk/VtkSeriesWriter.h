@@ -10,10 +10,10 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/io/ExportArrays.h"
+#include "bridge/io/vtk/VtkSeriesIndex.h"
 #include "bridge/scene/ExportDesc.h"
 
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -39,17 +39,14 @@ public:
     void writeFrame(int frame, double time, const FieldSet& fields, const std::vector<NamedArray>& extra = {});
 
     const std::filesystem::path& directory() const { return directory_; }
-    std::filesystem::path framePath(int frame) const;
-    std::filesystem::path collectionPath() const;  // NAME.pvd
-    std::filesystem::path seriesPath() const;      // NAME.vti.series
+    std::filesystem::path framePath(int frame) const { return index_.framePath(frame); }
+    std::filesystem::path collectionPath() const { return index_.collectionPath(); }  // NAME.pvd
+    std::filesystem::path seriesPath() const { return index_.seriesPath(); }          // NAME.vti.series
 
 private:
-    void writeIndexFiles() const;
-
     std::filesystem::path directory_;
-    std::string baseName_;
     Compression compression_;
-    std::map<int, double> frameTimes_;  // frame -> time, ordered by frame
+    VtkSeriesIndex index_;
 };
 
 }  // namespace eikon::io
