@@ -2,6 +2,7 @@
 // power it carries there. In a uniform absorbing medium the power at each
 // vertex must be the emitted power times exp(−κ·L), L the path length
 // marched inside the grid so far (Beer–Lambert, per channel).
+#include "tests/integration/GlTestContext.h"
 #include "tests/integration/TraceHelpers.h"
 
 #include <gtest/gtest.h>
@@ -61,6 +62,8 @@ TEST(PhotonPaths, PowerAlongRecordedPathsFollowsBeerLambert) {
     EXPECT_EQ(paths, recorded);
     EXPECT_GT(checkedVertices, recorded * 8);  // some photons cross only a corner of the grid
     // float32 power, one exp per step: relative 1e-4.
+    test::reportFigure("path_power_beer_lambert_max_relative_error", worst);
+    test::reportFigure("path_power_vertices_checked", checkedVertices);
     EXPECT_LT(worst, 1e-4);
     // The photons recorded are spread over the light's disk, not one stratum:
     // their entry points span a good part of the 1 m grid.
