@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace eikon::io {
@@ -123,6 +124,25 @@ TEST(VdbVolumeFile, MissingGridListsTheGridsTheFileHas) {
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("grid \"vel\": expected a float grid, found a grid of type "
                                                  "\"Tree_vec3s_5_4_3\""),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
+TEST(VdbVolumeFile, NonFiniteSamplesAreInputErrors) {
+    const fs::path path = tempPath("nan.vdb");
+    test::writeVdbFile(path, {{"density", 1, [](double x, double, double, int) {
+                                   return x > 0.15 ? std::numeric_limits<float>::quiet_NaN() : 1.0f;
+                               }}},
+                       0.1, -0.5, 0.5);
+    const VdbVolumeFile file(path);
+    EXPECT_NO_THROW(file.sample("density", 1, GridSpec{{1, 1, 1}, glm::dvec3(-0.2), glm::dvec3(0.0)}, glm::dvec3(0.0)));
+    try {
+        file.sample("density", 1, renderGrid(), glm::dvec3(0.0));  // cell x = 3 (centre 0.15) blends the voxels at x = 0.1 and 0.2
+        FAIL() << "no error";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("grid \"density\": expected finite values, found a non-finite value "
+                                                 "sampled at render cell (3, 0, 0)"),
                   std::string::npos)
             << error.what();
     }

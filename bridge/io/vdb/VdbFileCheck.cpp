@@ -325,11 +325,11 @@ VdbFileLayout checkVdbHeader(std::string_view bytes, const std::string& fileName
     VdbFileLayout layout;
     const auto magic = cursor.read<std::int64_t>("the OpenVDB magic number");
     if (magic != kVdbMagic) cursor.fail("an OpenVDB file (magic number 0x56444220)", "another magic number");
-    layout.formatVersion = cursor.read<std::uint32_t>("the file format version");
-    if (layout.formatVersion < kMinVersion || layout.formatVersion > kMaxVersion)
+    const auto version = cursor.read<std::uint32_t>("the file format version");
+    if (version < kMinVersion || version > kMaxVersion)
         cursor.fail("file format version " + std::to_string(kMinVersion) + " to " + std::to_string(kMaxVersion) +
                         " (OpenVDB 3.0 or later)",
-                    "version " + std::to_string(layout.formatVersion));
+                    "version " + std::to_string(version));
     cursor.read<std::uint32_t>("the library major version");
     cursor.read<std::uint32_t>("the library minor version");
     const auto offsets = cursor.read<std::uint8_t>("the grid-offsets flag");

@@ -34,7 +34,6 @@ struct VdbGridEntry {
 };
 
 struct VdbFileLayout {
-    std::uint32_t formatVersion = 0;
     std::vector<VdbGridEntry> grids;
 };
 

@@ -9,11 +9,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <map>
 #include <mutex>
-#include <sstream>
 
 namespace eikon::io {
 
@@ -116,10 +115,10 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     const openvdb::Vec3d voxel = transform.voxelSize();
     if (!transform.isLinear() || !std::isfinite(voxel[0] * voxel[1] * voxel[2]) ||
         !(std::abs(transform.baseMap()->determinant()) > 0.0) || !std::isfinite(transform.baseMap()->determinant()))
-        throw InputError(where, "an affine, invertible transform", "voxel size " + std::to_string(voxel[0]) + " …");
+        throw InputError(where, "an affine, invertible transform",
+                         transform.isLinear() ? "a singular or non-finite one" : "a non-linear (frustum) one");
 
     std::vector<float> values(static_cast<std::size_t>(components) * spec.cellCount());
-    bool finite = true;
     if (components == 1) {
         const auto grid = openvdb::gridConstPtrCast<openvdb::FloatGrid>(base);
         EIKON_CHECK(grid != nullptr);
@@ -136,17 +135,13 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
         else
             sampleGrid<openvdb::Vec3SGrid, openvdb::tools::BoxSampler>(*grid, spec, offset, store);
     }
-    for (std::size_t c = 0; c < values.size() && finite; ++c) finite = std::isfinite(values[c]);
-    if (!finite) {
-        for (std::size_t c = 0; c < values.size(); ++c) {
-            if (std::isfinite(values[c])) continue;
-            const std::size_t cell = c / static_cast<std::size_t>(components);
-            const int i = static_cast<int>(cell % static_cast<std::size_t>(spec.resolution.x));
-            const int j = static_cast<int>(cell / static_cast<std::size_t>(spec.resolution.x) % static_cast<std::size_t>(spec.resolution.y));
-            const int k = static_cast<int>(cell / (static_cast<std::size_t>(spec.resolution.x) * static_cast<std::size_t>(spec.resolution.y)));
-            throw InputError(where, "finite values", "a non-finite value sampled at render cell (" + std::to_string(i) +
-                                                          ", " + std::to_string(j) + ", " + std::to_string(k) + ")");
-        }
+    const auto bad = std::find_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
+    if (bad != values.end()) {
+        const auto cell = static_cast<std::size_t>(bad - values.begin()) / static_cast<std::size_t>(components);
+        const auto nx = static_cast<std::size_t>(spec.resolution.x), ny = static_cast<std::size_t>(spec.resolution.y);
+        throw InputError(where, "finite values",
+                         "a non-finite value sampled at render cell (" + std::to_string(cell % nx) + ", " +
+                             std::to_string(cell / nx % ny) + ", " + std::to_string(cell / (nx * ny)) + ")");
     }
     return values;
 }
