@@ -32,8 +32,8 @@ struct PolyData {
     void addTriangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) { polygons.push_back({a, b, c}); }
 };
 
-// A triangle mesh with named per-vertex arrays (x fastest is not implied:
-// arrays are per vertex, in `vertices` order).
+// A triangle mesh (a deformed surface, say) with named per-vertex arrays,
+// each holding `components` values per vertex in `vertices` order.
 PolyData triangleMesh(const std::vector<glm::vec3>& vertices, const std::vector<std::array<std::uint32_t, 3>>& triangles,
                       std::vector<NamedArray> vertexArrays = {});
 
