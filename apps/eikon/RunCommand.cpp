@@ -3,6 +3,7 @@
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/ProgressBar.h"
 #include "bridge/io/OutputFolder.h"
+#include "bridge/scene/ExportParser.h"
 #include "bridge/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
 #include "sim/SceneFields.h"
@@ -32,6 +33,7 @@ int runCommand(const RunOptions& options) {
         scene.exports.vtk = VtkExportDesc{};
         scene.exports.vtk.enabled = true;
     }
+    if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
     sim::SceneFields fields(scene);
     const std::filesystem::path outDir =
         options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()

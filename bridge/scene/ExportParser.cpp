@@ -1,5 +1,6 @@
 #include "bridge/scene/ExportParser.h"
 
+#include "bridge/core/Error.h"
 #include "bridge/io/ExportArrays.h"
 
 #include <algorithm>
@@ -204,6 +205,16 @@ std::string volumeFramePath(const VolumeDesc& volume, int number) {
     std::snprintf(digits, sizeof digits, "%0*d", static_cast<int>(width), number);
     name.replace(first, width, digits);
     return (path.parent_path() / name).string();
+}
+
+void requireVolumeFrames(const VolumeDesc& volume, int frames) {
+    if (!volume.sequence) return;
+    for (int frame = 0; frame < frames; ++frame) {
+        const std::string path = volumeFramePath(volume, volume.frameStart + frame);
+        if (!std::filesystem::is_regular_file(path))
+            throw InputError(path, "the volume sequence's file for rendered frame " + std::to_string(frame),
+                             "no such file");
+    }
 }
 
 }  // namespace eikon

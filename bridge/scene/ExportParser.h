@@ -22,4 +22,8 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder);
 // The file of a volume for sequence number `number` ('#' run replaced, zero-padded).
 std::string volumeFramePath(const VolumeDesc& volume, int number);
 
+// InputError naming the first file of a sequence missing for rendered
+// frames [0, frames): checked before a run writes anything.
+void requireVolumeFrames(const VolumeDesc& volume, int frames);
+
 }  // namespace eikon

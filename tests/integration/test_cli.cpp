@@ -150,6 +150,14 @@ TEST_F(Cli, VolumeSequenceRunsAndExportsOpenVdb) {
         "density_extinction": 0.5}, "export": {"vdb": {"fields": ["temperature", "extinction", "index"]}})");
     const std::string scene = writeScene("volume.json", text);
     const fs::path out = dir_ / "out";
+    // Four frames need fluid_data_0004.vdb: refused before anything is written.
+    const Outcome refused = runEikon("run " + scene + " --out " + out.string() + " --frames 4 --quiet");
+    EXPECT_EQ(refused.exitCode, 2) << refused.output;
+    EXPECT_NE(refused.output.find("fluid_data_0004.vdb: expected the volume sequence's file for rendered frame 3, "
+                                  "found no such file"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(fs::exists(out));
     const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 3 --quiet");
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
     const eikon::GridSpec cell{{1, 1, 1}, {0.1, 0.1, 0.1}, {0.1625, 0.1625, 0.1625}};  // one cell of the 16³ grid, away from the sphere
