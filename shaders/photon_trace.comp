@@ -14,8 +14,8 @@
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].bounce)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
-//   EIKON_RECORD_PATHS     vertices recorded for each of EIKON_RECORDED_PHOTONS photons,
-//                          every EIKON_RECORD_STRIDE-th from the first
+//   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
+//                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
 layout(local_size_x = 64) in;
 
 #include "common/grid_sampling.glsl"
@@ -111,6 +111,7 @@ layout(std430, binding = 6) buffer PhotonStats {
 
 #if EIKON_RECORD_PATHS > 0
 layout(std430, binding = 9) writeonly buffer PhotonPaths { vec4 path_vertices[]; };  // xyz, w: 1 written
+layout(std430, binding = 16) writeonly buffer PhotonPathPower { vec4 path_power[]; };  // rgb: W at the vertex
 #endif
 
 uniform uint photon_offset;    // index of this batch's first photon
@@ -153,12 +154,15 @@ void add_power(int tally, vec3 power) {
         if (units[channel] != 0u) atomicAdd(group_power[3 * tally + channel], units[channel]);
 }
 
-void record_vertex(uint photon, uint vertex, vec3 x) {
+void record_vertex(uint photon, uint vertex, vec3 x, vec3 power) {
 #if EIKON_RECORD_PATHS > 0
-    uint recorded = photon / uint(EIKON_RECORD_STRIDE);
-    if (photon % uint(EIKON_RECORD_STRIDE) == 0u && recorded < uint(EIKON_RECORDED_PHOTONS) &&
-        vertex < uint(EIKON_RECORD_PATHS))
-        path_vertices[recorded * uint(EIKON_RECORD_PATHS) + vertex] = vec4(x, 1.0f);
+    uint slot = photon / uint(EIKON_RECORD_STRIDE);
+    if (photon % uint(EIKON_RECORD_STRIDE) == 0u && slot < uint(EIKON_RECORDED_PHOTONS) &&
+        vertex < uint(EIKON_RECORD_PATHS)) {
+        uint index = slot * uint(EIKON_RECORD_PATHS) + vertex;
+        path_vertices[index] = vec4(x, 1.0f);
+        path_power[index] = vec4(power, 0.0f);
+    }
 #endif
 }
 
@@ -357,7 +361,7 @@ void trace_photon(uint photon) {
     float max_invariant_error = 0.0f;
     float invariant_error_sum = 0.0f;
     int fate = TALLY_ESCAPED;
-    record_vertex(photon, vertex++, x);
+    record_vertex(photon, vertex++, x, power);
 
     for (;;) {
         if (!grid_contains(x)) {
@@ -366,13 +370,13 @@ void trace_photon(uint photon) {
 #if !EIKON_BARE_MARCH
             if (flight.hit.receiver >= 0) {
                 x = x + flight.distance * d;
-                record_vertex(photon, vertex++, x);
+                record_vertex(photon, vertex++, x, power);
                 if (land_on_receiver(flight.hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
                 break;
             }
 #endif
             if (!flight.enters_grid) {
-                record_vertex(photon, vertex++, x + flight.distance * d);
+                record_vertex(photon, vertex++, x + flight.distance * d, power);
                 fate = TALLY_ESCAPED;
                 break;
             }
@@ -382,7 +386,7 @@ void trace_photon(uint photon) {
             // Keep |v| = n at entry so the invariant starts exact.
             field = field_at(x);
             v = field.w * d;
-            record_vertex(photon, vertex++, x);
+            record_vertex(photon, vertex++, x, power);
             continue;
         }
         if (steps >= max_steps) {
@@ -410,12 +414,12 @@ void trace_photon(uint photon) {
         power = transmitted;
         if (hit.receiver >= 0) {
             x = mix(start, x, hit.fraction);
-            record_vertex(photon, vertex++, x);
+            record_vertex(photon, vertex++, x, power);
             if (land_on_receiver(hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
             break;
         }
 #endif
-        record_vertex(photon, vertex++, x);
+        record_vertex(photon, vertex++, x, power);
         if (max(power.r, max(power.g, power.b)) < cutoff) {
             fate = TALLY_CUT_OFF;
             break;

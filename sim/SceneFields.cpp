@@ -1,6 +1,7 @@
 #include "sim/SceneFields.h"
 
 #include "sim/deform/AnimatedMesh.h"
+#include "sim/fluid/SolverExport.h"
 #include "sim/voxelize/Compositor.h"
 #include "sim/voxelize/MeshCoverage.h"
 #include "sim/voxelize/VolumePainter.h"
@@ -42,6 +43,9 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
     if (scene.sim) {
         fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid, fields_.referenceIndex);
         refreshFromSimulation();
+    } else if (scene.volume) {
+        volume_ = std::make_unique<VolumeSequence>(*scene.volume, scene.medium, fields_.grid);
+        refreshFromSimulation();
     } else {
         paintObjects(scene_, fields_, coverageGrids());
         paintStrokes(scene_, fields_);
@@ -53,7 +57,7 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
 SceneFields::~SceneFields() = default;
 
 bool SceneFields::changesOverTime() const {
-    if (fluid_) return true;
+    if (fluid_ || (volume_ && volume_->isSequence())) return true;
     for (const auto& mesh : meshes_)
         if (mesh->shape.changesOverTime()) return true;
     return false;
@@ -85,11 +89,13 @@ void SceneFields::advanceFrame() {
     if (!changesOverTime()) return;
     if (fluid_) {
         fluid_->advanceFrame();
+    } else if (volume_ && volume_->isSequence()) {
+        volume_->advanceFrame();
     } else {
         time_ += scene_.frameTime;
     }
     updateMeshes();
-    if (fluid_) {
+    if (fluid_ || volume_) {
         refreshFromSimulation();
         return;
     }
@@ -118,12 +124,20 @@ std::vector<PhaseTiming> SceneFields::lastTimings() const {
     return timings;
 }
 
-// The solver writes the medium (bumping the versions of what changed), then
-// the objects are composited over it again.
+// The solver or the volume writes the medium (bumping the versions of what
+// changed), then the objects and strokes are composited over it again.
 void SceneFields::refreshFromSimulation() {
-    fluid_->writeFields(fields_);
+    if (fluid_) fluid_->writeFields(fields_);
+    else volume_->writeFields(fields_);
     paintObjects(scene_, fields_, coverageGrids());
     paintStrokes(scene_, fields_);
+    validateFields(fields_, volume_ ? volume_->currentFile() : scene_.sourcePath);
+}
+
+std::vector<io::NamedArray> SceneFields::exportArrays() const {
+    if (volume_) return volume_->exportArrays();
+    if (!fluid_) return {};
+    return solverArrays(fluid_->state(), fields_.grid, scene_.sim->ambientTemperature);
 }
 
 CoverageGrids SceneFields::coverageGrids() const {

@@ -1,16 +1,19 @@
 // The optical fields of a scene, frame after frame: the medium and objects
-// voxelized once, or — when the scene has a `sim` section — the fluid
-// solver's fields with the objects composited over them, advanced one frame
-// at a time. Mesh and water objects move with scene time; only the cells
-// their motion touched are recomputed. Fields are validated as they leave
-// here, toward the renderer.
+// voxelized once; or the fluid solver's fields (a `sim` section) or an
+// OpenVDB file or sequence (a `volume`, one file per frame) with the objects
+// composited over them. Mesh and water objects move with scene time; without
+// a solver or volume only the cells their motion touched are recomputed.
+// Paint strokes go over everything. Fields are validated as they leave here,
+// toward the renderer.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/FieldViews.h"
+#include "bridge/io/ExportArrays.h"
 #include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/FluidSimulation.h"
+#include "sim/volume/VolumeSequence.h"
 #include "sim/voxelize/Compositor.h"
 
 #include <memory>
@@ -26,7 +29,7 @@ public:
     const FieldSet& fields() const { return fields_; }
     bool changesOverTime() const;
     // Scene time of the current fields, s.
-    double time() const { return fluid_ ? fluid_->time() : time_; }
+    double time() const { return fluid_ ? fluid_->time() : volume_ ? volume_->time() : time_; }
     // Advances the simulation and the deforming objects by one frame and
     // refreshes fields() (only the cells moving objects touched, without a
     // fluid solver); a static scene stays as it is.
@@ -49,6 +52,10 @@ public:
     // "deform" and "voxelize" (iterations: cells recomputed) for scenes with
     // mesh or water objects.
     std::vector<PhaseTiming> lastTimings() const;
+    // The simulation's own fields on the render grid, for export (empty for a
+    // static scene): velocity, temperature, concentration, dye; a volume's
+    // density, temperature, flame, velocity.
+    std::vector<io::NamedArray> exportArrays() const;
     // This frame's mesh of every mesh or water object, in scene order.
     std::vector<const TriangleMesh*> deformedMeshes() const;
 
@@ -61,6 +68,7 @@ private:
     Scene scene_;
     FieldSet fields_;
     std::unique_ptr<FluidSimulation> fluid_;
+    std::unique_ptr<VolumeSequence> volume_;
     std::vector<std::unique_ptr<MeshObject>> meshes_;
     double time_ = 0.0;  // without a fluid solver
     double deformMs_ = 0.0;

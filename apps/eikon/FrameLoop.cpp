@@ -1,8 +1,8 @@
 #include "apps/eikon/FrameLoop.h"
 
+#include "apps/eikon/FrameExport.h"
 #include "bridge/grid/FieldViews.h"
 #include "bridge/io/ImageIo.h"
-#include "bridge/io/vtk/VtkSeriesWriter.h"
 
 #include <nlohmann/json.hpp>
 
@@ -51,31 +51,28 @@ double renderMilliseconds(const render::FrameResult& result) {
     return ms;
 }
 
-// Writes frame `frame`'s image, HDR, report line and (optionally) VTK fields.
+// Writes frame `frame`'s image, HDR and report line, and what the scene's
+// `export` section asks of it.
 class FrameOutputs {
 public:
-    FrameOutputs(io::OutputFolder& output, bool exportVtk) : output_(output) {
-        if (exportVtk) vtk_.emplace(output.root(), "fields");
-    }
+    FrameOutputs(const Scene& scene, io::OutputFolder& output) : output_(output), exporter_(scene, output.root()) {}
 
+    bool exportsFrame(int frame) const { return exporter_.wantsFrame(frame); }
+
+    // `exported` is read only when exportsFrame(frame).
     void write(int frame, const render::FrameResult& result, const std::string& reportLine,
-               const render::FrameRenderer& renderer, double time, const ConstFieldViews& fields) {
+               const render::FrameRenderer& renderer, const ExportInputs& exported) {
         io::writePng(output_.framePath(frame), result.image.width, result.image.height, result.image.rgba);
         if (!result.hdr.empty())
             io::writeHdr(output_.framePath(frame).replace_extension(".hdr"), result.image.width, result.image.height,
                          result.hdr);
         output_.appendReport(reportLine);
-        if (vtk_) {
-            std::vector<io::NamedArray> extra;
-            if (const render::PhotonStage* photons = renderer.photonStage(); photons && photons->storesFluence())
-                extra.push_back({"fluence", 3, photons->downloadFluence()});
-            vtk_->writeFrame(frame, time, copyToFieldSet(fields), extra);
-        }
+        if (exporter_.wantsFrame(frame)) exporter_.write(frame, exported, renderer);
     }
 
 private:
     io::OutputFolder& output_;
-    std::optional<io::VtkSeriesWriter> vtk_;
+    FrameExporter exporter_;
 };
 
 // Fields in host memory: a static scene (uploaded once), or one whose mesh
@@ -83,7 +80,7 @@ private:
 // cells they touched; the changed fields are uploaded).
 void runHostFrames(const Scene& scene, sim::SceneFields& fields, int frames, FrameOutputs& outputs,
                    ProgressBar& progress) {
-    render::FrameRenderer renderer(scene, fields.fields());
+    render::FrameRenderer renderer(scene, fields.fields(), rendererOptionsFor(scene));
     const bool animated = fields.changesOverTime();
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
@@ -97,16 +94,18 @@ void runHostFrames(const Scene& scene, sim::SceneFields& fields, int frames, Fra
         produced.phases = fields.lastTimings();
         const render::FrameResult result = renderer.render(fields.fields());
         const LoopTiming timing{millisecondsSince(start), renderMilliseconds(result), 0.0};
+        ExportInputs exported{produced.time, viewsOf(fields.fields()), {}};
+        if (outputs.exportsFrame(frame)) exported.simulation = fields.exportArrays();
         outputs.write(frame, result, frameReportJson(frame, produced, animated, result, timing, false), renderer,
-                      produced.time, viewsOf(fields.fields()));
+                      exported);
         progress.advance();
     }
 }
 
 void runLiveFrames(const Scene& scene, sim::SceneFields& fields, int frames, FrameOutputs& outputs,
                    ProgressBar& progress, bool pipelined) {
-    LiveFrames live(fields, pipelined);
-    render::FrameRenderer renderer(scene, live.ring());
+    LiveFrames live(fields, pipelined, scene.exports.vtk.enabled || scene.exports.vdb.enabled);
+    render::FrameRenderer renderer(scene, live.ring(), rendererOptionsFor(scene));
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
         const bool more = frame + 1 < frames;
@@ -120,7 +119,7 @@ void runLiveFrames(const Scene& scene, sim::SceneFields& fields, int frames, Fra
         timing.frameMs = millisecondsSince(start);
         const ProducedFrame& current = live.current();
         outputs.write(frame, result, frameReportJson(frame, current, true, result, timing, pipelined), renderer,
-                      current.time, live.ring().currentViews());
+                      {current.time, live.ring().currentViews(), current.exportArrays});
         if (more) live.publishNext();  // frame k's slot stays current until its outputs are written
         progress.advance();
     }
@@ -164,7 +163,7 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
 
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
                ProgressBar& progress, const LoopOptions& options) {
-    FrameOutputs outputs(output, options.exportVtk);
+    FrameOutputs outputs(scene, output);
     if (fields.simulatesFluid()) runLiveFrames(scene, fields, frames, outputs, progress, options.pipelined);
     else runHostFrames(scene, fields, frames, outputs, progress);
     progress.finish();

@@ -17,8 +17,7 @@
 namespace eikon::app {
 
 struct LoopOptions {
-    bool exportVtk = false;  // each frame's fields also go to DIR/vtk/ for ParaView
-    bool pipelined = true;   // simulate frame k+1 while frame k renders
+    bool pipelined = true;  // simulate frame k+1 while frame k renders
 };
 
 // Wall times of one turn of the loop: the whole frame, the renderer's
@@ -35,7 +34,8 @@ struct LoopTiming {
 std::string frameReportJson(int frame, const ProducedFrame& produced, bool simulated,
                             const render::FrameResult& result, const LoopTiming& timing, bool pipelined);
 
-// Renders `frames` frames, advancing the simulation (if any) between them.
+// Renders `frames` frames, advancing the simulation (if any) between them;
+// frames the scene's `export` section selects also go to DIR/vtk/ and DIR/vdb/.
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
                ProgressBar& progress, const LoopOptions& options = {});
 

@@ -12,11 +12,12 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined)
-    : fields_(fields), pipelined_(pipelined), ring_(fields.fields()) {
+LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays)
+    : fields_(fields), pipelined_(pipelined), captureExportArrays_(captureExportArrays), ring_(fields.fields()) {
     const auto start = std::chrono::steady_clock::now();
     fields_.writeFrameInto(ring_.acquire());
     current_.time = fields_.time();
+    if (captureExportArrays_) current_.exportArrays = fields_.exportArrays();
     current_.writeFieldsMs = millisecondsSince(start);
     ring_.publish(version_, version_, version_);
 }
@@ -36,6 +37,7 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     frame.writeFieldsMs = millisecondsSince(start);
     frame.time = fields_.time();
     frame.phases = fields_.lastTimings();
+    if (captureExportArrays_) frame.exportArrays = fields_.exportArrays();
     return frame;
 }
 

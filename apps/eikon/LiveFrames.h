@@ -21,12 +21,15 @@ struct ProducedFrame {
     double simulateMs = 0.0;
     double writeFieldsMs = 0.0;
     std::vector<sim::PhaseTiming> phases;
+    std::vector<io::NamedArray> exportArrays;  // the solver's own fields, when captured for export
 };
 
 class LiveFrames {
 public:
-    // Writes frame 0 into the ring and publishes it. GL thread.
-    LiveFrames(sim::SceneFields& fields, bool pipelined);
+    // Writes frame 0 into the ring and publishes it. GL thread. With
+    // `captureExportArrays`, each frame also keeps the solver's own fields
+    // (velocity, temperature, …) as they were when it was produced.
+    LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays = false);
     ~LiveFrames();
 
     render::FieldRing& ring() { return ring_; }
@@ -48,6 +51,7 @@ private:
 
     sim::SceneFields& fields_;
     bool pipelined_;
+    bool captureExportArrays_;
     render::FieldRing ring_;
     FieldViews next_;
     std::future<ProducedFrame> pending_;

@@ -3,6 +3,7 @@
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/ProgressBar.h"
 #include "bridge/io/OutputFolder.h"
+#include "bridge/scene/ExportParser.h"
 #include "bridge/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
 #include "sim/SceneFields.h"
@@ -25,13 +26,18 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
                     "cores the simulation uses, as llvmpipe does)")
         ->check(CLI::IsMember({"auto", "on", "off"}));
     run->add_flag("--vtk", options.vtk,
-                  "Also write DIR/vtk/fields_NNNNN.vti (index, extinction, scattering, fluence when stored) with a "
-                  ".pvd and .series for ParaView");
+                  "Export every frame's fields as DIR/vtk/fields_NNNNN.vti with a .pvd and .series for ParaView, "
+                  "with the default field set, whatever the scene's export.vtk says");
 }
 
 int runCommand(const RunOptions& options) {
     // Everything the user supplied is checked before anything is written.
-    const Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    if (options.vtk) {  // the default field set, whatever the scene says
+        scene.exports.vtk = VtkExportDesc{};
+        scene.exports.vtk.enabled = true;
+    }
+    if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
     sim::SceneFields fields(scene);
     const std::filesystem::path outDir =
         options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
@@ -41,7 +47,7 @@ int runCommand(const RunOptions& options) {
     ProgressBar progress(options.frames, options.quiet);
     const bool pipelined =
         options.pipelining == "on" || (options.pipelining == "auto" && !context->info().rendersOnCpu());
-    runFrames(scene, fields, options.frames, output, progress, {options.vtk, pipelined});
+    runFrames(scene, fields, options.frames, output, progress, {pipelined});
     return 0;
 }
 

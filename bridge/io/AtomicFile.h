@@ -11,4 +11,11 @@ namespace eikon::io {
 // then untouched and the temporary removed.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
+// For writers that stream a file themselves (VTK, OpenVDB): the temporary
+// name beside `path` to write to, and the step that flushes it to disk and
+// renames it over `path` once `written` (removing it otherwise or on
+// failure; std::runtime_error naming `path` then).
+std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
+void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written);
+
 }  // namespace eikon::io

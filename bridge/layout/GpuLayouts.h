@@ -31,6 +31,7 @@ enum Binding : unsigned {
     kRawFluence = 13,      // the photon pass's unsmoothed fluence, RGB per cell
     kRawFluenceDirection = 14,  // and its unsmoothed direction sums
     kViewExit = 15,        // buffer ViewExit { vec4 exit[]; } — per pixel: direction leaving the scene, w: how (tests)
+    kPhotonPathPower = 16, // buffer PhotonPathPower { vec4 power[]; } — RGB power at each recorded path vertex
 };
 
 // Texture units.

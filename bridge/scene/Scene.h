@@ -5,7 +5,9 @@
 // the invariants stated beside each field.
 #pragma once
 
+#include "bridge/scene/ExportDesc.h"
 #include "bridge/scene/MeshObjectDesc.h"
+#include "bridge/scene/VolumeDesc.h"
 
 #include <glm/vec3.hpp>
 
@@ -233,6 +235,8 @@ struct Scene {
     TracerDesc tracer;
     std::optional<SimDesc> sim;  // present when the scene runs the built-in fluid solver
     double frameTime = 1.0 / 30.0;  // s of scene time per frame for deformers, > 0; sim.frame_time when there is a sim
+    std::optional<VolumeDesc> volume;  // present when the scene imports an OpenVDB volume (not with sim)
+    ExportDesc exports;
 };
 
 }  // namespace eikon

@@ -1,6 +1,7 @@
 #include "bridge/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/scene/ExportParser.h"
 #include "bridge/scene/JsonReader.h"
 #include "bridge/scene/MeshObjectParser.h"
 #include "bridge/scene/PaintParser.h"
@@ -551,7 +552,7 @@ nlohmann::json parseOverrideValue(const std::string& text) {
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const auto fields = JsonReader(root, sourceName)
                             .object({"description", "grid", "medium", "objects", "paint", "lights", "receivers",
-                                     "camera", "render", "tracer", "sim", "frame_time"});
+                                     "camera", "render", "tracer", "sim", "frame_time", "volume", "export"});
     Scene scene;
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
@@ -576,6 +577,11 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
         scene.frameTime = frameTime->number(kPositive);
     }
     if (scene.sim) scene.frameTime = scene.sim->frameTime;
+    if (auto volume = fields.optional("volume")) {
+        if (scene.sim) volume->fail("either a sim section or a volume, not both", "both");
+        scene.volume = readVolume(*volume, sceneFolder);
+    }
+    if (auto exports = fields.optional("export")) readExport(*exports, scene);  // last: it checks the fields exist
     return scene;
 }
 

@@ -72,7 +72,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
-        {"EIKON_RECORD_STRIDE", std::to_string(std::max(options.recordStride, 1))}};
+        {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))}};
     program_ = gl::compileComputeProgram("photon_trace.comp", defines);
     setEmitters(scene);
     if (storeFluence_ > 0) {
@@ -84,8 +84,10 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         fluenceSmoothProgram_ = gl::compileComputeProgram("fluence_smooth.comp");
     }
     stats_ = gl::Buffer(sizeof(layout::GpuPhotonStats));
-    paths_ = gl::Buffer(static_cast<std::size_t>(options.recordPathVertices) *
-                        static_cast<std::size_t>(options.recordedPhotons) * sizeof(glm::vec4));
+    const std::size_t recordedVertices =
+        static_cast<std::size_t>(options.recordPathVertices) * static_cast<std::size_t>(options.recordedPhotons);
+    paths_ = gl::Buffer(recordedVertices * sizeof(glm::vec4));
+    pathPower_ = gl::Buffer(recordedVertices * sizeof(glm::vec4));
 }
 
 void PhotonStage::setEmitters(const Scene& scene) {
@@ -112,6 +114,8 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     stats_.bindStorage(layout::kPhotonStats);
     paths_.clearToZero();
     paths_.bindStorage(layout::kPhotonPaths);
+    pathPower_.clearToZero();
+    pathPower_.bindStorage(layout::kPhotonPathPower);
     if (storeFluence_ > 0) {
         rawFluence_.clearToZero();
         rawDirection_.clearToZero();
@@ -177,6 +181,18 @@ std::vector<float> PhotonStage::downloadFluence() const {
     std::vector<float> values(fluence_.bytes() / sizeof(float));
     if (!values.empty()) fluence_.download(values.data(), values.size() * sizeof(float));
     return values;
+}
+
+std::vector<float> PhotonStage::downloadFluenceDirection() const {
+    std::vector<float> values(direction_.bytes() / sizeof(float));
+    if (!values.empty()) direction_.download(values.data(), values.size() * sizeof(float));
+    return values;
+}
+
+std::vector<glm::vec4> PhotonStage::downloadPathPower() const {
+    std::vector<glm::vec4> power(pathPower_.bytes() / sizeof(glm::vec4));
+    if (!power.empty()) pathPower_.download(power.data(), power.size() * sizeof(glm::vec4));
+    return power;
 }
 
 std::vector<glm::vec4> PhotonStage::downloadPaths() const {

@@ -27,9 +27,9 @@ struct PhotonSettings {
 
 // Options that change the photon program itself (compile-time #defines).
 struct PhotonProgramOptions {
-    int recordPathVertices = 0;  // per recorded photon; 0 records nothing
+    int recordPathVertices = 0;  // per recorded photon; 0 records nothing (compiled out)
     int recordedPhotons = 64;
-    int recordStride = 1;        // record photons 0, stride, 2·stride, … (spread over a stratified emitter)
+    int recordStride = 1;        // record photons 0, k, 2k, … (a sample spread over all emitters and strata)
     bool bareMarch = false;      // benchmark limit: no attenuation, deposits or receivers
 };
 
@@ -66,8 +66,11 @@ public:
     const gl::Buffer& fluence() const { return fluence_; }
     const gl::Buffer& fluenceDirection() const { return direction_; }
     std::vector<float> downloadFluence() const;
-    // Recorded vertices (xyz, w = 1 where written) of the recorded photons.
+    std::vector<float> downloadFluenceDirection() const;
+    // Recorded vertices (xyz, w = 1 where written) of the recorded photons,
+    // recordPathVertices per photon, and the RGB power (W) at each of them.
     std::vector<glm::vec4> downloadPaths() const;
+    std::vector<glm::vec4> downloadPathPower() const;
 
 private:
     ReceiverMaps& receivers_;
@@ -81,6 +84,7 @@ private:
     gl::Buffer rawFluence_, rawDirection_, fluence_, direction_;
     gl::Buffer stats_;
     gl::Buffer paths_;
+    gl::Buffer pathPower_;
 };
 
 // Default trapped-ray cap: four crossings of the grid along all three axes

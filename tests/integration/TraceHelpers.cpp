@@ -47,6 +47,7 @@ TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::Phot
     if (!scene.receivers.empty()) result.map = renderer.receivers().download(0);
     result.fluence = renderer.photonStage()->downloadFluence();
     result.paths = renderer.photonStage()->downloadPaths();
+    result.pathPower = renderer.photonStage()->downloadPathPower();
     EXPECT_LT(result.stats.balanceError(), 1e-3);
     for (float value : result.map) EXPECT_TRUE(std::isfinite(value)) << "receiver map";
     for (float value : result.fluence) EXPECT_TRUE(std::isfinite(value)) << "fluence";

@@ -21,6 +21,7 @@ struct TraceResult {
     std::vector<float> map;      // receiver 0, RGB per texel
     std::vector<float> fluence;  // RGB per cell, when stored
     std::vector<glm::vec4> paths;
+    std::vector<glm::vec4> pathPower;  // RGB W at each recorded vertex
 };
 
 inline const TracerDesc::Integrator kIntegrators[] = {TracerDesc::Integrator::Euler, TracerDesc::Integrator::Leapfrog,

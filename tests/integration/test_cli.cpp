@@ -1,6 +1,9 @@
 // The eikon executable as users meet it: exit codes, messages that name the
 // file and JSON path of bad input, nothing written on refusal, and the
 // output layout of a run.
+#include "bridge/io/vdb/VdbVolumeFile.h"
+#include "tests/unit/VdbTestFiles.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -101,6 +104,75 @@ TEST_F(Cli, VtkExportWritesATimeSeries) {
     text << collection.rdbuf();
     EXPECT_NE(text.str().find("fields_00001.vti"), std::string::npos) << text.str();
     EXPECT_TRUE(fs::exists(out / "vtk" / "fields.vti.series"));
+}
+
+// The scene's export section picks frames, fields and compression; --vtk
+// overrides it with every default.
+TEST_F(Cli, SceneExportSectionSelectsFramesAndFields) {
+    std::string text = validScene();
+    text.insert(text.rfind('}'), R"(, "export": {"vtk": {"every": 2, "fields": ["delta_index", "fluence"], "compression": "none"}})");
+    const std::string scene = writeScene("export.json", text);
+    const fs::path out = dir_ / "out";
+    Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 3 --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00000.vti"));
+    EXPECT_FALSE(fs::exists(out / "vtk" / "fields_00001.vti"));
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00002.vti"));
+    std::ifstream frame(out / "vtk" / "fields_00002.vti", std::ios::binary);
+    std::string head(1500, '\0');
+    frame.read(head.data(), static_cast<std::streamsize>(head.size()));
+    EXPECT_NE(head.find("Name=\"delta_index\""), std::string::npos) << head;
+    EXPECT_NE(head.find("Name=\"fluence\" NumberOfComponents=\"3\""), std::string::npos) << head;
+    EXPECT_EQ(head.find("Name=\"index\""), std::string::npos) << head;
+    EXPECT_EQ(head.find("compressor="), std::string::npos) << head;
+    EXPECT_TRUE(fs::exists(out / "vtk" / "receivers_00002.vtp"));  // the scene's receiver, as quads
+    EXPECT_TRUE(fs::exists(out / "vtk" / "receivers.vtp.series"));
+    EXPECT_FALSE(fs::exists(out / "vtk" / "photon_paths_00000.vtp"));  // not asked for
+
+    outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet --force --vtk");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_TRUE(fs::exists(out / "vtk" / "fields_00001.vti"));
+    std::ifstream forced(out / "vtk" / "fields_00001.vti", std::ios::binary);
+    forced.read(head.data(), static_cast<std::streamsize>(head.size()));
+    EXPECT_NE(head.find("Name=\"index\""), std::string::npos) << head;
+    EXPECT_NE(head.find("vtkZLibDataCompressor"), std::string::npos) << head;
+}
+
+// A Blender-style OpenVDB sequence imported for three frames and exported
+// again: the exported temperature of frame f is the mapping of file f + 1.
+TEST_F(Cli, VolumeSequenceRunsAndExportsOpenVdb) {
+    for (int f = 1; f <= 3; ++f) {
+        char name[64];
+        std::snprintf(name, sizeof name, "fluid_data_%04d.vdb", f);
+        eikon::test::writeVdbFile(dir_ / name,
+                                  {{"density", 1, [](double, double, double, int) { return 0.5f; }},
+                                   {"temperature", 1, [f](double, double, double, int) { return float(f); }}},
+                                  0.05, -0.6, 0.6);
+    }
+    std::string text = validScene();
+    text.insert(text.rfind('}'), R"(, "volume": {"path": "fluid_data_####.vdb", "temperature_scale": 10,
+        "density_extinction": 0.5}, "export": {"vdb": {"fields": ["temperature", "extinction", "index"]}})");
+    const std::string scene = writeScene("volume.json", text);
+    const fs::path out = dir_ / "out";
+    // Four frames need fluid_data_0004.vdb: refused before anything is written.
+    const Outcome refused = runEikon("run " + scene + " --out " + out.string() + " --frames 4 --quiet");
+    EXPECT_EQ(refused.exitCode, 2) << refused.output;
+    EXPECT_NE(refused.output.find("fluid_data_0004.vdb: expected the volume sequence's file for rendered frame 3, "
+                                  "found no such file"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(fs::exists(out));
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 3 --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const eikon::GridSpec cell{{1, 1, 1}, {0.1, 0.1, 0.1}, {0.1625, 0.1625, 0.1625}};  // one cell of the 16³ grid, away from the sphere
+    for (int frame = 0; frame < 3; ++frame) {
+        char name[64];
+        std::snprintf(name, sizeof name, "fields_%05d.vdb", frame);
+        const eikon::io::VdbVolumeFile file(out / "vdb" / name);
+        EXPECT_EQ(file.gridNames(), (std::vector<std::string>{"index", "extinction", "temperature"}));
+        EXPECT_FLOAT_EQ(file.sample("temperature", 1, cell, {0, 0, 0})[0], 293.15f + 10.0f * float(frame + 1));
+        EXPECT_FLOAT_EQ(file.sample("extinction", 3, cell, {0, 0, 0})[1], 0.25f);
+    }
 }
 
 TEST_F(Cli, SecondFrameOfStaticSceneRunsNoStage) {

@@ -139,8 +139,8 @@ void expectIndexFiles(const VtkSeriesWriter& writer) {
               "}\n");
 }
 
-void writeAndCheckTwoFrames(const fs::path& root, bool compress) {
-    VtkSeriesWriter writer(root, "field", compress);
+void writeAndCheckTwoFrames(const fs::path& root, VtkSeriesWriter::Compression compression) {
+    VtkSeriesWriter writer(root, "field", compression);
     EXPECT_EQ(writer.directory(), root / "vtk");
     EXPECT_TRUE(fs::is_directory(root / "vtk"));
 
@@ -177,12 +177,20 @@ void writeAndCheckTwoFrames(const fs::path& root, bool compress) {
 
     const std::string head = readAll(writer.framePath(1)).substr(0, 400);
     EXPECT_NE(head.find("type=\"ImageData\""), std::string::npos);
-    EXPECT_EQ(head.find("vtkZLibDataCompressor") != std::string::npos, compress) << head;
+    const char* compressor = compression == VtkSeriesWriter::Compression::Zlib  ? "vtkZLibDataCompressor"
+                             : compression == VtkSeriesWriter::Compression::Lz4 ? "vtkLZ4DataCompressor"
+                                                                                 : nullptr;
+    if (compressor) EXPECT_NE(head.find(compressor), std::string::npos) << head;
+    else EXPECT_EQ(head.find("compressor="), std::string::npos) << head;
 }
 
-TEST_F(VtkExportTest, CompressedFramesRoundTripWithTimeSeriesIndex) { writeAndCheckTwoFrames(root_, true); }
+TEST_F(VtkExportTest, ZlibFramesRoundTripWithTimeSeriesIndex) {
+    writeAndCheckTwoFrames(root_, VtkSeriesWriter::Compression::Zlib);
+}
 
-TEST_F(VtkExportTest, UncompressedFramesRoundTrip) { writeAndCheckTwoFrames(root_, false); }
+TEST_F(VtkExportTest, Lz4FramesRoundTrip) { writeAndCheckTwoFrames(root_, VtkSeriesWriter::Compression::Lz4); }
+
+TEST_F(VtkExportTest, UncompressedFramesRoundTrip) { writeAndCheckTwoFrames(root_, VtkSeriesWriter::Compression::None); }
 
 TEST_F(VtkExportTest, RewritingAFrameReplacesItsEntry) {
     VtkSeriesWriter writer(root_, "field");

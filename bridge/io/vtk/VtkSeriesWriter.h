@@ -9,48 +9,44 @@
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
+#include "bridge/io/ExportArrays.h"
+#include "bridge/io/vtk/VtkSeriesIndex.h"
+#include "bridge/scene/ExportDesc.h"
 
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
 namespace eikon::io {
 
-// An additional cell array a caller exports next to the fields, e.g. fluence
-// (3 components). `values` holds `components` floats per cell, x fastest.
-struct NamedArray {
-    std::string name;
-    int components = 1;
-    std::vector<float> values;
-};
-
 class VtkSeriesWriter {
 public:
     // Creates DIR/vtk/. `baseName` may hold only letters, digits, '_', '-'
     // and '.' (it lands unescaped in XML and JSON); InputError otherwise.
-    // `compress` selects zlib compression of the appended binary data.
-    VtkSeriesWriter(const std::filesystem::path& outputFolder, std::string baseName, bool compress = true);
+    // `compression` selects the compressor of the appended binary data.
+    using Compression = VtkExportDesc::Compression;
+    VtkSeriesWriter(const std::filesystem::path& outputFolder, std::string baseName,
+                    Compression compression = Compression::Zlib);
 
-    // Writes DIR/vtk/NAME_NNNNN.vti, then rewrites NAME.pvd and
-    // NAME.vti.series. Writing a frame number again replaces that entry.
-    // Throws std::runtime_error naming the path when a file cannot be
-    // written; InternalError (EIKON_CHECK) for a negative frame, a time that
-    // is not finite, or arrays whose size does not match the grid.
+    // Writes DIR/vtk/NAME_NNNNN.vti with every array of `frame` as cell data,
+    // then rewrites NAME.pvd and NAME.vti.series. Writing a frame number
+    // again replaces that entry. Throws std::runtime_error naming the path
+    // when a file cannot be written; InternalError (EIKON_CHECK) for a
+    // negative frame, a time that is not finite, or arrays whose size does
+    // not match the grid or whose names repeat.
+    void writeFrame(int frame, double time, const ExportFrame& arrays);
+    // The field set's arrays (fieldArrays) and `extra` ones, e.g. fluence.
     void writeFrame(int frame, double time, const FieldSet& fields, const std::vector<NamedArray>& extra = {});
 
     const std::filesystem::path& directory() const { return directory_; }
-    std::filesystem::path framePath(int frame) const;
-    std::filesystem::path collectionPath() const;  // NAME.pvd
-    std::filesystem::path seriesPath() const;      // NAME.vti.series
+    std::filesystem::path framePath(int frame) const { return index_.framePath(frame); }
+    std::filesystem::path collectionPath() const { return index_.collectionPath(); }  // NAME.pvd
+    std::filesystem::path seriesPath() const { return index_.seriesPath(); }          // NAME.vti.series
 
 private:
-    void writeIndexFiles() const;
-
     std::filesystem::path directory_;
-    std::string baseName_;
-    bool compress_;
-    std::map<int, double> frameTimes_;  // frame -> time, ordered by frame
+    Compression compression_;
+    VtkSeriesIndex index_;
 };
 
 }  // namespace eikon::io

@@ -1,0 +1,85 @@
+#include "apps/eikon/FrameExport.h"
+
+#include "bridge/io/vtk/ExportGeometry.h"
+
+#include <algorithm>
+
+namespace eikon::app {
+
+io::ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer) {
+    io::ExportFrame frame{inputs.fields.grid, io::fieldArrays(inputs.fields)};
+    if (const render::PhotonStage* photons = renderer.photonStage(); photons && photons->storesFluence()) {
+        frame.arrays.push_back({"fluence", 3, photons->downloadFluence()});
+        frame.arrays.push_back({"photon_direction", 3, photons->downloadFluenceDirection()});
+    }
+    for (const io::NamedArray& array : inputs.simulation) frame.arrays.push_back(array);
+    return frame;
+}
+
+namespace {
+
+// The largest prime <= n (n >= 2), or 1: photon i of an emitter takes
+// stratum (i mod s, i / s) of an s × s grid, and a prime stride longer than
+// s shares no factor with it, so the recorded photons spread over all strata.
+long long largestPrimeAtMost(long long n) {
+    for (long long k = n; k >= 2; --k) {
+        bool prime = true;
+        for (long long d = 2; d * d <= k && prime; ++d) prime = k % d != 0;
+        if (prime) return k;
+    }
+    return 1;
+}
+
+}  // namespace
+
+render::RendererOptions rendererOptionsFor(const Scene& scene) {
+    render::RendererOptions options;
+    const VtkExportDesc& vtk = scene.exports.vtk;
+    if (vtk.enabled && vtk.photonPaths > 0) {
+        options.photons.recordPathVertices = vtk.pathVertices;
+        options.photons.recordedPhotons = vtk.photonPaths;
+        options.photons.recordStride = static_cast<int>(largestPrimeAtMost(scene.render.photons / vtk.photonPaths));
+    }
+    return options;
+}
+
+FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder)
+    : exports_(scene.exports) {
+    if (exports_.vtk.enabled) {
+        vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
+        if (exports_.vtk.receivers && !scene.receivers.empty())
+            receivers_.emplace(outputFolder, "receivers", exports_.vtk.compression);
+        if (exports_.vtk.photonPaths > 0) paths_.emplace(outputFolder, "photon_paths", exports_.vtk.compression);
+    }
+    if (exports_.vdb.enabled) vdb_.emplace(outputFolder, "fields");
+}
+
+bool FrameExporter::wantsFrame(int frame) const {
+    return exports_.vtk.exportsFrame(frame) || exports_.vdb.exportsFrame(frame);
+}
+
+void FrameExporter::write(int frame, const ExportInputs& inputs, const render::FrameRenderer& renderer) {
+    const double time = inputs.time;
+    const io::ExportFrame arrays = gatherExportArrays(inputs, renderer);
+    if (vtk_ && exports_.vtk.exportsFrame(frame)) {
+        vtk_->writeFrame(frame, time, io::selectCells(arrays, exports_.vtk, "export.vtk"));
+        if (receivers_) {
+            std::vector<layout::GpuReceiver> geometry;
+            std::vector<std::vector<float>> irradiance;
+            for (unsigned r = 0; r < renderer.receivers().count(); ++r) {
+                geometry.push_back(renderer.receivers().receiver(r));
+                irradiance.push_back(renderer.receivers().download(r));
+            }
+            receivers_->writeFrame(frame, time, io::receiverQuads(geometry, irradiance));
+        }
+        if (const render::PhotonStage* photons = renderer.photonStage(); paths_ && photons) {
+            paths_->writeFrame(frame, time,
+                               io::photonPolylines(photons->downloadPaths(), photons->downloadPathPower(),
+                                                   exports_.vtk.pathVertices));
+        }
+    }
+    if (vdb_ && exports_.vdb.exportsFrame(frame))
+        vdb_->writeFrame(frame, time, io::selectCells(arrays, exports_.vdb, "export.vdb"));
+}
+
+}  // namespace eikon::app

@@ -1,0 +1,56 @@
+// Per-frame export of a run for analysis, as the scene's `export` section
+// asks: the arrays of a frame (optical fields, fluence and mean photon
+// direction, the simulation's or volume's own fields) are gathered once,
+// then each enabled writer takes its selection of fields and cells.
+#pragma once
+
+#include "bridge/grid/FieldViews.h"
+#include "bridge/io/ExportArrays.h"
+#include "bridge/io/vdb/VdbFrameWriter.h"
+#include "bridge/io/vtk/PolyDataWriter.h"
+#include "bridge/io/vtk/VtkSeriesWriter.h"
+#include "bridge/scene/Scene.h"
+#include "render/graph/FrameRenderer.h"
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+namespace eikon::app {
+
+// What a frame exports besides the renderer's own: its time, its optical
+// fields (host memory or the GPU ring's current slot) and the simulation's
+// or volume's own fields (SceneFields::exportArrays, taken with the frame).
+struct ExportInputs {
+    double time = 0.0;
+    ConstFieldViews fields;
+    std::vector<io::NamedArray> simulation;
+};
+
+// The arrays a frame offers: fieldArrays, fluence and photon_direction when
+// the photon stage stores them, and the simulation's.
+io::ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer);
+
+// Renderer options the export needs: photon-path recording (every k-th
+// photon, k the largest prime <= photons / photon_paths) when
+// export.vtk.photon_paths > 0;
+// otherwise none, so the photon program is the default one.
+render::RendererOptions rendererOptionsFor(const Scene& scene);
+
+class FrameExporter {
+public:
+    FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder);
+
+    bool wantsFrame(int frame) const;
+    // Writes what frame `frame` exports; call only when wantsFrame(frame).
+    void write(int frame, const ExportInputs& inputs, const render::FrameRenderer& renderer);
+
+private:
+    ExportDesc exports_;
+    std::optional<io::VtkSeriesWriter> vtk_;
+    std::optional<io::VdbFrameWriter> vdb_;
+    std::optional<io::PolyDataSeries> receivers_;
+    std::optional<io::PolyDataSeries> paths_;
+};
+
+}  // namespace eikon::app

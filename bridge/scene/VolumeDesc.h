@@ -1,0 +1,46 @@
+// An OpenVDB volume imported into the scene (docs/scene-format.md, `volume`):
+// one .vdb file, or a numbered sequence stepped one file per frame, whose
+// grids are sampled onto the render grid and mapped to optics (sim/optics):
+// density → κ, σs; temperature (and flame) → index by Gladstone–Dale.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <string>
+
+namespace eikon {
+
+using VolumeRgb = glm::dvec3;
+
+struct VolumeDesc {
+    // A file, or a sequence pattern whose single run of '#' stands for the
+    // zero-padded frame number (Blender: fluid_data_####.vdb). Resolved
+    // against the scene file's folder.
+    std::string path;
+    bool sequence = false;   // path holds a '#' run
+    int frameStart = 1;      // sequence number of rendered frame 0, >= 0
+    double frameTime = 1.0 / 24.0;  // s of the volume's time per rendered frame, > 0
+
+    // Grid names in the file; empty: not read. Names may hold spaces.
+    std::string densityGrid = "density";
+    std::string temperatureGrid = "temperature";
+    std::string flameGrid;      // Blender: "flame"
+    std::string velocityGrid;   // Blender: "velocity", Houdini: "vel"
+
+    glm::dvec3 offset{0.0};     // m, added to the file's world positions
+
+    // Optics: κ = densityExtinction·ρ, σs = densityScattering·ρ per channel;
+    // T = ambientTemperature + temperatureScale·t + flameTemperature·f, and
+    // δn += n_air(T) − n_air(T_ambient) (Gladstone–Dale, sim/optics/AirOptics.h).
+    VolumeRgb densityExtinction{0.0};  // 1/m per unit density, >= 0
+    VolumeRgb densityScattering{0.0};  // <= densityExtinction per channel
+    double anisotropy = 0.0;           // HG g of the scattering, in (−1, 1)
+    double ambientTemperature = 293.15;  // K, > 0
+    double temperatureScale = 1.0;       // K per unit of the temperature grid, >= 0
+    double flameTemperature = 0.0;       // K per unit of the flame grid, >= 0
+    double refractivity = 2.93e-4;       // n0 − 1 of air at T0, p0, > 0
+    double referenceTemperature = 273.15;  // T0, K, > 0
+    double pressure = 101325.0;            // Pa, > 0 (p0 = 101325 Pa)
+};
+
+}  // namespace eikon

@@ -1,0 +1,33 @@
+#include "sim/fluid/SolverExport.h"
+
+#include <tbb/parallel_for.h>
+
+namespace eikon::sim {
+
+std::vector<io::NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid,
+                                         double ambientTemperature) {
+    const std::size_t cells = renderGrid.cellCount();
+    io::NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f)};
+    io::NamedArray temperature{"temperature", 1, std::vector<float>(cells, static_cast<float>(ambientTemperature))};
+    io::NamedArray concentration{"concentration", 1, std::vector<float>(cells, 0.0f)};
+    io::NamedArray dye{"dye", 1, std::vector<float>(cells, 0.0f)};
+    const MacGrid& flow = state.flow;
+    const glm::ivec3 r = renderGrid.resolution;
+    tbb::parallel_for(0, r.z, [&](int k) {
+        for (int j = 0; j < r.y; ++j)
+            for (int i = 0; i < r.x; ++i) {
+                const glm::dvec3 x = renderGrid.cellCentre(i, j, k);
+                if (!flow.grid.contains(x)) continue;
+                const std::size_t cell = renderGrid.linearIndex(i, j, k);
+                const glm::dvec3 u = flow.velocityAt(x);
+                for (int a = 0; a < 3; ++a) velocity.values[3 * cell + a] = static_cast<float>(u[a]);
+                temperature.values[cell] = static_cast<float>(sampleTrilinear(state.temperature, flow.lattice(state.temperature, x)));
+                concentration.values[cell] =
+                    static_cast<float>(sampleTrilinear(state.concentration, flow.lattice(state.concentration, x)));
+                dye.values[cell] = static_cast<float>(sampleTrilinear(state.dye, flow.lattice(state.dye, x)));
+            }
+    });
+    return {std::move(velocity), std::move(temperature), std::move(concentration), std::move(dye)};
+}
+
+}  // namespace eikon::sim

@@ -1,0 +1,37 @@
+// Optics of an imported volume (scene `volume`, VolumeDesc): its density,
+// temperature and flame, sampled on the render grid, to δn, κ, σs and g.
+//   κ = κ_medium + density_extinction · ρ,  σs = σs_medium + density_scattering · ρ
+//   (Beer–Lambert coefficients linear in density; ρ < 0 from a solver's
+//   undershoot is taken as 0), g the σs-weighted mean of the medium's and the volume's;
+//   T = ambient_temperature + temperature_scale · t + flame_temperature · f,
+//   δn = (n_medium − n_ref) + [n_air(T) − n_air(T_ambient)]
+//   with n_air by Gladstone–Dale (AirOptics.h): the volume perturbs the
+//   medium by the index change its temperature causes, so cold, empty
+//   regions keep the medium's index.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/scene/Scene.h"
+
+#include <vector>
+
+namespace eikon::sim {
+
+// Grids of one volume frame on the render grid (one value per cell); a grid
+// the scene does not read is empty.
+struct VolumeSamples {
+    std::vector<float> density;
+    std::vector<float> temperature;
+    std::vector<float> flame;
+};
+
+// Temperature in K of a cell from the samples (ambient where absent).
+double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples, std::size_t cell);
+
+// Fills fields.deltaIndex, .extinction, .scattering, .anisotropy (left empty
+// where zero everywhere) on fields.grid, bumping the versions of what
+// changed. InputError naming `source` and the cell where T <= 0.
+void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
+                       const std::string& source, FieldSet& fields);
+
+}  // namespace eikon::sim

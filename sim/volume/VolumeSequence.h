@@ -1,0 +1,52 @@
+// An imported OpenVDB volume (scene `volume`) as a source of fields: one
+// file, or a numbered sequence of which rendered frame f shows file number
+// frame_start + f. Each frame's grids are sampled onto the render grid
+// (bridge/io/vdb, sparse until sampled) and mapped to δn, κ, σs, g by
+// sim/optics/VolumeOptics.h.
+#pragma once
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/io/ExportArrays.h"
+#include "bridge/scene/Scene.h"
+#include "sim/optics/VolumeOptics.h"
+
+#include <string>
+#include <vector>
+
+namespace eikon::sim {
+
+class VolumeSequence {
+public:
+    // Loads the file for rendered frame 0. InputError (file, grid, what was
+    // expected and found) for a missing file or grid or a bad file.
+    VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid);
+
+    bool isSequence() const { return desc_.sequence; }
+    int frame() const { return frame_; }
+    double time() const { return frame_ * desc_.frameTime; }
+    const std::string& currentFile() const { return file_; }
+
+    // Loads the next file of the sequence (a single file stays loaded).
+    void advanceFrame();
+
+    // Writes δn, κ, σs, g of the current file into `fields` (on its grid),
+    // bumping the versions of what changed.
+    void writeFields(FieldSet& fields) const;
+
+    // density, temperature (K), flame, velocity on the render grid, for
+    // those grids the scene reads.
+    std::vector<io::NamedArray> exportArrays() const;
+
+private:
+    void load(int frame);
+
+    VolumeDesc desc_;
+    Material medium_;
+    GridSpec grid_;
+    int frame_ = 0;
+    std::string file_;
+    VolumeSamples samples_;
+    std::vector<float> velocity_;
+};
+
+}  // namespace eikon::sim
