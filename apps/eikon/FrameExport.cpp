@@ -18,6 +18,25 @@ io::ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::Fra
 
 namespace {
 
+// All meshes of a frame in one PolyData, float32 points, with the point
+// array `object` numbering the meshes in scene order.
+io::PolyData meshPolyData(const std::vector<TriangleMesh>& meshes) {
+    std::vector<glm::vec3> vertices;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    io::NamedArray object{"object", 1, {}};
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        const auto base = static_cast<std::uint32_t>(vertices.size());
+        for (const glm::dvec3& v : meshes[m].vertices) {
+            vertices.emplace_back(v);
+            object.values.push_back(static_cast<float>(m));
+        }
+        for (const glm::ivec3& t : meshes[m].triangles)
+            triangles.push_back({base + static_cast<std::uint32_t>(t.x), base + static_cast<std::uint32_t>(t.y),
+                                 base + static_cast<std::uint32_t>(t.z)});
+    }
+    return io::triangleMesh(vertices, triangles, {std::move(object)});
+}
+
 // The largest prime <= n (n >= 2), or 1: photon i of an emitter takes
 // stratum (i mod s, i / s) of an s × s grid, and a prime stride longer than
 // s shares no factor with it, so the recorded photons spread over all strata.
@@ -49,6 +68,10 @@ FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& ou
         vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
         if (exports_.vtk.receivers && !scene.receivers.empty())
             receivers_.emplace(outputFolder, "receivers", exports_.vtk.compression);
+        const bool hasMeshes = std::any_of(scene.objects.begin(), scene.objects.end(), [](const ObjectDesc& object) {
+            return object.kind == ObjectDesc::Kind::Mesh || object.kind == ObjectDesc::Kind::Water;
+        });
+        if (exports_.vtk.meshes && hasMeshes) meshes_.emplace(outputFolder, "meshes", exports_.vtk.compression);
         if (exports_.vtk.photonPaths > 0) paths_.emplace(outputFolder, "photon_paths", exports_.vtk.compression);
     }
     if (exports_.vdb.enabled) vdb_.emplace(outputFolder, "fields");
@@ -72,6 +95,7 @@ void FrameExporter::write(int frame, const ExportInputs& inputs, const render::F
             }
             receivers_->writeFrame(frame, time, io::receiverQuads(geometry, irradiance));
         }
+        if (meshes_) meshes_->writeFrame(frame, time, meshPolyData(inputs.meshes));
         if (const render::PhotonStage* photons = renderer.photonStage(); paths_ && photons) {
             paths_->writeFrame(frame, time,
                                io::photonPolylines(photons->downloadPaths(), photons->downloadPathPower(),

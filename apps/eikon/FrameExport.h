@@ -9,6 +9,7 @@
 #include "bridge/io/vdb/VdbFrameWriter.h"
 #include "bridge/io/vtk/PolyDataWriter.h"
 #include "bridge/io/vtk/VtkSeriesWriter.h"
+#include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
 #include "render/graph/FrameRenderer.h"
 
@@ -25,6 +26,7 @@ struct ExportInputs {
     double time = 0.0;
     ConstFieldViews fields;
     std::vector<io::NamedArray> simulation;
+    std::vector<TriangleMesh> meshes;  // this frame's mesh and water objects (SceneFields::deformedMeshes)
 };
 
 // The arrays a frame offers: fieldArrays, fluence and photon_direction when
@@ -50,6 +52,7 @@ private:
     std::optional<io::VtkSeriesWriter> vtk_;
     std::optional<io::VdbFrameWriter> vdb_;
     std::optional<io::PolyDataSeries> receivers_;
+    std::optional<io::PolyDataSeries> meshes_;
     std::optional<io::PolyDataSeries> paths_;
 };
 

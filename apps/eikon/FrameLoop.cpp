@@ -94,8 +94,11 @@ void runHostFrames(const Scene& scene, sim::SceneFields& fields, int frames, Fra
         produced.phases = fields.lastTimings();
         const render::FrameResult result = renderer.render(fields.fields());
         const LoopTiming timing{millisecondsSince(start), renderMilliseconds(result), 0.0};
-        ExportInputs exported{produced.time, viewsOf(fields.fields()), {}};
-        if (outputs.exportsFrame(frame)) exported.simulation = fields.exportArrays();
+        ExportInputs exported{produced.time, viewsOf(fields.fields()), {}, {}};
+        if (outputs.exportsFrame(frame)) {
+            exported.simulation = fields.exportArrays();
+            for (const TriangleMesh* mesh : fields.deformedMeshes()) exported.meshes.push_back(*mesh);
+        }
         outputs.write(frame, result, frameReportJson(frame, produced, animated, result, timing, false), renderer,
                       exported);
         progress.advance();
@@ -119,7 +122,7 @@ void runLiveFrames(const Scene& scene, sim::SceneFields& fields, int frames, Fra
         timing.frameMs = millisecondsSince(start);
         const ProducedFrame& current = live.current();
         outputs.write(frame, result, frameReportJson(frame, current, true, result, timing, pipelined), renderer,
-                      {current.time, live.ring().currentViews(), current.exportArrays});
+                      {current.time, live.ring().currentViews(), current.exportArrays, current.meshes});
         if (more) live.publishNext();  // frame k's slot stays current until its outputs are written
         progress.advance();
     }

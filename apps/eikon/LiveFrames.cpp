@@ -17,7 +17,7 @@ LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExp
     const auto start = std::chrono::steady_clock::now();
     fields_.writeFrameInto(ring_.acquire());
     current_.time = fields_.time();
-    if (captureExportArrays_) current_.exportArrays = fields_.exportArrays();
+    if (captureExportArrays_) capture(current_);
     current_.writeFieldsMs = millisecondsSince(start);
     ring_.publish(version_, version_, version_);
 }
@@ -37,8 +37,13 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     frame.writeFieldsMs = millisecondsSince(start);
     frame.time = fields_.time();
     frame.phases = fields_.lastTimings();
-    if (captureExportArrays_) frame.exportArrays = fields_.exportArrays();
+    if (captureExportArrays_) capture(frame);
     return frame;
+}
+
+void LiveFrames::capture(ProducedFrame& frame) const {
+    frame.exportArrays = fields_.exportArrays();
+    for (const TriangleMesh* mesh : fields_.deformedMeshes()) frame.meshes.push_back(*mesh);
 }
 
 void LiveFrames::beginNext() {

@@ -22,6 +22,7 @@ struct ProducedFrame {
     double writeFieldsMs = 0.0;
     std::vector<sim::PhaseTiming> phases;
     std::vector<io::NamedArray> exportArrays;  // the solver's own fields, when captured for export
+    std::vector<TriangleMesh> meshes;          // the deformed meshes, when captured for export
 };
 
 class LiveFrames {
@@ -48,6 +49,8 @@ public:
 
 private:
     ProducedFrame produce(const FieldViews& slot);
+    // What export needs of the frame the fields now hold, copied.
+    void capture(ProducedFrame& frame) const;
 
     sim::SceneFields& fields_;
     bool pipelined_;

@@ -46,6 +46,7 @@ struct ExportSelection {
 struct VtkExportDesc : ExportSelection {
     enum class Compression { Zlib, Lz4, None } compression = Compression::Zlib;
     bool receivers = true;   // DIR/vtk/receivers_NNNNN.vtp when the scene has receivers
+    bool meshes = true;      // DIR/vtk/meshes_NNNNN.vtp: each frame's mesh and water surfaces, when the scene has any
     int photonPaths = 0;     // photons whose paths go to DIR/vtk/photon_paths_NNNNN.vtp (0: none)
     int pathVertices = 256;  // most vertices recorded per path, >= 2
 };

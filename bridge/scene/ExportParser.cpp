@@ -65,9 +65,10 @@ void readSelection(const JsonObjectReader& fields, ExportSelection& selection) {
 VtkExportDesc readVtk(const JsonReader& node) {
     VtkExportDesc vtk;
     const auto fields = node.object({"enabled", "fields", "every", "region", "downsample", "compression", "receivers",
-                                     "photon_paths", "path_vertices"});
+                                     "meshes", "photon_paths", "path_vertices"});
     readSelection(fields, vtk);
     if (auto receivers = fields.optional("receivers")) vtk.receivers = receivers->boolean();
+    if (auto meshes = fields.optional("meshes")) vtk.meshes = meshes->boolean();
     if (auto paths = fields.optional("photon_paths")) vtk.photonPaths = static_cast<int>(paths->integer(0, kMaxPaths));
     if (auto vertices = fields.optional("path_vertices"))
         vtk.pathVertices = static_cast<int>(vertices->integer(2, kMaxPathVertices));

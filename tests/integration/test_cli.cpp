@@ -175,6 +175,24 @@ TEST_F(Cli, VolumeSequenceRunsAndExportsOpenVdb) {
     }
 }
 
+// A deforming mesh goes to ParaView too: each frame's deformed mesh as .vtp.
+TEST_F(Cli, VtkExportWritesEachFramesDeformedMesh) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/twisting_glass.json";
+    const fs::path out = dir_ / "out";
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() +
+                                     " --frames 2 --quiet --vtk --set grid.resolution=[24,28,24] "
+                                     "--set render.photons=4096 --set render.width=32 --set render.height=24");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const fs::path first = out / "vtk" / "meshes_00000.vtp", second = out / "vtk" / "meshes_00001.vtp";
+    ASSERT_TRUE(fs::exists(first));
+    ASSERT_TRUE(fs::exists(second));
+    EXPECT_TRUE(fs::exists(out / "vtk" / "meshes.vtp.series"));
+    std::ifstream a(first, std::ios::binary), b(second, std::ios::binary);
+    const std::string textA{std::istreambuf_iterator<char>(a), {}}, textB{std::istreambuf_iterator<char>(b), {}};
+    EXPECT_NE(textA.find("Name=\"object\""), std::string::npos);
+    EXPECT_NE(textA, textB) << "the bar twists between frames";
+}
+
 TEST_F(Cli, SecondFrameOfStaticSceneRunsNoStage) {
     const std::string scene = writeScene("ok.json", validScene());
     const fs::path out = dir_ / "out";
