@@ -373,7 +373,8 @@ namespace {
 class AccuracyCli : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / "eikon_cli_accuracy";
+        dir_ = fs::temp_directory_path() /
+               ("eikon_cli_accuracy_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);
     }
     void TearDown() override { fs::remove_all(dir_); }

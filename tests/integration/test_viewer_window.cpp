@@ -44,7 +44,8 @@ double luminanceSpread(const eikon::io::Rgba8Image& image, int x0, int y0, int x
 class ViewerWindow : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / "eikon_viewer_window";
+        dir_ = fs::temp_directory_path() /
+               ("eikon_viewer_window_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
