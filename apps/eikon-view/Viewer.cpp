@@ -158,12 +158,15 @@ private:
         renderer.setExposure(exposure_);
     }
 
-    // While a light is dragged, fewer photons keep the target frame time;
-    // when it is let go, the full count traces once more (progressive).
+    // While photons are retraced every frame — a light dragged, or a scene
+    // that moves — fewer of them keep the target frame time; when the light
+    // is let go or the scene paused, the full count traces once more
+    // (progressive).
     void adaptPhotons() {
         render::FrameRenderer& renderer = session_->renderer();
         long long wanted = fullPhotons_;
-        if (draggingLight_) {
+        const bool retracingEveryFrame = draggingLight_ || (session_->simulated() && !paused_);
+        if (retracingEveryFrame) {
             const double ms = photonMilliseconds(last_);
             if (ms > 0.0) {
                 const double scale = std::clamp(options_.targetFrameMs / ms, 0.25, 2.0);

@@ -1,8 +1,9 @@
 // eikon-view: a window in which the scene runs — the same frame loop as
 // `eikon run` — while the user orbits the camera, drags the light and edits
 // settings. Only the stages whose inputs changed run, so orbiting costs a
-// view pass; while a light is dragged the photon count drops to keep the
-// target frame time and returns to the scene's count when the drag ends.
+// view pass; while a light is dragged or the scene moves, the photon count
+// drops to keep the target frame time and returns to the scene's count when
+// the drag ends or the scene is paused.
 #pragma once
 
 #include <string>

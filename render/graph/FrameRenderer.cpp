@@ -102,7 +102,8 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         result.copied = {std::exchange(pendingUpload_, {}).host + bytes.host, bytes.gpu};
     }));
     if (ring) ring->fenceCurrent();  // the slot is free again once the copies issued so far ran
-    const bool photonsNeeded = fieldsChanged || lightsChanged_;
+    // A moved light matters only through the photons it sends.
+    const bool photonsNeeded = photons_ && (fieldsChanged || lightsChanged_);
     result.stages.push_back(runStage("prepare", indexChanged, [&] { prepare_->run(fields_); }));
     if (stepStructure_)
         result.stages.push_back(runStage("step_structure", indexChanged || extinctionChanged,
@@ -111,7 +112,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         result.stages.push_back(runStage("photons", photonsNeeded, [&] {
             last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
         }));
-    const bool viewNeeded = photonsNeeded || cameraChanged_;
+    const bool viewNeeded = fieldsChanged || photonsNeeded || cameraChanged_;
     result.stages.push_back(runStage("view", viewNeeded, [&] {
         view_->run(fields_, {photons_ ? &photons_->fluence() : nullptr,
                              photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture()});

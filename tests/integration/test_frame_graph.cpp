@@ -102,6 +102,11 @@ TEST_F(FrameGraph, SceneWithNothingForPhotonsToLightHasNoPhotonStage) {
     EXPECT_EQ(renderer.photonStage(), nullptr);
     EXPECT_FALSE(hasStage(result, "photons"));
     EXPECT_TRUE(hasStage(result, "view"));
+    // A light matters only through its photons: moving it here runs nothing.
+    LightDesc moved = scene.lights.at(0);
+    moved.position.x += 0.3;
+    renderer.setLight(0, moved);
+    EXPECT_TRUE(stagesThatRan(renderer.render(fields)).empty());
 }
 
 }  // namespace
