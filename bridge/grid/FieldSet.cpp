@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace eikon {
 
@@ -55,6 +56,12 @@ void validateFields(const ConstFieldViews& fields, const std::string& source) {
                              std::to_string(sigma));
         if (!fields.hasExtinction() && !fields.hasScattering()) break;
     }
+}
+
+void publishField(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version) {
+    if (current == next) return;
+    current = std::move(next);
+    ++version;
 }
 
 void validateFields(const FieldSet& fields, const std::string& source) {

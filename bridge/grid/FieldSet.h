@@ -29,6 +29,9 @@ struct FieldSet {
     bool hasAnisotropy() const { return !anisotropy.empty(); }
 };
 
+// Replaces `current` with `next` and bumps `version` if their values differ.
+void publishField(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version);
+
 // Throws InputError naming the field and cell of the first value that is not
 // finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ): fields are checked
 // where they enter the bridge, never traced silently.

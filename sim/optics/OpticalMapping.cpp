@@ -10,12 +10,6 @@ namespace {
 
 bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
 
-// Replaces `current` with `next` and bumps `version` if they differ.
-void publish(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version) {
-    if (current == next) return;
-    current = std::move(next);
-    ++version;
-}
 
 }  // namespace
 
@@ -73,9 +67,9 @@ void writeOpticalFields(const OpticalModel& model, const SolverScalars& scalars,
     next.extinction.resize(model.absorbs() ? 3 * cells : 0);
     next.scattering.resize(model.scatters() ? 3 * cells : 0);
     mapOpticalFields(model, scalars, viewsOf(next));
-    publish(fields.deltaIndex, std::move(next.deltaIndex), fields.indexVersion);
-    publish(fields.extinction, std::move(next.extinction), fields.extinctionVersion);
-    publish(fields.scattering, std::move(next.scattering), fields.scatteringVersion);
+    publishField(fields.deltaIndex, std::move(next.deltaIndex), fields.indexVersion);
+    publishField(fields.extinction, std::move(next.extinction), fields.extinctionVersion);
+    publishField(fields.scattering, std::move(next.scattering), fields.scatteringVersion);
     validateFields(fields, "sim");
 }
 

@@ -11,11 +11,6 @@ namespace {
 
 bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
 
-void publish(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version) {
-    if (current == next) return;
-    current = std::move(next);
-    ++version;
-}
 
 }  // namespace
 
@@ -61,12 +56,12 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
             anisotropy[c] = static_cast<float>(
                 (medium.anisotropy * (sigmaSum - volumeSigmaSum) + volume.anisotropy * volumeSigmaSum) / sigmaSum);
     }
-    publish(fields.deltaIndex, std::move(deltaIndex), fields.indexVersion);
-    publish(fields.extinction, std::move(extinction), fields.extinctionVersion);
+    publishField(fields.deltaIndex, std::move(deltaIndex), fields.indexVersion);
+    publishField(fields.extinction, std::move(extinction), fields.extinctionVersion);
     const std::uint64_t before = fields.scatteringVersion;
-    publish(fields.scattering, std::move(scattering), fields.scatteringVersion);
+    publishField(fields.scattering, std::move(scattering), fields.scatteringVersion);
     std::uint64_t gVersion = before;
-    publish(fields.anisotropy, std::move(anisotropy), gVersion);
+    publishField(fields.anisotropy, std::move(anisotropy), gVersion);
     if (gVersion != before && fields.scatteringVersion == before) ++fields.scatteringVersion;  // σs and g share a version
 }
 
