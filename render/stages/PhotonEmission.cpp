@@ -108,19 +108,30 @@ EmitterGeometry directionalEmitter(const LightDesc& light, const Box& region) {
 
 Box emissionRegion(const Scene& scene) {
     const Box gridBox{scene.grid.boundsMin, scene.grid.boundsMax};
-    if (positive(scene.medium.extinction) || positive(scene.medium.scattering)) return gridBox;
+    // Media that only the field grids know — an attenuating background, a
+    // fluid, an imported volume — and objects whose extent the scene does not
+    // state (meshes, water) may fill the whole grid.
+    const bool extentUnknown = std::any_of(scene.objects.begin(), scene.objects.end(), [](const ObjectDesc& object) {
+        return object.kind != ObjectDesc::Kind::Sphere && object.kind != ObjectDesc::Kind::Box;
+    });
+    if (positive(scene.medium.extinction) || positive(scene.medium.scattering) || scene.sim || scene.volume ||
+        extentUnknown)
+        return gridBox;
     Box region{glm::dvec3(INFINITY), glm::dvec3(-INFINITY)};
-    for (const auto& object : scene.objects) {
-        Box bounds = object.kind == ObjectDesc::Kind::Sphere
-                         ? Box{object.sphere.center - object.sphere.radius, object.sphere.center + object.sphere.radius}
-                         : Box{object.box.min, object.box.max};
+    auto includeClipped = [&](Box bounds) {
         bounds.min = glm::max(bounds.min, gridBox.min);
         bounds.max = glm::min(bounds.max, gridBox.max);
         if (glm::all(glm::lessThan(bounds.min, bounds.max))) {
             include(region, bounds.min);
             include(region, bounds.max);
         }
-    }
+    };
+    for (const auto& object : scene.objects)
+        includeClipped(object.kind == ObjectDesc::Kind::Sphere
+                           ? Box{object.sphere.center - object.sphere.radius, object.sphere.center + object.sphere.radius}
+                           : Box{object.box.min, object.box.max});
+    for (const auto& stroke : scene.paint)  // a stroke reaches 4σ = 2 radii from its path (VolumePainter.h)
+        for (const glm::dvec3& point : stroke.path) includeClipped(Box{point - 2.0 * stroke.radius, point + 2.0 * stroke.radius});
     for (const auto& receiver : scene.receivers) {
         glm::dvec3 u, v;
         orthonormalBasis(receiver.normal, u, v);

@@ -21,9 +21,11 @@ struct Box {
     glm::dvec3 max{0.0};
 };
 
-// Box around the part of the scene light must reach: the grid where the
-// background medium attenuates, each object clipped to the grid, and each
-// receiver's square. The grid box when there is nothing else.
+// Box around the part of the scene light must reach: each sphere and box
+// and each paint stroke's reach clipped to the grid, and each receiver's
+// square; the whole grid where the medium attenuates, where a fluid solver
+// or an imported volume supplies it, or where a mesh or water object is, and
+// when there is nothing else.
 Box emissionRegion(const Scene& scene);
 
 // One emitter per light with non-zero power toward `region`; photons are
