@@ -1,5 +1,6 @@
 // Irradiance cases in clear and absorbing media: the inverse-square law of a
 // point light on a plane and Beer–Lambert attenuation through a slab.
+#include "render/accuracy/CaseScenes.h"
 #include "render/accuracy/Cases.h"
 
 #include <glm/geometric.hpp>
@@ -11,24 +12,6 @@
 namespace eikon::accuracy {
 
 namespace {
-
-Scene boxScene(glm::dvec3 boundsMin, glm::dvec3 boundsMax) {
-    Scene scene;
-    scene.grid.boundsMin = boundsMin;
-    scene.grid.boundsMax = boundsMax;
-    scene.render.width = 8;
-    scene.render.height = 8;
-    return scene;
-}
-
-ReceiverDesc floorReceiver(double y, double size, int resolution) {
-    ReceiverDesc receiver;
-    receiver.point = glm::dvec3(0.0, y, 0.0);
-    receiver.normal = glm::dvec3(0.0, 1.0, 0.0);
-    receiver.size = size;
-    receiver.resolution = resolution;
-    return receiver;
-}
 
 // The receiver filter's 3×3 binomial kernel (shaders/receiver_filter.comp),
 // applied to a closed-form map so that both sides are the same estimator.

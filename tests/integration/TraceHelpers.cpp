@@ -1,5 +1,6 @@
 #include "tests/integration/TraceHelpers.h"
 
+#include "render/accuracy/CaseScenes.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
@@ -13,23 +14,12 @@
 namespace eikon::test {
 
 Scene emptyScene(glm::dvec3 boundsMin, glm::dvec3 boundsMax, int resolution) {
-    Scene scene;
+    Scene scene = accuracy::boxScene(boundsMin, boundsMax);
     scene.grid.resolution = glm::ivec3(resolution);
-    scene.grid.boundsMin = boundsMin;
-    scene.grid.boundsMax = boundsMax;
-    scene.render.width = 8;
-    scene.render.height = 8;
     return scene;
 }
 
-ReceiverDesc floorReceiver(double y, double size, int resolution) {
-    ReceiverDesc receiver;
-    receiver.point = glm::dvec3(0.0, y, 0.0);
-    receiver.normal = glm::dvec3(0.0, 1.0, 0.0);
-    receiver.size = size;
-    receiver.resolution = resolution;
-    return receiver;
-}
+ReceiverDesc floorReceiver(double y, double size, int resolution) { return accuracy::floorReceiver(y, size, resolution); }
 
 LightDesc directionalLight(glm::dvec3 direction, double irradiance) {
     LightDesc light;
