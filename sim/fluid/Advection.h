@@ -10,7 +10,7 @@
 
 #include "sim/fluid/MacGrid.h"
 
-#include <optional>
+#include <array>
 #include <vector>
 
 namespace eikon::sim {
@@ -18,9 +18,18 @@ namespace eikon::sim {
 // Buffers of the MacCormack steps kept between calls, so that advection
 // allocates nothing once they have their size. One call at a time.
 struct AdvectionScratch {
-    std::vector<GridField> forward;               // φ̂ⁿ⁺¹ = A(φⁿ) per field
-    std::vector<std::vector<double>> low, high;   // limiter bounds per field
-    std::optional<MacGrid> start;                 // the velocity at the start of the step
+    // Per lattice advected together: where each sample's forward
+    // characteristic ends (lattice coordinates), and φ̂ⁿ⁺¹ = A(φⁿ) and the
+    // limiter bounds per field.
+    struct Group {
+        std::vector<glm::dvec3> ahead;
+        std::vector<GridField> forward;
+        std::vector<std::vector<double>> low, high;
+    };
+    Group scalars;
+    std::array<Group, 3> velocity;
+    std::array<GridField, 3> start;    // the face velocities at the start of the step
+    std::array<GridField, 3> tracing;  // the flow in cells per second, for tracing characteristics
 };
 
 // Advects cell-centred scalars through flow.velocity over dt, in place.

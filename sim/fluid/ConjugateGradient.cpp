@@ -4,8 +4,33 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace eikon::sim {
+
+namespace {
+
+// x += α p and r −= α q in one pass; returns max|r|.
+double stepSolution(double alpha, const std::vector<double>& p, const std::vector<double>& q, std::vector<double>& x,
+                    std::vector<double>& r) {
+    using Range = tbb::blocked_range<std::size_t>;
+    return tbb::parallel_reduce(
+        Range(0, x.size(), 4096), 0.0,
+        [&](const Range& range, double largest) {
+            for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                x[i] += alpha * p[i];
+                r[i] -= alpha * q[i];
+                largest = std::max(largest, std::abs(r[i]));
+            }
+            return largest;
+        },
+        [](double u, double v) { return std::max(u, v); });
+}
+
+}  // namespace
 
 SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<double>& b, std::vector<double>& x,
                              const Preconditioner& preconditioner, double tolerance, int maxIterations,
@@ -33,12 +58,9 @@ SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<doub
     p = z;
     double rho = dot(r, z);
     while (stats.iterations < maxIterations) {
-        a.apply(p, q);
-        const double alpha = rho / dot(p, q);
-        axpy(alpha, p, x);
-        axpy(-alpha, q, r);
+        const double alpha = rho / a.applyAndDot(p, q);
         ++stats.iterations;
-        stats.relativeResidual = maxAbs(r) / bNorm;
+        stats.relativeResidual = stepSolution(alpha, p, q, x, r) / bNorm;
         if (stats.relativeResidual <= tolerance) break;
         preconditioner(r, z);
         if (singular) removeMean(z, a.diag);

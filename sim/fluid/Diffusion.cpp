@@ -54,7 +54,7 @@ void ImplicitDiffusion::setWeight(glm::dvec3 weight) {
 
 SolveStats ImplicitDiffusion::diffuse(GridField& field, glm::dvec3 h, double dtTimesD, double tolerance,
                                       int maxIterations) {
-    if (dtTimesD <= 0.0) return {};
+    if (dtTimesD <= 0.0 || isUniform(field.values)) return {};  // a uniform field is steady: L φ = 0
     setWeight(dtTimesD / (h * h));
     const glm::dvec3 w = a_.weight;
     const std::size_t sy = static_cast<std::size_t>(a_.size.x);

@@ -1,7 +1,5 @@
 #include "sim/fluid/Multigrid.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 
 namespace eikon::sim {
@@ -123,7 +121,7 @@ void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& c
     const auto& tx = fine.toCoarser[0];
     const auto& ty = fine.toCoarser[1];
     const auto& tz = fine.toCoarser[2];
-    tbb::parallel_for(0, cs.z, [&](int ck) {
+    forEachSlice(coarse.op, [&](int ck) {
         for (int cj = 0; cj < cs.y; ++cj)
             for (int ci = 0; ci < cs.x; ++ci) {
                 const std::size_t c = coarse.op.index(ci, cj, ck);
@@ -154,7 +152,7 @@ void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fi
     const auto& tx = fine.toCoarser[0];
     const auto& ty = fine.toCoarser[1];
     const auto& tz = fine.toCoarser[2];
-    tbb::parallel_for(0, fs.z, [&](int k) {
+    forEachSlice(fine.op, [&](int k) {
         const int zs[2] = {tz.parent[k], tz.neighbour[k]};
         const double wzs[2] = {tz.parentWeight, tz.neighbourWeight};
         for (int j = 0; j < fs.y; ++j) {

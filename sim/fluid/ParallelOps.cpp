@@ -46,6 +46,18 @@ double maxAbs(const std::vector<double>& a) {
         [](double x, double y) { return std::max(x, y); });
 }
 
+bool isUniform(const std::vector<double>& a) {
+    if (a.empty()) return true;
+    const double first = a.front();
+    return tbb::parallel_reduce(
+        Range(0, a.size(), kGrain), true,
+        [&](const Range& r, bool uniform) {
+            for (std::size_t i = r.begin(); uniform && i < r.end(); ++i) uniform = a[i] == first;
+            return uniform;
+        },
+        [](bool x, bool y) { return x && y; });
+}
+
 void axpy(double alpha, const std::vector<double>& x, std::vector<double>& y) {
     tbb::parallel_for(Range(0, x.size(), kGrain), [&](const Range& r) {
         for (std::size_t i = r.begin(); i < r.end(); ++i) y[i] += alpha * x[i];

@@ -4,34 +4,20 @@
 
 namespace eikon::sim {
 
-double SevenPointOperator::neighbourSum(const std::vector<double>& x, std::size_t c) const {
-    const std::uint8_t bits = coupled[c];
-    const std::size_t sx = 1;
-    const std::size_t sy = static_cast<std::size_t>(size.x);
-    const std::size_t sz = sy * static_cast<std::size_t>(size.y);
-    double s = 0.0;
-    if (bits & bit(0, 0)) s += weight.x * x[c - sx];
-    if (bits & bit(0, 1)) s += weight.x * x[c + sx];
-    if (bits & bit(1, 0)) s += weight.y * x[c - sy];
-    if (bits & bit(1, 1)) s += weight.y * x[c + sy];
-    if (bits & bit(2, 0)) s += weight.z * x[c - sz];
-    if (bits & bit(2, 1)) s += weight.z * x[c + sz];
-    return s;
-}
-
-void SevenPointOperator::apply(const std::vector<double>& x, std::vector<double>& y) const {
-    tbb::parallel_for(0, size.z, [&](int k) {
-        for (int j = 0; j < size.y; ++j)
-            for (int i = 0; i < size.x; ++i) {
-                const std::size_t c = index(i, j, k);
-                y[c] = diag[c] == 0.0 ? 0.0 : diag[c] * x[c] - neighbourSum(x, c);
-            }
+double SevenPointOperator::applyAndDot(const std::vector<double>& x, std::vector<double>& y) const {
+    return sumOverSlices(*this, [&](int k) {
+        double partial = 0.0;
+        for (std::size_t c = index(0, 0, k), end = index(0, 0, k + 1); c < end; ++c) {
+            y[c] = diag[c] == 0.0 ? 0.0 : diag[c] * x[c] - neighbourSum(x, c);
+            partial += x[c] * y[c];
+        }
+        return partial;
     });
 }
 
 void SevenPointOperator::residual(const std::vector<double>& b, const std::vector<double>& x,
                                   std::vector<double>& r) const {
-    tbb::parallel_for(0, size.z, [&](int k) {
+    forEachSlice(*this, [&](int k) {
         for (int j = 0; j < size.y; ++j)
             for (int i = 0; i < size.x; ++i) {
                 const std::size_t c = index(i, j, k);
@@ -41,7 +27,7 @@ void SevenPointOperator::residual(const std::vector<double>& b, const std::vecto
 }
 
 void SevenPointOperator::relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const {
-    tbb::parallel_for(0, size.z, [&](int k) {
+    forEachSlice(*this, [&](int k) {
         for (int j = 0; j < size.y; ++j)
             for (int i = (j + k + colour) & 1; i < size.x; i += 2) {
                 const std::size_t c = index(i, j, k);

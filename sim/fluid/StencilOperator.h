@@ -7,6 +7,10 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <functional>
 
 #include <cstdint>
 #include <vector>
@@ -28,15 +32,59 @@ struct SevenPointOperator {
                    (static_cast<std::size_t>(j) + static_cast<std::size_t>(size.y) * static_cast<std::size_t>(k));
     }
 
-    // Σ_{n coupled to cell c} w · x_n.
-    double neighbourSum(const std::vector<double>& x, std::size_t c) const;
+    // Σ_{n coupled to cell c} w · x_n. Inline: every sweep calls it per cell.
+    double neighbourSum(const std::vector<double>& x, std::size_t c) const {
+        const std::uint8_t bits = coupled[c];
+        const std::size_t sy = static_cast<std::size_t>(size.x);
+        const std::size_t sz = sy * static_cast<std::size_t>(size.y);
+        double s = 0.0;
+        if (bits & bit(0, 0)) s += weight.x * x[c - 1];
+        if (bits & bit(0, 1)) s += weight.x * x[c + 1];
+        if (bits & bit(1, 0)) s += weight.y * x[c - sy];
+        if (bits & bit(1, 1)) s += weight.y * x[c + sy];
+        if (bits & bit(2, 0)) s += weight.z * x[c - sz];
+        if (bits & bit(2, 1)) s += weight.z * x[c + sz];
+        return s;
+    }
 
-    void apply(const std::vector<double>& x, std::vector<double>& y) const;
+    // y = A x, and returns x · y: the two passes of a CG step over p in one.
+    double applyAndDot(const std::vector<double>& x, std::vector<double>& y) const;
     // r = b − A x
     void residual(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r) const;
     // One Gauss–Seidel half-sweep over the cells with (i + j + k) % 2 == colour.
     void relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const;
 };
+
+// Runs body(k) for every slice k of the operator's lattice: in parallel,
+// except on the small coarse levels of multigrid, where starting tasks would
+// cost more than the work.
+constexpr std::size_t kSerialSliceCells = 16384;  // below this many cells, one thread does a whole pass
+
+template <class Body>
+void forEachSlice(const SevenPointOperator& op, const Body& body) {
+    if (op.cellCount() < kSerialSliceCells) {
+        for (int k = 0; k < op.size.z; ++k) body(k);
+    } else {
+        tbb::parallel_for(0, op.size.z, body);
+    }
+}
+
+// Σ over slices k of body(k), reduced like forEachSlice runs.
+template <class Body>
+double sumOverSlices(const SevenPointOperator& op, const Body& body) {
+    if (op.cellCount() < kSerialSliceCells) {
+        double total = 0.0;
+        for (int k = 0; k < op.size.z; ++k) total += body(k);
+        return total;
+    }
+    return tbb::parallel_reduce(
+        tbb::blocked_range<int>(0, op.size.z), 0.0,
+        [&](const tbb::blocked_range<int>& slices, double partial) {
+            for (int k = slices.begin(); k < slices.end(); ++k) partial += body(k);
+            return partial;
+        },
+        std::plus<>());
+}
 
 // The pressure operator Σ_n (p_c − p_n)/h² over fluid cells (active != 0):
 // solid neighbours and closed walls are Neumann (no term), open faces are
