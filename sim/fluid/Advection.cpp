@@ -22,12 +22,10 @@ public:
                 sampleTrilinear(u_[2], g - u_[2].offset)};
     }
 
-    // Ends of the characteristic through g after times −dt and +dt by the
-    // midpoint rule; both start from the velocity at g, sampled once.
-    void traceBothWays(const glm::dvec3& g, double dt, glm::dvec3& back, glm::dvec3& ahead) const {
-        const glm::dvec3 halfStep = 0.5 * dt * at(g);
-        back = g - dt * at(g - halfStep);
-        ahead = g + dt * at(g + halfStep);
+    // Displacement along the characteristic through g over time t (negative:
+    // backward) by the midpoint rule, with the velocity at g given.
+    glm::dvec3 displacement(const glm::dvec3& g, const glm::dvec3& velocityAtG, double t) const {
+        return t * at(g + 0.5 * t * velocityAtG);
     }
 
 private:
@@ -50,6 +48,67 @@ void toCellsPerSecond(const MacGrid& mac, std::array<GridField, 3>& cellsPerSeco
     }
 }
 
+// Traces the characteristics through every cell centre both ways; the
+// backward and forward steps start from the same velocity, sampled once.
+void traceCellCentres(const CellVelocity& flow, glm::ivec3 cells, double dt, AdvectionScratch& scratch) {
+    const std::size_t count = static_cast<std::size_t>(cells.x) * cells.y * cells.z;
+    scratch.cellBack.resize(count);
+    scratch.cellAhead.resize(count);
+    tbb::parallel_for(0, cells.z, [&](int k) {
+        std::size_t c = static_cast<std::size_t>(cells.x) * cells.y * k;
+        for (int j = 0; j < cells.y; ++j)
+            for (int i = 0; i < cells.x; ++i, ++c) {
+                const glm::dvec3 g = glm::dvec3(i, j, k) + 0.5;
+                const glm::dvec3 velocity = flow.at(g);
+                scratch.cellBack[c] = glm::vec3(flow.displacement(g, velocity, -dt));
+                scratch.cellAhead[c] = glm::vec3(flow.displacement(g, velocity, dt));
+            }
+    });
+}
+
+// Where the characteristics through the samples of one lattice end, in that
+// lattice's coordinates. Cell centres read their traced displacements. A face
+// between two cells takes the mean of theirs: the displacement is a smooth
+// field, so its linear interpolation is second order in h like the midpoint
+// rule itself, and the three face lattices need no tracing of their own. A
+// face on the edge of the grid has one neighbour and traces for itself.
+class LatticeEnds {
+public:
+    // axis: the face lattice normal to it, or −1 for cell centres.
+    LatticeEnds(const CellVelocity& flow, const AdvectionScratch& scratch, glm::ivec3 cells, int axis,
+                glm::dvec3 offset, double dt)
+        : flow_(flow), scratch_(scratch), cells_(cells), axis_(axis), offset_(offset), dt_(dt) {}
+
+    glm::dvec3 back(int i, int j, int k) const { return end(scratch_.cellBack, i, j, k, -dt_); }
+    glm::dvec3 ahead(int i, int j, int k) const { return end(scratch_.cellAhead, i, j, k, dt_); }
+
+private:
+    std::size_t cellIndex(glm::ivec3 c) const {
+        return static_cast<std::size_t>(c.x) +
+               static_cast<std::size_t>(cells_.x) * (static_cast<std::size_t>(c.y) + static_cast<std::size_t>(cells_.y) * c.z);
+    }
+
+    glm::dvec3 end(const std::vector<glm::vec3>& displacements, int i, int j, int k, double t) const {
+        const glm::ivec3 sample(i, j, k);
+        const glm::dvec3 g(sample);
+        if (axis_ < 0) return g + glm::dvec3(displacements[cellIndex(sample)]);
+        if (sample[axis_] == 0 || sample[axis_] == cells_[axis_]) {
+            const glm::dvec3 start = g + offset_;
+            return g + flow_.displacement(start, flow_.at(start), t);
+        }
+        glm::ivec3 lower = sample;
+        lower[axis_] -= 1;
+        return g + 0.5 * (glm::dvec3(displacements[cellIndex(lower)]) + glm::dvec3(displacements[cellIndex(sample)]));
+    }
+
+    const CellVelocity& flow_;
+    const AdvectionScratch& scratch_;
+    glm::ivec3 cells_;
+    int axis_;
+    glm::dvec3 offset_;
+    double dt_;
+};
+
 // Grows (never shrinks) the per-field buffers to `fieldCount` fields of `layout`'s size.
 void reserveGroup(AdvectionScratch::Group& group, const GridField& layout, std::size_t fieldCount) {
     if (group.forward.size() < fieldCount) {
@@ -57,7 +116,6 @@ void reserveGroup(AdvectionScratch::Group& group, const GridField& layout, std::
         group.low.resize(fieldCount);
         group.high.resize(fieldCount);
     }
-    group.ahead.resize(layout.count());
     for (std::size_t f = 0; f < fieldCount; ++f) {
         group.forward[f].size = layout.size;
         group.forward[f].offset = layout.offset;
@@ -69,22 +127,18 @@ void reserveGroup(AdvectionScratch::Group& group, const GridField& layout, std::
 
 // MacCormack step for fields that share one lattice (size and offset):
 // sources hold φⁿ, targets receive φⁿ⁺¹ (they may alias the sources).
-void advectGroup(const CellVelocity& flow, const std::vector<const GridField*>& sources,
-                 const std::vector<GridField*>& targets, double dt, AdvectionScratch::Group& group) {
+void advectGroup(const LatticeEnds& ends, const std::vector<const GridField*>& sources,
+                 const std::vector<GridField*>& targets, AdvectionScratch::Group& group) {
     const GridField& layout = *sources.front();
     const glm::ivec3 n = layout.size;
-    const glm::dvec3 offset = layout.offset;
     const std::size_t fieldCount = sources.size();
     reserveGroup(group, layout, fieldCount);
     std::vector<GridField>& forward = group.forward;  // φ̂ⁿ⁺¹ = A(φⁿ), the semi-Lagrangian result
     tbb::parallel_for(0, n.z, [&](int k) {
         for (int j = 0; j < n.y; ++j)
             for (int i = 0; i < n.x; ++i) {
+                const glm::dvec3 back = ends.back(i, j, k);
                 const std::size_t s = layout.index(i, j, k);
-                glm::dvec3 back;
-                flow.traceBothWays(glm::dvec3(i, j, k) + offset, dt, back, group.ahead[s]);
-                back -= offset;
-                group.ahead[s] -= offset;
                 for (std::size_t f = 0; f < fieldCount; ++f) {
                     const StencilSample sample = sampleWithBounds(*sources[f], back);
                     forward[f].values[s] = sample.value;
@@ -96,9 +150,10 @@ void advectGroup(const CellVelocity& flow, const std::vector<const GridField*>& 
     tbb::parallel_for(0, n.z, [&](int k) {
         for (int j = 0; j < n.y; ++j)
             for (int i = 0; i < n.x; ++i) {
+                const glm::dvec3 ahead = ends.ahead(i, j, k);
                 const std::size_t s = layout.index(i, j, k);
                 for (std::size_t f = 0; f < fieldCount; ++f) {
-                    const double roundTrip = sampleTrilinear(forward[f], group.ahead[s]);  // φ̂ⁿ = Aᴿ(φ̂ⁿ⁺¹)
+                    const double roundTrip = sampleTrilinear(forward[f], ahead);  // φ̂ⁿ = Aᴿ(φ̂ⁿ⁺¹)
                     const double corrected = forward[f].values[s] + 0.5 * (sources[f]->values[s] - roundTrip);
                     targets[f]->values[s] = std::clamp(corrected, group.low[f][s], group.high[f][s]);
                 }
@@ -106,39 +161,51 @@ void advectGroup(const CellVelocity& flow, const std::vector<const GridField*>& 
     });
 }
 
-}  // namespace
-
-// A uniform field is its own MacCormack step (every blend of equal values is
-// that value, and the correction vanishes), so it is left as it is.
-void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt,
-                   AdvectionScratch& scratch) {
+// The scalars and, with `velocity`, the face velocities (its own start
+// values) through flow's velocity. A uniform field is its own MacCormack step
+// (every blend of equal values is that value, and the correction vanishes),
+// so it is left as it is.
+void advectFields(const MacGrid& flow, const std::vector<GridField*>& scalars, MacGrid* velocity, double dt,
+                  AdvectionScratch& scratch) {
     std::vector<GridField*> varying;
     for (GridField* field : scalars)
         if (!isUniform(field->values)) varying.push_back(field);
-    if (varying.empty()) return;
+    bool velocityVaries[3] = {false, false, false};
+    for (int axis = 0; velocity && axis < 3; ++axis) velocityVaries[axis] = !isUniform(velocity->velocity[axis].values);
+    if (varying.empty() && !velocityVaries[0] && !velocityVaries[1] && !velocityVaries[2]) return;
+
     toCellsPerSecond(flow, scratch.tracing);
-    const std::vector<const GridField*> sources(varying.begin(), varying.end());
-    advectGroup(CellVelocity(scratch.tracing), sources, varying, dt, scratch.scalars);
+    const CellVelocity cellVelocity(scratch.tracing);
+    const glm::ivec3 cells = flow.grid.resolution;
+    traceCellCentres(cellVelocity, cells, dt, scratch);
+    if (!varying.empty()) {
+        const std::vector<const GridField*> sources(varying.begin(), varying.end());
+        advectGroup(LatticeEnds(cellVelocity, scratch, cells, -1, glm::dvec3(0.5), dt), sources, varying,
+                    scratch.scalars);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!velocityVaries[axis]) continue;
+        GridField& u = velocity->velocity[axis];
+        scratch.start[axis] = u;  // reuses the buffer of the last call
+        advectGroup(LatticeEnds(cellVelocity, scratch, cells, axis, u.offset, dt), {&scratch.start[axis]}, {&u},
+                    scratch.velocity[axis]);
+    }
 }
 
-void advectVelocity(MacGrid& mac, double dt, AdvectionScratch& scratch) {
-    toCellsPerSecond(mac, scratch.tracing);
-    const CellVelocity flow(scratch.tracing);
-    for (int axis = 0; axis < 3; ++axis) {
-        if (isUniform(mac.velocity[axis].values)) continue;
-        scratch.start[axis] = mac.velocity[axis];  // reuses the buffer of the last call
-        advectGroup(flow, {&scratch.start[axis]}, {&mac.velocity[axis]}, dt, scratch.velocity[axis]);
-    }
+}  // namespace
+
+void advect(MacGrid& mac, const std::vector<GridField*>& scalars, double dt, AdvectionScratch& scratch) {
+    advectFields(mac, scalars, &mac, dt, scratch);
 }
 
 void advectScalars(const MacGrid& flow, const std::vector<GridField*>& scalars, double dt) {
     AdvectionScratch scratch;
-    advectScalars(flow, scalars, dt, scratch);
+    advectFields(flow, scalars, nullptr, dt, scratch);
 }
 
 void advectVelocity(MacGrid& mac, double dt) {
     AdvectionScratch scratch;
-    advectVelocity(mac, dt, scratch);
+    advectFields(mac, {}, &mac, dt, scratch);
 }
 
 }  // namespace eikon::sim

@@ -140,11 +140,10 @@ void FluidSimulation::substep(double dt) {
         PhaseClock clock(timing(kAdvection));
         const std::vector<GridField*> scalars{&state_.temperature, &state_.concentration, &state_.dye};
         if (domain_.anyOpenFace()) {
-            advectScalars(state_.flow, scalars, dt, advection_);
+            advect(state_.flow, scalars, dt, advection_);
         } else {
             advectConserving(scalars, dt);
         }
-        advectVelocity(state_.flow, dt, advection_);
         enforceVelocityBoundaries(state_.flow, domain_);
         sources_.applyScalars(state_);
         checkFinite("after advection");
@@ -182,7 +181,7 @@ void FluidSimulation::advectConserving(const std::vector<GridField*>& scalars, d
         const auto [low, high] = std::minmax_element(field->values.begin(), field->values.end());
         budgets.push_back({sum(field->values), *low, *high});
     }
-    advectScalars(state_.flow, scalars, dt, advection_);
+    advect(state_.flow, scalars, dt, advection_);
     for (std::size_t f = 0; f < scalars.size(); ++f)
         restoreTotal(*scalars[f], budgets[f].total, budgets[f].low, budgets[f].high);
 }

@@ -82,7 +82,8 @@ public:
 private:
     void substep(double dt);
     SolverScalars scalars() const;
-    // Advection in a closed domain, with each scalar's total restored (MassCorrection.h).
+    // Advection of the scalars and the velocity in a closed domain, with each
+    // scalar's total restored (MassCorrection.h).
     void advectConserving(const std::vector<GridField*>& scalars, double dt);
     void rebuildRoles();
     void checkFinite(const std::string& phase) const;
