@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace eikon::sim {
 
@@ -28,6 +29,15 @@ double stepSolution(double alpha, const std::vector<double>& p, const std::vecto
             return largest;
         },
         [](double u, double v) { return std::max(u, v); });
+}
+
+// z = M⁻¹ r, kept in the complement of the null space when A is singular; returns r · z.
+double precondition(const Preconditioner& preconditioner, const SevenPointOperator& a, bool singular,
+                    const std::vector<double>& r, std::vector<double>& z) {
+    const double rz = preconditioner(r, z);
+    if (!singular) return rz;
+    removeMean(z, a.diag);
+    return dot(r, z);
 }
 
 }  // namespace
@@ -53,18 +63,14 @@ SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<doub
     SolveStats stats{0, maxAbs(r) / bNorm};
     if (stats.relativeResidual <= tolerance) return stats;
 
-    preconditioner(r, z);
-    if (singular) removeMean(z, a.diag);
+    double rho = precondition(preconditioner, a, singular, r, z);
     p = z;
-    double rho = dot(r, z);
     while (stats.iterations < maxIterations) {
         const double alpha = rho / a.applyAndDot(p, q);
         ++stats.iterations;
         stats.relativeResidual = stepSolution(alpha, p, q, x, r) / bNorm;
         if (stats.relativeResidual <= tolerance) break;
-        preconditioner(r, z);
-        if (singular) removeMean(z, a.diag);
-        const double rhoNext = dot(r, z);
+        const double rhoNext = precondition(preconditioner, a, singular, r, z);
         const double beta = rhoNext / rho;
         rho = rhoNext;
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096), [&](const tbb::blocked_range<std::size_t>& range) {
@@ -76,11 +82,18 @@ SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<doub
 
 Preconditioner jacobiPreconditioner(const SevenPointOperator& a) {
     return [&a](const std::vector<double>& r, std::vector<double>& z) {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, r.size(), 4096),
-                          [&](const tbb::blocked_range<std::size_t>& range) {
-                              for (std::size_t i = range.begin(); i < range.end(); ++i)
-                                  z[i] = a.diag[i] == 0.0 ? 0.0 : r[i] / a.diag[i];
-                          });
+        z.resize(r.size());
+        using Range = tbb::blocked_range<std::size_t>;
+        return tbb::parallel_reduce(
+            Range(0, r.size(), 4096), 0.0,
+            [&](const Range& range, double partial) {
+                for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                    z[i] = a.diag[i] == 0.0 ? 0.0 : r[i] / a.diag[i];
+                    partial += r[i] * z[i];
+                }
+                return partial;
+            },
+            std::plus<>());
     };
 }
 

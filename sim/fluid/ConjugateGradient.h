@@ -16,8 +16,10 @@ struct SolveStats {
     double relativeResidual = 0.0;  // max|b − A x| / max|b| at the end
 };
 
-// z ≈ A⁻¹ r; must be symmetric positive definite for CG to converge.
-using Preconditioner = std::function<void(const std::vector<double>& r, std::vector<double>& z)>;
+// z ≈ M⁻¹ r, returning r · z (which CG needs next, so a pointwise
+// preconditioner computes it in the same pass); M must be symmetric positive
+// definite for CG to converge.
+using Preconditioner = std::function<double(const std::vector<double>& r, std::vector<double>& z)>;
 
 // The vectors CG works in, kept by the caller between solves so that a solve
 // allocates nothing once they have their size.

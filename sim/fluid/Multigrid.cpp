@@ -48,9 +48,11 @@ MultigridPreconditioner::MultigridPreconditioner(glm::ivec3 size, glm::dvec3 h,
     while (true) {
         Level level;
         level.op = poissonOperator(size, h, levelActive, openFaces);
-        level.x.assign(level.op.cellCount(), 0.0);
-        level.b = level.x;
-        level.r = level.x;
+        if (!levels_.empty()) {  // the finest level's unknowns and right-hand side are the caller's
+            level.x.assign(level.op.cellCount(), 0.0);
+            level.b = level.x;
+        }
+        level.r.assign(level.op.cellCount(), 0.0);
         const bool coarsen[3] = {size.x >= kMinCoarsenSize, size.y >= kMinCoarsenSize, size.z >= kMinCoarsenSize};
         if (!coarsen[0] && !coarsen[1] && !coarsen[2]) {
             levels_.push_back(std::move(level));
@@ -83,36 +85,36 @@ MultigridPreconditioner::MultigridPreconditioner(glm::ivec3 size, glm::dvec3 h,
 }
 
 void MultigridPreconditioner::apply(const std::vector<double>& r, std::vector<double>& z) const {
-    levels_.front().b = r;
-    vcycle(0);
-    z = levels_.front().x;
+    z.resize(r.size());
+    vcycle(0, r, z);
 }
 
-void MultigridPreconditioner::vcycle(std::size_t l) const {
+void MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b, std::vector<double>& x) const {
     const Level& level = levels_[l];
-    std::fill(level.x.begin(), level.x.end(), 0.0);
+    std::fill(x.begin(), x.end(), 0.0);
     if (l + 1 == levels_.size()) {
         // Coarsest level: symmetric Gauss–Seidel sweeps, enough to cross it a few times.
         const int sweeps = 2 * std::max({level.op.size.x, level.op.size.y, level.op.size.z});
         for (int s = 0; s < sweeps; ++s) {
-            level.op.relaxColour(level.b, level.x, 0);
-            level.op.relaxColour(level.b, level.x, 1);
-            level.op.relaxColour(level.b, level.x, 1);
-            level.op.relaxColour(level.b, level.x, 0);
+            level.op.relaxColour(b, x, 0);
+            level.op.relaxColour(b, x, 1);
+            level.op.relaxColour(b, x, 1);
+            level.op.relaxColour(b, x, 0);
         }
         return;
     }
     for (int s = 0; s < kSmoothingSweeps; ++s) {
-        level.op.relaxColour(level.b, level.x, 0);
-        level.op.relaxColour(level.b, level.x, 1);
+        level.op.relaxColour(b, x, 0);
+        level.op.relaxColour(b, x, 1);
     }
-    level.op.residual(level.b, level.x, level.r);
-    restrictResidual(level, levels_[l + 1]);
-    vcycle(l + 1);
-    prolongAndAdd(levels_[l + 1], level);
+    level.op.residual(b, x, level.r);
+    const Level& coarse = levels_[l + 1];
+    restrictResidual(level, coarse);
+    vcycle(l + 1, coarse.b, coarse.x);
+    prolongAndAdd(coarse, level, x);
     for (int s = 0; s < kSmoothingSweeps; ++s) {
-        level.op.relaxColour(level.b, level.x, 1);
-        level.op.relaxColour(level.b, level.x, 0);
+        level.op.relaxColour(b, x, 1);
+        level.op.relaxColour(b, x, 0);
     }
 }
 
@@ -147,7 +149,7 @@ void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& c
     });
 }
 
-void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fine) const {
+void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fine, std::vector<double>& x) const {
     const glm::ivec3 fs = fine.op.size;
     const auto& tx = fine.toCoarser[0];
     const auto& ty = fine.toCoarser[1];
@@ -168,7 +170,7 @@ void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fi
                     for (int b = 0; b < 2; ++b)
                         for (int d = 0; d < 2; ++d)
                             s += wzs[a] * wys[b] * wxs[d] * coarse.x[coarse.op.index(xs[d], ys[b], zs[a])];
-                fine.x[f] += s;
+                x[f] += s;
             }
         }
     });

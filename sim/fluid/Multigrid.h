@@ -44,13 +44,16 @@ private:
         SevenPointOperator op;
         std::array<AxisTransfer, 3> toCoarser;  // empty on the coarsest level
         double restrictionScale = 1.0;          // 1 / 2^(coarsened axes)
-        mutable std::vector<double> x, b, r;
+        mutable std::vector<double> x, b;  // the coarse levels' unknowns and right-hand sides
+        mutable std::vector<double> r;     // the residual restricted to the next level
     };
 
     static AxisTransfer makeTransfer(int fine, bool coarsen);
-    void vcycle(std::size_t level) const;
+    // x = V-cycle(b) on level l; the finest level works on the caller's vectors.
+    void vcycle(std::size_t level, const std::vector<double>& b, std::vector<double>& x) const;
     void restrictResidual(const Level& fine, const Level& coarse) const;
-    void prolongAndAdd(const Level& coarse, const Level& fine) const;
+    // x (fine) += P · coarse.x
+    void prolongAndAdd(const Level& coarse, const Level& fine, std::vector<double>& x) const;
 
     std::vector<Level> levels_;
 };
