@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <numbers>
 
@@ -98,6 +100,29 @@ TEST(MeshCoverage, BandLimitedUpdateMatchesAFullRecomputation) {
     fresh.update(mesh);
     for (std::size_t cell = 0; cell < fresh.values().size(); ++cell)
         ASSERT_NEAR(incremental.values()[cell], fresh.values()[cell], 1e-6) << "cell " << cell;
+}
+
+// The same on voxels that are not cubes, over a box whose corner is off the
+// lattice of OpenVDB's voxels (cubes of the smallest edge): the reach of the
+// cells' samples and the wider band (3 voxels here) are counted in the grid's
+// own terms. A dent with a hard rim pulls on triangles that also hold
+// vertices that stay.
+TEST(MeshCoverage, BandLimitedUpdateMatchesOnNonCubicVoxels) {
+    const GridSpec grid{glm::ivec3(70, 50, 61), glm::dvec3(-0.513, -0.47, -0.52), glm::dvec3(0.49, 0.53, 0.5)};
+    const TriangleMesh rest = sphereMesh(glm::dvec3(0.013, -0.007, 0.004), 0.35, 48, 96);
+    MeshCoverage incremental(grid);
+    incremental.update(rest);
+    for (double depth : {0.02, -0.015}) {
+        TriangleMesh mesh = rest;
+        for (glm::dvec3& v : mesh.vertices)
+            if (glm::length(v - glm::dvec3(0.35, 0.05, 0.0)) < 0.12) v *= 1.0 - depth / 0.35;
+        incremental.update(mesh);
+        EXPECT_LT(incremental.lastDistanceTriangles(), mesh.triangles.size() / 2);
+        MeshCoverage fresh(grid);
+        fresh.update(mesh);
+        for (std::size_t cell = 0; cell < fresh.values().size(); ++cell)
+            ASSERT_NEAR(incremental.values()[cell], fresh.values()[cell], 1e-6) << "cell " << cell;
+    }
 }
 
 // The acceptance volumes again, reached through a band-limited update: a
