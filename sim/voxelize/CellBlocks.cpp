@@ -11,14 +11,28 @@ CellBlocks::CellBlocks(const GridSpec& grid)
       blocks_((grid.resolution + kEdge - 1) / kEdge),
       marked_(static_cast<std::size_t>(blocks_.x) * blocks_.y * blocks_.z, 0) {}
 
+std::size_t CellBlocks::blockIndex(int i, int j, int k) const {
+    return static_cast<std::size_t>(i) + blocks_.x * (static_cast<std::size_t>(j) + blocks_.y * static_cast<std::size_t>(k));
+}
+
 void CellBlocks::mark(const CellBox& cells) {
     if (cells.empty()) return;
     const glm::ivec3 first = cells.min / kEdge;
     const glm::ivec3 last = (cells.max - 1) / kEdge;
     for (int k = first.z; k <= last.z; ++k)
         for (int j = first.y; j <= last.y; ++j)
+            for (int i = first.x; i <= last.x; ++i) marked_[blockIndex(i, j, k)] = 1;
+}
+
+bool CellBlocks::overlaps(const CellBox& cells) const {
+    if (cells.empty()) return false;
+    const glm::ivec3 first = cells.min / kEdge;
+    const glm::ivec3 last = (cells.max - 1) / kEdge;
+    for (int k = first.z; k <= last.z; ++k)
+        for (int j = first.y; j <= last.y; ++j)
             for (int i = first.x; i <= last.x; ++i)
-                marked_[static_cast<std::size_t>(i) + blocks_.x * (static_cast<std::size_t>(j) + blocks_.y * static_cast<std::size_t>(k))] = 1;
+                if (marked_[blockIndex(i, j, k)]) return true;
+    return false;
 }
 
 void CellBlocks::markAll() { std::fill(marked_.begin(), marked_.end(), 1); }
@@ -41,8 +55,7 @@ std::vector<CellBox> CellBlocks::boxes() const {
     for (int k = 0; k < blocks_.z; ++k)
         for (int j = 0; j < blocks_.y; ++j)
             for (int i = 0; i < blocks_.x; ++i) {
-                if (!marked_[static_cast<std::size_t>(i) + blocks_.x * (static_cast<std::size_t>(j) + blocks_.y * static_cast<std::size_t>(k))])
-                    continue;
+                if (!marked_[blockIndex(i, j, k)]) continue;
                 const glm::ivec3 min = glm::ivec3(i, j, k) * kEdge;
                 result.push_back({min, glm::min(min + kEdge, resolution_)});
             }

@@ -21,11 +21,14 @@ public:
     void markAll();
     void add(const CellBlocks& other);  // same grid
     bool empty() const;
+    bool overlaps(const CellBox& cells) const;  // true when a block the box overlaps is marked
     long long cellCount() const;
     // The marked blocks as cell boxes, clipped to the grid.
     std::vector<CellBox> boxes() const;
 
 private:
+    std::size_t blockIndex(int i, int j, int k) const;
+
     glm::ivec3 resolution_;
     glm::ivec3 blocks_;
     std::vector<unsigned char> marked_;

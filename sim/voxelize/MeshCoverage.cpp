@@ -1,10 +1,10 @@
 #include "sim/voxelize/MeshCoverage.h"
 
 #include "bridge/core/Error.h"
+#include "sim/voxelize/BandDistance.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
-#include <openvdb/tools/MeshToVolume.h>
 #include <tbb/parallel_for.h>
 
 #include <glm/geometric.hpp>
@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <chrono>
-#include <limits>
 #include <mutex>
 
 namespace eikon::sim {
@@ -33,11 +32,10 @@ MeshCoverage::MeshCoverage(const GridSpec& grid) : grid_(grid), coverage_(grid.c
 CellBlocks MeshCoverage::update(const TriangleMesh& mesh) {
     EIKON_CHECK(!mesh.triangles.empty());
     const CellBlocks region = movedRegion(mesh);
-    const std::vector<CellBox> boxes = region.boxes();
-    levelSetMs_ = coverageMs_ = 0.0;
-    if (!boxes.empty()) recompute(mesh, boxes);
-    lastRecomputed_ = 0;
-    for (const CellBox& box : boxes) lastRecomputed_ += box.cellCount();
+    distanceTriangles_ = 0;
+    distanceMs_ = signMs_ = coverageMs_ = 0.0;
+    if (!region.empty()) recompute(mesh, region);
+    lastRecomputed_ = region.cellCount();
     previous_ = mesh;
     first_ = false;
     return region;
@@ -83,32 +81,27 @@ CellBlocks MeshCoverage::movedRegion(const TriangleMesh& mesh) const {
     return blocks;
 }
 
-void MeshCoverage::recompute(const TriangleMesh& mesh, const std::vector<CellBox>& region) {
+void MeshCoverage::recompute(const TriangleMesh& mesh, const CellBlocks& region) {
     const double h = grid_.smallestVoxelEdge();
     const glm::dvec3 voxel = grid_.voxelSize();
     const double halfDiagonal = 0.5 * glm::length(voxel);
     // The band must reach past the cells that use the linear model, with
     // the trilinear stencil of their gradient.
     const float halfWidth = static_cast<float>(std::max(2.0, std::ceil(halfDiagonal / h) + 1.0));
+    // A cell reads φ at its centre and half a voxel to either side of it.
+    const double reach = 0.5 * std::max({voxel.x, voxel.y, voxel.z});
+    BandDistanceReport report;
+    const openvdb::FloatGrid::Ptr distance = bandSignedDistance(mesh, grid_, region, reach, halfWidth, report);
+    distanceTriangles_ = report.triangles;
+    distanceMs_ = report.distanceMs;
+    signMs_ = report.signMs;
 
-    std::vector<openvdb::Vec3s> points(mesh.vertices.size());
-    for (std::size_t v = 0; v < points.size(); ++v)
-        points[v] = openvdb::Vec3s(static_cast<float>(mesh.vertices[v].x), static_cast<float>(mesh.vertices[v].y),
-                                   static_cast<float>(mesh.vertices[v].z));
-    std::vector<openvdb::Vec3I> triangles(mesh.triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-        triangles[t] = openvdb::Vec3I(mesh.triangles[t].x, mesh.triangles[t].y, mesh.triangles[t].z);
-    const openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(h);
-    auto start = std::chrono::steady_clock::now();
-    const openvdb::FloatGrid::Ptr distance =
-        openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*transform, points, triangles, halfWidth);
-
-    levelSetMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    start = std::chrono::steady_clock::now();
+    const std::vector<CellBox> boxes = region.boxes();
+    const auto start = std::chrono::steady_clock::now();
     const glm::dvec3 step = 0.5 * voxel;
     const double certain = halfDiagonal + 0.5 * h;  // beyond this from the centre φ cannot change sign in the cell
-    tbb::parallel_for(std::size_t{0}, region.size(), [&](std::size_t b) {
-        const CellBox& box = region[b];
+    tbb::parallel_for(std::size_t{0}, boxes.size(), [&](std::size_t b) {
+        const CellBox& box = boxes[b];
         openvdb::FloatGrid::ConstAccessor accessor = distance->getConstAccessor();
         const openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler> sampler(
             accessor, distance->transform());
