@@ -14,6 +14,7 @@
 // sub-mesh, OpenVDB's meshToVolume), in its sign (row parity of the whole
 // mesh) and in the coverage of the recomputed cells, and the process CPU ms
 // per frame (all threads).
+#include "bench/ProcessCpuTime.h"
 #include "sim/deform/ArapDeformer.h"
 #include "sim/deform/MeshShapes.h"
 #include "sim/deform/SpatialDeformers.h"
@@ -23,22 +24,13 @@
 
 #include <glm/geometric.hpp>
 
-#include <sys/resource.h>
-
 #include <chrono>
 #include <cmath>
 
 namespace {
 
 using namespace eikon;
-
-// CPU time of the whole process (all threads), ms: on a shared machine the
-// wall time depends on the other load, the work done does not.
-double processCpuMs() {
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return 1e3 * (usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-3 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
+using bench::processCpuMs;
 
 const GridSpec kGrid{glm::ivec3(128), glm::dvec3(-0.5), glm::dvec3(0.5)};
 

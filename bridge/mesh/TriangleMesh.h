@@ -2,7 +2,7 @@
 // reader and the deformers (sim/deform) to the voxelizer and to exporters.
 // Triangles index `vertices`; a closed mesh has every edge shared by exactly
 // two triangles. Orientation is not relied on (the voxelizer decides inside
-// and outside by flood fill, not by winding).
+// and outside by the parity of row crossings, not by winding).
 #pragma once
 
 #include <glm/vec3.hpp>

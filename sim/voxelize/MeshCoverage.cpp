@@ -47,13 +47,28 @@ double MeshCoverage::coveredVolume() const {
     return sum * grid_.voxelVolume();
 }
 
+// The band must reach past the cells that use the linear model, with the
+// trilinear stencil of their gradient; in voxels of the smallest edge.
+double MeshCoverage::bandHalfWidth() const {
+    return std::max(2.0, std::ceil(0.5 * glm::length(grid_.voxelSize()) / grid_.smallestVoxelEdge()) + 1.0);
+}
+
+// A cell reads φ at its centre and half a voxel to either side of it.
+double MeshCoverage::sampleReach() const {
+    const glm::dvec3 voxel = grid_.voxelSize();
+    return 0.5 * std::max({voxel.x, voxel.y, voxel.z});
+}
+
 // Around each moved triangle, the box of its old and new positions widened
-// by the band in which coverage depends on it (half a voxel diagonal plus a
-// voxel of slack for trilinear reconstruction of φ): a cell outside every
-// such box is neither swept by the surface nor near it, so its coverage
-// stands.
+// by the reach of the cells that can see it: a cell reads φ within
+// sampleReach() of its centre, trilinearly from distance voxels up to one
+// voxel further, and a voxel's distance can come from a triangle up to the
+// band's half-width away (its sign changes only where the surface swept
+// through it, inside the box). A cell outside every such box reads no value
+// the moved triangles decide, so its coverage stands.
 CellBlocks MeshCoverage::movedRegion(const TriangleMesh& mesh) const {
-    const double margin = 0.5 * glm::length(grid_.voxelSize()) + grid_.smallestVoxelEdge();
+    const double h = grid_.smallestVoxelEdge();
+    const double margin = sampleReach() + h + bandHalfWidth() * h;
     CellBlocks blocks(grid_);
     auto markTriangle = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, glm::dvec3 lo, glm::dvec3 hi) {
         lo = glm::min(lo, glm::min(a, glm::min(b, c)));
@@ -85,13 +100,9 @@ void MeshCoverage::recompute(const TriangleMesh& mesh, const CellBlocks& region)
     const double h = grid_.smallestVoxelEdge();
     const glm::dvec3 voxel = grid_.voxelSize();
     const double halfDiagonal = 0.5 * glm::length(voxel);
-    // The band must reach past the cells that use the linear model, with
-    // the trilinear stencil of their gradient.
-    const float halfWidth = static_cast<float>(std::max(2.0, std::ceil(halfDiagonal / h) + 1.0));
-    // A cell reads φ at its centre and half a voxel to either side of it.
-    const double reach = 0.5 * std::max({voxel.x, voxel.y, voxel.z});
     BandDistanceReport report;
-    const openvdb::FloatGrid::Ptr distance = bandSignedDistance(mesh, grid_, region, reach, halfWidth, report);
+    const openvdb::FloatGrid::Ptr distance =
+        bandSignedDistance(mesh, grid_, region, sampleReach(), static_cast<float>(bandHalfWidth()), report);
     distanceTriangles_ = report.triangles;
     distanceMs_ = report.distanceMs;
     signMs_ = report.signMs;

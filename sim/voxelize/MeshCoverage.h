@@ -55,6 +55,8 @@ public:
     double lastCoverageMilliseconds() const { return coverageMs_; }
 
 private:
+    double bandHalfWidth() const;  // of the distance band, in voxels of the smallest edge
+    double sampleReach() const;    // m
     CellBlocks movedRegion(const TriangleMesh& mesh) const;
     void recompute(const TriangleMesh& mesh, const CellBlocks& region);
 
