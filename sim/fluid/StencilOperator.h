@@ -24,6 +24,7 @@ struct SevenPointOperator {
     std::vector<std::uint8_t> coupled;   // bit 2·axis + side: the lower (0) or upper (1) neighbour is an unknown
 
     static constexpr std::uint8_t bit(int axis, int side) { return static_cast<std::uint8_t>(1u << (2 * axis + side)); }
+    static constexpr std::uint8_t kAllCoupled = 0x3f;
 
     std::size_t cellCount() const { return diag.size(); }
     std::size_t index(int i, int j, int k) const {
@@ -37,6 +38,9 @@ struct SevenPointOperator {
         const std::uint8_t bits = coupled[c];
         const std::size_t sy = static_cast<std::size_t>(size.x);
         const std::size_t sz = sy * static_cast<std::size_t>(size.y);
+        if (bits == kAllCoupled)  // the interior: no branch per neighbour
+            return weight.x * (x[c - 1] + x[c + 1]) + weight.y * (x[c - sy] + x[c + sy]) +
+                   weight.z * (x[c - sz] + x[c + sz]);
         double s = 0.0;
         if (bits & bit(0, 0)) s += weight.x * x[c - 1];
         if (bits & bit(0, 1)) s += weight.x * x[c + 1];
