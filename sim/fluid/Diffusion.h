@@ -1,8 +1,10 @@
 // Implicit diffusion, ∂φ/∂t = D ∇²φ by backward Euler (Stam 1999, "Stable
 // Fluids", §2.3): (I + Δt·D·L) φⁿ⁺¹ = φⁿ with L the positive seven-point
 // Laplacian, unconditionally stable for any Δt·D/h². Solved for the
-// increment δ = φⁿ⁺¹ − φⁿ by Jacobi-preconditioned conjugate gradients, so the
-// tolerance is relative to the change, not to the (possibly large) values.
+// increment δ = φⁿ⁺¹ − φⁿ, so the tolerance is relative to the change, not
+// to the (possibly large) values: by Jacobi iteration when Δt·D/h² is small
+// enough that it contracts fast (JacobiIteration.h), by Jacobi-preconditioned
+// conjugate gradients otherwise.
 #pragma once
 
 #include "sim/fluid/ConjugateGradient.h"
