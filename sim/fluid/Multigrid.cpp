@@ -124,28 +124,37 @@ void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& c
     const auto& ty = fine.toCoarser[1];
     const auto& tz = fine.toCoarser[2];
     forEachSlice(coarse.op, [&](int ck) {
-        for (int cj = 0; cj < cs.y; ++cj)
+        for (int cj = 0; cj < cs.y; ++cj) {
+            // The (at most 4 × 4) fine rows feeding this coarse row, with their y–z weights.
+            const double* rows[16];
+            double rowWeights[16];
+            int rowCount = 0;
+            for (int a = 0; a < 4; ++a) {
+                const double wz = tz.weights[ck][a];
+                if (wz == 0.0) continue;
+                for (int b = 0; b < 4; ++b) {
+                    const double wyz = wz * ty.weights[cj][b];
+                    if (wyz == 0.0) continue;
+                    rows[rowCount] = fine.r.data() + fine.op.index(0, ty.firstChild[cj] + b, tz.firstChild[ck] + a);
+                    rowWeights[rowCount++] = wyz;
+                }
+            }
             for (int ci = 0; ci < cs.x; ++ci) {
                 const std::size_t c = coarse.op.index(ci, cj, ck);
                 double s = 0.0;
                 if (coarse.op.diag[c] != 0.0) {
-                    for (int a = 0; a < 4; ++a) {
-                        const double wz = tz.weights[ck][a];
-                        if (wz == 0.0) continue;
-                        const int fk = tz.firstChild[ck] + a;
-                        for (int b = 0; b < 4; ++b) {
-                            const double wyz = wz * ty.weights[cj][b];
-                            if (wyz == 0.0) continue;
-                            const int fj = ty.firstChild[cj] + b;
-                            for (int d = 0; d < 4; ++d) {
-                                const double w = wyz * tx.weights[ci][d];
-                                if (w != 0.0) s += w * fine.r[fine.op.index(tx.firstChild[ci] + d, fj, fk)];
-                            }
-                        }
+                    for (int d = 0; d < 4; ++d) {
+                        const double wx = tx.weights[ci][d];
+                        if (wx == 0.0) continue;
+                        const int fi = tx.firstChild[ci] + d;
+                        double column = 0.0;
+                        for (int row = 0; row < rowCount; ++row) column += rowWeights[row] * rows[row][fi];
+                        s += wx * column;
                     }
                 }
                 coarse.b[c] = fine.restrictionScale * s;
             }
+        }
     });
 }
 
@@ -158,18 +167,22 @@ void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fi
         const int zs[2] = {tz.parent[k], tz.neighbour[k]};
         const double wzs[2] = {tz.parentWeight, tz.neighbourWeight};
         for (int j = 0; j < fs.y; ++j) {
-            const int ys[2] = {ty.parent[j], ty.neighbour[j]};
-            const double wys[2] = {ty.parentWeight, ty.neighbourWeight};
+            // The 2 × 2 coarse rows this fine row interpolates, with their y–z weights.
+            const double* rows[4];
+            double rowWeights[4];
+            for (int a = 0; a < 2; ++a)
+                for (int b = 0; b < 2; ++b) {
+                    const int y = b == 0 ? ty.parent[j] : ty.neighbour[j];
+                    rows[2 * a + b] = coarse.x.data() + coarse.op.index(0, y, zs[a]);
+                    rowWeights[2 * a + b] = wzs[a] * (b == 0 ? ty.parentWeight : ty.neighbourWeight);
+                }
             for (int i = 0; i < fs.x; ++i) {
                 const std::size_t f = fine.op.index(i, j, k);
                 if (fine.op.diag[f] == 0.0) continue;
-                const int xs[2] = {tx.parent[i], tx.neighbour[i]};
-                const double wxs[2] = {tx.parentWeight, tx.neighbourWeight};
+                const int parent = tx.parent[i], neighbour = tx.neighbour[i];
                 double s = 0.0;
-                for (int a = 0; a < 2; ++a)
-                    for (int b = 0; b < 2; ++b)
-                        for (int d = 0; d < 2; ++d)
-                            s += wzs[a] * wys[b] * wxs[d] * coarse.x[coarse.op.index(xs[d], ys[b], zs[a])];
+                for (int row = 0; row < 4; ++row)
+                    s += rowWeights[row] * (tx.parentWeight * rows[row][parent] + tx.neighbourWeight * rows[row][neighbour]);
                 x[f] += s;
             }
         }
