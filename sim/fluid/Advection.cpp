@@ -79,26 +79,48 @@ public:
                 glm::dvec3 offset, double dt)
         : flow_(flow), scratch_(scratch), cells_(cells), axis_(axis), offset_(offset), dt_(dt) {}
 
-    glm::dvec3 back(int i, int j, int k) const { return end(scratch_.cellBack, i, j, k, -dt_); }
-    glm::dvec3 ahead(int i, int j, int k) const { return end(scratch_.cellAhead, i, j, k, dt_); }
-
-private:
-    std::size_t cellIndex(glm::ivec3 c) const {
-        return static_cast<std::size_t>(c.x) +
-               static_cast<std::size_t>(cells_.x) * (static_cast<std::size_t>(c.y) + static_cast<std::size_t>(cells_.y) * c.z);
+    // The backward (or forward) ends of row (j, k) of the lattice, rowLength samples.
+    void backRow(int j, int k, int rowLength, glm::dvec3* ends) const {
+        row(scratch_.cellBack, j, k, rowLength, -dt_, ends);
+    }
+    void aheadRow(int j, int k, int rowLength, glm::dvec3* ends) const {
+        row(scratch_.cellAhead, j, k, rowLength, dt_, ends);
     }
 
-    glm::dvec3 end(const std::vector<glm::vec3>& displacements, int i, int j, int k, double t) const {
-        const glm::ivec3 sample(i, j, k);
-        const glm::dvec3 g(sample);
-        if (axis_ < 0) return g + glm::dvec3(displacements[cellIndex(sample)]);
-        if (sample[axis_] == 0 || sample[axis_] == cells_[axis_]) {
-            const glm::dvec3 start = g + offset_;
-            return g + flow_.displacement(start, flow_.at(start), t);
+private:
+    const glm::vec3* cellRow(const std::vector<glm::vec3>& displacements, int j, int k) const {
+        return displacements.data() + static_cast<std::size_t>(cells_.x) * (j + static_cast<std::size_t>(cells_.y) * k);
+    }
+
+    glm::dvec3 traced(int i, int j, int k, double t) const {
+        const glm::dvec3 start = glm::dvec3(i, j, k) + offset_;
+        return glm::dvec3(i, j, k) + flow_.displacement(start, flow_.at(start), t);
+    }
+
+    void row(const std::vector<glm::vec3>& displacements, int j, int k, int rowLength, double t,
+             glm::dvec3* ends) const {
+        if (axis_ < 0) {
+            const glm::vec3* here = cellRow(displacements, j, k);
+            for (int i = 0; i < rowLength; ++i) ends[i] = glm::dvec3(i, j, k) + glm::dvec3(here[i]);
+            return;
         }
-        glm::ivec3 lower = sample;
-        lower[axis_] -= 1;
-        return g + 0.5 * (glm::dvec3(displacements[cellIndex(lower)]) + glm::dvec3(displacements[cellIndex(sample)]));
+        if (axis_ == 0) {  // x faces: the cells on either side lie in the same row
+            const glm::vec3* here = cellRow(displacements, j, k);
+            ends[0] = traced(0, j, k, t);
+            for (int i = 1; i + 1 < rowLength; ++i)
+                ends[i] = glm::dvec3(i, j, k) + 0.5 * (glm::dvec3(here[i - 1]) + glm::dvec3(here[i]));
+            ends[rowLength - 1] = traced(rowLength - 1, j, k, t);
+            return;
+        }
+        const int along = axis_ == 1 ? j : k;  // y or z faces: the cells lie in the rows below and above
+        if (along == 0 || along == cells_[axis_]) {
+            for (int i = 0; i < rowLength; ++i) ends[i] = traced(i, j, k, t);
+            return;
+        }
+        const glm::vec3* above = cellRow(displacements, j, k);
+        const glm::vec3* below = axis_ == 1 ? cellRow(displacements, j - 1, k) : cellRow(displacements, j, k - 1);
+        for (int i = 0; i < rowLength; ++i)
+            ends[i] = glm::dvec3(i, j, k) + 0.5 * (glm::dvec3(below[i]) + glm::dvec3(above[i]));
     }
 
     const CellVelocity& flow_;
@@ -135,9 +157,11 @@ void advectGroup(const LatticeEnds& ends, const std::vector<const GridField*>& s
     reserveGroup(group, layout, fieldCount);
     std::vector<GridField>& forward = group.forward;  // φ̂ⁿ⁺¹ = A(φⁿ), the semi-Lagrangian result
     tbb::parallel_for(0, n.z, [&](int k) {
-        for (int j = 0; j < n.y; ++j)
+        std::vector<glm::dvec3> row(static_cast<std::size_t>(n.x));
+        for (int j = 0; j < n.y; ++j) {
+            ends.backRow(j, k, n.x, row.data());
             for (int i = 0; i < n.x; ++i) {
-                const glm::dvec3 back = ends.back(i, j, k);
+                const glm::dvec3& back = row[static_cast<std::size_t>(i)];
                 const std::size_t s = layout.index(i, j, k);
                 for (std::size_t f = 0; f < fieldCount; ++f) {
                     const StencilSample sample = sampleWithBounds(*sources[f], back);
@@ -146,11 +170,14 @@ void advectGroup(const LatticeEnds& ends, const std::vector<const GridField*>& s
                     group.high[f][s] = sample.max;
                 }
             }
+        }
     });
     tbb::parallel_for(0, n.z, [&](int k) {
-        for (int j = 0; j < n.y; ++j)
+        std::vector<glm::dvec3> row(static_cast<std::size_t>(n.x));
+        for (int j = 0; j < n.y; ++j) {
+            ends.aheadRow(j, k, n.x, row.data());
             for (int i = 0; i < n.x; ++i) {
-                const glm::dvec3 ahead = ends.ahead(i, j, k);
+                const glm::dvec3& ahead = row[static_cast<std::size_t>(i)];
                 const std::size_t s = layout.index(i, j, k);
                 for (std::size_t f = 0; f < fieldCount; ++f) {
                     const double roundTrip = sampleTrilinear(forward[f], ahead);  // φ̂ⁿ = Aᴿ(φ̂ⁿ⁺¹)
@@ -158,6 +185,7 @@ void advectGroup(const LatticeEnds& ends, const std::vector<const GridField*>& s
                     targets[f]->values[s] = std::clamp(corrected, group.low[f][s], group.high[f][s]);
                 }
             }
+        }
     });
 }
 
