@@ -20,15 +20,6 @@ bool FluidDomain::anyOpenFace() const {
                        [](SimDesc::Boundary b) { return b == SimDesc::Boundary::Open; });
 }
 
-bool FluidDomain::faceIsFixed(int axis, int i, int j, int k) const {
-    glm::ivec3 upper(i, j, k);
-    glm::ivec3 lower = upper;
-    lower[axis] -= 1;
-    if (lower[axis] < 0) return !isOpen(axis, 0) || isSolid(upper.x, upper.y, upper.z);
-    if (upper[axis] >= cells[axis]) return !isOpen(axis, 1) || isSolid(lower.x, lower.y, lower.z);
-    return isSolid(lower.x, lower.y, lower.z) || isSolid(upper.x, upper.y, upper.z);
-}
-
 void addObstacles(FluidDomain& domain, const MacGrid& mac, const std::vector<SimDesc::Obstacle>& obstacles) {
     const glm::ivec3 n = domain.cells;
     tbb::parallel_for(0, n.z, [&](int k) {

@@ -35,7 +35,15 @@ struct FluidDomain {
     // The face of axis `axis` with lattice index (i, j, k), between cells
     // (i, j, k) − e_axis and (i, j, k): true when its velocity is prescribed
     // (zero) because it lies on a closed wall or touches a solid cell.
-    bool faceIsFixed(int axis, int i, int j, int k) const;
+    // Inline: the projection and the boundary pass ask it for every face.
+    bool faceIsFixed(int axis, int i, int j, int k) const {
+        glm::ivec3 upper(i, j, k);
+        glm::ivec3 lower = upper;
+        lower[axis] -= 1;
+        if (lower[axis] < 0) return !isOpen(axis, 0) || isSolid(upper.x, upper.y, upper.z);
+        if (upper[axis] >= cells[axis]) return !isOpen(axis, 1) || isSolid(lower.x, lower.y, lower.z);
+        return isSolid(lower.x, lower.y, lower.z) || isSolid(upper.x, upper.y, upper.z);
+    }
 };
 
 // Marks the cells whose centres lie inside any of the obstacles as solid.
