@@ -50,19 +50,29 @@ void toCellsPerSecond(const MacGrid& mac, std::array<GridField, 3>& cellsPerSeco
 
 // Traces the characteristics through every cell centre both ways; the
 // backward and forward steps start from the same velocity, sampled once.
+// The velocity at the centre of a cell is the mean of its two faces per
+// axis — what trilinear sampling gives there, without the gathers.
 void traceCellCentres(const CellVelocity& flow, glm::ivec3 cells, double dt, AdvectionScratch& scratch) {
     const std::size_t count = static_cast<std::size_t>(cells.x) * cells.y * cells.z;
     scratch.cellBack.resize(count);
     scratch.cellAhead.resize(count);
+    const std::array<GridField, 3>& u = scratch.tracing;
     tbb::parallel_for(0, cells.z, [&](int k) {
         std::size_t c = static_cast<std::size_t>(cells.x) * cells.y * k;
-        for (int j = 0; j < cells.y; ++j)
+        for (int j = 0; j < cells.y; ++j) {
+            const double* ux = &u[0].values[u[0].index(0, j, k)];
+            const double* uyBelow = &u[1].values[u[1].index(0, j, k)];
+            const double* uyAbove = &u[1].values[u[1].index(0, j + 1, k)];
+            const double* uzBelow = &u[2].values[u[2].index(0, j, k)];
+            const double* uzAbove = &u[2].values[u[2].index(0, j, k + 1)];
             for (int i = 0; i < cells.x; ++i, ++c) {
                 const glm::dvec3 g = glm::dvec3(i, j, k) + 0.5;
-                const glm::dvec3 velocity = flow.at(g);
+                const glm::dvec3 velocity(0.5 * (ux[i] + ux[i + 1]), 0.5 * (uyBelow[i] + uyAbove[i]),
+                                          0.5 * (uzBelow[i] + uzAbove[i]));
                 scratch.cellBack[c] = glm::vec3(flow.displacement(g, velocity, -dt));
                 scratch.cellAhead[c] = glm::vec3(flow.displacement(g, velocity, dt));
             }
+        }
     });
 }
 
