@@ -91,8 +91,8 @@ void MultigridPreconditioner::apply(const std::vector<double>& r, std::vector<do
 
 void MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b, std::vector<double>& x) const {
     const Level& level = levels_[l];
-    std::fill(x.begin(), x.end(), 0.0);
     if (l + 1 == levels_.size()) {
+        std::fill(x.begin(), x.end(), 0.0);
         // Coarsest level: symmetric Gauss–Seidel sweeps, enough to cross it a few times.
         const int sweeps = 2 * std::max({level.op.size.x, level.op.size.y, level.op.size.z});
         for (int s = 0; s < sweeps; ++s) {
@@ -103,7 +103,9 @@ void MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b
         }
         return;
     }
-    for (int s = 0; s < kSmoothingSweeps; ++s) {
+    level.op.relaxColourFromZero(b, x);  // the first red half-sweep, from x = 0
+    level.op.relaxColour(b, x, 1);
+    for (int s = 1; s < kSmoothingSweeps; ++s) {
         level.op.relaxColour(b, x, 0);
         level.op.relaxColour(b, x, 1);
     }

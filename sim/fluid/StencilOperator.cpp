@@ -36,6 +36,16 @@ void SevenPointOperator::relaxColour(const std::vector<double>& b, std::vector<d
     });
 }
 
+void SevenPointOperator::relaxColourFromZero(const std::vector<double>& b, std::vector<double>& x) const {
+    forEachSlice(*this, [&](int k) {
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i) {
+                const std::size_t c = index(i, j, k);
+                x[c] = ((i + j + k) & 1) == 0 && diag[c] != 0.0 ? b[c] / diag[c] : 0.0;
+            }
+    });
+}
+
 SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vector<std::uint8_t>& active,
                                    const bool openFaces[6]) {
     SevenPointOperator op;

@@ -57,6 +57,9 @@ struct SevenPointOperator {
     void residual(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r) const;
     // One Gauss–Seidel half-sweep over the cells with (i + j + k) % 2 == colour.
     void relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const;
+    // x = 0 and then relaxColour(b, x, 0), in one pass: colour-0 cells have
+    // only colour-1 neighbours, still zero, so they take b / diag.
+    void relaxColourFromZero(const std::vector<double>& b, std::vector<double>& x) const;
 };
 
 // Runs body(k) for every slice k of the operator's lattice: in parallel,
