@@ -13,11 +13,12 @@ namespace eikon::sim {
 namespace {
 
 constexpr double kJacobiBelow = 0.5;  // contraction per sweep under which Jacobi beats CG
+constexpr std::uint8_t kNotFree = 64;  // the diagonal class of a held or excluded sample
 
 }  // namespace
 
 ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole> roles)
-    : roles_(std::move(roles)), exchanging_(roles_.size(), 0) {
+    : roles_(std::move(roles)), diagonalClass_(roles_.size(), kNotFree) {
     a_.size = size;
     a_.diag.assign(roles_.size(), 0.0);
     a_.coupled.assign(roles_.size(), 0);
@@ -26,6 +27,7 @@ ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole>
             for (int i = 0; i < size.x; ++i) {
                 const std::size_t c = a_.index(i, j, k);
                 if (roles_[c] != DiffusionRole::Free) continue;
+                diagonalClass_[c] = 0;
                 const glm::ivec3 cell(i, j, k);
                 for (int axis = 0; axis < 3; ++axis)
                     for (int side = 0; side < 2; ++side) {
@@ -34,7 +36,7 @@ ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole>
                         if (m[axis] < 0 || m[axis] >= size[axis]) continue;
                         const DiffusionRole role = roles_[a_.index(m.x, m.y, m.z)];
                         if (role == DiffusionRole::Excluded) continue;
-                        exchanging_[c] |= SevenPointOperator::bit(axis, side);
+                        diagonalClass_[c] |= SevenPointOperator::bit(axis, side);
                         if (role == DiffusionRole::Free) a_.coupled[c] |= SevenPointOperator::bit(axis, side);
                     }
             }
@@ -44,19 +46,28 @@ ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole>
 }
 
 void ImplicitDiffusion::setWeight(glm::dvec3 weight) {
-    if (weighted_ && weight == a_.weight) return;
+    if (a_.weight == weight && !diagonal_.empty()) return;
     a_.weight = weight;
-    weighted_ = true;
+    diagonal_.assign(kNotFree + 1, 0.0);  // the class of a held or excluded sample keeps 0
+    inverseDiagonal_.assign(kNotFree + 1, 0.0);
+    for (std::uint8_t bits = 0; bits < kNotFree; ++bits) {
+        double diag = 1.0;
+        for (int axis = 0; axis < 3; ++axis)
+            for (int side = 0; side < 2; ++side)
+                if (bits & SevenPointOperator::bit(axis, side)) diag += weight[axis];
+        diagonal_[bits] = diag;
+        inverseDiagonal_[bits] = 1.0 / diag;
+    }
+    operatorDiagonalSet_ = false;
+}
+
+void ImplicitDiffusion::setOperatorDiagonal() {
+    if (operatorDiagonalSet_) return;
     tbb::parallel_for(0, a_.size.z, [&](int k) {
-        for (std::size_t c = a_.index(0, 0, k), end = a_.index(0, 0, k + 1); c < end; ++c) {
-            if (roles_[c] != DiffusionRole::Free) continue;
-            double diag = 1.0;
-            for (int axis = 0; axis < 3; ++axis)
-                for (int side = 0; side < 2; ++side)
-                    if (exchanging_[c] & SevenPointOperator::bit(axis, side)) diag += weight[axis];
-            a_.diag[c] = diag;
-        }
+        for (std::size_t c = a_.index(0, 0, k), end = a_.index(0, 0, k + 1); c < end; ++c)
+            a_.diag[c] = diagonal_[diagonalClass_[c]];
     });
+    operatorDiagonalSet_ = true;
 }
 
 SolveStats ImplicitDiffusion::diffuse(GridField& field, glm::dvec3 h, double dtTimesD, double tolerance,
@@ -70,7 +81,7 @@ SolveStats ImplicitDiffusion::diffuse(GridField& field, glm::dvec3 h, double dtT
     // rhs = −Σ w (φ_c − φ_n) over the exchanging neighbours: (Δt D ∇²φ)_c.
     tbb::parallel_for(0, a_.size.z, [&](int k) {
         for (std::size_t c = a_.index(0, 0, k), end = a_.index(0, 0, k + 1); c < end; ++c) {
-            const std::uint8_t bits = exchanging_[c];
+            const std::uint8_t bits = diagonalClass_[c];  // no axis bits for a held or excluded sample
             double flux = 0.0;
             if (bits & SevenPointOperator::bit(0, 0)) flux += w.x * (phi[c] - phi[c - 1]);
             if (bits & SevenPointOperator::bit(0, 1)) flux += w.x * (phi[c] - phi[c + 1]);
@@ -85,10 +96,17 @@ SolveStats ImplicitDiffusion::diffuse(GridField& field, glm::dvec3 h, double dtT
     // Jacobi contracts the error by ρ <= 2Σw / (1 + 2Σw) per sweep; below
     // kJacobiBelow it reaches the tolerance in fewer bytes moved than CG.
     const double coupling = 2.0 * (w.x + w.y + w.z);
-    const SolveStats stats =
-        coupling / (1.0 + coupling) <= kJacobiBelow
-            ? jacobiIteration(a_, rhs_, increment_, work_.z, tolerance, maxIterations)
-            : conjugateGradient(a_, rhs_, increment_, jacobiPreconditioner(a_), tolerance, maxIterations, false, work_);
+    SolveStats stats;
+    if (coupling / (1.0 + coupling) <= kJacobiBelow) {
+        const auto diagonalOf = [&](std::size_t c) {
+            const std::uint8_t sampleClass = diagonalClass_[c];
+            return DiagonalEntry{diagonal_[sampleClass], inverseDiagonal_[sampleClass]};
+        };
+        stats = jacobiIteration(a_, diagonalOf, rhs_, increment_, work_.z, tolerance, maxIterations);
+    } else {
+        setOperatorDiagonal();
+        stats = conjugateGradient(a_, rhs_, increment_, jacobiPreconditioner(a_), tolerance, maxIterations, false, work_);
+    }
     axpy(1.0, increment_, field.values);
     return stats;
 }

@@ -33,13 +33,20 @@ public:
     SolveStats diffuse(GridField& field, glm::dvec3 h, double dtTimesD, double tolerance, int maxIterations);
 
 private:
-    // Sets the operator's diagonal 1 + Σ w over the neighbours that exchange.
+    // The diagonal 1 + Σ w over the neighbours that exchange depends only on
+    // which neighbours do: tabulated per pattern for a weight, so a Jacobi
+    // sweep reads one byte per sample for it and never divides.
     void setWeight(glm::dvec3 weight);
+    // Fills a_.diag from the table, for conjugate gradients.
+    void setOperatorDiagonal();
 
     std::vector<DiffusionRole> roles_;
-    std::vector<std::uint8_t> exchanging_;  // per Free sample, SevenPointOperator::bit of each non-Excluded neighbour
-    SevenPointOperator a_;                  // coupled bits fixed; diag valid for a_.weight
-    bool weighted_ = false;                 // a_.diag has been set for a_.weight
+    // Per sample: SevenPointOperator::bit of each neighbour it exchanges
+    // with (a Free sample), or 64 (a held or excluded one).
+    std::vector<std::uint8_t> diagonalClass_;
+    std::vector<double> diagonal_, inverseDiagonal_;  // per class, for a_.weight
+    SevenPointOperator a_;                            // coupled bits fixed; diag set only for CG
+    bool operatorDiagonalSet_ = false;
     std::vector<double> rhs_, increment_;
     CgWorkspace work_;
 };

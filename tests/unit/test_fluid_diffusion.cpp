@@ -72,7 +72,10 @@ TEST(FluidDiffusion, JacobiIterationMatchesConjugateGradients) {
     for (std::size_t c = 0; c < count; ++c) b[c] = a.diag[c] != 0.0 ? normal(rng) : 0.0;
     std::vector<double> byJacobi(count, 0.0), byCg(count, 0.0), scratch;
     CgWorkspace work;
-    const SolveStats jacobi = jacobiIteration(a, b, byJacobi, scratch, 1e-12, 1000);
+    const auto diagonalOf = [&](std::size_t c) {
+        return DiagonalEntry{a.diag[c], a.diag[c] != 0.0 ? 1.0 / a.diag[c] : 0.0};
+    };
+    const SolveStats jacobi = jacobiIteration(a, diagonalOf, b, byJacobi, scratch, 1e-12, 1000);
     const SolveStats cg = conjugateGradient(a, b, byCg, jacobiPreconditioner(a), 1e-12, 1000, false, work);
     EXPECT_LE(jacobi.relativeResidual, 1e-12);
     EXPECT_LE(cg.relativeResidual, 1e-12);
