@@ -109,7 +109,7 @@ void MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b
         level.op.relaxColour(b, x, 0);
         level.op.relaxColour(b, x, 1);
     }
-    level.op.residual(b, x, level.r);
+    level.op.residualAfterSweep(b, x, level.r, 0);  // the last half-sweep was over colour 1
     const Level& coarse = levels_[l + 1];
     restrictResidual(level, coarse);
     vcycle(l + 1, coarse.b, coarse.x);

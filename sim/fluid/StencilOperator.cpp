@@ -26,6 +26,19 @@ void SevenPointOperator::residual(const std::vector<double>& b, const std::vecto
     });
 }
 
+void SevenPointOperator::residualAfterSweep(const std::vector<double>& b, const std::vector<double>& x,
+                                            std::vector<double>& r, int colour) const {
+    forEachSlice(*this, [&](int k) {
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i) {
+                const std::size_t c = index(i, j, k);
+                r[c] = ((i + j + k + colour) & 1) != 0 || diag[c] == 0.0
+                           ? 0.0
+                           : b[c] - (diag[c] * x[c] - neighbourSum(x, c));
+            }
+    });
+}
+
 void SevenPointOperator::relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const {
     forEachSlice(*this, [&](int k) {
         for (int j = 0; j < size.y; ++j)

@@ -55,6 +55,11 @@ struct SevenPointOperator {
     double applyAndDot(const std::vector<double>& x, std::vector<double>& y) const;
     // r = b − A x
     void residual(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r) const;
+    // The same right after a Gauss–Seidel half-sweep over the other colour,
+    // which left those cells' equations exactly solved: r = b − A x on the
+    // cells of `colour`, 0 on the others, for half the stencil work.
+    void residualAfterSweep(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r,
+                            int colour) const;
     // One Gauss–Seidel half-sweep over the cells with (i + j + k) % 2 == colour.
     void relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const;
     // x = 0 and then relaxColour(b, x, 0), in one pass: colour-0 cells have
