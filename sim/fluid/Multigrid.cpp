@@ -1,5 +1,7 @@
 #include "sim/fluid/Multigrid.h"
 
+#include "sim/fluid/ParallelOps.h"
+
 #include <algorithm>
 
 namespace eikon::sim {
@@ -84,12 +86,12 @@ MultigridPreconditioner::MultigridPreconditioner(glm::ivec3 size, glm::dvec3 h,
     }
 }
 
-void MultigridPreconditioner::apply(const std::vector<double>& r, std::vector<double>& z) const {
+double MultigridPreconditioner::apply(const std::vector<double>& r, std::vector<double>& z) const {
     z.resize(r.size());
-    vcycle(0, r, z);
+    return vcycle(0, r, z);
 }
 
-void MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b, std::vector<double>& x) const {
+double MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b, std::vector<double>& x) const {
     const Level& level = levels_[l];
     if (l + 1 == levels_.size()) {
         std::fill(x.begin(), x.end(), 0.0);
@@ -101,7 +103,7 @@ void MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b
             level.op.relaxColour(b, x, 1);
             level.op.relaxColour(b, x, 0);
         }
-        return;
+        return dot(b, x);
     }
     level.op.relaxColourFromZero(b, x);  // the first red half-sweep, from x = 0
     level.op.relaxColour(b, x, 1);
@@ -114,10 +116,12 @@ void MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b
     restrictResidual(level, coarse);
     vcycle(l + 1, coarse.b, coarse.x);
     prolongAndAdd(coarse, level, x);
-    for (int s = 0; s < kSmoothingSweeps; ++s) {
+    for (int s = 1; s < kSmoothingSweeps; ++s) {
         level.op.relaxColour(b, x, 1);
         level.op.relaxColour(b, x, 0);
     }
+    level.op.relaxColour(b, x, 1);
+    return level.op.relaxColourAndDot(b, x, 0);
 }
 
 void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& coarse) const {

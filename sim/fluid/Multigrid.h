@@ -26,7 +26,8 @@ public:
     int levelCount() const { return static_cast<int>(levels_.size()); }
 
     // z = V-cycle(r) from a zero initial guess. Uses internal scratch: one call at a time.
-    void apply(const std::vector<double>& r, std::vector<double>& z) const;
+    // Returns r · z, which CG needs next, from the cycle's last pass.
+    double apply(const std::vector<double>& r, std::vector<double>& z) const;
 
 private:
     // Cell-centred linear interpolation along one axis from n_coarse to n_fine
@@ -49,8 +50,9 @@ private:
     };
 
     static AxisTransfer makeTransfer(int fine, bool coarsen);
-    // x = V-cycle(b) on level l; the finest level works on the caller's vectors.
-    void vcycle(std::size_t level, const std::vector<double>& b, std::vector<double>& x) const;
+    // x = V-cycle(b) on level l (the finest level works on the caller's
+    // vectors); returns b · x.
+    double vcycle(std::size_t level, const std::vector<double>& b, std::vector<double>& x) const;
     void restrictResidual(const Level& fine, const Level& coarse) const;
     // x (fine) += P · coarse.x
     void prolongAndAdd(const Level& coarse, const Level& fine, std::vector<double>& x) const;

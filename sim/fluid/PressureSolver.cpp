@@ -43,10 +43,7 @@ SolveStats PressureSolver::project(MacGrid& mac, GridField& pressure, double tol
     if (singular_) removeMean(rhs, a.diag);  // closed box: Σ∇·u = 0 up to rounding
     const SolveStats stats = conjugateGradient(
         a, rhs, pressure.values,
-        [this](const std::vector<double>& r, std::vector<double>& z) {
-            multigrid_.apply(r, z);
-            return dot(r, z);
-        },
+        [this](const std::vector<double>& r, std::vector<double>& z) { return multigrid_.apply(r, z); },
         tolerance,
         maxIterations, singular_, work_);
 

@@ -49,6 +49,19 @@ void SevenPointOperator::relaxColour(const std::vector<double>& b, std::vector<d
     });
 }
 
+double SevenPointOperator::relaxColourAndDot(const std::vector<double>& b, std::vector<double>& x, int colour) const {
+    return sumOverSlices(*this, [&](int k) {
+        double partial = 0.0;
+        for (int j = 0; j < size.y; ++j)
+            for (int i = 0; i < size.x; ++i) {
+                const std::size_t c = index(i, j, k);
+                if (((i + j + k + colour) & 1) == 0 && diag[c] != 0.0) x[c] = (b[c] + neighbourSum(x, c)) / diag[c];
+                partial += b[c] * x[c];
+            }
+        return partial;
+    });
+}
+
 void SevenPointOperator::relaxColourFromZero(const std::vector<double>& b, std::vector<double>& x) const {
     forEachSlice(*this, [&](int k) {
         for (int j = 0; j < size.y; ++j)

@@ -62,6 +62,9 @@ struct SevenPointOperator {
                             int colour) const;
     // One Gauss–Seidel half-sweep over the cells with (i + j + k) % 2 == colour.
     void relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const;
+    // relaxColour, returning b · x afterwards: the half-sweep touches every
+    // cache line of b and x anyway, so the dot product costs no extra pass.
+    double relaxColourAndDot(const std::vector<double>& b, std::vector<double>& x, int colour) const;
     // x = 0 and then relaxColour(b, x, 0), in one pass: colour-0 cells have
     // only colour-1 neighbours, still zero, so they take b / diag.
     void relaxColourFromZero(const std::vector<double>& b, std::vector<double>& x) const;
