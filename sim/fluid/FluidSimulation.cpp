@@ -127,14 +127,14 @@ void FluidSimulation::step(double dt) {
 }
 
 void FluidSimulation::substep(double dt) {
-    checkFinite("at the start of a substep");  // what was handed in from outside
+    checkFinite("at the start of a substep", kScalars | kVelocity | kPressure);  // what was handed in from outside
     {
         PhaseClock clock(timing(kSources));
         sources_.applyScalars(state_);
         addBuoyancy(state_, domain_, desc_, dt);
         sources_.applyVelocity(state_);
         enforceVelocityBoundaries(state_.flow, domain_);
-        checkFinite("after sources");
+        checkFinite("after sources", kScalars | kVelocity);
     }
     {
         PhaseClock clock(timing(kAdvection));
@@ -146,7 +146,7 @@ void FluidSimulation::substep(double dt) {
         }
         enforceVelocityBoundaries(state_.flow, domain_);
         sources_.applyScalars(state_);
-        checkFinite("after advection");
+        checkFinite("after advection", kScalars | kVelocity);
     }
     {
         PhaseClock clock(timing(kDiffusion));
@@ -160,14 +160,14 @@ void FluidSimulation::substep(double dt) {
         run(temperatureDiffusion_, state_.temperature, desc_.thermalDiffusivity);
         run(concentrationDiffusion_, state_.concentration, desc_.concentrationDiffusivity);
         run(dyeDiffusion_, state_.dye, desc_.dyeDiffusivity);
-        checkFinite("after diffusion");
+        checkFinite("after diffusion", kScalars | kVelocity);
     }
     {
         PhaseClock clock(timing(kProjection));
         sources_.applyVelocity(state_);
         record(timing(kProjection),
                pressure_->project(state_.flow, state_.pressure, desc_.pressureTolerance, kMaxSolverIterations));
-        checkFinite("after projection");
+        checkFinite("after projection", kVelocity | kPressure);
     }
     time_ += dt;
 }
@@ -186,14 +186,18 @@ void FluidSimulation::advectConserving(const std::vector<GridField*>& scalars, d
         restoreTotal(*scalars[f], budgets[f].total, budgets[f].low, budgets[f].high);
 }
 
-void FluidSimulation::checkFinite(const std::string& phase) const {
+void FluidSimulation::checkFinite(const std::string& phase, unsigned fields) const {
     // Scalars first: buoyancy carries a bad temperature into the velocity.
-    requireFinite(state_.temperature, "temperature", "cell", phase);
-    requireFinite(state_.concentration, "concentration", "cell", phase);
-    requireFinite(state_.dye, "dye", "cell", phase);
-    const char* const axes[3] = {"velocity_x", "velocity_y", "velocity_z"};
-    for (int axis = 0; axis < 3; ++axis) requireFinite(state_.flow.velocity[axis], axes[axis], "face", phase);
-    requireFinite(state_.pressure, "pressure", "cell", phase);
+    if (fields & kScalars) {
+        requireFinite(state_.temperature, "temperature", "cell", phase);
+        requireFinite(state_.concentration, "concentration", "cell", phase);
+        requireFinite(state_.dye, "dye", "cell", phase);
+    }
+    if (fields & kVelocity) {
+        const char* const axes[3] = {"velocity_x", "velocity_y", "velocity_z"};
+        for (int axis = 0; axis < 3; ++axis) requireFinite(state_.flow.velocity[axis], axes[axis], "face", phase);
+    }
+    if (fields & kPressure) requireFinite(state_.pressure, "pressure", "cell", phase);
 }
 
 void FluidSimulation::writeFields(FieldSet& fields) const {

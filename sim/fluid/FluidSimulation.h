@@ -86,7 +86,10 @@ private:
     // scalar's total restored (MassCorrection.h).
     void advectConserving(const std::vector<GridField*>& scalars, double dt);
     void rebuildRoles();
-    void checkFinite(const std::string& phase) const;
+    // Throws at the first NaN or Inf in the fields a phase wrote (a mask of
+    // kScalars, kVelocity, kPressure), naming the field and the cell.
+    enum CheckedFields : unsigned { kScalars = 1, kVelocity = 2, kPressure = 4 };
+    void checkFinite(const std::string& phase, unsigned fields) const;
     PhaseTiming& timing(int phase) { return timings_[static_cast<std::size_t>(phase)]; }
 
     SimDesc desc_;
