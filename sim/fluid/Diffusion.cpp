@@ -6,7 +6,6 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <utility>
 
 namespace eikon::sim {
 
@@ -17,16 +16,16 @@ constexpr std::uint8_t kNotFree = 64;  // the diagonal class of a held or exclud
 
 }  // namespace
 
-ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole> roles)
-    : roles_(std::move(roles)), diagonalClass_(roles_.size(), kNotFree) {
+ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, const std::vector<DiffusionRole>& roles)
+    : diagonalClass_(roles.size(), kNotFree) {
     a_.size = size;
-    a_.diag.assign(roles_.size(), 0.0);
-    a_.coupled.assign(roles_.size(), 0);
+    a_.diag.assign(roles.size(), 0.0);
+    a_.coupled.assign(roles.size(), 0);
     tbb::parallel_for(0, size.z, [&](int k) {
         for (int j = 0; j < size.y; ++j)
             for (int i = 0; i < size.x; ++i) {
                 const std::size_t c = a_.index(i, j, k);
-                if (roles_[c] != DiffusionRole::Free) continue;
+                if (roles[c] != DiffusionRole::Free) continue;
                 diagonalClass_[c] = 0;
                 const glm::ivec3 cell(i, j, k);
                 for (int axis = 0; axis < 3; ++axis)
@@ -34,15 +33,15 @@ ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole>
                         glm::ivec3 m = cell;
                         m[axis] += side == 0 ? -1 : 1;
                         if (m[axis] < 0 || m[axis] >= size[axis]) continue;
-                        const DiffusionRole role = roles_[a_.index(m.x, m.y, m.z)];
+                        const DiffusionRole role = roles[a_.index(m.x, m.y, m.z)];
                         if (role == DiffusionRole::Excluded) continue;
                         diagonalClass_[c] |= SevenPointOperator::bit(axis, side);
                         if (role == DiffusionRole::Free) a_.coupled[c] |= SevenPointOperator::bit(axis, side);
                     }
             }
     });
-    increment_.assign(roles_.size(), 0.0);
-    rhs_.assign(roles_.size(), 0.0);
+    increment_.assign(roles.size(), 0.0);
+    rhs_.assign(roles.size(), 0.0);
 }
 
 void ImplicitDiffusion::setWeight(glm::dvec3 weight) {

@@ -28,7 +28,7 @@ enum class DiffusionRole : std::uint8_t { Free, Fixed, Excluded };
 class ImplicitDiffusion {
 public:
     ImplicitDiffusion() = default;
-    ImplicitDiffusion(glm::ivec3 size, std::vector<DiffusionRole> roles);
+    ImplicitDiffusion(glm::ivec3 size, const std::vector<DiffusionRole>& roles);
 
     SolveStats diffuse(GridField& field, glm::dvec3 h, double dtTimesD, double tolerance, int maxIterations);
 
@@ -40,7 +40,6 @@ private:
     // Fills a_.diag from the table, for conjugate gradients.
     void setOperatorDiagonal();
 
-    std::vector<DiffusionRole> roles_;
     // Per sample: SevenPointOperator::bit of each neighbour it exchanges
     // with (a Free sample), or 64 (a held or excluded one).
     std::vector<std::uint8_t> diagonalClass_;

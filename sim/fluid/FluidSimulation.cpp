@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <utility>
 
 namespace eikon::sim {
 
@@ -78,9 +77,9 @@ void FluidSimulation::rebuildRoles() {
     std::vector<DiffusionRole> temperatureRoles = scalarRoles;
     sources_.holdTemperature(temperatureRoles);
     const glm::ivec3 cells = state_.flow.grid.resolution;
-    temperatureDiffusion_ = ImplicitDiffusion(cells, std::move(temperatureRoles));
+    temperatureDiffusion_ = ImplicitDiffusion(cells, temperatureRoles);
     concentrationDiffusion_ = ImplicitDiffusion(cells, scalarRoles);
-    dyeDiffusion_ = ImplicitDiffusion(cells, std::move(scalarRoles));
+    dyeDiffusion_ = ImplicitDiffusion(cells, scalarRoles);
     for (int axis = 0; axis < 3; ++axis) {
         const GridField& u = state_.flow.velocity[axis];
         std::vector<DiffusionRole> roles(u.count(), DiffusionRole::Free);
@@ -88,7 +87,7 @@ void FluidSimulation::rebuildRoles() {
             for (int j = 0; j < u.size.y; ++j)
                 for (int i = 0; i < u.size.x; ++i)
                     if (domain_.faceIsFixed(axis, i, j, k)) roles[u.index(i, j, k)] = DiffusionRole::Fixed;
-        velocityDiffusion_[axis] = ImplicitDiffusion(u.size, std::move(roles));
+        velocityDiffusion_[axis] = ImplicitDiffusion(u.size, roles);
     }
 }
 
