@@ -2,9 +2,9 @@
 // Fluids", §2.3): (I + Δt·D·L) φⁿ⁺¹ = φⁿ with L the positive seven-point
 // Laplacian, unconditionally stable for any Δt·D/h². Solved for the
 // increment δ = φⁿ⁺¹ − φⁿ, so the tolerance is relative to the change, not
-// to the (possibly large) values: by Jacobi iteration when Δt·D/h² is small
-// enough that it contracts fast (JacobiIteration.h), by Jacobi-preconditioned
-// conjugate gradients otherwise.
+// to the (possibly large) values: by red–black Gauss–Seidel when Δt·D/h² is
+// small enough that it contracts fast (GaussSeidelIteration.h), by
+// Jacobi-preconditioned conjugate gradients otherwise.
 #pragma once
 
 #include "sim/fluid/ConjugateGradient.h"
@@ -34,7 +34,7 @@ public:
 
 private:
     // The diagonal 1 + Σ w over the neighbours that exchange depends only on
-    // which neighbours do: tabulated per pattern for a weight, so a Jacobi
+    // which neighbours do: tabulated per pattern for a weight, so a Gauss–Seidel
     // sweep reads one byte per sample for it and never divides.
     void setWeight(glm::dvec3 weight);
     // Fills a_.diag from the table, for conjugate gradients.

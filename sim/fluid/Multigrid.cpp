@@ -98,30 +98,20 @@ double MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>&
         // Coarsest level: symmetric Gauss–Seidel sweeps, enough to cross it a few times.
         const int sweeps = 2 * std::max({level.op.size.x, level.op.size.y, level.op.size.z});
         for (int s = 0; s < sweeps; ++s) {
-            level.op.relaxColour(b, x, 0);
-            level.op.relaxColour(b, x, 1);
-            level.op.relaxColour(b, x, 1);
-            level.op.relaxColour(b, x, 0);
+            level.op.relaxBothColours(b, x, 0);
+            level.op.relaxBothColours(b, x, 1);
         }
         return dot(b, x);
     }
-    level.op.relaxColourFromZero(b, x);  // the first red half-sweep, from x = 0
-    level.op.relaxColour(b, x, 1);
-    for (int s = 1; s < kSmoothingSweeps; ++s) {
-        level.op.relaxColour(b, x, 0);
-        level.op.relaxColour(b, x, 1);
-    }
+    level.op.relaxBothColoursFromZero(b, x);
+    for (int s = 1; s < kSmoothingSweeps; ++s) level.op.relaxBothColours(b, x, 0);
     level.op.residualAfterSweep(b, x, level.r, 0);  // the last half-sweep was over colour 1
     const Level& coarse = levels_[l + 1];
     restrictResidual(level, coarse);
     vcycle(l + 1, coarse.b, coarse.x);
     prolongAndAdd(coarse, level, x);
-    for (int s = 1; s < kSmoothingSweeps; ++s) {
-        level.op.relaxColour(b, x, 1);
-        level.op.relaxColour(b, x, 0);
-    }
-    level.op.relaxColour(b, x, 1);
-    return level.op.relaxColourAndDot(b, x, 0);
+    for (int s = 1; s < kSmoothingSweeps; ++s) level.op.relaxBothColours(b, x, 1);
+    return level.op.relaxBothColoursAndDot(b, x, 1);
 }
 
 void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& coarse) const {
@@ -130,19 +120,19 @@ void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& c
     const auto& ty = fine.toCoarser[1];
     const auto& tz = fine.toCoarser[2];
     forEachSlice(coarse.op, [&](int ck) {
+        std::vector<double> blended(static_cast<std::size_t>(fine.op.size.x));
         for (int cj = 0; cj < cs.y; ++cj) {
-            // The (at most 4 × 4) fine rows feeding this coarse row, with their y–z weights.
-            const double* rows[16];
-            double rowWeights[16];
-            int rowCount = 0;
+            // Blend the (at most 4 × 4) fine rows feeding this coarse row with
+            // their y–z weights, then restrict the blend along x: Pᵀ is separable.
+            std::fill(blended.begin(), blended.end(), 0.0);
             for (int a = 0; a < 4; ++a) {
                 const double wz = tz.weights[ck][a];
                 if (wz == 0.0) continue;
                 for (int b = 0; b < 4; ++b) {
                     const double wyz = wz * ty.weights[cj][b];
                     if (wyz == 0.0) continue;
-                    rows[rowCount] = fine.r.data() + fine.op.index(0, ty.firstChild[cj] + b, tz.firstChild[ck] + a);
-                    rowWeights[rowCount++] = wyz;
+                    const double* row = fine.r.data() + fine.op.index(0, ty.firstChild[cj] + b, tz.firstChild[ck] + a);
+                    for (int fi = 0; fi < fine.op.size.x; ++fi) blended[fi] += wyz * row[fi];
                 }
             }
             for (int ci = 0; ci < cs.x; ++ci) {
@@ -151,11 +141,7 @@ void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& c
                 if (coarse.op.diag[c] != 0.0) {
                     for (int d = 0; d < 4; ++d) {
                         const double wx = tx.weights[ci][d];
-                        if (wx == 0.0) continue;
-                        const int fi = tx.firstChild[ci] + d;
-                        double column = 0.0;
-                        for (int row = 0; row < rowCount; ++row) column += rowWeights[row] * rows[row][fi];
-                        s += wx * column;
+                        if (wx != 0.0) s += wx * blended[tx.firstChild[ci] + d];
                     }
                 }
                 coarse.b[c] = fine.restrictionScale * s;
@@ -172,24 +158,26 @@ void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fi
     forEachSlice(fine.op, [&](int k) {
         const int zs[2] = {tz.parent[k], tz.neighbour[k]};
         const double wzs[2] = {tz.parentWeight, tz.neighbourWeight};
+        std::vector<double> blended(static_cast<std::size_t>(coarse.op.size.x));
         for (int j = 0; j < fs.y; ++j) {
-            // The 2 × 2 coarse rows this fine row interpolates, with their y–z weights.
+            // Blend the 2 × 2 coarse rows this fine row interpolates with their
+            // y–z weights, then interpolate the blend along x: P is separable.
+            const int ys[2] = {ty.parent[j], ty.neighbour[j]};
+            const double wys[2] = {ty.parentWeight, ty.neighbourWeight};
             const double* rows[4];
-            double rowWeights[4];
+            double weights[4];
             for (int a = 0; a < 2; ++a)
                 for (int b = 0; b < 2; ++b) {
-                    const int y = b == 0 ? ty.parent[j] : ty.neighbour[j];
-                    rows[2 * a + b] = coarse.x.data() + coarse.op.index(0, y, zs[a]);
-                    rowWeights[2 * a + b] = wzs[a] * (b == 0 ? ty.parentWeight : ty.neighbourWeight);
+                    rows[2 * a + b] = coarse.x.data() + coarse.op.index(0, ys[b], zs[a]);
+                    weights[2 * a + b] = wzs[a] * wys[b];
                 }
+            for (int ci = 0; ci < coarse.op.size.x; ++ci)
+                blended[ci] = weights[0] * rows[0][ci] + weights[1] * rows[1][ci] + weights[2] * rows[2][ci] +
+                              weights[3] * rows[3][ci];
             for (int i = 0; i < fs.x; ++i) {
                 const std::size_t f = fine.op.index(i, j, k);
-                if (fine.op.diag[f] == 0.0) continue;
-                const int parent = tx.parent[i], neighbour = tx.neighbour[i];
-                double s = 0.0;
-                for (int row = 0; row < 4; ++row)
-                    s += rowWeights[row] * (tx.parentWeight * rows[row][parent] + tx.neighbourWeight * rows[row][neighbour]);
-                x[f] += s;
+                if (fine.op.diag[f] != 0.0)
+                    x[f] += tx.parentWeight * blended[tx.parent[i]] + tx.neighbourWeight * blended[tx.neighbour[i]];
             }
         }
     });

@@ -1,5 +1,7 @@
 #include "sim/fluid/StencilOperator.h"
 
+#include "sim/fluid/LaggedSlices.h"
+
 #include <tbb/parallel_for.h>
 
 namespace eikon::sim {
@@ -39,37 +41,63 @@ void SevenPointOperator::residualAfterSweep(const std::vector<double>& b, const 
     });
 }
 
-void SevenPointOperator::relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const {
-    forEachSlice(*this, [&](int k) {
-        for (int j = 0; j < size.y; ++j)
-            for (int i = (j + k + colour) & 1; i < size.x; i += 2) {
-                const std::size_t c = index(i, j, k);
-                if (diag[c] != 0.0) x[c] = (b[c] + neighbourSum(x, c)) / diag[c];
-            }
-    });
+bool SevenPointOperator::passesInParallel() const { return cellCount() >= kSerialSliceCells; }
+
+void SevenPointOperator::relaxSlice(const std::vector<double>& b, std::vector<double>& x, int k, int colour) const {
+    for (int j = 0; j < size.y; ++j)
+        for (int i = (j + k + colour) & 1; i < size.x; i += 2) {
+            const std::size_t c = index(i, j, k);
+            if (diag[c] != 0.0) x[c] = (b[c] + neighbourSum(x, c)) / diag[c];
+        }
 }
 
-double SevenPointOperator::relaxColourAndDot(const std::vector<double>& b, std::vector<double>& x, int colour) const {
-    return sumOverSlices(*this, [&](int k) {
-        double partial = 0.0;
-        for (int j = 0; j < size.y; ++j)
-            for (int i = 0; i < size.x; ++i) {
-                const std::size_t c = index(i, j, k);
-                if (((i + j + k + colour) & 1) == 0 && diag[c] != 0.0) x[c] = (b[c] + neighbourSum(x, c)) / diag[c];
-                partial += b[c] * x[c];
-            }
-        return partial;
-    });
+void SevenPointOperator::relaxBothColours(const std::vector<double>& b, std::vector<double>& x, int first) const {
+    lagSecondPassBySlice(
+        size.z, passesInParallel(), 0.0,
+        [&](int k) {
+            relaxSlice(b, x, k, first);
+            return 0.0;
+        },
+        [&](int k) {
+            relaxSlice(b, x, k, 1 - first);
+            return 0.0;
+        },
+        std::plus<>());
 }
 
-void SevenPointOperator::relaxColourFromZero(const std::vector<double>& b, std::vector<double>& x) const {
-    forEachSlice(*this, [&](int k) {
-        for (int j = 0; j < size.y; ++j)
-            for (int i = 0; i < size.x; ++i) {
-                const std::size_t c = index(i, j, k);
-                x[c] = ((i + j + k) & 1) == 0 && diag[c] != 0.0 ? b[c] / diag[c] : 0.0;
-            }
-    });
+void SevenPointOperator::relaxBothColoursFromZero(const std::vector<double>& b, std::vector<double>& x) const {
+    lagSecondPassBySlice(
+        size.z, passesInParallel(), 0.0,
+        [&](int k) {
+            for (int j = 0; j < size.y; ++j)
+                for (int i = 0; i < size.x; ++i) {
+                    const std::size_t c = index(i, j, k);
+                    x[c] = ((i + j + k) & 1) == 0 && diag[c] != 0.0 ? b[c] / diag[c] : 0.0;
+                }
+            return 0.0;
+        },
+        [&](int k) {
+            relaxSlice(b, x, k, 1);
+            return 0.0;
+        },
+        std::plus<>());
+}
+
+double SevenPointOperator::relaxBothColoursAndDot(const std::vector<double>& b, std::vector<double>& x,
+                                                  int first) const {
+    return lagSecondPassBySlice(
+        size.z, passesInParallel(), 0.0,
+        [&](int k) {
+            relaxSlice(b, x, k, first);
+            return 0.0;
+        },
+        [&](int k) {
+            relaxSlice(b, x, k, 1 - first);
+            double partial = 0.0;
+            for (std::size_t c = index(0, 0, k), end = index(0, 0, k + 1); c < end; ++c) partial += b[c] * x[c];
+            return partial;
+        },
+        std::plus<>());
 }
 
 SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vector<std::uint8_t>& active,

@@ -60,14 +60,21 @@ struct SevenPointOperator {
     // cells of `colour`, 0 on the others, for half the stencil work.
     void residualAfterSweep(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r,
                             int colour) const;
-    // One Gauss–Seidel half-sweep over the cells with (i + j + k) % 2 == colour.
-    void relaxColour(const std::vector<double>& b, std::vector<double>& x, int colour) const;
-    // relaxColour, returning b · x afterwards: the half-sweep touches every
-    // cache line of b and x anyway, so the dot product costs no extra pass.
-    double relaxColourAndDot(const std::vector<double>& b, std::vector<double>& x, int colour) const;
-    // x = 0 and then relaxColour(b, x, 0), in one pass: colour-0 cells have
-    // only colour-1 neighbours, still zero, so they take b / diag.
-    void relaxColourFromZero(const std::vector<double>& b, std::vector<double>& x) const;
+    // One red–black Gauss–Seidel sweep: the cells with (i + j + k) % 2 ==
+    // first, then the others, in one pass over memory (LaggedSlices.h).
+    // Sweeps with first = 0 and then first = 1 make a symmetric smoother.
+    void relaxBothColours(const std::vector<double>& b, std::vector<double>& x, int first) const;
+    // x = 0 and then relaxBothColours(b, x, 0): colour-0 cells have only
+    // colour-1 neighbours, still zero, so they take b / diag.
+    void relaxBothColoursFromZero(const std::vector<double>& b, std::vector<double>& x) const;
+    // relaxBothColours, returning b · x afterwards: each slice adds its terms
+    // while it is still in cache, once both its colours are final.
+    double relaxBothColoursAndDot(const std::vector<double>& b, std::vector<double>& x, int first) const;
+
+private:
+    // The Gauss–Seidel update of the cells of `colour` in slice k.
+    void relaxSlice(const std::vector<double>& b, std::vector<double>& x, int k, int colour) const;
+    bool passesInParallel() const;
 };
 
 // Runs body(k) for every slice k of the operator's lattice: in parallel,
