@@ -36,7 +36,7 @@ double precondition(const Preconditioner& preconditioner, const SevenPointOperat
                     const std::vector<double>& r, std::vector<double>& z) {
     const double rz = preconditioner(r, z);
     if (!singular) return rz;
-    removeMean(z, a.diag);
+    a.removeMeanOverUnknowns(z);
     return dot(r, z);
 }
 
@@ -59,7 +59,7 @@ SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<doub
     z.resize(n);
     q.resize(n);
     a.residual(b, x, r);
-    if (singular) removeMean(r, a.diag);
+    if (singular) a.removeMeanOverUnknowns(r);
     SolveStats stats{0, maxAbs(r) / bNorm};
     if (stats.relativeResidual <= tolerance) return stats;
 
@@ -88,7 +88,7 @@ Preconditioner jacobiPreconditioner(const SevenPointOperator& a) {
             Range(0, r.size(), 4096), 0.0,
             [&](const Range& range, double partial) {
                 for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                    z[i] = a.diag[i] == 0.0 ? 0.0 : r[i] / a.diag[i];
+                    z[i] = r[i] * a.inverseDiagonal(i);
                     partial += r[i] * z[i];
                 }
                 return partial;

@@ -35,7 +35,7 @@ SolveStats conjugateGradient(const SevenPointOperator& a, const std::vector<doub
                              const Preconditioner& preconditioner, double tolerance, int maxIterations, bool singular,
                              CgWorkspace& work);
 
-// The Jacobi preconditioner z = r / diag.
+// The Jacobi preconditioner z = r / diag (0 off the unknowns).
 Preconditioner jacobiPreconditioner(const SevenPointOperator& a);
 
 }  // namespace eikon::sim

@@ -23,7 +23,7 @@ enum class DiffusionRole : std::uint8_t { Free, Fixed, Excluded };
 
 // Backward-Euler diffusion of the fields of one lattice with fixed roles. The
 // operator's structure depends only on the roles, so it is built once; a solve
-// only rescales the diagonal when Δt·D/h² changes, and reuses its scratch.
+// only retabulates the diagonal when Δt·D/h² changes, and reuses its scratch.
 // Rebuild it when the roles change (new solids, held cells).
 class ImplicitDiffusion {
 public:
@@ -33,19 +33,9 @@ public:
     SolveStats diffuse(GridField& field, glm::dvec3 h, double dtTimesD, double tolerance, int maxIterations);
 
 private:
-    // The diagonal 1 + Σ w over the neighbours that exchange depends only on
-    // which neighbours do: tabulated per pattern for a weight, so a Gauss–Seidel
-    // sweep reads one byte per sample for it and never divides.
-    void setWeight(glm::dvec3 weight);
-    // Fills a_.diag from the table, for conjugate gradients.
-    void setOperatorDiagonal();
-
-    // Per sample: SevenPointOperator::bit of each neighbour it exchanges
-    // with (a Free sample), or 64 (a held or excluded one).
-    std::vector<std::uint8_t> diagonalClass_;
-    std::vector<double> diagonal_, inverseDiagonal_;  // per class, for a_.weight
-    SevenPointOperator a_;                            // coupled bits fixed; diag set only for CG
-    bool operatorDiagonalSet_ = false;
+    // Coupled bits and diagonal classes fixed by the roles (a held or
+    // excluded sample is no unknown); the weights follow Δt·D/h².
+    SevenPointOperator a_;
     std::vector<double> rhs_, increment_;
     CgWorkspace work_;
 };

@@ -24,24 +24,14 @@
 
 namespace eikon::sim {
 
-// A diagonal entry and its reciprocal; {0, 0} for a cell that is not an unknown.
-struct DiagonalEntry {
-    double value;
-    double inverse;
-};
-
 // Solves A x = b from x = 0 until the largest residual met during a sweep is
-// at most tolerance · max|b|, or maxIterations sweeps, with A's diagonal from
-// diagonalOf(c) (the operator's own diag is not read, so a caller may
-// tabulate it). A sweep meets the first colour's residuals before their
+// at most tolerance · max|b|, or maxIterations sweeps. A sweep meets the first colour's residuals before their
 // update and the second colour's after the first colour's; the residual it
 // leaves is 0 on the second colour and, on the first, Σ w · (the second
 // colour's residual met) / diag, so where Σ_n w / diag_n <= 1 — the diffusion
 // matrices it is used on — the x returned is at least as accurate as reported.
-template <class DiagonalOf>
-SolveStats redBlackGaussSeidel(const SevenPointOperator& a, const DiagonalOf& diagonalOf,
-                               const std::vector<double>& b, std::vector<double>& x, double tolerance,
-                               int maxIterations) {
+inline SolveStats redBlackGaussSeidel(const SevenPointOperator& a, const std::vector<double>& b,
+                                      std::vector<double>& x, double tolerance, int maxIterations) {
     x.resize(b.size());
     const double bNorm = maxAbs(b);
     if (bNorm == 0.0) {
@@ -58,10 +48,9 @@ SolveStats redBlackGaussSeidel(const SevenPointOperator& a, const DiagonalOf& di
             if (fromZero) std::fill_n(x.begin() + static_cast<std::ptrdiff_t>(row), a.size.x, 0.0);
             for (int i = (j + k + colour) & 1; i < a.size.x; i += 2) {
                 const std::size_t c = row + static_cast<std::size_t>(i);
-                const DiagonalEntry diagonal = diagonalOf(c);
-                if (diagonal.value == 0.0) continue;  // x stays 0
-                const double residual = fromZero ? b[c] : b[c] + a.neighbourSum(x, c) - diagonal.value * x[c];
-                x[c] += residual * diagonal.inverse;
+                if (!a.isUnknown(c)) continue;  // x stays 0
+                const double residual = fromZero ? b[c] : b[c] + a.neighbourSum(x, c) - a.diagonal(c) * x[c];
+                x[c] += residual * a.inverseDiagonal(c);
                 largest = std::max(largest, std::abs(residual));
             }
         }

@@ -138,7 +138,7 @@ void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& c
             for (int ci = 0; ci < cs.x; ++ci) {
                 const std::size_t c = coarse.op.index(ci, cj, ck);
                 double s = 0.0;
-                if (coarse.op.diag[c] != 0.0) {
+                if (coarse.op.isUnknown(c)) {
                     for (int d = 0; d < 4; ++d) {
                         const double wx = tx.weights[ci][d];
                         if (wx != 0.0) s += wx * blended[tx.firstChild[ci] + d];
@@ -176,7 +176,7 @@ void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fi
                               weights[3] * rows[3][ci];
             for (int i = 0; i < fs.x; ++i) {
                 const std::size_t f = fine.op.index(i, j, k);
-                if (fine.op.diag[f] != 0.0)
+                if (fine.op.isUnknown(f))
                     x[f] += tx.parentWeight * blended[tx.parent[i]] + tx.neighbourWeight * blended[tx.neighbour[i]];
             }
         }

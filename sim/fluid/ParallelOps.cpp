@@ -69,13 +69,4 @@ void axpy(double alpha, const std::vector<double>& x, std::vector<double>& y) {
     });
 }
 
-void removeMean(std::vector<double>& values, const std::vector<double>& mask) {
-    const double count = reduceSum(mask.size(), [&](std::size_t i) { return mask[i] != 0.0 ? 1.0 : 0.0; });
-    if (count == 0.0) return;
-    const double mean = reduceSum(values.size(), [&](std::size_t i) { return mask[i] != 0.0 ? values[i] : 0.0; }) / count;
-    tbb::parallel_for(Range(0, values.size(), kGrain), [&](const Range& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i) values[i] = mask[i] != 0.0 ? values[i] - mean : 0.0;
-    });
-}
-
 }  // namespace eikon::sim

@@ -17,9 +17,4 @@ bool isUniform(const std::vector<double>& a);
 // y += alpha · x
 void axpy(double alpha, const std::vector<double>& x, std::vector<double>& y);
 
-// Subtracts the mean over the entries where mask is non-zero, and leaves the
-// others at zero: the projection onto the complement of the constant null
-// space of a pure-Neumann Poisson problem.
-void removeMean(std::vector<double>& values, const std::vector<double>& mask);
-
 }  // namespace eikon::sim

@@ -1,7 +1,5 @@
 #include "sim/fluid/PressureSolver.h"
 
-#include "sim/fluid/ParallelOps.h"
-
 #include <tbb/parallel_for.h>
 
 namespace eikon::sim {
@@ -37,10 +35,10 @@ SolveStats PressureSolver::project(MacGrid& mac, GridField& pressure, double tol
         for (int j = 0; j < n.y; ++j)
             for (int i = 0; i < n.x; ++i) {
                 const std::size_t c = a.index(i, j, k);
-                rhs[c] = a.diag[c] != 0.0 ? -mac.divergence(i, j, k) : 0.0;
+                rhs[c] = a.isUnknown(c) ? -mac.divergence(i, j, k) : 0.0;
             }
     });
-    if (singular_) removeMean(rhs, a.diag);  // closed box: Σ∇·u = 0 up to rounding
+    if (singular_) a.removeMeanOverUnknowns(rhs);  // closed box: Σ∇·u = 0 up to rounding
     const SolveStats stats = conjugateGradient(
         a, rhs, pressure.values,
         [this](const std::vector<double>& r, std::vector<double>& z) { return multigrid_.apply(r, z); },

@@ -2,15 +2,54 @@
 
 #include "sim/fluid/LaggedSlices.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 namespace eikon::sim {
+
+void SevenPointOperator::setWeight(glm::dvec3 w) {
+    weight = w;
+    for (int bits = 0; bits < kNotUnknown; ++bits) {
+        double diag = identity;
+        for (int axis = 0; axis < 3; ++axis)
+            for (int side = 0; side < 2; ++side)
+                if (bits & bit(axis, side)) diag += weight[axis];
+        diagonalOfClass_[bits] = diag;
+        inverseOfClass_[bits] = diag != 0.0 ? 1.0 / diag : 0.0;
+    }
+    diagonalOfClass_[kNotUnknown] = inverseOfClass_[kNotUnknown] = 0.0;
+}
+
+void SevenPointOperator::removeMeanOverUnknowns(std::vector<double>& values) const {
+    using Range = tbb::blocked_range<std::size_t>;
+    constexpr std::size_t kGrain = 4096;
+    struct CountAndSum {
+        double count = 0.0, sum = 0.0;
+    };
+    const CountAndSum total = tbb::parallel_reduce(
+        Range(0, values.size(), kGrain), CountAndSum{},
+        [&](const Range& r, CountAndSum partial) {
+            for (std::size_t c = r.begin(); c < r.end(); ++c)
+                if (isUnknown(c)) {
+                    partial.count += 1.0;
+                    partial.sum += values[c];
+                }
+            return partial;
+        },
+        [](CountAndSum u, CountAndSum v) { return CountAndSum{u.count + v.count, u.sum + v.sum}; });
+    if (total.count == 0.0) return;
+    const double mean = total.sum / total.count;
+    tbb::parallel_for(Range(0, values.size(), kGrain), [&](const Range& r) {
+        for (std::size_t c = r.begin(); c < r.end(); ++c) values[c] = isUnknown(c) ? values[c] - mean : 0.0;
+    });
+}
 
 double SevenPointOperator::applyAndDot(const std::vector<double>& x, std::vector<double>& y) const {
     return sumOverSlices(*this, [&](int k) {
         double partial = 0.0;
         for (std::size_t c = index(0, 0, k), end = index(0, 0, k + 1); c < end; ++c) {
-            y[c] = diag[c] == 0.0 ? 0.0 : diag[c] * x[c] - neighbourSum(x, c);
+            y[c] = isUnknown(c) ? diagonal(c) * x[c] - neighbourSum(x, c) : 0.0;
             partial += x[c] * y[c];
         }
         return partial;
@@ -23,7 +62,7 @@ void SevenPointOperator::residual(const std::vector<double>& b, const std::vecto
         for (int j = 0; j < size.y; ++j)
             for (int i = 0; i < size.x; ++i) {
                 const std::size_t c = index(i, j, k);
-                r[c] = diag[c] == 0.0 ? 0.0 : b[c] - (diag[c] * x[c] - neighbourSum(x, c));
+                r[c] = isUnknown(c) ? b[c] - (diagonal(c) * x[c] - neighbourSum(x, c)) : 0.0;
             }
     });
 }
@@ -34,9 +73,9 @@ void SevenPointOperator::residualAfterSweep(const std::vector<double>& b, const 
         for (int j = 0; j < size.y; ++j)
             for (int i = 0; i < size.x; ++i) {
                 const std::size_t c = index(i, j, k);
-                r[c] = ((i + j + k + colour) & 1) != 0 || diag[c] == 0.0
-                           ? 0.0
-                           : b[c] - (diag[c] * x[c] - neighbourSum(x, c));
+                r[c] = ((i + j + k + colour) & 1) == 0 && isUnknown(c)
+                           ? b[c] - (diagonal(c) * x[c] - neighbourSum(x, c))
+                           : 0.0;
             }
     });
 }
@@ -47,7 +86,7 @@ void SevenPointOperator::relaxSlice(const std::vector<double>& b, std::vector<do
     for (int j = 0; j < size.y; ++j)
         for (int i = (j + k + colour) & 1; i < size.x; i += 2) {
             const std::size_t c = index(i, j, k);
-            if (diag[c] != 0.0) x[c] = (b[c] + neighbourSum(x, c)) / diag[c];
+            if (isUnknown(c)) x[c] = (b[c] + neighbourSum(x, c)) * inverseDiagonal(c);
         }
 }
 
@@ -72,7 +111,7 @@ void SevenPointOperator::relaxBothColoursFromZero(const std::vector<double>& b, 
             for (int j = 0; j < size.y; ++j)
                 for (int i = 0; i < size.x; ++i) {
                     const std::size_t c = index(i, j, k);
-                    x[c] = ((i + j + k) & 1) == 0 && diag[c] != 0.0 ? b[c] / diag[c] : 0.0;
+                    x[c] = ((i + j + k) & 1) == 0 ? b[c] * inverseDiagonal(c) : 0.0;
                 }
             return 0.0;
         },
@@ -104,8 +143,7 @@ SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vec
                                    const bool openFaces[6]) {
     SevenPointOperator op;
     op.size = size;
-    op.weight = 1.0 / (h * h);
-    op.diag.assign(active.size(), 0.0);
+    op.diagonalClass.assign(active.size(), SevenPointOperator::kNotUnknown);
     op.coupled.assign(active.size(), 0);
     tbb::parallel_for(0, size.z, [&](int k) {
         for (int j = 0; j < size.y; ++j)
@@ -113,19 +151,23 @@ SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vec
                 const std::size_t c = op.index(i, j, k);
                 if (!active[c]) continue;
                 const glm::ivec3 cell(i, j, k);
+                std::uint8_t faces = 0;  // that add to the diagonal
                 for (int axis = 0; axis < 3; ++axis)
                     for (int side = 0; side < 2; ++side) {
                         glm::ivec3 n = cell;
                         n[axis] += side == 0 ? -1 : 1;
                         if (n[axis] < 0 || n[axis] >= size[axis]) {
-                            if (openFaces[2 * axis + side]) op.diag[c] += op.weight[axis];
+                            if (openFaces[2 * axis + side]) faces |= SevenPointOperator::bit(axis, side);
                         } else if (active[op.index(n.x, n.y, n.z)]) {
-                            op.diag[c] += op.weight[axis];
+                            faces |= SevenPointOperator::bit(axis, side);
                             op.coupled[c] |= SevenPointOperator::bit(axis, side);
                         }
                     }
+                // A fluid cell walled in on every side has a zero row: no unknown.
+                if (faces != 0) op.diagonalClass[c] = faces;
             }
     });
+    op.setWeight(1.0 / (h * h));
     return op;
 }
 

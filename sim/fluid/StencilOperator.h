@@ -1,15 +1,16 @@
 // A symmetric seven-point operator on a cell lattice, matrix-free:
 //   (A x)_c = diag_c · x_c − Σ_{n coupled to c} w_axis(c,n) · x_n
-// for active cells (diag_c > 0); inactive cells (solids) map to 0. Both the
+// for the unknowns; other cells (solids, held samples) map to 0. Both the
 // pressure Poisson matrix (Bridson 2nd ed. §5.3) and the backward-Euler
 // diffusion matrix (I + Δt·D·L) have this form; Dirichlet neighbours (open
-// boundaries, fixed cells) add to diag_c without a coupling.
+// boundaries, held samples) add to diag_c without a coupling.
 #pragma once
 
 #include <glm/vec3.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include <array>
 #include <functional>
 
 #include <cstdint>
@@ -19,14 +20,27 @@ namespace eikon::sim {
 
 struct SevenPointOperator {
     glm::ivec3 size{0};
-    glm::dvec3 weight{0.0};              // coupling per axis
-    std::vector<double> diag;            // one per cell; 0 marks an inactive cell
-    std::vector<std::uint8_t> coupled;   // bit 2·axis + side: the lower (0) or upper (1) neighbour is an unknown
+    glm::dvec3 weight{0.0};  // coupling per axis; change it with setWeight
+    // The diagonal's constant term: 0 for the Poisson matrix, 1 for I + Δt·D·L.
+    double identity = 0.0;
+    // Per cell: the bits of the faces whose weight adds to the diagonal
+    // (coupled neighbours and Dirichlet faces), or kNotUnknown. The diagonal
+    // depends on nothing else, so it is tabulated per class: a sweep reads one
+    // byte per cell for it and multiplies by its reciprocal.
+    std::vector<std::uint8_t> diagonalClass;
+    std::vector<std::uint8_t> coupled;  // bit 2·axis + side: the lower (0) or upper (1) neighbour is an unknown
 
     static constexpr std::uint8_t bit(int axis, int side) { return static_cast<std::uint8_t>(1u << (2 * axis + side)); }
     static constexpr std::uint8_t kAllCoupled = 0x3f;
+    static constexpr std::uint8_t kNotUnknown = 64;
 
-    std::size_t cellCount() const { return diag.size(); }
+    // Sets the weights and tabulates identity + Σ w over each class's faces.
+    void setWeight(glm::dvec3 w);
+    bool isUnknown(std::size_t c) const { return diagonalClass[c] != kNotUnknown; }
+    double diagonal(std::size_t c) const { return diagonalOfClass_[diagonalClass[c]]; }
+    double inverseDiagonal(std::size_t c) const { return inverseOfClass_[diagonalClass[c]]; }  // 0 off the unknowns
+
+    std::size_t cellCount() const { return coupled.size(); }
     std::size_t index(int i, int j, int k) const {
         return static_cast<std::size_t>(i) +
                static_cast<std::size_t>(size.x) *
@@ -60,6 +74,11 @@ struct SevenPointOperator {
     // cells of `colour`, 0 on the others, for half the stencil work.
     void residualAfterSweep(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r,
                             int colour) const;
+    // Subtracts the mean over the unknowns and sets the other cells to zero:
+    // the projection onto the complement of the constant null space of a
+    // pure-Neumann Poisson problem.
+    void removeMeanOverUnknowns(std::vector<double>& values) const;
+
     // One red–black Gauss–Seidel sweep: the cells with (i + j + k) % 2 ==
     // first, then the others, in one pass over memory (LaggedSlices.h).
     // Sweeps with first = 0 and then first = 1 make a symmetric smoother.
@@ -75,6 +94,9 @@ private:
     // The Gauss–Seidel update of the cells of `colour` in slice k.
     void relaxSlice(const std::vector<double>& b, std::vector<double>& x, int k, int colour) const;
     bool passesInParallel() const;
+
+    std::array<double, kNotUnknown + 1> diagonalOfClass_{};  // 0 for kNotUnknown
+    std::array<double, kNotUnknown + 1> inverseOfClass_{};   // likewise
 };
 
 // Runs body(k) for every slice k of the operator's lattice: in parallel,

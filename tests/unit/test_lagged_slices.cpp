@@ -21,7 +21,8 @@ void halfSweep(const SevenPointOperator& op, const std::vector<double>& b, std::
         for (int j = 0; j < op.size.y; ++j)
             for (int i = 0; i < op.size.x; ++i) {
                 const std::size_t c = op.index(i, j, k);
-                if (((i + j + k) & 1) == colour && op.diag[c] != 0.0) x[c] = (b[c] + op.neighbourSum(x, c)) / op.diag[c];
+                if (((i + j + k) & 1) == colour && op.isUnknown(c))
+                    x[c] = (b[c] + op.neighbourSum(x, c)) * op.inverseDiagonal(c);
             }
 }
 
@@ -49,7 +50,7 @@ void expectSameAsTwoHalfSweeps(glm::ivec3 size) {
     std::vector<double> b(op.cellCount()), start(op.cellCount());
     for (std::size_t c = 0; c < b.size(); ++c) {
         b[c] = normal(rng);
-        start[c] = op.diag[c] != 0.0 ? normal(rng) : 0.0;
+        start[c] = op.isUnknown(c) ? normal(rng) : 0.0;
     }
     for (int first = 0; first < 2; ++first) {
         std::vector<double> expected = start, lagged = start;
