@@ -41,6 +41,7 @@ ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, const std::vector<Diffusio
             }
     });
     a_.setWeight(glm::dvec3(0.0));
+    a_.classifyRows();
     increment_.assign(roles.size(), 0.0);
     rhs_.assign(roles.size(), 0.0);
 }

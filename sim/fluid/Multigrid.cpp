@@ -1,6 +1,7 @@
 #include "sim/fluid/Multigrid.h"
 
 #include "sim/fluid/ParallelOps.h"
+#include "sim/fluid/WavefrontSlices.h"
 
 #include <algorithm>
 
@@ -93,25 +94,56 @@ double MultigridPreconditioner::apply(const std::vector<double>& r, std::vector<
 
 double MultigridPreconditioner::vcycle(std::size_t l, const std::vector<double>& b, std::vector<double>& x) const {
     const Level& level = levels_[l];
+    const SevenPointOperator& op = level.op;
+    const bool parallel = op.passesInParallel();
     if (l + 1 == levels_.size()) {
+        // Coarsest level: symmetric Gauss–Seidel sweeps from zero, colours
+        // (0, 1, 1, 0), enough to cross it a few times.
+        const int sweeps = 2 * std::max({op.size.x, op.size.y, op.size.z});
         std::fill(x.begin(), x.end(), 0.0);
-        // Coarsest level: symmetric Gauss–Seidel sweeps, enough to cross it a few times.
-        const int sweeps = 2 * std::max({level.op.size.x, level.op.size.y, level.op.size.z});
-        for (int s = 0; s < sweeps; ++s) {
-            level.op.relaxBothColours(b, x, 0);
-            level.op.relaxBothColours(b, x, 1);
-        }
+        for (int s = 0; s < sweeps; ++s)
+            runStagesAsWavefront(
+                op.size.z, 4, parallel, 0.0,
+                [&](int q, int k) {
+                    op.relaxSlice(b, x, k, q == 0 || q == 3 ? 0 : 1);
+                    return 0.0;
+                },
+                std::plus<>());
         return dot(b, x);
     }
-    level.op.relaxBothColoursFromZero(b, x);
-    for (int s = 1; s < kSmoothingSweeps; ++s) level.op.relaxBothColours(b, x, 0);
-    level.op.residualAfterSweep(b, x, level.r, 0);  // the last half-sweep was over colour 1
+    // Pre-smoothing from x = 0, colours (0, 1) per sweep, and the residual,
+    // which the last half-sweep (colour 1) left on colour 0 only: one pass.
+    constexpr int kPreStages = 2 * kSmoothingSweeps + 1;
+    runStagesAsWavefront(
+        op.size.z, kPreStages, parallel, 0.0,
+        [&](int q, int k) {
+            if (q == 0) {
+                op.relaxSliceFromZero(b, x, k);
+            } else if (q < kPreStages - 1) {
+                op.relaxSlice(b, x, k, q % 2);
+            } else {
+                op.residualSliceAfterSweep(b, x, level.r, k, 0);
+            }
+            return 0.0;
+        },
+        std::plus<>());
     const Level& coarse = levels_[l + 1];
     restrictResidual(level, coarse);
     vcycle(l + 1, coarse.b, coarse.x);
-    prolongAndAdd(coarse, level, x);
-    for (int s = 1; s < kSmoothingSweeps; ++s) level.op.relaxBothColours(b, x, 1);
-    return level.op.relaxBothColoursAndDot(b, x, 1);
+    // The coarse correction and post-smoothing, colours (1, 0) per sweep so
+    // that the cycle is symmetric, and b · x once a slice is final: one pass.
+    constexpr int kPostStages = 1 + 2 * kSmoothingSweeps;
+    return runStagesAsWavefront(
+        op.size.z, kPostStages, parallel, 0.0,
+        [&](int q, int k) {
+            if (q == 0) {
+                prolongAndAddSlice(coarse, level, x, k);
+                return 0.0;
+            }
+            op.relaxSlice(b, x, k, q % 2);
+            return q == kPostStages - 1 ? op.dotSlice(b, x, k) : 0.0;
+        },
+        std::plus<>())[kPostStages - 1];
 }
 
 void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& coarse) const {
@@ -150,37 +182,36 @@ void MultigridPreconditioner::restrictResidual(const Level& fine, const Level& c
     });
 }
 
-void MultigridPreconditioner::prolongAndAdd(const Level& coarse, const Level& fine, std::vector<double>& x) const {
+void MultigridPreconditioner::prolongAndAddSlice(const Level& coarse, const Level& fine, std::vector<double>& x,
+                                                 int k) const {
     const glm::ivec3 fs = fine.op.size;
     const auto& tx = fine.toCoarser[0];
     const auto& ty = fine.toCoarser[1];
     const auto& tz = fine.toCoarser[2];
-    forEachSlice(fine.op, [&](int k) {
-        const int zs[2] = {tz.parent[k], tz.neighbour[k]};
-        const double wzs[2] = {tz.parentWeight, tz.neighbourWeight};
-        std::vector<double> blended(static_cast<std::size_t>(coarse.op.size.x));
-        for (int j = 0; j < fs.y; ++j) {
-            // Blend the 2 × 2 coarse rows this fine row interpolates with their
-            // y–z weights, then interpolate the blend along x: P is separable.
-            const int ys[2] = {ty.parent[j], ty.neighbour[j]};
-            const double wys[2] = {ty.parentWeight, ty.neighbourWeight};
-            const double* rows[4];
-            double weights[4];
-            for (int a = 0; a < 2; ++a)
-                for (int b = 0; b < 2; ++b) {
-                    rows[2 * a + b] = coarse.x.data() + coarse.op.index(0, ys[b], zs[a]);
-                    weights[2 * a + b] = wzs[a] * wys[b];
-                }
-            for (int ci = 0; ci < coarse.op.size.x; ++ci)
-                blended[ci] = weights[0] * rows[0][ci] + weights[1] * rows[1][ci] + weights[2] * rows[2][ci] +
-                              weights[3] * rows[3][ci];
-            for (int i = 0; i < fs.x; ++i) {
-                const std::size_t f = fine.op.index(i, j, k);
-                if (fine.op.isUnknown(f))
-                    x[f] += tx.parentWeight * blended[tx.parent[i]] + tx.neighbourWeight * blended[tx.neighbour[i]];
+    const int zs[2] = {tz.parent[k], tz.neighbour[k]};
+    const double wzs[2] = {tz.parentWeight, tz.neighbourWeight};
+    std::vector<double> blended(static_cast<std::size_t>(coarse.op.size.x));
+    for (int j = 0; j < fs.y; ++j) {
+        // Blend the 2 × 2 coarse rows this fine row interpolates with their
+        // y–z weights, then interpolate the blend along x: P is separable.
+        const int ys[2] = {ty.parent[j], ty.neighbour[j]};
+        const double wys[2] = {ty.parentWeight, ty.neighbourWeight};
+        const double* rows[4];
+        double weights[4];
+        for (int a = 0; a < 2; ++a)
+            for (int b = 0; b < 2; ++b) {
+                rows[2 * a + b] = coarse.x.data() + coarse.op.index(0, ys[b], zs[a]);
+                weights[2 * a + b] = wzs[a] * wys[b];
             }
+        for (int ci = 0; ci < coarse.op.size.x; ++ci)
+            blended[ci] = weights[0] * rows[0][ci] + weights[1] * rows[1][ci] + weights[2] * rows[2][ci] +
+                          weights[3] * rows[3][ci];
+        for (int i = 0; i < fs.x; ++i) {
+            const std::size_t f = fine.op.index(i, j, k);
+            if (fine.op.isUnknown(f))
+                x[f] += tx.parentWeight * blended[tx.parent[i]] + tx.neighbourWeight * blended[tx.neighbour[i]];
         }
-    });
+    }
 }
 
 }  // namespace eikon::sim

@@ -54,8 +54,8 @@ private:
     // vectors); returns b · x.
     double vcycle(std::size_t level, const std::vector<double>& b, std::vector<double>& x) const;
     void restrictResidual(const Level& fine, const Level& coarse) const;
-    // x (fine) += P · coarse.x
-    void prolongAndAdd(const Level& coarse, const Level& fine, std::vector<double>& x) const;
+    // x (fine) += P · coarse.x on fine slice k
+    void prolongAndAddSlice(const Level& coarse, const Level& fine, std::vector<double>& x, int k) const;
 
     std::vector<Level> levels_;
 };

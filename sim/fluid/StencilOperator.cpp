@@ -1,10 +1,11 @@
 #include "sim/fluid/StencilOperator.h"
 
-#include "sim/fluid/LaggedSlices.h"
-
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <cstddef>
 
 namespace eikon::sim {
 
@@ -19,6 +20,20 @@ void SevenPointOperator::setWeight(glm::dvec3 w) {
         inverseOfClass_[bits] = diag != 0.0 ? 1.0 / diag : 0.0;
     }
     diagonalOfClass_[kNotUnknown] = inverseOfClass_[kNotUnknown] = 0.0;
+}
+
+void SevenPointOperator::classifyRows() {
+    plainRow.assign(static_cast<std::size_t>(size.y) * static_cast<std::size_t>(size.z), 0);
+    if (size.x < 3) return;
+    tbb::parallel_for(0, size.z, [&](int k) {
+        for (int j = 0; j < size.y; ++j) {
+            const std::size_t row = index(0, j, k);
+            bool plain = true;
+            for (int i = 1; plain && i + 1 < size.x; ++i)
+                plain = coupled[row + i] == kAllCoupled && diagonalClass[row + i] == kAllCoupled;
+            plainRow[static_cast<std::size_t>(j) + static_cast<std::size_t>(size.y) * k] = plain ? 1 : 0;
+        }
+    });
 }
 
 void SevenPointOperator::removeMeanOverUnknowns(std::vector<double>& values) const {
@@ -48,10 +63,18 @@ void SevenPointOperator::removeMeanOverUnknowns(std::vector<double>& values) con
 double SevenPointOperator::applyAndDot(const std::vector<double>& x, std::vector<double>& y) const {
     return sumOverSlices(*this, [&](int k) {
         double partial = 0.0;
-        for (std::size_t c = index(0, 0, k), end = index(0, 0, k + 1); c < end; ++c) {
-            y[c] = isUnknown(c) ? diagonal(c) * x[c] - neighbourSum(x, c) : 0.0;
-            partial += x[c] * y[c];
-        }
+        const double bulkDiag = bulkDiagonal();
+        for (int j = 0; j < size.y; ++j)
+            forRowCells(
+                j, k, 0, 1,
+                [&](std::size_t c) {
+                    y[c] = isUnknown(c) ? diagonal(c) * x[c] - neighbourSum(x, c) : 0.0;
+                    partial += x[c] * y[c];
+                },
+                [&](std::size_t c) {
+                    y[c] = bulkDiag * x[c] - bulkNeighbourSum(x, c);
+                    partial += x[c] * y[c];
+                });
         return partial;
     });
 }
@@ -59,84 +82,50 @@ double SevenPointOperator::applyAndDot(const std::vector<double>& x, std::vector
 void SevenPointOperator::residual(const std::vector<double>& b, const std::vector<double>& x,
                                   std::vector<double>& r) const {
     forEachSlice(*this, [&](int k) {
-        for (int j = 0; j < size.y; ++j)
-            for (int i = 0; i < size.x; ++i) {
-                const std::size_t c = index(i, j, k);
-                r[c] = isUnknown(c) ? b[c] - (diagonal(c) * x[c] - neighbourSum(x, c)) : 0.0;
-            }
+        for (std::size_t c = index(0, 0, k), end = index(0, 0, k + 1); c < end; ++c)
+            r[c] = isUnknown(c) ? b[c] - (diagonal(c) * x[c] - neighbourSum(x, c)) : 0.0;
     });
 }
 
-void SevenPointOperator::residualAfterSweep(const std::vector<double>& b, const std::vector<double>& x,
-                                            std::vector<double>& r, int colour) const {
-    forEachSlice(*this, [&](int k) {
-        for (int j = 0; j < size.y; ++j)
-            for (int i = 0; i < size.x; ++i) {
-                const std::size_t c = index(i, j, k);
-                r[c] = ((i + j + k + colour) & 1) == 0 && isUnknown(c)
-                           ? b[c] - (diagonal(c) * x[c] - neighbourSum(x, c))
-                           : 0.0;
-            }
-    });
+void SevenPointOperator::residualSliceAfterSweep(const std::vector<double>& b, const std::vector<double>& x,
+                                                 std::vector<double>& r, int k, int colour) const {
+    const double bulkDiag = bulkDiagonal();
+    for (int j = 0; j < size.y; ++j) {
+        std::fill_n(r.begin() + static_cast<std::ptrdiff_t>(index(0, j, k)), size.x, 0.0);
+        forRowCells(
+            j, k, (j + k + colour) & 1, 2,
+            [&](std::size_t c) {
+                if (isUnknown(c)) r[c] = b[c] - (diagonal(c) * x[c] - neighbourSum(x, c));
+            },
+            [&](std::size_t c) { r[c] = b[c] - (bulkDiag * x[c] - bulkNeighbourSum(x, c)); });
+    }
 }
 
 bool SevenPointOperator::passesInParallel() const { return cellCount() >= kSerialSliceCells; }
 
 void SevenPointOperator::relaxSlice(const std::vector<double>& b, std::vector<double>& x, int k, int colour) const {
+    const double bulkInverse = bulkInverseDiagonal();
     for (int j = 0; j < size.y; ++j)
-        for (int i = (j + k + colour) & 1; i < size.x; i += 2) {
+        forRowCells(
+            j, k, (j + k + colour) & 1, 2,
+            [&](std::size_t c) {
+                if (isUnknown(c)) x[c] = (b[c] + neighbourSum(x, c)) * inverseDiagonal(c);
+            },
+            [&](std::size_t c) { x[c] = (b[c] + bulkNeighbourSum(x, c)) * bulkInverse; });
+}
+
+void SevenPointOperator::relaxSliceFromZero(const std::vector<double>& b, std::vector<double>& x, int k) const {
+    for (int j = 0; j < size.y; ++j)
+        for (int i = 0; i < size.x; ++i) {
             const std::size_t c = index(i, j, k);
-            if (isUnknown(c)) x[c] = (b[c] + neighbourSum(x, c)) * inverseDiagonal(c);
+            x[c] = ((i + j + k) & 1) == 0 ? b[c] * inverseDiagonal(c) : 0.0;
         }
 }
 
-void SevenPointOperator::relaxBothColours(const std::vector<double>& b, std::vector<double>& x, int first) const {
-    lagSecondPassBySlice(
-        size.z, passesInParallel(), 0.0,
-        [&](int k) {
-            relaxSlice(b, x, k, first);
-            return 0.0;
-        },
-        [&](int k) {
-            relaxSlice(b, x, k, 1 - first);
-            return 0.0;
-        },
-        std::plus<>());
-}
-
-void SevenPointOperator::relaxBothColoursFromZero(const std::vector<double>& b, std::vector<double>& x) const {
-    lagSecondPassBySlice(
-        size.z, passesInParallel(), 0.0,
-        [&](int k) {
-            for (int j = 0; j < size.y; ++j)
-                for (int i = 0; i < size.x; ++i) {
-                    const std::size_t c = index(i, j, k);
-                    x[c] = ((i + j + k) & 1) == 0 ? b[c] * inverseDiagonal(c) : 0.0;
-                }
-            return 0.0;
-        },
-        [&](int k) {
-            relaxSlice(b, x, k, 1);
-            return 0.0;
-        },
-        std::plus<>());
-}
-
-double SevenPointOperator::relaxBothColoursAndDot(const std::vector<double>& b, std::vector<double>& x,
-                                                  int first) const {
-    return lagSecondPassBySlice(
-        size.z, passesInParallel(), 0.0,
-        [&](int k) {
-            relaxSlice(b, x, k, first);
-            return 0.0;
-        },
-        [&](int k) {
-            relaxSlice(b, x, k, 1 - first);
-            double partial = 0.0;
-            for (std::size_t c = index(0, 0, k), end = index(0, 0, k + 1); c < end; ++c) partial += b[c] * x[c];
-            return partial;
-        },
-        std::plus<>());
+double SevenPointOperator::dotSlice(const std::vector<double>& b, const std::vector<double>& x, int k) const {
+    double partial = 0.0;
+    for (std::size_t c = index(0, 0, k), end = index(0, 0, k + 1); c < end; ++c) partial += b[c] * x[c];
+    return partial;
 }
 
 SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vector<std::uint8_t>& active,
@@ -168,6 +157,7 @@ SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vec
             }
     });
     op.setWeight(1.0 / (h * h));
+    op.classifyRows();
     return op;
 }
 

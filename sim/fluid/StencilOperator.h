@@ -29,6 +29,10 @@ struct SevenPointOperator {
     // byte per cell for it and multiplies by its reciprocal.
     std::vector<std::uint8_t> diagonalClass;
     std::vector<std::uint8_t> coupled;  // bit 2·axis + side: the lower (0) or upper (1) neighbour is an unknown
+    // Per row (j, k): 1 when its cells 1 … size.x − 2 are all coupled on every
+    // side (the bulk of the lattice), so kernels update them without a branch
+    // or a table lookup per cell. Set by classifyRows; empty: no row is plain.
+    std::vector<std::uint8_t> plainRow;
 
     static constexpr std::uint8_t bit(int axis, int side) { return static_cast<std::uint8_t>(1u << (2 * axis + side)); }
     static constexpr std::uint8_t kAllCoupled = 0x3f;
@@ -36,6 +40,26 @@ struct SevenPointOperator {
 
     // Sets the weights and tabulates identity + Σ w over each class's faces.
     void setWeight(glm::dvec3 w);
+    // Fills plainRow from coupled and diagonalClass; call once they are set.
+    void classifyRows();
+    bool isPlainRow(int j, int k) const {
+        return !plainRow.empty() && plainRow[static_cast<std::size_t>(j) + static_cast<std::size_t>(size.y) * k];
+    }
+    // Runs bulk(c) on the cells i = first, first + step, … of row (j, k) in
+    // a plain row's bulk, and any(c) on the others.
+    template <class Any, class Bulk>
+    void forRowCells(int j, int k, int first, int step, const Any& any, const Bulk& bulk) const {
+        const std::size_t row = index(0, j, k);
+        int i = first;
+        if (isPlainRow(j, k)) {
+            for (; i < 1; i += step) any(row + static_cast<std::size_t>(i));
+            for (; i + 1 < size.x; i += step) bulk(row + static_cast<std::size_t>(i));
+        }
+        for (; i < size.x; i += step) any(row + static_cast<std::size_t>(i));
+    }
+    // The diagonal and its reciprocal in a plain row's bulk.
+    double bulkDiagonal() const { return diagonalOfClass_[kAllCoupled]; }
+    double bulkInverseDiagonal() const { return inverseOfClass_[kAllCoupled]; }
     bool isUnknown(std::size_t c) const { return diagonalClass[c] != kNotUnknown; }
     double diagonal(std::size_t c) const { return diagonalOfClass_[diagonalClass[c]]; }
     double inverseDiagonal(std::size_t c) const { return inverseOfClass_[diagonalClass[c]]; }  // 0 off the unknowns
@@ -52,9 +76,7 @@ struct SevenPointOperator {
         const std::uint8_t bits = coupled[c];
         const std::size_t sy = static_cast<std::size_t>(size.x);
         const std::size_t sz = sy * static_cast<std::size_t>(size.y);
-        if (bits == kAllCoupled)  // the interior: no branch per neighbour
-            return weight.x * (x[c - 1] + x[c + 1]) + weight.y * (x[c - sy] + x[c + sy]) +
-                   weight.z * (x[c - sz] + x[c + sz]);
+        if (bits == kAllCoupled) return bulkNeighbourSum(x, c);  // no branch per neighbour
         double s = 0.0;
         if (bits & bit(0, 0)) s += weight.x * x[c - 1];
         if (bits & bit(0, 1)) s += weight.x * x[c + 1];
@@ -65,36 +87,41 @@ struct SevenPointOperator {
         return s;
     }
 
+    // neighbourSum for a cell coupled on every side.
+    double bulkNeighbourSum(const std::vector<double>& x, std::size_t c) const {
+        const std::size_t sy = static_cast<std::size_t>(size.x);
+        const std::size_t sz = sy * static_cast<std::size_t>(size.y);
+        return weight.x * (x[c - 1] + x[c + 1]) + weight.y * (x[c - sy] + x[c + sy]) + weight.z * (x[c - sz] + x[c + sz]);
+    }
+
     // y = A x, and returns x · y: the two passes of a CG step over p in one.
     double applyAndDot(const std::vector<double>& x, std::vector<double>& y) const;
     // r = b − A x
     void residual(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r) const;
-    // The same right after a Gauss–Seidel half-sweep over the other colour,
-    // which left those cells' equations exactly solved: r = b − A x on the
-    // cells of `colour`, 0 on the others, for half the stencil work.
-    void residualAfterSweep(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r,
-                            int colour) const;
     // Subtracts the mean over the unknowns and sets the other cells to zero:
     // the projection onto the complement of the constant null space of a
     // pure-Neumann Poisson problem.
     void removeMeanOverUnknowns(std::vector<double>& values) const;
 
-    // One red–black Gauss–Seidel sweep: the cells with (i + j + k) % 2 ==
-    // first, then the others, in one pass over memory (LaggedSlices.h).
-    // Sweeps with first = 0 and then first = 1 make a symmetric smoother.
-    void relaxBothColours(const std::vector<double>& b, std::vector<double>& x, int first) const;
-    // x = 0 and then relaxBothColours(b, x, 0): colour-0 cells have only
-    // colour-1 neighbours, still zero, so they take b / diag.
-    void relaxBothColoursFromZero(const std::vector<double>& b, std::vector<double>& x) const;
-    // relaxBothColours, returning b · x afterwards: each slice adds its terms
-    // while it is still in cache, once both its colours are final.
-    double relaxBothColoursAndDot(const std::vector<double>& b, std::vector<double>& x, int first) const;
-
-private:
+    // Slice kernels, to be chained as stages of one pass over memory
+    // (WavefrontSlices.h). Colour c is the cells with (i + j + k) % 2 == c;
+    // each red–black half-sweep reads only the other colour.
     // The Gauss–Seidel update of the cells of `colour` in slice k.
     void relaxSlice(const std::vector<double>& b, std::vector<double>& x, int k, int colour) const;
+    // The first half-sweep from x = 0: colour 0, whose neighbours are all of
+    // colour 1 and still zero, takes b / diag; colour 1 is cleared.
+    void relaxSliceFromZero(const std::vector<double>& b, std::vector<double>& x, int k) const;
+    // r = b − A x on the cells of `colour` in slice k and 0 on the others,
+    // right after a half-sweep over the other colour left those equations
+    // exactly solved: the whole residual for half the stencil work.
+    void residualSliceAfterSweep(const std::vector<double>& b, const std::vector<double>& x, std::vector<double>& r,
+                                 int k, int colour) const;
+    // Σ b · x over slice k.
+    double dotSlice(const std::vector<double>& b, const std::vector<double>& x, int k) const;
+    // Whether passes over this lattice are worth running on several threads.
     bool passesInParallel() const;
 
+private:
     std::array<double, kNotUnknown + 1> diagonalOfClass_{};  // 0 for kNotUnknown
     std::array<double, kNotUnknown + 1> inverseOfClass_{};   // likewise
 };
