@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace eikon::sim {
 namespace {
@@ -175,6 +176,7 @@ TEST(FluidFlow, TaylorGreenVortexDecaysAtTheViscousRate) {
     const int steps = 40;
     for (int step = 0; step < steps; ++step) sim.step(dt);
     const double rate = -std::log(kineticEnergy(mac) / energy0) / (steps * dt);
+    RecordProperty("decay_rate_over_analytic", std::to_string(rate / (4.0 * desc.viscosity)));
     EXPECT_NEAR(rate / (4.0 * desc.viscosity), 1.0, 0.05);
 }
 
