@@ -14,12 +14,15 @@
 // temporal blocking for stencil computations by multicore-aware wavefront
 // parallelization").
 //
-// In parallel the slices are cut into chunks of at least 2·stages slices.
+// In parallel the slices are cut into chunks of at least 16 and 2·stages
+// slices; where that leaves fewer chunks than threads, the stages run one
+// after the other instead, each over all slices in parallel.
 // Phase 1 runs the wavefront inside each chunk, stage q on the slices at
 // least q from its ends; phase 2 finishes, around each chunk boundary e (and
 // at the ends of the lattice), stage q on slices e − q … e + q − 1, stage by
-// stage. The chunks depend only on the slice count and the partial results
-// are combined in a fixed order, so the result does not depend on the threads.
+// stage. Partial results are combined in an order fixed by the slice and
+// thread counts, so a run repeats exactly; what the stages write does not
+// depend on the threads at all.
 #pragma once
 
 #include "bridge/core/Error.h"
@@ -47,7 +50,18 @@ StageTotals runStagesAsWavefront(int slices, int stages, bool parallel, double i
     // Chunks of at least 16 slices, so that finishing their boundaries costs
     // little; a few per thread, so that the threads share them out evenly.
     const int minChunk = std::max(16, 2 * stages);
-    const int chunks = parallel ? std::min(slices / minChunk, 4 * tbb::this_task_arena::max_concurrency()) : 1;
+    const int threads = tbb::this_task_arena::max_concurrency();
+    const int chunks = parallel ? std::min(slices / minChunk, 4 * threads) : 1;
+    if (parallel && chunks < threads) {
+        // Too few chunks to keep every thread busy: one stage at a time, each
+        // over all slices in parallel, the slices' results combined in order.
+        std::vector<double> perSlice(static_cast<std::size_t>(slices));
+        for (int q = 0; q < stages; ++q) {
+            tbb::parallel_for(0, slices, [&](int k) { perSlice[k] = stage(q, k); });
+            for (const double partial : perSlice) totals[q] = combine(totals[q], partial);
+        }
+        return totals;
+    }
     if (chunks < 2) {
         for (int t = 0; t < slices + stages - 1; ++t)
             for (int q = 0; q < stages; ++q)
