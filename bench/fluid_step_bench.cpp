@@ -1,12 +1,13 @@
-// Milliseconds per fluid substep at 64³ and 128³ (issue 5 targets on 2 cores:
+// Milliseconds per fluid substep at 64³ and 128³ (targets on 2 cores:
 // 64³ < 60 ms, 128³ < 500 ms): a hot-plate plume in a 0.5 m box of air open
 // at the top, warmed up for a few steps so the pressure solve has real work.
 // Each iteration is one FluidSimulation::step at CFL ≈ 1; the counters report
 // the per-phase times, the pressure PCG iterations and the relative residual
-// reached (tolerance 1e-6), the diffusion CG iterations summed over the
-// fields, as FluidSimulation::lastTimings() logs them,
-// and the CPU time of the whole process (all threads) per step, which other
-// load on a shared machine does not inflate as it does the wall time.
+// reached (tolerance 1e-6), the diffusion iterations (Gauss–Seidel sweeps or
+// CG iterations) summed over the fields, as FluidSimulation::lastTimings()
+// logs them, and the CPU time of the whole process (all threads) per step,
+// which other load on a shared machine does not inflate as it does the wall
+// time.
 #include "bench/ProcessCpuTime.h"
 #include "sim/fluid/FluidSimulation.h"
 
