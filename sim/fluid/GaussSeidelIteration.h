@@ -27,10 +27,10 @@ namespace eikon::sim {
 // Solves A x = b from x = 0 until the largest residual met during a sweep is
 // at most tolerance · max|b|, or maxIterations sweeps. A sweep meets the
 // first colour's residuals before their update and the second colour's after
-// the first colour's; the residual it
-// leaves is 0 on the second colour and, on the first, Σ w · (the second
-// colour's residual met) / diag, so where Σ_n w / diag_n <= 1 — the diffusion
-// matrices it is used on — the x returned is at least as accurate as reported.
+// the first colour's; the residual it leaves is 0 on the second colour and,
+// on the first, Σ w · (the second colour's residual met) / diag, so where
+// Σ_n w / diag_n <= 1 — the diffusion matrices it is used on — the x
+// returned is at least as accurate as reported.
 inline SolveStats redBlackGaussSeidel(const SevenPointOperator& a, const std::vector<double>& b,
                                       std::vector<double>& x, double tolerance, int maxIterations) {
     x.resize(b.size());

@@ -133,7 +133,7 @@ constexpr std::size_t kSerialSliceCells = 16384;  // below this many cells, one 
 
 template <class Body>
 void forEachSlice(const SevenPointOperator& op, const Body& body) {
-    if (op.cellCount() < kSerialSliceCells) {
+    if (!op.passesInParallel()) {
         for (int k = 0; k < op.size.z; ++k) body(k);
     } else {
         tbb::parallel_for(0, op.size.z, body);
@@ -143,7 +143,7 @@ void forEachSlice(const SevenPointOperator& op, const Body& body) {
 // Σ over slices k of body(k), reduced like forEachSlice runs.
 template <class Body>
 double sumOverSlices(const SevenPointOperator& op, const Body& body) {
-    if (op.cellCount() < kSerialSliceCells) {
+    if (!op.passesInParallel()) {
         double total = 0.0;
         for (int k = 0; k < op.size.z; ++k) total += body(k);
         return total;
