@@ -6,9 +6,9 @@
 // delta_index, velocity (3), temperature, concentration, dye: 8 floats per
 // cell, 67 MB raw. Each iteration writes one frame file (temporary, fsync,
 // rename); the counters give the file size. Not run by ctest.
-#include "bridge/io/vdb/VdbFrameWriter.h"
-#include "bridge/io/vtk/VtkSeriesWriter.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/vdb/VdbFrameWriter.h"
+#include "io/vtk/VtkSeriesWriter.h"
+#include "io/scene/SceneParser.h"
 #include "sim/SceneFields.h"
 
 #include <benchmark/benchmark.h>
@@ -21,13 +21,13 @@ namespace {
 namespace fs = std::filesystem;
 using namespace eikon;
 
-const io::ExportFrame& plumeFrame() {
-    static const io::ExportFrame frame = [] {
+const ExportFrame& plumeFrame() {
+    static const ExportFrame frame = [] {
         const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json",
                                           {"grid.resolution=[128,128,128]"});
         sim::SceneFields fields(scene);
         for (int f = 0; f < 12; ++f) fields.advanceFrame();
-        io::ExportFrame result{fields.fields().grid, io::fieldArrays(viewsOf(fields.fields()))};
+        ExportFrame result{fields.fields().grid, io::fieldArrays(viewsOf(fields.fields()))};
         for (auto& array : fields.exportArrays()) result.arrays.push_back(std::move(array));
         return result;
     }();
@@ -49,7 +49,7 @@ void reportSize(benchmark::State& state, const fs::path& file) {
 
 void BM_VtkFrame(benchmark::State& state) {
     const auto compression = static_cast<io::VtkSeriesWriter::Compression>(state.range(0));
-    const io::ExportFrame& frame = plumeFrame();
+    const ExportFrame& frame = plumeFrame();
     const fs::path folder = benchFolder();
     io::VtkSeriesWriter writer(folder, "fields", compression);
     int n = 0;
@@ -65,7 +65,7 @@ void BM_VtkFrame(benchmark::State& state) {
 }
 
 void BM_VdbFrame(benchmark::State& state) {
-    const io::ExportFrame& frame = plumeFrame();
+    const ExportFrame& frame = plumeFrame();
     const fs::path folder = benchFolder();
     io::VdbFrameWriter writer(folder, "fields");
     int n = 0;

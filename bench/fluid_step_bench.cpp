@@ -34,7 +34,7 @@ eikon::SimDesc plumeScene(int n) {
 void BM_FluidStep(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
     const eikon::GridSpec grid{glm::ivec3(n), glm::dvec3(0.0), glm::dvec3(0.5)};
-    FluidSimulation sim(plumeScene(n), grid, 1.0);
+    FluidSimulation sim(plumeScene(n), grid);
     const double h = 0.5 / n;
     auto dt = [&] { return std::min(0.02, h / std::max(sim.state().flow.maxCellCrossingRate() * h, 1e-6)); };
     for (int warm = 0; warm < 10; ++warm) sim.step(dt());

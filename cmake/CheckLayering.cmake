@@ -1,26 +1,101 @@
-# Script mode: fails when a source file includes a folder its layer may not see
-# (docs/architecture.md): bridge/ sees no other eikon folder; sim/ sees
-# bridge/; render/ sees bridge/ and shaders/; shaders/ sees only itself.
-set(forbidden_bridge "sim/;render/;apps/")
-set(forbidden_sim "render/;shaders/;apps/")
-set(forbidden_render "sim/;apps/")
-set(forbidden_shaders "bridge/;sim/;render/;apps/")
+# Script mode: fails the build when a source file includes a folder its layer
+# may not see, or when a GPU stage (render/) could touch the file system.
+# The table is docs/architecture.md's "who may include whom", one row per
+# folder; a file obeys the row of the longest folder that holds it, and may
+# always include its own folder. Includes are the quoted ones ("a/b.h").
+# Each row: folder|prefixes it may include, separated by commas.
+cmake_policy(SET CMP0007 NEW)
+set(rules
+  "bridge/core|"
+  "bridge/grid|bridge/core/"
+  "bridge/layout|"
+  "bridge/mesh|bridge/core/"
+  "bridge/scene|bridge/core/,bridge/grid/"
+  "io/files|bridge/"
+  "io/image|bridge/,io/files/"
+  "io/mesh|bridge/,io/files/"
+  "io/export|bridge/"
+  "io/vtk|bridge/,io/files/,io/export/"
+  "io/vdb|bridge/,io/files/,io/export/"
+  "io/scene|bridge/,io/"
+  "sim|bridge/,sim/"
+  "sim/field|bridge/"
+  "sim/fluid|bridge/,sim/field/"
+  "sim/optics|bridge/,sim/field/"
+  "sim/voxelize|bridge/,sim/optics/"
+  "sim/deform|bridge/,io/mesh/"
+  "sim/volume|bridge/,io/vdb/,sim/optics/"
+  "render/gl|bridge/core/"
+  "render/stages|bridge/,shaders/,render/gl/"
+  "render/graph|bridge/,render/gl/,render/stages/"
+  "shaders|common/,shaders/common/"
+  "verify/reference|bridge/"
+  "verify/accuracy|bridge/,io/files/,io/image/,render/,verify/reference/"
+  "apps/common|bridge/,io/,sim/,render/"
+  "apps/eikon|bridge/,io/,sim/,render/,verify/,apps/common/"
+  "apps/eikon-view|bridge/,io/,sim/,render/,apps/common/"
+)
+# What a GPU stage must not use: it gets its inputs as data (docs/architecture.md).
+set(file_system_patterns "#[ \t]*include[ \t]*<(fstream|filesystem)>" "fopen[ \t]*\\(" "std::[io]?fstream")
+
 set(violations "")
-foreach(layer bridge sim render shaders)
-  file(GLOB_RECURSE sources ${ROOT}/${layer}/*.h ${ROOT}/${layer}/*.cpp ${ROOT}/${layer}/*.glsl ${ROOT}/${layer}/*.comp)
-  foreach(source IN LISTS sources)
-    file(STRINGS ${source} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
-    foreach(line IN LISTS includes)
-      foreach(prefix IN LISTS forbidden_${layer})
-        if(line MATCHES "\"${prefix}")
-          file(RELATIVE_PATH rel ${ROOT} ${source})
-          list(APPEND violations "${rel}: ${line}")
-        endif()
-      endforeach()
-    endforeach()
+file(GLOB_RECURSE sources
+     ${ROOT}/bridge/* ${ROOT}/io/* ${ROOT}/sim/* ${ROOT}/render/* ${ROOT}/shaders/* ${ROOT}/verify/* ${ROOT}/apps/*)
+list(FILTER sources INCLUDE REGEX "\\.(h|cpp|glsl|comp)$")
+foreach(source IN LISTS sources)
+  file(RELATIVE_PATH rel ${ROOT} ${source})
+  get_filename_component(folder ${rel} DIRECTORY)
+  # The row of the longest folder holding this file.
+  set(row_folder "")
+  set(allowed "")
+  foreach(rule IN LISTS rules)
+    string(FIND "${rule}" "|" bar)
+    string(SUBSTRING "${rule}" 0 ${bar} rule_folder)
+    if((folder STREQUAL rule_folder OR folder MATCHES "^${rule_folder}/") AND NOT row_folder MATCHES "^${rule_folder}.+")
+      string(LENGTH "${rule_folder}" new_length)
+      string(LENGTH "${row_folder}" old_length)
+      if(new_length GREATER old_length)
+        set(row_folder ${rule_folder})
+        string(FIND "${rule}" "|" bar)
+        math(EXPR bar "${bar} + 1")
+        string(SUBSTRING "${rule}" ${bar} -1 allowed)
+        string(REPLACE "," ";" allowed "${allowed}")
+      endif()
+    endif()
   endforeach()
+  if(row_folder STREQUAL "")
+    list(APPEND violations "${rel}: its folder has no row in cmake/CheckLayering.cmake")
+    continue()
+  endif()
+  list(APPEND allowed "${row_folder}/")
+  file(STRINGS ${source} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*\"([^\"]*)\".*" "\\1" target "${line}")
+    if(NOT target MATCHES "/")
+      continue()  # a file beside it
+    endif()
+    set(ok FALSE)
+    foreach(prefix IN LISTS allowed)
+      string(LENGTH "${prefix}" length)
+      string(SUBSTRING "${target}" 0 ${length} head)
+      if(head STREQUAL prefix)
+        set(ok TRUE)
+      endif()
+    endforeach()
+    if(NOT ok)
+      list(APPEND violations "${rel}: includes \"${target}\", which ${row_folder}/ may not see")
+    endif()
+  endforeach()
+  if(rel MATCHES "^render/")
+    file(READ ${source} text)
+    foreach(pattern IN LISTS file_system_patterns)
+      if(text MATCHES "${pattern}")
+        list(APPEND violations "${rel}: touches the file system (${CMAKE_MATCH_0}); a GPU stage gets its inputs as data")
+      endif()
+    endforeach()
+  endif()
 endforeach()
 if(violations)
   list(JOIN violations "\n  " text)
-  message(FATAL_ERROR "Include rule violations (see docs/architecture.md):\n  ${text}")
+  message(FATAL_ERROR "Layering violations (docs/architecture.md, cmake/CheckLayering.cmake):\n  ${text}")
 endif()

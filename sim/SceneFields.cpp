@@ -28,7 +28,7 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
-    fields_.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields_.grid = scene.grid.spec();
     fields_.referenceIndex = scene.medium.index;
     fields_.deltaIndex.assign(fields_.grid.cellCount(), 0.0f);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
@@ -41,7 +41,8 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
     updateMeshes();
     fillMedium(scene_, fields_, CellBox::whole(fields_.grid));
     if (scene.sim) {
-        fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid, fields_.referenceIndex);
+        fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid);
+        fluidOptics_ = std::make_unique<OpticalModel>(*scene.sim);
         refreshFromSimulation();
     } else if (scene.volume) {
         volume_ = std::make_unique<VolumeSequence>(*scene.volume, scene.medium, fields_.grid);
@@ -127,14 +128,14 @@ std::vector<PhaseTiming> SceneFields::lastTimings() const {
 // The solver or the volume writes the medium (bumping the versions of what
 // changed), then the objects and strokes are composited over it again.
 void SceneFields::refreshFromSimulation() {
-    if (fluid_) fluid_->writeFields(fields_);
+    if (fluid_) writeOpticalFields(*fluidOptics_, fluid_->scalars(), fields_);
     else volume_->writeFields(fields_);
     paintObjects(scene_, fields_, coverageGrids());
     paintStrokes(scene_, fields_);
     validateFields(fields_, volume_ ? volume_->currentFile() : scene_.sourcePath);
 }
 
-std::vector<io::NamedArray> SceneFields::exportArrays() const {
+std::vector<NamedArray> SceneFields::exportArrays() const {
     if (volume_) return volume_->exportArrays();
     if (!fluid_) return {};
     return solverArrays(fluid_->state(), fields_.grid, scene_.sim->ambientTemperature);
@@ -156,7 +157,11 @@ void SceneFields::writeFrameInto(const FieldViews& target) const {
     EIKON_CHECK_MSG(fluid_, "only a scene with a fluid solver writes its frames into GPU memory");
     FieldViews frame = target;
     frame.referenceIndex = fields_.referenceIndex;
-    fluid_->writeFields(frame);
+    EIKON_CHECK_MSG(frame.grid.resolution == fields_.grid.resolution, "field views on another grid");
+    EIKON_CHECK_MSG((frame.hasExtinction() || !fluidOptics_->absorbs()) &&
+                        (frame.hasScattering() || !fluidOptics_->scatters()),
+                    "field views without the fields the optical model writes");
+    mapOpticalFields(*fluidOptics_, fluid_->scalars(), frame);
     paintObjects(scene_, frame, coverageGrids());
     paintStrokes(scene_, frame);
     validateFields(frame, scene_.sourcePath);

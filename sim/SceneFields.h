@@ -9,10 +9,11 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/FieldViews.h"
-#include "bridge/io/ExportArrays.h"
+#include "bridge/grid/NamedArrays.h"
 #include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/FluidSimulation.h"
+#include "sim/optics/OpticalMapping.h"
 #include "sim/volume/VolumeSequence.h"
 #include "sim/voxelize/Compositor.h"
 
@@ -46,8 +47,8 @@ public:
     void simulateFrame();
     void writeFrameInto(const FieldViews& target) const;
     // Whether κ (σs) values change from frame to frame (dye in the solver).
-    bool extinctionChangesOverTime() const { return fluid_ && fluid_->absorbs(); }
-    bool scatteringChangesOverTime() const { return fluid_ && fluid_->scatters(); }
+    bool extinctionChangesOverTime() const { return fluid_ && fluidOptics_->absorbs(); }
+    bool scatteringChangesOverTime() const { return fluid_ && fluidOptics_->scatters(); }
     // Phase timings of the last frame: the fluid solver's phases, then
     // "deform" and "voxelize" (iterations: cells recomputed) for scenes with
     // mesh or water objects.
@@ -55,7 +56,7 @@ public:
     // The simulation's own fields on the render grid, for export (empty for a
     // static scene): velocity, temperature, concentration, dye; a volume's
     // density, temperature, flame, velocity.
-    std::vector<io::NamedArray> exportArrays() const;
+    std::vector<NamedArray> exportArrays() const;
     // This frame's mesh of every mesh or water object, in scene order.
     std::vector<const TriangleMesh*> deformedMeshes() const;
 
@@ -68,6 +69,7 @@ private:
     Scene scene_;
     FieldSet fields_;
     std::unique_ptr<FluidSimulation> fluid_;
+    std::unique_ptr<OpticalModel> fluidOptics_;  // the solver's scalars → δn, κ, σs
     std::unique_ptr<VolumeSequence> volume_;
     std::vector<std::unique_ptr<MeshObject>> meshes_;
     double time_ = 0.0;  // without a fluid solver

@@ -5,8 +5,8 @@
 #include "apps/eikon-view/ImagePresenter.h"
 #include "apps/eikon-view/ViewerSession.h"
 #include "bridge/core/Error.h"
-#include "bridge/io/ImageIo.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/image/ImageIo.h"
+#include "io/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
 
 #define GLFW_INCLUDE_NONE

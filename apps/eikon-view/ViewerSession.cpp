@@ -2,26 +2,18 @@
 
 namespace eikon::view {
 
-ViewerSession::ViewerSession(const Scene& scene) : scene_(scene), fields_(std::make_unique<sim::SceneFields>(scene)) {
-    if (fields_->simulatesFluid()) {
-        live_ = std::make_unique<app::LiveFrames>(*fields_, false);
-        renderer_ = std::make_unique<render::FrameRenderer>(scene_, live_->ring());
-    } else {
-        renderer_ = std::make_unique<render::FrameRenderer>(scene_, fields_->fields());
-    }
-}
+ViewerSession::ViewerSession(const Scene& scene)
+    : scene_(scene),
+      fields_(std::make_unique<sim::SceneFields>(scene)),
+      source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{}, false, false)) {}
 
 render::FrameResult ViewerSession::renderFrame(bool advance, bool pipelined) {
-    if (!live_) {
-        if (advance) fields_->advanceFrame();
-        return renderer_->render(fields_->fields());
-    }
-    if (!advance) return renderer_->render(live_->ring());
-    live_->setPipelined(pipelined);
-    live_->beginNext();
-    render::FrameResult result = renderer_->render(live_->ring());
-    live_->waitNext();
-    live_->publishNext();
+    if (!advance) return source_->render();
+    source_->setPipelined(pipelined);
+    source_->beginNext();
+    render::FrameResult result = source_->render();
+    source_->waitNext();
+    source_->publishNext();
     return result;
 }
 

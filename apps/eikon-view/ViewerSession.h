@@ -1,13 +1,11 @@
-// What the viewer shows: a scene, its fields (static; moving meshes and water
-// updated in host memory; or a fluid simulated frame by frame through the
-// zero-copy ring, LiveFrames.h) and the frame renderer —
-// the same pieces `eikon run` drives. The viewer changes the camera, the
-// lights, the photon count and the exposure in place; anything else (a new
-// scene file, panel edits of tracer, material or solver settings) builds a
-// new session.
+// What the viewer shows: a scene, its fields and the frame renderer, fed by
+// the same frame source as `eikon run` (apps/common/FrameSource.h). The
+// viewer changes the camera, the lights, the photon count and the exposure in
+// place; anything else (a new scene file, panel edits of tracer, material or
+// solver settings) builds a new session.
 #pragma once
 
-#include "apps/eikon/LiveFrames.h"
+#include "apps/common/FrameSource.h"
 #include "bridge/scene/Scene.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
@@ -21,9 +19,9 @@ public:
     explicit ViewerSession(const Scene& scene);
 
     const Scene& scene() const { return scene_; }
-    render::FrameRenderer& renderer() { return *renderer_; }
+    render::FrameRenderer& renderer() { return source_->renderer(); }
     bool simulated() const { return fields_->changesOverTime(); }
-    double simulatedTime() const { return live_ ? live_->current().time : fields_->time(); }
+    double simulatedTime() const { return source_->current().time; }
 
     // Renders the current frame; with `advance`, a simulated scene moves on
     // one frame (simulated during the render when `pipelined`).
@@ -32,8 +30,7 @@ public:
 private:
     Scene scene_;
     std::unique_ptr<sim::SceneFields> fields_;
-    std::unique_ptr<app::LiveFrames> live_;
-    std::unique_ptr<render::FrameRenderer> renderer_;
+    std::unique_ptr<app::FrameSource> source_;
 };
 
 }  // namespace eikon::view

@@ -1,10 +1,10 @@
 #include "apps/eikon/AccuracyCommand.h"
 
 #include "bridge/core/Error.h"
-#include "bridge/io/AtomicFile.h"
-#include "render/accuracy/AccuracyReport.h"
-#include "render/accuracy/AccuracySuite.h"
-#include "render/accuracy/ErrorPlot.h"
+#include "io/files/AtomicFile.h"
+#include "verify/accuracy/AccuracyReport.h"
+#include "verify/accuracy/AccuracySuite.h"
+#include "verify/accuracy/ErrorPlot.h"
 #include "render/gl/GlContext.h"
 
 #include <chrono>

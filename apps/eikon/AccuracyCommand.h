@@ -1,5 +1,5 @@
 // `eikon accuracy`: the tracer's error against run time on analytic cases
-// with known answers, over sweeps of its knobs (render/accuracy/).
+// with known answers, over sweeps of its knobs (verify/accuracy/).
 #pragma once
 
 #include <CLI/CLI.hpp>

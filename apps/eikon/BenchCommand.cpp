@@ -1,7 +1,7 @@
 #include "apps/eikon/BenchCommand.h"
 
-#include "bridge/io/AtomicFile.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/files/AtomicFile.h"
+#include "io/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"

@@ -1,18 +1,18 @@
 #include "apps/eikon/FrameExport.h"
 
-#include "bridge/io/vtk/ExportGeometry.h"
+#include "io/vtk/ExportGeometry.h"
 
 #include <algorithm>
 
 namespace eikon::app {
 
-io::ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer) {
-    io::ExportFrame frame{inputs.fields.grid, io::fieldArrays(inputs.fields)};
+ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer) {
+    ExportFrame frame{inputs.fields.grid, io::fieldArrays(inputs.fields)};
     if (const render::PhotonStage* photons = renderer.photonStage(); photons && photons->storesFluence()) {
         frame.arrays.push_back({"fluence", 3, photons->downloadFluence()});
         frame.arrays.push_back({"photon_direction", 3, photons->downloadFluenceDirection()});
     }
-    for (const io::NamedArray& array : inputs.simulation) frame.arrays.push_back(array);
+    for (const NamedArray& array : inputs.simulation) frame.arrays.push_back(array);
     return frame;
 }
 
@@ -23,7 +23,7 @@ namespace {
 io::PolyData meshPolyData(const std::vector<TriangleMesh>& meshes) {
     std::vector<glm::vec3> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    io::NamedArray object{"object", 1, {}};
+    NamedArray object{"object", 1, {}};
     for (std::size_t m = 0; m < meshes.size(); ++m) {
         const auto base = static_cast<std::uint32_t>(vertices.size());
         for (const glm::dvec3& v : meshes[m].vertices) {
@@ -83,7 +83,7 @@ bool FrameExporter::wantsFrame(int frame) const {
 
 void FrameExporter::write(int frame, const ExportInputs& inputs, const render::FrameRenderer& renderer) {
     const double time = inputs.time;
-    const io::ExportFrame arrays = gatherExportArrays(inputs, renderer);
+    const ExportFrame arrays = gatherExportArrays(inputs, renderer);
     if (vtk_ && exports_.vtk.exportsFrame(frame)) {
         vtk_->writeFrame(frame, time, io::selectCells(arrays, exports_.vtk, "export.vtk"));
         if (receivers_) {

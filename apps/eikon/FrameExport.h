@@ -5,10 +5,10 @@
 #pragma once
 
 #include "bridge/grid/FieldViews.h"
-#include "bridge/io/ExportArrays.h"
-#include "bridge/io/vdb/VdbFrameWriter.h"
-#include "bridge/io/vtk/PolyDataWriter.h"
-#include "bridge/io/vtk/VtkSeriesWriter.h"
+#include "io/export/ExportArrays.h"
+#include "io/vdb/VdbFrameWriter.h"
+#include "io/vtk/PolyDataWriter.h"
+#include "io/vtk/VtkSeriesWriter.h"
 #include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
 #include "render/graph/FrameRenderer.h"
@@ -25,13 +25,13 @@ namespace eikon::app {
 struct ExportInputs {
     double time = 0.0;
     ConstFieldViews fields;
-    std::vector<io::NamedArray> simulation;
+    std::vector<NamedArray> simulation;
     std::vector<TriangleMesh> meshes;  // this frame's mesh and water objects (SceneFields::deformedMeshes)
 };
 
 // The arrays a frame offers: fieldArrays, fluence and photon_direction when
 // the photon stage stores them, and the simulation's.
-io::ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer);
+ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer);
 
 // Renderer options the export needs: photon-path recording (every k-th
 // photon, k the largest prime <= photons / photon_paths) when

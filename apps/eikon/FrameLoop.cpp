@@ -1,8 +1,9 @@
 #include "apps/eikon/FrameLoop.h"
 
+#include "apps/common/FrameSource.h"
 #include "apps/eikon/FrameExport.h"
 #include "bridge/grid/FieldViews.h"
-#include "bridge/io/ImageIo.h"
+#include "io/image/ImageIo.h"
 
 #include <nlohmann/json.hpp>
 
@@ -57,9 +58,7 @@ class FrameOutputs {
 public:
     FrameOutputs(const Scene& scene, io::OutputFolder& output) : output_(output), exporter_(scene, output.root()) {}
 
-    bool exportsFrame(int frame) const { return exporter_.wantsFrame(frame); }
-
-    // `exported` is read only when exportsFrame(frame).
+    // `exported` is read only when the scene exports this frame.
     void write(int frame, const render::FrameResult& result, const std::string& reportLine,
                const render::FrameRenderer& renderer, const ExportInputs& exported) {
         io::writePng(output_.framePath(frame), result.image.width, result.image.height, result.image.rgba);
@@ -75,55 +74,31 @@ private:
     FrameExporter exporter_;
 };
 
-// Fields in host memory: a static scene (uploaded once), or one whose mesh
-// and water objects move without a fluid solver (SceneFields recomputes the
-// cells they touched; the changed fields are uploaded).
-void runHostFrames(const Scene& scene, sim::SceneFields& fields, int frames, FrameOutputs& outputs,
-                   ProgressBar& progress) {
-    render::FrameRenderer renderer(scene, fields.fields(), rendererOptionsFor(scene));
-    const bool animated = fields.changesOverTime();
-    for (int frame = 0; frame < frames; ++frame) {
-        const auto start = std::chrono::steady_clock::now();
-        ProducedFrame produced;
-        if (frame > 0 && animated) {
-            fields.advanceFrame();
-            produced.simulated = true;
-            produced.simulateMs = millisecondsSince(start);
-        }
-        produced.time = fields.time();
-        produced.phases = fields.lastTimings();
-        const render::FrameResult result = renderer.render(fields.fields());
-        const LoopTiming timing{millisecondsSince(start), renderMilliseconds(result), 0.0};
-        ExportInputs exported{produced.time, viewsOf(fields.fields()), {}, {}};
-        if (outputs.exportsFrame(frame)) {
-            exported.simulation = fields.exportArrays();
-            for (const TriangleMesh* mesh : fields.deformedMeshes()) exported.meshes.push_back(*mesh);
-        }
-        outputs.write(frame, result, frameReportJson(frame, produced, animated, result, timing, false), renderer,
-                      exported);
-        progress.advance();
-    }
-}
-
-void runLiveFrames(const Scene& scene, sim::SceneFields& fields, int frames, FrameOutputs& outputs,
-                   ProgressBar& progress, bool pipelined) {
-    LiveFrames live(fields, pipelined, scene.exports.vtk.enabled || scene.exports.vdb.enabled);
-    render::FrameRenderer renderer(scene, live.ring(), rendererOptionsFor(scene));
+// Each turn renders the current frame and, while more follow, produces the
+// next (FrameSource.h). The host fields' frame time includes the advance
+// that produced the frame, as the ring's includes nothing of the next one's
+// production but what the render did not hide.
+void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, FrameOutputs& outputs,
+                  ProgressBar& progress, bool pipelined) {
+    FrameSource source(scene, fields, rendererOptionsFor(scene), pipelined,
+                       scene.exports.vtk.enabled || scene.exports.vdb.enabled);
+    const bool simulated = fields.changesOverTime();
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
         const bool more = frame + 1 < frames;
-        if (more) live.beginNext();
-        const render::FrameResult result = renderer.render(live.ring());
+        if (more) source.beginNext();
+        const render::FrameResult result = source.render();
         LoopTiming timing{0.0, renderMilliseconds(result), 0.0};
-        if (more) {
-            const ProducedFrame& next = live.waitNext();
+        if (more && source.throughRing()) {
+            const ProducedFrame& next = source.waitNext();
             timing.produceNextMs = next.simulateMs + next.writeFieldsMs;
         }
-        timing.frameMs = millisecondsSince(start);
-        const ProducedFrame& current = live.current();
-        outputs.write(frame, result, frameReportJson(frame, current, true, result, timing, pipelined), renderer,
-                      {current.time, live.ring().currentViews(), current.exportArrays, current.meshes});
-        if (more) live.publishNext();  // frame k's slot stays current until its outputs are written
+        const ProducedFrame& current = source.current();
+        timing.frameMs = millisecondsSince(start) + (source.throughRing() ? 0.0 : current.simulateMs);
+        outputs.write(frame, result,
+                      frameReportJson(frame, current, simulated, result, timing, pipelined && source.throughRing()),
+                      source.renderer(), {current.time, source.currentViews(), current.exportArrays, current.meshes});
+        if (more) source.publishNext();  // frame k's fields stay current until its outputs are written
         progress.advance();
     }
 }
@@ -167,8 +142,7 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
                ProgressBar& progress, const LoopOptions& options) {
     FrameOutputs outputs(scene, output);
-    if (fields.simulatesFluid()) runLiveFrames(scene, fields, frames, outputs, progress, options.pipelined);
-    else runHostFrames(scene, fields, frames, outputs, progress);
+    renderFrames(scene, fields, frames, outputs, progress, options.pipelined);
     progress.finish();
 }
 

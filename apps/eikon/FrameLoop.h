@@ -1,13 +1,13 @@
-// The frame loop shared by `eikon run` and the viewer: fields → renderer →
-// frame image and report line. A static scene's fields are uploaded once,
-// and those of moving meshes and water as they change; a scene with a fluid
-// solver's go through the zero-copy field ring (LiveFrames.h), simulated one
-// frame ahead of the renderer when pipelined.
+// The frame loop of `eikon run`: fields → renderer → frame image, report
+// line and export. Its fields come from the frame source it shares with the
+// viewer (apps/common/FrameSource.h): host memory, or for a scene with a
+// fluid solver the zero-copy field ring, simulated one frame ahead of the
+// renderer when pipelined.
 #pragma once
 
-#include "apps/eikon/LiveFrames.h"
+#include "apps/common/LiveFrames.h"
 #include "apps/eikon/ProgressBar.h"
-#include "bridge/io/OutputFolder.h"
+#include "io/files/OutputFolder.h"
 #include "bridge/scene/Scene.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"

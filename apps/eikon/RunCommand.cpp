@@ -2,9 +2,9 @@
 
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/ProgressBar.h"
-#include "bridge/io/OutputFolder.h"
-#include "bridge/scene/ExportParser.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/files/OutputFolder.h"
+#include "io/scene/ExportParser.h"
+#include "io/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
 #include "sim/SceneFields.h"
 

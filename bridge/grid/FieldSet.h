@@ -1,7 +1,7 @@
 // The optical fields of one frame on a dense grid, as the simulation hands
-// them to the renderer: index offset δn = n − n_ref (DESIGN.md: a mirage
-// lives on Δn ≈ 1e-5, which float32 n would round away), extinction κ and
-// scattering σs in 1/m per RGB channel. Each field carries a version that
+// them to the renderer: index offset δn = n − n_ref (docs/architecture.md,
+// Conventions: a mirage lives on Δn ≈ 1e-5, which float32 n would round
+// away), extinction κ and scattering σs in 1/m per RGB channel. Each field carries a version that
 // changes whenever its values do, so stages can skip unchanged inputs.
 #pragma once
 

@@ -37,9 +37,6 @@ using ConstFieldViews = BasicFieldViews<const float>;
 FieldViews viewsOf(FieldSet& fields);
 ConstFieldViews viewsOf(const FieldSet& fields);
 
-// A host copy of the viewed values; versions are left at 0.
-FieldSet copyToFieldSet(const ConstFieldViews& views);
-
 // validateFields (FieldSet.h) for fields in any memory.
 void validateFields(const ConstFieldViews& fields, const std::string& source);
 

@@ -43,10 +43,4 @@ void vertexBounds(const TriangleMesh& mesh, glm::dvec3& min, glm::dvec3& max) {
     }
 }
 
-bool allFinite(const TriangleMesh& mesh) {
-    return std::all_of(mesh.vertices.begin(), mesh.vertices.end(), [](const glm::dvec3& v) {
-        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-    });
-}
-
 }  // namespace eikon

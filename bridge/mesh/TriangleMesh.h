@@ -35,7 +35,4 @@ double enclosedVolume(const TriangleMesh& mesh);
 // Axis-aligned bounds of the vertices; min > max when there are none.
 void vertexBounds(const TriangleMesh& mesh, glm::dvec3& min, glm::dvec3& max);
 
-// True when every coordinate of every vertex is finite.
-bool allFinite(const TriangleMesh& mesh);
-
 }  // namespace eikon

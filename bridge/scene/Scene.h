@@ -5,13 +5,16 @@
 // the invariants stated beside each field.
 #pragma once
 
+#include "bridge/grid/GridSpec.h"
 #include "bridge/scene/ExportDesc.h"
+#include "bridge/scene/FloatImage.h"
 #include "bridge/scene/MeshObjectDesc.h"
 #include "bridge/scene/VolumeDesc.h"
 
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +30,9 @@ struct GridDesc {
     double smoothingSigmaVoxels = 1.5;  // Gaussian σ of index smoothing in voxels (Sun et al. 2008 §4.1: 9³ window, σ = 9/6); 0: none
     int smoothingWindowVoxels = 0;      // odd kernel width; 0: 2·floor(3σ) + 1 (9 for σ = 1.5)
     int supersampling = 4;              // coverage samples per voxel axis (Sun et al. 2008 §4.1: 4)
+
+    // The cells and world box this describes.
+    GridSpec spec() const { return {resolution, boundsMin, boundsMax}; }
 };
 
 // Optical properties of a region: refractive index n > 0, extinction κ ≥ 0
@@ -130,6 +136,7 @@ struct EnvironmentDesc {
     double checkerSize = 0.1;    // m, > 0
     // hdr: an equirectangular Radiance .hdr image (+y up), scaled
     std::string path;            // resolved against the scene file's folder
+    std::shared_ptr<const FloatImage> image;  // the map at `path`, read with the scene
     double intensity = 1.0;      // >= 0
     double rotationDeg = 0.0;    // about +y
 };

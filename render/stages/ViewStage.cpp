@@ -1,6 +1,6 @@
 #include "render/stages/ViewStage.h"
 
-#include "bridge/io/ImageIo.h"
+#include "bridge/core/Error.h"
 #include "render/gl/GlDebug.h"
 #include "render/gl/ShaderLibrary.h"
 #include "render/stages/GaussianKernel.h"
@@ -70,8 +70,9 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                            {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
                            {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"}});
     if (scene.render.environment.kind == EnvironmentDesc::Kind::Hdr) {
-        const io::FloatImage image = io::readFloatImage(scene.render.environment.path);
-        environment_ = gl::Texture2D(image.width, image.height, image.rgba.data());
+        const FloatImage* image = scene.render.environment.image.get();
+        EIKON_CHECK_MSG(image != nullptr, "an hdr environment arrives with its image read (io/scene)");
+        environment_ = gl::Texture2D(image->width, image->height, image->rgba.data());
     }
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);

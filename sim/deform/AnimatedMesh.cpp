@@ -1,7 +1,7 @@
 #include "sim/deform/AnimatedMesh.h"
 
 #include "bridge/core/Error.h"
-#include "bridge/io/MeshReader.h"
+#include "io/mesh/MeshReader.h"
 #include "sim/deform/Keyframes.h"
 
 #include <cmath>

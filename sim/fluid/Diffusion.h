@@ -8,7 +8,7 @@
 #pragma once
 
 #include "sim/fluid/ConjugateGradient.h"
-#include "sim/fluid/GridField.h"
+#include "sim/field/GridField.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
 #include "sim/fluid/FiniteCheck.h"
 
 #include "bridge/core/Error.h"
-#include "bridge/scene/JsonReader.h"
+#include "bridge/core/NumberFormat.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>

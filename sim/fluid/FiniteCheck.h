@@ -1,9 +1,10 @@
 // The solver's guard against NaN and Inf: every field is scanned after every
 // phase, and the first non-finite sample stops the run with its field, its
-// lattice index and the phase that produced it (DESIGN.md: never traced silently).
+// lattice index and the phase that produced it (docs/architecture.md,
+// Errors and outputs: never traced silently).
 #pragma once
 
-#include "sim/fluid/GridField.h"
+#include "sim/field/GridField.h"
 
 #include <string>
 

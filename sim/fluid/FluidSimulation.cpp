@@ -56,15 +56,12 @@ void record(PhaseTiming& timing, const SolveStats& stats) {
 
 }  // namespace
 
-FluidSimulation::FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid, double referenceIndex)
+FluidSimulation::FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid)
     : desc_(desc),
-      renderGrid_(renderGrid),
-      referenceIndex_(referenceIndex),
       state_(solverGridOf(desc, renderGrid), desc.ambientTemperature),
       domain_(domainOf(desc, state_.flow)),
       sources_(desc_, state_.flow, domain_),
-      pressure_(std::make_unique<PressureSolver>(domain_, state_.flow.h)),
-      optics_(desc) {
+      pressure_(std::make_unique<PressureSolver>(domain_, state_.flow.h)) {
     rebuildRoles();
     sources_.applyScalars(state_);
     timings_ = {{"sources"}, {"advection"}, {"diffusion"}, {"projection"}};
@@ -197,19 +194,6 @@ void FluidSimulation::checkFinite(const std::string& phase, unsigned fields) con
         for (int axis = 0; axis < 3; ++axis) requireFinite(state_.flow.velocity[axis], axes[axis], "face", phase);
     }
     if (fields & kPressure) requireFinite(state_.pressure, "pressure", "cell", phase);
-}
-
-void FluidSimulation::writeFields(FieldSet& fields) const {
-    fields.grid = renderGrid_;
-    fields.referenceIndex = referenceIndex_;
-    writeOpticalFields(optics_, scalars(), fields);
-}
-
-void FluidSimulation::writeFields(const FieldViews& fields) const {
-    EIKON_CHECK_MSG(fields.grid.resolution == renderGrid_.resolution, "field views on another grid");
-    EIKON_CHECK_MSG((fields.hasExtinction() || !optics_.absorbs()) && (fields.hasScattering() || !optics_.scatters()),
-                    "field views without the fields the optical model writes");
-    mapOpticalFields(optics_, scalars(), fields);
 }
 
 SolverScalars FluidSimulation::scalars() const {

@@ -2,16 +2,18 @@
 //
 // One substep (Stam 1999, "Stable Fluids", §2; Bridson 2nd ed. ch. 2–6):
 //   sources   hot plates, jet scalars, Boussinesq buoyancy, jet velocities
+//             (fixed scalars are set again after advection, jet velocities before projection)
 //   advection MacCormack with the extrema limiter (Advection.h), velocity and
 //             scalars; in a closed domain scalar totals are restored (MassCorrection.h)
-//   diffusion backward Euler by CG: viscosity, heat, concentration, dye (Diffusion.h)
+//   diffusion backward Euler for the increment: viscosity, heat, concentration,
+//             dye, by red–black Gauss–Seidel, or by CG where a step is stiff (Diffusion.h)
 //   projection MG-preconditioned CG to the pressure tolerance (PressureSolver.h)
 // Every field is checked for NaN/Inf after every phase (FiniteCheck.h).
 // A frame advances SimDesc::frameTime in at least SimDesc::substeps equal
 // substeps, more where the fastest face would cross more than SimDesc::cfl cells.
 #pragma once
 
-#include "bridge/grid/FieldSet.h"
+#include "bridge/grid/GridSpec.h"
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/Advection.h"
 #include "sim/fluid/Boundaries.h"
@@ -19,7 +21,7 @@
 #include "sim/fluid/FluidState.h"
 #include "sim/fluid/PressureSolver.h"
 #include "sim/fluid/Sources.h"
-#include "sim/optics/OpticalMapping.h"
+#include "sim/field/SolverScalars.h"
 
 #include <array>
 #include <cstdint>
@@ -30,8 +32,9 @@
 namespace eikon::sim {
 
 // Wall time of one phase summed over the substeps of the last frame, with the
-// solver iterations it took (CG iterations of diffusion, PCG iterations of
-// the pressure) and the worst relative residual they reached.
+// solver iterations it took (diffusion: Gauss–Seidel sweeps or CG iterations,
+// summed over the fields; pressure: PCG iterations) and the worst relative
+// residual they reached.
 struct PhaseTiming {
     std::string phase;  // "sources", "advection", "diffusion", "projection"
     double milliseconds = 0.0;
@@ -42,9 +45,9 @@ struct PhaseTiming {
 class FluidSimulation {
 public:
     // The solver grid is desc.resolution over desc.bounds (the render grid's
-    // bounds when absent); fields are written on renderGrid with n_ref =
-    // referenceIndex. Throws InputError for a source region without cells.
-    FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid, double referenceIndex);
+    // bounds when absent); the optical mapping (sim/optics/OpticalMapping.h)
+    // reads scalars(). Throws InputError for a source region without cells.
+    FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid);
 
     // Runs the substeps of one frame. Throws InputError naming field, cell and
     // phase the moment a NaN or Inf appears.
@@ -53,18 +56,8 @@ public:
     // One substep of dt seconds (tests, benchmarks); lastTimings() then holds its phases.
     void step(double dt);
 
-    // Fills δn, κ, σs on the render grid, bumping the versions of the fields
-    // whose values changed, and validates them.
-    void writeFields(FieldSet& fields) const;
-    // The same values written in place into memory the caller owns (a GPU
-    // ring slot), which has at least the fields the optical model writes (κ
-    // and σs of a medium without dye are written as 0 where present);
-    // versions and validation are the caller's.
-    void writeFields(const FieldViews& fields) const;
-    // The fields whose values change from frame to frame: δn always, κ and σs
-    // when dye absorbs or scatters.
-    bool absorbs() const { return optics_.absorbs(); }
-    bool scatters() const { return optics_.scatters(); }
+    // Temperature, concentration and dye on the solver grid, for the optical mapping.
+    SolverScalars scalars() const;
 
     double time() const { return time_; }
     int lastSubsteps() const { return lastSubsteps_; }
@@ -81,7 +74,6 @@ public:
 
 private:
     void substep(double dt);
-    SolverScalars scalars() const;
     // Advection of the scalars and the velocity in a closed domain, with each
     // scalar's total restored (MassCorrection.h).
     void advectConserving(const std::vector<GridField*>& scalars, double dt);
@@ -93,13 +85,10 @@ private:
     PhaseTiming& timing(int phase) { return timings_[static_cast<std::size_t>(phase)]; }
 
     SimDesc desc_;
-    GridSpec renderGrid_;
-    double referenceIndex_;
     FluidState state_;
     FluidDomain domain_;
     SceneSources sources_;
     std::unique_ptr<PressureSolver> pressure_;
-    OpticalModel optics_;
     AdvectionScratch advection_;
     // One implicit diffusion per field: each caches its operator for its diffusivity.
     std::array<ImplicitDiffusion, 3> velocityDiffusion_;

@@ -6,7 +6,7 @@
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
-#include "sim/fluid/GridField.h"
+#include "sim/field/GridField.h"
 
 #include <array>
 

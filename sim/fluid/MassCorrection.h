@@ -11,7 +11,7 @@
 // Kim et al. 2008 "Flowfixer" §4 for graphics).
 #pragma once
 
-#include "sim/fluid/GridField.h"
+#include "sim/field/GridField.h"
 
 namespace eikon::sim {
 

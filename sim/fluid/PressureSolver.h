@@ -21,8 +21,6 @@ public:
     // receives p. Stops at max|∇·u| <= tolerance · max|∇·u*| or maxIterations.
     SolveStats project(MacGrid& mac, GridField& pressure, double tolerance, int maxIterations) const;
 
-    int multigridLevels() const { return multigrid_.levelCount(); }
-
 private:
     FluidDomain domain_;
     MultigridPreconditioner multigrid_;

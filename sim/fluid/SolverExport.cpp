@@ -4,13 +4,13 @@
 
 namespace eikon::sim {
 
-std::vector<io::NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid,
+std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid,
                                          double ambientTemperature) {
     const std::size_t cells = renderGrid.cellCount();
-    io::NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f)};
-    io::NamedArray temperature{"temperature", 1, std::vector<float>(cells, static_cast<float>(ambientTemperature))};
-    io::NamedArray concentration{"concentration", 1, std::vector<float>(cells, 0.0f)};
-    io::NamedArray dye{"dye", 1, std::vector<float>(cells, 0.0f)};
+    NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f)};
+    NamedArray temperature{"temperature", 1, std::vector<float>(cells, static_cast<float>(ambientTemperature))};
+    NamedArray concentration{"concentration", 1, std::vector<float>(cells, 0.0f)};
+    NamedArray dye{"dye", 1, std::vector<float>(cells, 0.0f)};
     const MacGrid& flow = state.flow;
     const glm::ivec3 r = renderGrid.resolution;
     tbb::parallel_for(0, r.z, [&](int k) {

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
-#include "bridge/io/ExportArrays.h"
+#include "bridge/grid/NamedArrays.h"
 #include "sim/fluid/FluidState.h"
 
 #include <vector>
@@ -15,7 +15,7 @@ namespace eikon::sim {
 // faces), "temperature" (K), "concentration", "dye", trilinear at the render
 // cells' centres; render cells outside the solver box see the ambient fluid
 // at rest (ambientTemperature, no liquid B, no dye).
-std::vector<io::NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid,
+std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid,
                                          double ambientTemperature);
 
 }  // namespace eikon::sim

@@ -1,16 +1,18 @@
 // From the solver's temperature, concentration and dye to what the tracer
-// needs: δn = n − n_ref (float32, DESIGN.md), extinction κ and scattering σs
-// per RGB channel, resampled trilinearly from the solver grid onto the render
-// grid (they may differ; render cells outside the solver box see the ambient
-// fluid). Air: Gladstone–Dale in temperature (AirOptics.h); liquid: the two
-// liquids mixed by concentration (LiquidOptics.h); dye: κ = κ_dye·dye,
-// σs = σ_dye·dye per channel (Beer–Lambert coefficients linear in concentration).
+// needs: δn = n − n_ref (float32; docs/architecture.md, Conventions),
+// extinction κ and scattering σs per RGB channel, resampled trilinearly from
+// the solver grid onto the render grid (they may differ; render cells
+// outside the solver box see the ambient fluid). Air: Gladstone–Dale in
+// temperature (AirOptics.h); liquid: the two liquids mixed by concentration
+// (LiquidOptics.h); dye: κ = κ_dye·dye, σs = σ_dye·dye per channel
+// (Beer–Lambert coefficients linear in concentration). sim::SceneFields
+// applies it to the fluid solver's scalars (sim/field/SolverScalars.h).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/FieldViews.h"
 #include "bridge/scene/Scene.h"
-#include "sim/fluid/GridField.h"
+#include "sim/field/SolverScalars.h"
 #include "sim/optics/AirOptics.h"
 
 namespace eikon::sim {
@@ -32,15 +34,6 @@ private:
     double indexA_, indexB_;
     SimDesc::Mixing mixing_;
     Rgb dyeExtinction_, dyeScattering_;
-};
-
-// The solver's scalars on its grid (cell-centred GridFields over `solverGrid`).
-struct SolverScalars {
-    const GridSpec& solverGrid;
-    const GridField& temperature;
-    const GridField& concentration;
-    const GridField& dye;
-    double ambientTemperature;
 };
 
 // Writes δn (and κ, σs where `fields` has them) of every render cell straight

@@ -1,7 +1,7 @@
 #include "sim/volume/VolumeSequence.h"
 
-#include "bridge/io/vdb/VdbVolumeFile.h"
-#include "bridge/scene/ExportParser.h"
+#include "io/vdb/VdbVolumeFile.h"
+#include "io/vdb/VolumeFramePath.h"
 
 namespace eikon::sim {
 
@@ -35,11 +35,11 @@ void VolumeSequence::writeFields(FieldSet& fields) const {
     writeVolumeOptics(desc_, medium_, samples_, file_, fields);
 }
 
-std::vector<io::NamedArray> VolumeSequence::exportArrays() const {
-    std::vector<io::NamedArray> arrays;
+std::vector<NamedArray> VolumeSequence::exportArrays() const {
+    std::vector<NamedArray> arrays;
     if (!samples_.density.empty()) arrays.push_back({"density", 1, samples_.density});
     if (!samples_.temperature.empty() || !samples_.flame.empty()) {
-        io::NamedArray temperature{"temperature", 1, std::vector<float>(grid_.cellCount())};
+        NamedArray temperature{"temperature", 1, std::vector<float>(grid_.cellCount())};
         for (std::size_t c = 0; c < temperature.values.size(); ++c)
             temperature.values[c] = static_cast<float>(volumeTemperature(desc_, samples_, c));
         arrays.push_back(std::move(temperature));

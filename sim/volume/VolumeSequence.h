@@ -1,12 +1,12 @@
 // An imported OpenVDB volume (scene `volume`) as a source of fields: one
 // file, or a numbered sequence of which rendered frame f shows file number
 // frame_start + f. Each frame's grids are sampled onto the render grid
-// (bridge/io/vdb, sparse until sampled) and mapped to δn, κ, σs, g by
+// (io/vdb, sparse until sampled) and mapped to δn, κ, σs, g by
 // sim/optics/VolumeOptics.h.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
-#include "bridge/io/ExportArrays.h"
+#include "bridge/grid/NamedArrays.h"
 #include "bridge/scene/Scene.h"
 #include "sim/optics/VolumeOptics.h"
 
@@ -35,7 +35,7 @@ public:
 
     // density, temperature (K), flame, velocity on the render grid, for
     // those grids the scene reads.
-    std::vector<io::NamedArray> exportArrays() const;
+    std::vector<NamedArray> exportArrays() const;
 
 private:
     void load(int frame);

@@ -60,7 +60,7 @@ double airProfileIndex(const AirTemperatureProfile& profile, double y) {
 
 FieldSet voxelizeScene(const Scene& scene) {
     FieldSet fields;
-    fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields.grid = scene.grid.spec();
     fields.referenceIndex = scene.medium.index;
     fields.deltaIndex.assign(fields.grid.cellCount(), 0.0f);
     const CellBox whole = CellBox::whole(fields.grid);

@@ -35,8 +35,6 @@ bool CellBlocks::overlaps(const CellBox& cells) const {
     return false;
 }
 
-void CellBlocks::markAll() { std::fill(marked_.begin(), marked_.end(), 1); }
-
 void CellBlocks::add(const CellBlocks& other) {
     EIKON_CHECK(other.marked_.size() == marked_.size());
     for (std::size_t b = 0; b < marked_.size(); ++b) marked_[b] |= other.marked_[b];

@@ -18,7 +18,6 @@ public:
     explicit CellBlocks(const GridSpec& grid);
 
     void mark(const CellBox& cells);  // every block the box overlaps
-    void markAll();
     void add(const CellBlocks& other);  // same grid
     bool empty() const;
     bool overlaps(const CellBox& cells) const;  // true when a block the box overlaps is marked

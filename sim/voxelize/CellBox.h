@@ -19,13 +19,6 @@ struct CellBox {
     long long cellCount() const {
         return empty() ? 0 : static_cast<long long>(max.x - min.x) * (max.y - min.y) * (max.z - min.z);
     }
-    // The smallest box holding both (an empty box adds nothing).
-    CellBox merged(const CellBox& other) const {
-        if (empty()) return other;
-        if (other.empty()) return *this;
-        return {glm::min(min, other.min), glm::max(max, other.max)};
-    }
-
     static CellBox whole(const GridSpec& grid) { return {glm::ivec3(0), grid.resolution}; }
 
     // Cells whose centres may lie within `margin` metres of the world box

@@ -1,6 +1,6 @@
 #include "tests/integration/TraceHelpers.h"
 
-#include "render/accuracy/CaseScenes.h"
+#include "verify/accuracy/CaseScenes.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"

@@ -1,7 +1,7 @@
 // The eikon executable as users meet it: exit codes, messages that name the
 // file and JSON path of bad input, nothing written on refusal, and the
 // output layout of a run.
-#include "bridge/io/vdb/VdbVolumeFile.h"
+#include "io/vdb/VdbVolumeFile.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // The default scene end to end, at a reduced size: a glass sphere above a
 // diffuse floor lit by a point light must focus a caustic onto the floor.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"

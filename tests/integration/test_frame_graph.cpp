@@ -1,6 +1,6 @@
 // The frame graph: a stage runs only when one of its inputs changed, and a
 // stage the scene does not need does not exist.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"

@@ -3,7 +3,7 @@
 // here), termination (every photon ends escaped, received, cut off or
 // blocked), bounded energy (emitted = absorbed + escaped + received + cut off
 // + blocked to 1e-6) and a stated error bound.
-#include "render/reference/AnalyticFields.h"
+#include "verify/reference/AnalyticFields.h"
 #include "tests/integration/GlTestContext.h"
 #include "tests/integration/TraceHelpers.h"
 
@@ -105,7 +105,7 @@ TEST(Stability, GrazingIncidenceRefractsBySnell) {
     scene.tracer.stepVoxels = 0.25;
     scene.render.photons = 64;
     FieldSet fields;
-    fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields.grid = scene.grid.spec();
     fields.deltaIndex.resize(fields.grid.cellCount());
     auto glassOffset = [&](double y) { return 0.5 * std::clamp((rampTop - y) / (rampTop - rampBottom), 0.0, 1.0); };
     for (int k = 0; k < 4; ++k)
@@ -153,7 +153,7 @@ TEST(Stability, WhisperingGalleryPhotonsTerminateWithPowerAccounted) {
     scene.render.photons = 1 << 12;
     const reference::FishEyeField fishEye(2.0, 0.5);
     FieldSet fields;
-    fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields.grid = scene.grid.spec();
     fields.deltaIndex.resize(fields.grid.cellCount());
     for (int k = 0; k < 32; ++k)
         for (int j = 0; j < 32; ++j)
@@ -235,7 +235,7 @@ TEST(Stability, TinyGradientOverHundredMetres) {
     scene.tracer.stepVoxels = 1.0;
     scene.render.photons = 16;
     FieldSet fields;
-    fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields.grid = scene.grid.spec();
     fields.referenceIndex = nRef;
     fields.deltaIndex.resize(fields.grid.cellCount());
     for (int k = 0; k < 8; ++k)

@@ -20,7 +20,7 @@ using namespace test;
 // n = a + b·y on a 128×64×8 grid of 1 cm voxels (n_ref = a = 1, so δn = b·y).
 FieldSet linearSlab(const Scene& scene, double gradient) {
     FieldSet fields;
-    fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields.grid = scene.grid.spec();
     fields.referenceIndex = 1.0;
     fields.deltaIndex.resize(fields.grid.cellCount());
     for (int k = 0; k < fields.grid.resolution.z; ++k)
@@ -97,7 +97,7 @@ TEST(TracerAccuracy, FluenceFollowsBeerLambert) {
     const TraceResult result = trace(scene);
     ASSERT_FALSE(result.fluence.empty());
 
-    const GridSpec grid{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    const GridSpec grid = scene.grid.spec();
     double worst = 0.0;
     for (int j = 2; j < 38; j += 5) {
         double sum[3] = {0, 0, 0};

@@ -1,8 +1,8 @@
 // The viewing pass against closed forms: heat-shimmer deflection through a
 // Gaussian hot-air bump, single scattering in a homogeneous slab, total
 // internal reflection in glass; and the default picture against a reference.
-#include "bridge/io/ImageIo.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/image/ImageIo.h"
+#include "io/scene/SceneParser.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
@@ -66,7 +66,7 @@ TEST(ViewPass, HeatShimmerDeflectsByTheAnalyticAngle) {
     scene.camera.target = glm::dvec3(0.0);
     scene.camera.fovDeg = 0.08;  // × aspect 161/3: the row spans ±0.15 m at the bump, nearly parallel rays
     FieldSet fields;
-    fields.grid = GridSpec{scene.grid.resolution, scene.grid.boundsMin, scene.grid.boundsMax};
+    fields.grid = scene.grid.spec();
     fields.deltaIndex.resize(fields.grid.cellCount());
     for (int k = 0; k < 80; ++k)
         for (int j = 0; j < 80; ++j)

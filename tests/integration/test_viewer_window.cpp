@@ -1,7 +1,7 @@
 // eikon-view in a window under Xvfb (Mesa): it runs the same frame loop as
 // `eikon run` — its frame is the headless render, pixel for pixel — and the
 // window shows that frame with the control panel over it.
-#include "bridge/io/ImageIo.h"
+#include "io/image/ImageIo.h"
 
 #include <gtest/gtest.h>
 

@@ -37,7 +37,7 @@ StiffRunResult runStiffVortex(int cells, double cfl, double diffusionOverExplici
     desc.gravity = glm::dvec3(0.0);
     desc.viscosity = desc.thermalDiffusivity = desc.concentrationDiffusivity = desc.dyeDiffusivity =
         diffusionOverExplicitLimit * explicitLimit;
-    FluidSimulation sim(desc, GridSpec{glm::ivec3(cells), glm::dvec3(0.0), glm::dvec3(1.0)}, 1.0);
+    FluidSimulation sim(desc, GridSpec{glm::ivec3(cells), glm::dvec3(0.0), glm::dvec3(1.0)});
     FluidState& s = sim.state();
     for (int axis = 0; axis < 2; ++axis) {  // solid-body rotation about the z axis
         GridField& u = s.flow.velocity[axis];

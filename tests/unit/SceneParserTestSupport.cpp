@@ -1,7 +1,7 @@
 #include "tests/unit/SceneParserTestSupport.h"
 
 #include "bridge/core/Error.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The air temperature profile of a mirage scene: Gladstone–Dale at the ground
 // and far above it, the scene keys, and its conflict with a simulated medium.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/unit/SceneParserTestSupport.h"
 

@@ -1,6 +1,6 @@
 // Selection of exported arrays: fields, region of interest, block averaging.
 #include "bridge/core/Error.h"
-#include "bridge/io/ExportArrays.h"
+#include "io/export/ExportArrays.h"
 
 #include <gtest/gtest.h>
 

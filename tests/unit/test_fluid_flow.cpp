@@ -60,7 +60,7 @@ TEST(FluidFlow, BuoyantPlumeIsDivergenceFreeAndRises) {
     ball.sphere = {glm::dvec3(0.35, 0.3, 0.25), 0.06};
     desc.obstacles.push_back(ball);
     desc.frameTime = 0.05;
-    FluidSimulation sim(desc, box(24), 1.0);
+    FluidSimulation sim(desc, box(24));
     for (int frame = 0; frame < 16; ++frame) {
         sim.advanceFrame();
         const double h = sim.state().flow.h.x;
@@ -80,7 +80,7 @@ TEST(FluidFlow, DenseLiquidSinks) {
     desc.viscosity = 1e-6;
     desc.concentrationDiffusivity = 0.0;
     desc.frameTime = 0.05;
-    FluidSimulation sim(desc, box(16, 0.2), 1.333);
+    FluidSimulation sim(desc, box(16, 0.2));
     GridField& c = sim.state().concentration;
     for (int k = 5; k < 11; ++k)
         for (int j = 10; j < 14; ++j)
@@ -109,7 +109,7 @@ TEST(FluidFlow, ClosedBoxConservesScalarsWithinHalfAPercent) {
     desc.concentrationExpansion = 0.05;
     desc.thermalDiffusivity = 1e-4;
     desc.concentrationDiffusivity = 1e-4;
-    FluidSimulation sim(desc, box(n), 1.0);
+    FluidSimulation sim(desc, box(n));
     FluidState& s = sim.state();
     for (int k = 4; k < 9; ++k)
         for (int j = 2; j < 6; ++j)
@@ -158,7 +158,7 @@ TEST(FluidFlow, TaylorGreenVortexDecaysAtTheViscousRate) {
     desc.thermalDiffusivity = desc.concentrationDiffusivity = 0.0;
     desc.pressureTolerance = 1e-8;
     const GridSpec grid{desc.resolution, glm::dvec3(0.0), glm::dvec3(pi, pi, pi / 16.0)};
-    FluidSimulation sim(desc, grid, 1.0);
+    FluidSimulation sim(desc, grid);
     MacGrid& mac = sim.state().flow;
     const double amplitude = 0.1;
     for (int axis = 0; axis < 2; ++axis) {

@@ -3,6 +3,7 @@
 #include "sim/fluid/FluidSimulation.h"
 
 #include "bridge/core/Error.h"
+#include "sim/optics/OpticalMapping.h"
 
 #include <gtest/gtest.h>
 
@@ -22,6 +23,14 @@ SimDesc smallAir() {
     return desc;
 }
 
+// The solver's fields mapped onto the render grid with n_ref = 1, as
+// sim::SceneFields does each frame.
+void writeFields(const FluidSimulation& sim, const SimDesc& desc, FieldSet& fields) {
+    fields.grid = kRenderGrid;
+    fields.referenceIndex = 1.0;
+    writeOpticalFields(OpticalModel(desc), sim.scalars(), fields);
+}
+
 std::string messageOf(FluidSimulation& sim) {
     try {
         sim.step(0.01);
@@ -36,26 +45,26 @@ std::string messageOf(FluidSimulation& sim) {
 // phase that made them otherwise.
 TEST(FluidSimulation, NonFiniteValuesAreCaughtWithFieldAndCell) {
     {
-        FluidSimulation sim(smallAir(), kRenderGrid, 1.0);
+        FluidSimulation sim(smallAir(), kRenderGrid);
         sim.state().temperature(3, 4, 5) = std::numeric_limits<double>::quiet_NaN();
         EXPECT_EQ(messageOf(sim),
                   "sim: field temperature, cell (3, 4, 5) at the start of a substep: expected a finite value, found nan");
     }
     {
-        FluidSimulation sim(smallAir(), kRenderGrid, 1.0);
+        FluidSimulation sim(smallAir(), kRenderGrid);
         sim.state().flow.velocity[1](2, 7, 1) = std::numeric_limits<double>::infinity();
         EXPECT_EQ(messageOf(sim),
                   "sim: field velocity_y, face (2, 7, 1) at the start of a substep: expected a finite value, found inf");
     }
     {
-        FluidSimulation sim(smallAir(), kRenderGrid, 1.0);
+        FluidSimulation sim(smallAir(), kRenderGrid);
         sim.state().dye(0, 11, 6) = -std::numeric_limits<double>::infinity();
         EXPECT_EQ(messageOf(sim), "sim: field dye, cell (0, 11, 6) at the start of a substep: expected a finite value, found -inf");
     }
     {
         SimDesc desc = smallAir();
         desc.thermalExpansion = 1e300;  // buoyancy overflows at the one hot cell
-        FluidSimulation sim(desc, kRenderGrid, 1.0);
+        FluidSimulation sim(desc, kRenderGrid);
         sim.state().temperature(1, 2, 3) += 1e10;
         EXPECT_EQ(messageOf(sim), "sim: field velocity_y, face (1, 2, 3) after sources: expected a finite value, found inf");
     }
@@ -69,7 +78,7 @@ TEST(FluidSimulation, FramesSplitIntoSubstepsByTheCflTarget) {
     desc.substeps = 2;
     desc.cfl = 1.0;
     desc.boundaries[0] = desc.boundaries[1] = SimDesc::Boundary::Open;  // a uniform x flow passes through
-    FluidSimulation sim(desc, kRenderGrid, 1.0);
+    FluidSimulation sim(desc, kRenderGrid);
     sim.advanceFrame();
     EXPECT_EQ(sim.lastSubsteps(), 2);
     EXPECT_DOUBLE_EQ(sim.time(), 0.1);
@@ -90,9 +99,9 @@ TEST(FluidSimulation, FramesSplitIntoSubstepsByTheCflTarget) {
 // ambient air gives the Gladstone–Dale δn everywhere, also outside the solver box.
 TEST(FluidSimulation, WritesGladstoneDaleIndexOnTheRenderGrid) {
     const SimDesc desc = smallAir();
-    const FluidSimulation sim(desc, kRenderGrid, 1.0);
+    const FluidSimulation sim(desc, kRenderGrid);
     FieldSet fields;
-    sim.writeFields(fields);
+    writeFields(sim, desc, fields);
     EXPECT_EQ(fields.grid.resolution, kRenderGrid.resolution);
     EXPECT_EQ(fields.referenceIndex, 1.0);
     const double expected = 2.93e-4 * 273.15 / 293.15;
@@ -108,25 +117,25 @@ TEST(FluidSimulation, ResamplesTrilinearlyAndBumpsOnlyChangedVersions) {
     SimDesc desc = smallAir();
     desc.dyeExtinction = Rgb(2.0, 1.0, 0.5);
     desc.dyeScattering = Rgb(1.0, 0.5, 0.25);
-    FluidSimulation sim(desc, kRenderGrid, 1.0);
+    FluidSimulation sim(desc, kRenderGrid);
     GridField& t = sim.state().temperature;
     for (int k = 0; k < 12; ++k)
         for (int j = 0; j < 12; ++j)
             for (int i = 0; i < 12; ++i) t(i, j, k) = 300.0 + 10.0 * sim.state().flow.position(t, i, j, k).x;
     FieldSet fields;
-    sim.writeFields(fields);
+    writeFields(sim, desc, fields);
     EXPECT_EQ(fields.indexVersion, 1u);
     EXPECT_EQ(fields.extinctionVersion, 1u);  // zeros, but the model absorbs: present from the start
     const glm::dvec3 x = kRenderGrid.cellCentre(8, 5, 9);  // inside the central cells of the solver box
     const double n = 1.0 + 2.93e-4 * 273.15 / (300.0 + 10.0 * x.x);
     EXPECT_NEAR(fields.deltaIndex[kRenderGrid.linearIndex(8, 5, 9)], n - 1.0, 1e-10);
 
-    sim.writeFields(fields);  // nothing changed
+    writeFields(sim, desc, fields);  // nothing changed
     EXPECT_EQ(fields.indexVersion, 1u);
     EXPECT_EQ(fields.extinctionVersion, 1u);
 
     sim.state().dye(6, 6, 6) = 3.0;  // dye only: κ and σs change, the index does not
-    sim.writeFields(fields);
+    writeFields(sim, desc, fields);
     EXPECT_EQ(fields.indexVersion, 1u);
     EXPECT_EQ(fields.extinctionVersion, 2u);
     EXPECT_EQ(fields.scatteringVersion, 2u);
@@ -141,7 +150,7 @@ TEST(FluidSimulation, SourceRegionWithoutCellsIsAnInputError) {
     plate.region = {glm::dvec3(0.0, 0.001, 0.0), glm::dvec3(0.01, 0.002, 0.01)};  // between cell centres
     desc.sources.push_back(plate);
     try {
-        FluidSimulation sim(desc, kRenderGrid, 1.0);
+        FluidSimulation sim(desc, kRenderGrid);
         FAIL() << "accepted an empty source region";
     } catch (const InputError& error) {
         EXPECT_EQ(std::string(error.what()),
@@ -160,7 +169,7 @@ TEST(FluidSimulation, SolidMaskAndJetShapeTheFlow) {
     jet.concentration = 1.0;
     jet.dye = 2.0;
     desc.sources.push_back(jet);
-    FluidSimulation sim(desc, kRenderGrid, 1.0);
+    FluidSimulation sim(desc, kRenderGrid);
     std::vector<std::uint8_t> solid(sim.domain().solid.size(), 0);
     for (int k = 4; k < 8; ++k)
         for (int i = 4; i < 8; ++i) solid[sim.domain().cellIndex(i, 3, k)] = 1;  // a slab below the jet

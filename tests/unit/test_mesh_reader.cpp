@@ -3,7 +3,7 @@
 // and non-manifold meshes must each give an InputError naming the file and
 // the reason (with the count of offending edges).
 #include "bridge/core/Error.h"
-#include "bridge/io/MeshReader.h"
+#include "io/mesh/MeshReader.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "bridge/core/Error.h"
-#include "bridge/io/AtomicFile.h"
-#include "bridge/io/ImageIo.h"
-#include "bridge/io/OutputFolder.h"
+#include "io/files/AtomicFile.h"
+#include "io/image/ImageIo.h"
+#include "io/files/OutputFolder.h"
 
 #include <gtest/gtest.h>
 

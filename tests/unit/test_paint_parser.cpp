@@ -1,6 +1,6 @@
 // The `paint` list: valid strokes parse with their defaults, bad ones name
 // their JSON path.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 #include "tests/unit/SceneParserTestSupport.h"
 
 #include <gtest/gtest.h>

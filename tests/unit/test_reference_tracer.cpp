@@ -2,8 +2,8 @@
 // the Luneburg focus on the far surface, Maxwell fish-eye imaging, the n·cosθ
 // invariant and catenary of a linear slab, the mirage turning height and the
 // glass sphere's paraxial focus.
-#include "render/reference/AnalyticFields.h"
-#include "render/reference/ReferenceTracer.h"
+#include "verify/reference/AnalyticFields.h"
+#include "verify/reference/ReferenceTracer.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Scene files from disk and --set overrides.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
 #include "tests/unit/SceneParserTestSupport.h"

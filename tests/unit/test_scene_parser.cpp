@@ -1,5 +1,5 @@
 // Scene files: every section parsed, and bad values reported at their JSON path.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
 #include "tests/unit/SceneParserTestSupport.h"

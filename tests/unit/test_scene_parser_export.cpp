@@ -1,8 +1,9 @@
 // The `export` and `volume` sections of scene files.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
-#include "bridge/scene/ExportParser.h"
+#include "io/scene/ExportParser.h"
+#include "io/vdb/VolumeFramePath.h"
 #include "tests/unit/SceneParserTestSupport.h"
 
 #include <gtest/gtest.h>

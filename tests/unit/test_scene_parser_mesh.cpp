@@ -1,5 +1,5 @@
 // Mesh and water objects, their deformers, and the top-level frame_time.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 
 #include "tests/unit/SceneParserTestSupport.h"
 

@@ -1,5 +1,5 @@
 // The `sim` section of scene files.
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
 #include "tests/unit/SceneParserTestSupport.h"

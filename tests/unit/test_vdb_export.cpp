@@ -1,7 +1,7 @@
 // OpenVDB export: named float and vec3 grids whose voxel (i, j, k) is the
 // render cell (i, j, k), bit-exact, sparse where the values are 0.
-#include "bridge/io/vdb/VdbFrameWriter.h"
-#include "bridge/io/vdb/VdbVolumeFile.h"
+#include "io/vdb/VdbFrameWriter.h"
+#include "io/vdb/VdbVolumeFile.h"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 // a hang or another exception. Run under AddressSanitizer and UBSan in CI
 // (label "sanitize"). Deterministic: a fixed seed.
 #include "bridge/core/Error.h"
-#include "bridge/io/vdb/VdbVolumeFile.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/vdb/VdbVolumeFile.h"
+#include "io/scene/SceneParser.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // structural checks accepting what OpenVDB writes, and errors that name the
 // file and list its grids.
 #include "bridge/core/Error.h"
-#include "bridge/io/vdb/VdbFileCheck.h"
-#include "bridge/io/vdb/VdbVolumeFile.h"
+#include "io/vdb/VdbFileCheck.h"
+#include "io/vdb/VdbVolumeFile.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>

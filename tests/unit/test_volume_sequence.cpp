@@ -3,7 +3,7 @@
 // section and stepped one file per frame: the index follows Gladstone–Dale of
 // the mapped temperature, extinction and scattering follow density.
 #include "bridge/core/Error.h"
-#include "bridge/scene/SceneParser.h"
+#include "io/scene/SceneParser.h"
 #include "sim/SceneFields.h"
 #include "sim/optics/AirOptics.h"
 #include "tests/unit/VdbTestFiles.h"

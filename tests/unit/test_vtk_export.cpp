@@ -1,5 +1,5 @@
 #include "bridge/core/Error.h"
-#include "bridge/io/vtk/VtkSeriesWriter.h"
+#include "io/vtk/VtkSeriesWriter.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // arrays read back bit-exact by vtkXMLPolyDataReader; receivers as quads;
 // recorded photon paths as polylines.
 #include "bridge/core/Error.h"
-#include "bridge/io/vtk/ExportGeometry.h"
-#include "bridge/io/vtk/PolyDataWriter.h"
+#include "io/vtk/ExportGeometry.h"
+#include "io/vtk/PolyDataWriter.h"
 
 #include <gtest/gtest.h>
 

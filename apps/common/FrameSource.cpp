@@ -1,0 +1,73 @@
+#include "apps/common/FrameSource.h"
+
+#include <chrono>
+
+namespace eikon::app {
+
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// What export reads of the host fields' current frame.
+void captureHost(const sim::SceneFields& fields, ProducedFrame& frame) {
+    frame.exportArrays = fields.exportArrays();
+    frame.meshes.clear();
+    for (const TriangleMesh* mesh : fields.deformedMeshes()) frame.meshes.push_back(*mesh);
+}
+
+}  // namespace
+
+FrameSource::FrameSource(const Scene& scene, sim::SceneFields& fields, const render::RendererOptions& options,
+                         bool pipelined, bool captureExportArrays)
+    : fields_(fields), captureExportArrays_(captureExportArrays) {
+    if (fields.simulatesFluid()) {
+        live_ = std::make_unique<LiveFrames>(fields, pipelined, captureExportArrays);
+        renderer_ = std::make_unique<render::FrameRenderer>(scene, live_->ring(), options);
+    } else {
+        host_.time = fields.time();
+        host_.phases = fields.lastTimings();
+        if (captureExportArrays_) captureHost(fields_, host_);
+        renderer_ = std::make_unique<render::FrameRenderer>(scene, fields.fields(), options);
+    }
+}
+
+void FrameSource::setPipelined(bool pipelined) {
+    if (live_) live_->setPipelined(pipelined);
+}
+
+void FrameSource::beginNext() {
+    if (live_) live_->beginNext();
+}
+
+render::FrameResult FrameSource::render() {
+    return live_ ? renderer_->render(live_->ring()) : renderer_->render(fields_.fields());
+}
+
+const ProducedFrame& FrameSource::waitNext() {
+    return live_ ? live_->waitNext() : host_;
+}
+
+void FrameSource::publishNext() {
+    if (live_) {
+        live_->publishNext();
+        return;
+    }
+    if (!fields_.changesOverTime()) return;
+    const auto start = std::chrono::steady_clock::now();
+    fields_.advanceFrame();
+    host_.simulated = true;
+    host_.simulateMs = millisecondsSince(start);
+    host_.time = fields_.time();
+    host_.phases = fields_.lastTimings();
+    if (captureExportArrays_) captureHost(fields_, host_);
+}
+
+const ProducedFrame& FrameSource::current() const { return live_ ? live_->current() : host_; }
+
+ConstFieldViews FrameSource::currentViews() const {
+    return live_ ? live_->ring().currentViews() : viewsOf(fields_.fields());
+}
+
+}  // namespace eikon::app

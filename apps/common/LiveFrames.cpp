@@ -1,0 +1,67 @@
+#include "apps/common/LiveFrames.h"
+
+#include <chrono>
+
+namespace eikon::app {
+
+namespace {
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays)
+    : fields_(fields), pipelined_(pipelined), captureExportArrays_(captureExportArrays), ring_(fields.fields()) {
+    const auto start = std::chrono::steady_clock::now();
+    fields_.writeFrameInto(ring_.acquire());
+    current_.time = fields_.time();
+    if (captureExportArrays_) capture(current_);
+    current_.writeFieldsMs = millisecondsSince(start);
+    ring_.publish(version_, version_, version_);
+}
+
+LiveFrames::~LiveFrames() {
+    if (pending_.valid()) pending_.wait();  // the thread writes into the ring: let it finish first
+}
+
+ProducedFrame LiveFrames::produce(const FieldViews& slot) {
+    ProducedFrame frame;
+    frame.simulated = true;
+    auto start = std::chrono::steady_clock::now();
+    fields_.simulateFrame();
+    frame.simulateMs = millisecondsSince(start);
+    start = std::chrono::steady_clock::now();
+    fields_.writeFrameInto(slot);
+    frame.writeFieldsMs = millisecondsSince(start);
+    frame.time = fields_.time();
+    frame.phases = fields_.lastTimings();
+    if (captureExportArrays_) capture(frame);
+    return frame;
+}
+
+void LiveFrames::capture(ProducedFrame& frame) const {
+    frame.exportArrays = fields_.exportArrays();
+    for (const TriangleMesh* mesh : fields_.deformedMeshes()) frame.meshes.push_back(*mesh);
+}
+
+void LiveFrames::beginNext() {
+    next_ = ring_.acquire();
+    if (pipelined_) pending_ = std::async(std::launch::async, [this, slot = next_] { return produce(slot); });
+}
+
+const ProducedFrame& LiveFrames::waitNext() {
+    produced_ = pipelined_ ? pending_.get() : produce(next_);
+    return produced_;
+}
+
+void LiveFrames::publishNext() {
+    current_ = produced_;
+    ++version_;
+    const std::uint64_t constant = 1;  // κ and σs of a solver without dye never change
+    ring_.publish(version_, fields_.extinctionChangesOverTime() ? version_ : constant,
+                  fields_.scatteringChangesOverTime() ? version_ : constant);
+}
+
+}  // namespace eikon::app

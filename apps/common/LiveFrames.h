@@ -1,0 +1,65 @@
+// The producer half of the live loop: a simulated scene's frames go through
+// the GPU field ring (render/stages/FieldRing.h). With pipelining, frame k+1
+// is simulated and written into its ring slot on a thread of its own while
+// the renderer traces and views frame k; without, it runs after frame k has
+// rendered. The images are the same either way.
+#pragma once
+
+#include "render/stages/FieldRing.h"
+#include "sim/SceneFields.h"
+
+#include <future>
+#include <vector>
+
+namespace eikon::app {
+
+// What produced the current frame: its simulated time and how long the
+// simulation and the write into GPU memory took.
+struct ProducedFrame {
+    double time = 0.0;
+    bool simulated = false;  // false for frame 0, the initial state
+    double simulateMs = 0.0;
+    double writeFieldsMs = 0.0;
+    std::vector<sim::PhaseTiming> phases;
+    std::vector<NamedArray> exportArrays;  // the solver's own fields, when captured for export
+    std::vector<TriangleMesh> meshes;          // the deformed meshes, when captured for export
+};
+
+class LiveFrames {
+public:
+    // Writes frame 0 into the ring and publishes it. GL thread. With
+    // `captureExportArrays`, each frame also keeps the solver's own fields
+    // (velocity, temperature, …) as they were when it was produced.
+    LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays = false);
+    ~LiveFrames();
+
+    render::FieldRing& ring() { return ring_; }
+    // Takes effect at the next beginNext().
+    void setPipelined(bool pipelined) { pipelined_ = pipelined; }
+    const ProducedFrame& current() const { return current_; }
+
+    // Acquires the next slot and, when pipelined, starts producing the next
+    // frame into it. GL thread; call before rendering the current frame.
+    void beginNext();
+    // Produces the next frame (when not pipelined) or waits for it.
+    const ProducedFrame& waitNext();
+    // Publishes the next frame as current. GL thread; call once the current
+    // frame's outputs were written from its slot.
+    void publishNext();
+
+private:
+    ProducedFrame produce(const FieldViews& slot);
+    // What export needs of the frame the fields now hold, copied.
+    void capture(ProducedFrame& frame) const;
+
+    sim::SceneFields& fields_;
+    bool pipelined_;
+    bool captureExportArrays_;
+    render::FieldRing ring_;
+    FieldViews next_;
+    std::future<ProducedFrame> pending_;
+    ProducedFrame current_, produced_;
+    std::uint64_t version_ = 1;
+};
+
+}  // namespace eikon::app

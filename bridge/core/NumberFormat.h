@@ -1,0 +1,16 @@
+// Numbers as messages show them.
+#pragma once
+
+#include <string>
+
+namespace eikon {
+
+// Shortest text that reads back as the same double ("0.25", "3", "inf"):
+// integers below 1e15 without a point, other values in the shortest
+// round-trip digits, fixed-point where the point falls within
+// 10⁻⁴…10¹⁵ and in exponent form ("1e-05", "2.5e+20") elsewhere — the
+// form JSON writers use, so a message quotes a number as the scene file
+// could write it.
+std::string formatNumber(double value);
+
+}  // namespace eikon

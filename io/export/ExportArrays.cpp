@@ -1,0 +1,91 @@
+#include "io/export/ExportArrays.h"
+
+#include "bridge/core/Error.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace eikon::io {
+
+std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields) {
+    const std::size_t cells = fields.grid.cellCount();
+    EIKON_CHECK_MSG(fields.deltaIndex.size() == cells, "deltaIndex size");
+    std::vector<NamedArray> arrays;
+    // n = n_ref + δn for viewing; float32 spacing near 1.0003 is ~1.2e-7, too
+    // coarse for a mirage's Δn ≈ 1e-5 gradients (and for δn's own float32
+    // precision), so δn itself goes out too, exactly as the FieldSet holds it.
+    NamedArray index{"index", 1, std::vector<float>(cells)};
+    for (std::size_t c = 0; c < cells; ++c)
+        index.values[c] = static_cast<float>(fields.referenceIndex + static_cast<double>(fields.deltaIndex[c]));
+    arrays.push_back(std::move(index));
+    auto copy = [](std::span<const float> values) { return std::vector<float>(values.begin(), values.end()); };
+    arrays.push_back({"delta_index", 1, copy(fields.deltaIndex)});
+    if (fields.hasExtinction()) arrays.push_back({"extinction", 3, copy(fields.extinction)});
+    if (fields.hasScattering()) arrays.push_back({"scattering", 3, copy(fields.scattering)});
+    if (fields.hasAnisotropy()) arrays.push_back({"anisotropy", 1, copy(fields.anisotropy)});
+    return arrays;
+}
+
+std::optional<CellRange> cellsInRegion(const GridSpec& grid, const ExportRegion& region) {
+    CellRange range;
+    const glm::dvec3 h = grid.voxelSize();
+    for (int axis = 0; axis < 3; ++axis) {
+        // Cell i's centre is boundsMin + (i + ½)·h: inside when min <= centre <= max.
+        const double low = std::ceil((region.min[axis] - grid.boundsMin[axis]) / h[axis] - 0.5);
+        const double high = std::floor((region.max[axis] - grid.boundsMin[axis]) / h[axis] - 0.5);
+        const double first = std::max(low, 0.0);
+        const double last = std::min(high, static_cast<double>(grid.resolution[axis] - 1));
+        if (!(last >= first)) return std::nullopt;
+        range.first[axis] = static_cast<int>(first);
+        range.count[axis] = static_cast<int>(last - first) + 1;
+    }
+    return range;
+}
+
+ExportFrame selectCells(const ExportFrame& frame, const ExportSelection& selection, const std::string& where) {
+    const GridSpec& grid = frame.grid;
+    CellRange range{glm::ivec3(0), grid.resolution};
+    if (selection.region) {
+        const auto cells = cellsInRegion(grid, *selection.region);
+        if (!cells) throw InputError(where + ".region", "a box holding at least one cell centre of the grid", "none");
+        range = *cells;
+    }
+    const glm::ivec3 block = glm::min(glm::ivec3(selection.downsample), range.count);
+    const glm::ivec3 out = range.count / block;
+    const glm::dvec3 h = grid.voxelSize();
+
+    ExportFrame result;
+    result.grid.resolution = out;
+    result.grid.boundsMin = grid.boundsMin + glm::dvec3(range.first) * h;
+    result.grid.boundsMax = result.grid.boundsMin + glm::dvec3(out * block) * h;
+    const double blockCells = static_cast<double>(block.x) * block.y * block.z;
+    for (const NamedArray& array : frame.arrays) {
+        const auto c = static_cast<std::size_t>(array.components);
+        EIKON_CHECK_MSG(array.components >= 1 && array.values.size() == c * grid.cellCount(),
+                        "export array \"" + array.name + "\" size");
+        if (!selection.wants(array.name)) continue;
+        NamedArray selected{array.name, array.components, std::vector<float>(c * result.grid.cellCount())};
+        std::vector<double> sum(c);
+        for (int k = 0; k < out.z; ++k)
+            for (int j = 0; j < out.y; ++j)
+                for (int i = 0; i < out.x; ++i) {
+                    std::fill(sum.begin(), sum.end(), 0.0);
+                    const glm::ivec3 base = range.first + glm::ivec3(i, j, k) * block;
+                    for (int bk = 0; bk < block.z; ++bk)
+                        for (int bj = 0; bj < block.y; ++bj)
+                            for (int bi = 0; bi < block.x; ++bi) {
+                                const std::size_t cell = grid.linearIndex(base.x + bi, base.y + bj, base.z + bk);
+                                for (std::size_t m = 0; m < c; ++m) sum[m] += array.values[c * cell + m];
+                            }
+                    const std::size_t target = result.grid.linearIndex(i, j, k);
+                    for (std::size_t m = 0; m < c; ++m)
+                        selected.values[c * target + m] = static_cast<float>(sum[m] / blockCells);
+                }
+        result.arrays.push_back(std::move(selected));
+    }
+    return result;
+}
+
+}  // namespace eikon::io

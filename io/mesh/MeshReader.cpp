@@ -1,0 +1,208 @@
+#include "io/mesh/MeshReader.h"
+
+#include "bridge/core/Error.h"
+
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/importer/ImporterT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+
+namespace eikon::io {
+namespace {
+
+using OmMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+std::string formatPoint(const glm::dvec3& p) {
+    std::ostringstream text;
+    text << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+    return text.str();
+}
+
+// OpenMesh's readers hand every vertex and face to an importer. This one
+// keeps them exactly as the file states them (OpenMesh's own mesh would
+// split non-manifold edges and drop faces with bad indices, hiding the
+// defect), and remembers the counts a header declares (OFF, PLY).
+class RecordingImporter : public OpenMesh::IO::ImporterT<OmMesh> {
+public:
+    explicit RecordingImporter(OmMesh& mesh) : ImporterT<OmMesh>(mesh) {}
+
+    OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override {
+        vertices.emplace_back(p[0], p[1], p[2]);
+        return ImporterT<OmMesh>::add_vertex(p);
+    }
+    OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override {
+        vertices.emplace_back(p[0], p[1], p[2]);
+        return ImporterT<OmMesh>::add_vertex(p);
+    }
+    OpenMesh::VertexHandle add_vertex() override {  // the PLY reader: add, then set_point
+        vertices.emplace_back(0.0);
+        return ImporterT<OmMesh>::add_vertex();
+    }
+    void set_point(OpenMesh::VertexHandle vertex, const OpenMesh::Vec3f& p) override {
+        if (vertex.idx() >= 0 && static_cast<std::size_t>(vertex.idx()) < vertices.size())
+            vertices[vertex.idx()] = glm::dvec3(p[0], p[1], p[2]);
+        ImporterT<OmMesh>::set_point(vertex, p);
+    }
+    OpenMesh::FaceHandle add_face(const OpenMesh::IO::BaseImporter::VHandles& corners) override {
+        std::vector<long long> face;
+        for (const auto& corner : corners) face.push_back(corner.idx());
+        faces.push_back(std::move(face));
+        return ImporterT<OmMesh>::add_face(corners);
+    }
+    void reserve(unsigned int nV, unsigned int nE, unsigned int nF) override {
+        declaredVertices = nV;
+        declaredFaces = nF;
+        ImporterT<OmMesh>::reserve(nV, nE, nF);
+    }
+
+    std::vector<glm::dvec3> vertices;
+    std::vector<std::vector<long long>> faces;
+    std::optional<unsigned int> declaredVertices;
+    std::optional<unsigned int> declaredFaces;
+};
+
+// OpenMesh's text readers parse numbers with iostreams, which fail on "nan"
+// and "inf" and then read zeros: such literals are found here, by line.
+void rejectNonFiniteLiterals(const std::string& path, const std::string& bytes) {
+    if (bytes.find('\0') != std::string::npos) return;  // binary: checked after reading
+    std::istringstream lines(bytes);
+    std::string line;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        std::istringstream tokens(line);
+        std::string token;
+        while (tokens >> token) {
+            std::string word = token;
+            std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+            if (!word.empty() && (word[0] == '+' || word[0] == '-')) word.erase(0, 1);
+            if (word.rfind("nan", 0) == 0 || word.rfind("inf", 0) == 0)
+                throw InputError(path + ": line " + std::to_string(number), "finite vertex coordinates",
+                                 "\"" + token + "\"");
+        }
+    }
+}
+
+// Lines of a text OFF or ASCII PLY file after its header, blank lines and
+// '#' comments left out; nullopt for other files. OpenMesh's text readers
+// repeat the last values they read when a file ends early, so truncation
+// shows only here: a header declaring V vertices and F faces needs V + F lines.
+std::optional<std::size_t> dataLines(const std::string& extension, const std::string& bytes) {
+    const bool isText = bytes.find('\0') == std::string::npos;
+    if (!isText || (extension != ".off" && extension != ".ply")) return std::nullopt;
+    if (extension == ".ply" && bytes.find("format ascii") == std::string::npos) return std::nullopt;
+    std::istringstream lines(bytes);
+    std::string line;
+    std::size_t headerLines = extension == ".off" ? 2 : 0;  // "OFF" and the counts
+    bool inHeader = extension == ".ply";
+    std::size_t count = 0;
+    while (std::getline(lines, line)) {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        if (inHeader) {
+            inHeader = line.compare(first, 10, "end_header") != 0;
+        } else if (headerLines > 0) {
+            --headerLines;
+        } else {
+            ++count;
+        }
+    }
+    return count;
+}
+
+std::string readBytes(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    std::ostringstream bytes;
+    bytes << file.rdbuf();
+    if (!file) throw InputError(path, "a readable mesh file", "a file that cannot be read");
+    return bytes.str();
+}
+
+// Silences OpenMesh's complaints on std::cerr while it reads: every defect
+// it would print is reported through InputError instead.
+class QuietOpenMesh {
+public:
+    QuietOpenMesh() { omerr().disable(); }
+    ~QuietOpenMesh() { omerr().enable(); }
+    QuietOpenMesh(const QuietOpenMesh&) = delete;
+    QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
+};
+
+TriangleMesh triangulate(const std::string& path, const RecordingImporter& importer) {
+    TriangleMesh mesh;
+    mesh.vertices = importer.vertices;
+    const long long vertexCount = static_cast<long long>(mesh.vertices.size());
+    for (std::size_t f = 0; f < importer.faces.size(); ++f) {
+        const std::vector<long long>& face = importer.faces[f];
+        const std::string where = path + ": face " + std::to_string(f);
+        if (face.size() < 3)
+            throw InputError(where, "at least 3 vertices", std::to_string(face.size()) + " (truncated or malformed)");
+        for (long long corner : face)
+            if (corner < 0 || corner >= vertexCount)
+                throw InputError(where, "vertex indices below " + std::to_string(vertexCount) + " (the vertex count)",
+                                 "index " + std::to_string(corner) + " (truncated or malformed)");
+        for (std::size_t c = 1; c + 1 < face.size(); ++c)
+            mesh.triangles.emplace_back(face[0], face[c], face[c + 1]);
+    }
+    return mesh;
+}
+
+}  // namespace
+
+TriangleMesh readMesh(const std::string& path, MeshClosure closure) {
+    std::error_code ignored;
+    if (!std::filesystem::exists(path, ignored)) throw InputError(path, "a mesh file", "no such file");
+    if (!std::filesystem::is_regular_file(path, ignored)) throw InputError(path, "a mesh file", "not a regular file");
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension != ".obj" && extension != ".ply" && extension != ".off" && extension != ".stl")
+        throw InputError(path, "a mesh file ending in .obj, .ply, .off or .stl", "\"" + extension + "\"");
+    const std::string bytes = readBytes(path);
+    if (bytes.empty()) throw InputError(path, "a mesh", "an empty file");
+    rejectNonFiniteLiterals(path, bytes);
+
+    OmMesh scratch;
+    RecordingImporter importer(scratch);
+    bool read = false;
+    {
+        QuietOpenMesh quiet;
+        OpenMesh::IO::Options options;
+        read = OpenMesh::IO::IOManager().read(path, importer, options);
+    }
+    if (!read) throw InputError(path, "a readable " + extension.substr(1) + " mesh", "a file OpenMesh cannot parse");
+    if (importer.declaredVertices && importer.declaredFaces) {
+        const std::size_t declared = std::size_t{*importer.declaredVertices} + *importer.declaredFaces;
+        const std::optional<std::size_t> lines = dataLines(extension, bytes);
+        if (importer.vertices.size() != *importer.declaredVertices || importer.faces.size() != *importer.declaredFaces ||
+            (lines && *lines < declared))
+            throw InputError(path,
+                             std::to_string(*importer.declaredVertices) + " vertices and " +
+                                 std::to_string(*importer.declaredFaces) + " faces (as its header declares)",
+                             lines ? std::to_string(*lines) + " vertex and face lines (truncated)"
+                                   : std::to_string(importer.vertices.size()) + " vertices and " +
+                                         std::to_string(importer.faces.size()) + " faces (truncated)");
+    }
+    for (std::size_t v = 0; v < importer.vertices.size(); ++v) {
+        const glm::dvec3& p = importer.vertices[v];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            throw InputError(path + ": vertex " + std::to_string(v), "finite coordinates", formatPoint(p));
+    }
+    TriangleMesh mesh = triangulate(path, importer);
+    if (mesh.triangles.empty()) throw InputError(path, "at least one face", "none (truncated or empty)");
+    if (closure == MeshClosure::Closed) {
+        const EdgeCensus census = countEdges(mesh);
+        if (!census.closedManifold())
+            throw InputError(path, "a closed manifold mesh (every edge shared by exactly two triangles)",
+                             std::to_string(census.open) + " open and " + std::to_string(census.nonManifold) +
+                                 " non-manifold edges of " + std::to_string(census.edges));
+    }
+    return mesh;
+}
+
+}  // namespace eikon::io

@@ -1,0 +1,209 @@
+#include "io/scene/ExportParser.h"
+
+#include "bridge/core/Error.h"
+#include "io/export/ExportArrays.h"
+#include "io/vdb/VolumeFramePath.h"
+
+#include <algorithm>
+#include <filesystem>
+
+namespace eikon {
+namespace {
+
+constexpr long long kMaxEvery = 1000000;
+constexpr long long kMaxDownsample = 64;
+constexpr long long kMaxFrameNumber = 99999999;
+constexpr long long kMaxPaths = 100000;
+constexpr long long kMaxPathVertices = 4096;
+constexpr long long kMaxRecordedVertices = 1LL << 22;
+
+const NumberRange kPositive = NumberRange::above(0.0);
+const NumberRange kNonNegative = NumberRange::atLeast(0.0);
+
+std::string quotedFieldNames() {
+    std::string list;
+    for (const char* name : kExportFieldNames) list += (list.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+    return list;
+}
+
+std::vector<std::string> readFieldNames(const JsonReader& node) {
+    std::vector<std::string> names;
+    const std::vector<JsonReader> elements = node.array();
+    if (elements.empty()) node.fail("a non-empty array of field names (leave the key out for every field)", "[]");
+    for (const JsonReader& element : elements) {
+        const std::string name = element.string();
+        if (std::find(kExportFieldNames.begin(), kExportFieldNames.end(), name) == kExportFieldNames.end())
+            element.fail("one of " + quotedFieldNames(), "\"" + name + "\"");
+        if (std::find(names.begin(), names.end(), name) != names.end())
+            element.fail("each field listed once", "\"" + name + "\" again");
+        names.push_back(name);
+    }
+    return names;
+}
+
+ExportRegion readRegion(const JsonReader& node) {
+    const auto corners = node.object({"min", "max"});
+    ExportRegion region{corners.member("min").vec3(), corners.member("max").vec3()};
+    for (int axis = 0; axis < 3; ++axis) {
+        if (region.max[axis] > region.min[axis]) continue;
+        corners.member("max").element(axis).fail("a number > " + corners.member("min").element(axis).path() + " = " +
+                                                      formatNumber(region.min[axis]) + " (the region must not be empty)",
+                                                  formatNumber(region.max[axis]));
+    }
+    return region;
+}
+
+void readSelection(const JsonObjectReader& fields, ExportSelection& selection) {
+    selection.enabled = true;
+    if (auto enabled = fields.optional("enabled")) selection.enabled = enabled->boolean();
+    if (auto names = fields.optional("fields")) selection.fields = readFieldNames(*names);
+    if (auto every = fields.optional("every")) selection.every = static_cast<int>(every->integer(1, kMaxEvery));
+    if (auto region = fields.optional("region")) selection.region = readRegion(*region);
+    if (auto d = fields.optional("downsample")) selection.downsample = static_cast<int>(d->integer(1, kMaxDownsample));
+}
+
+VtkExportDesc readVtk(const JsonReader& node) {
+    VtkExportDesc vtk;
+    const auto fields = node.object({"enabled", "fields", "every", "region", "downsample", "compression", "receivers",
+                                     "meshes", "photon_paths", "path_vertices"});
+    readSelection(fields, vtk);
+    if (auto receivers = fields.optional("receivers")) vtk.receivers = receivers->boolean();
+    if (auto meshes = fields.optional("meshes")) vtk.meshes = meshes->boolean();
+    if (auto paths = fields.optional("photon_paths")) vtk.photonPaths = static_cast<int>(paths->integer(0, kMaxPaths));
+    if (auto vertices = fields.optional("path_vertices"))
+        vtk.pathVertices = static_cast<int>(vertices->integer(2, kMaxPathVertices));
+    const long long recorded = static_cast<long long>(vtk.photonPaths) * vtk.pathVertices;
+    if (recorded > kMaxRecordedVertices)
+        fields.member("photon_paths").fail("photon_paths × path_vertices <= " + std::to_string(kMaxRecordedVertices) +
+                                               " (32 bytes of GPU memory each)",
+                                           std::to_string(recorded));
+    if (auto compression = fields.optional("compression")) {
+        const std::string name = compression->oneOf({"zlib", "lz4", "none"});
+        vtk.compression = name == "zlib" ? VtkExportDesc::Compression::Zlib
+                          : name == "lz4" ? VtkExportDesc::Compression::Lz4
+                                          : VtkExportDesc::Compression::None;
+    }
+    return vtk;
+}
+
+VdbExportDesc readVdb(const JsonReader& node) {
+    VdbExportDesc vdb;
+    readSelection(node.object({"enabled", "fields", "every", "region", "downsample"}), vdb);
+    return vdb;
+}
+
+// A grid name: any non-empty string (spaces allowed), "" to skip the grid.
+std::string readGridName(const JsonReader& node) { return node.string(); }
+
+void readGridNames(const JsonReader& node, VolumeDesc& volume) {
+    const auto fields = node.object({"density", "temperature", "flame", "velocity"});
+    if (auto name = fields.optional("density")) volume.densityGrid = readGridName(*name);
+    if (auto name = fields.optional("temperature")) volume.temperatureGrid = readGridName(*name);
+    if (auto name = fields.optional("flame")) volume.flameGrid = readGridName(*name);
+    if (auto name = fields.optional("velocity")) volume.velocityGrid = readGridName(*name);
+}
+
+// Exported fields that only some scenes have, and what provides them.
+bool sceneProvides(const Scene& scene, const std::string& field) {
+    const bool sim = scene.sim.has_value();
+    const bool volume = scene.volume.has_value();
+    if (field == "velocity") return sim || (volume && !scene.volume->velocityGrid.empty());
+    if (field == "temperature") return sim || (volume && !scene.volume->temperatureGrid.empty());
+    if (field == "concentration" || field == "dye") return sim;
+    if (field == "density") return volume && !scene.volume->densityGrid.empty();
+    if (field == "flame") return volume && !scene.volume->flameGrid.empty();
+    return true;
+}
+
+void resolveSelection(const JsonReader& node, const ExportSelection& selection, Scene& scene) {
+    if (!selection.enabled) return;
+    if (selection.region) {
+        const GridSpec grid = scene.grid.spec();
+        if (!io::cellsInRegion(grid, *selection.region))
+            node.member("region").fail("a box holding at least one cell centre of the grid", "a box outside the grid");
+    }
+    for (std::size_t i = 0; i < selection.fields.size(); ++i) {
+        const std::string& field = selection.fields[i];
+        if (!sceneProvides(scene, field))
+            node.member("fields").element(i).fail(
+                "a field this scene has (\"" + field + "\" needs a `sim` section or a `volume` grid for it)",
+                "\"" + field + "\"");
+        if (field == "fluence" || field == "photon_direction") scene.tracer.storeFluence = true;
+    }
+}
+
+}  // namespace
+
+void readExport(const JsonReader& node, Scene& scene) {
+    const auto fields = node.object({"vtk", "vdb"});
+    if (auto vtk = fields.optional("vtk")) {
+        scene.exports.vtk = readVtk(*vtk);
+        resolveSelection(*vtk, scene.exports.vtk, scene);
+    }
+    if (auto vdb = fields.optional("vdb")) {
+        scene.exports.vdb = readVdb(*vdb);
+        resolveSelection(*vdb, scene.exports.vdb, scene);
+    }
+}
+
+VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
+    VolumeDesc volume;
+    const auto fields = node.object({"path", "frame_start", "frame_time", "grids", "offset", "density_extinction",
+                                     "density_scattering", "anisotropy", "ambient_temperature", "temperature_scale",
+                                     "flame_temperature", "refractivity", "reference_temperature", "pressure"});
+    const JsonReader pathNode = fields.member("path");
+    const std::filesystem::path path = pathNode.string();
+    volume.path = (path.is_absolute() ? path : std::filesystem::path(sceneFolder) / path).string();
+    const std::string name = path.filename().string();
+    const std::size_t first = name.find('#');
+    if (first != std::string::npos) {
+        const std::size_t last = name.find_last_of('#');
+        if (name.find_first_not_of('#', first) < last)
+            pathNode.fail("a file name with at most one run of '#' (the frame number)", "\"" + name + "\"");
+        if (path.parent_path().string().find('#') != std::string::npos)
+            pathNode.fail("'#' only in the file name, not in its folders", "\"" + path.string() + "\"");
+        volume.sequence = true;
+    }
+    if (auto start = fields.optional("frame_start")) volume.frameStart = static_cast<int>(start->integer(0, kMaxFrameNumber));
+    if (auto time = fields.optional("frame_time")) volume.frameTime = time->number(kPositive);
+    if (auto grids = fields.optional("grids")) readGridNames(*grids, volume);
+    if (auto offset = fields.optional("offset")) volume.offset = offset->vec3();
+    if (auto v = fields.optional("density_extinction")) volume.densityExtinction = v->rgb(kNonNegative);
+    if (auto v = fields.optional("density_scattering")) {
+        volume.densityScattering = v->rgb(kNonNegative);
+        for (int channel = 0; channel < 3; ++channel) {
+            if (volume.densityScattering[channel] <= volume.densityExtinction[channel]) continue;
+            v->fail("density_scattering <= density_extinction in every channel",
+                    formatNumber(volume.densityScattering[channel]) + " in channel " + std::to_string(channel));
+        }
+    }
+    if (auto v = fields.optional("anisotropy")) volume.anisotropy = v->number(NumberRange::open(-1.0, 1.0));
+    if (auto v = fields.optional("ambient_temperature")) volume.ambientTemperature = v->number(kPositive);
+    if (auto v = fields.optional("temperature_scale")) volume.temperatureScale = v->number(kNonNegative);
+    if (auto v = fields.optional("flame_temperature")) volume.flameTemperature = v->number(kNonNegative);
+    if (auto v = fields.optional("refractivity")) volume.refractivity = v->number(kPositive);
+    if (auto v = fields.optional("reference_temperature")) volume.referenceTemperature = v->number(kPositive);
+    if (auto v = fields.optional("pressure")) volume.pressure = v->number(kPositive);
+    if (volume.densityGrid.empty() && volume.temperatureGrid.empty() && volume.flameGrid.empty())
+        fields.member("grids").fail("at least one of the density, temperature and flame grids named",
+                                    "all three left empty");
+
+    const std::string firstFile = volumeFramePath(volume, volume.frameStart);
+    if (!std::filesystem::is_regular_file(firstFile))
+        pathNode.fail(std::string("an existing .vdb file") + (volume.sequence ? " for frame_start" : "") +
+                          " (relative paths start at the scene file's folder)",
+                      "\"" + firstFile + "\", which does not exist");
+    return volume;
+}
+
+void requireVolumeFrames(const VolumeDesc& volume, int frames) {
+    if (!volume.sequence) return;
+    for (int frame = 0; frame < frames; ++frame) {
+        const std::string path = volumeFramePath(volume, volume.frameStart + frame);
+        if (!std::filesystem::is_regular_file(path))
+            throw InputError(path, "the volume sequence's file for rendered frame " + std::to_string(frame),
+                             "no such file");
+    }
+}
+
+}  // namespace eikon

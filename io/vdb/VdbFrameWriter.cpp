@@ -1,0 +1,110 @@
+#include "io/vdb/VdbFrameWriter.h"
+
+#include "bridge/core/Error.h"
+#include "io/files/AtomicFile.h"
+
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Dense.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+
+namespace eikon::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+openvdb::math::Transform::Ptr cellTransform(const GridSpec& grid) {
+    const glm::dvec3 h = grid.voxelSize();
+    const glm::dvec3 centre = grid.boundsMin + 0.5 * h;
+    const openvdb::Vec3d translation(centre.x, centre.y, centre.z);
+    if (h.x == h.y && h.y == h.z) {
+        auto transform = openvdb::math::Transform::createLinearTransform(h.x);
+        transform->postTranslate(translation);
+        return transform;
+    }
+    return std::make_shared<openvdb::math::Transform>(
+        std::make_shared<openvdb::math::ScaleTranslateMap>(openvdb::Vec3d(h.x, h.y, h.z), translation));
+}
+
+// A sparse grid from x-fastest values: OpenVDB's Dense with LayoutXYZ has
+// x as its fastest index too.
+template <class GridT>
+typename GridT::Ptr sparseGrid(std::vector<typename GridT::ValueType>& values, const GridSpec& spec) {
+    const glm::ivec3 r = spec.resolution;
+    const openvdb::CoordBBox box(openvdb::Coord(0, 0, 0), openvdb::Coord(r.x - 1, r.y - 1, r.z - 1));
+    openvdb::tools::Dense<typename GridT::ValueType, openvdb::tools::LayoutXYZ> dense(box, values.data());
+    auto grid = GridT::create(openvdb::zeroVal<typename GridT::ValueType>());
+    openvdb::tools::copyFromDense(dense, *grid, openvdb::zeroVal<typename GridT::ValueType>());
+    return grid;
+}
+
+}  // namespace
+
+VdbFrameWriter::VdbFrameWriter(const fs::path& outputFolder, std::string baseName)
+    : directory_(outputFolder / "vdb"), baseName_(std::move(baseName)) {
+    const bool safe = !baseName_.empty() && baseName_ != "." && baseName_ != ".." &&
+                      std::all_of(baseName_.begin(), baseName_.end(), [](char c) {
+                          return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+                      });
+    if (!safe) throw InputError("OpenVDB export base name", "letters, digits, '_', '-' or '.'", "\"" + baseName_ + "\"");
+    std::error_code error;
+    fs::create_directories(directory_, error);
+    if (error || !fs::is_directory(directory_))
+        throw InputError(directory_.string() + ": cannot create the OpenVDB export folder (" + error.message() + ")");
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+fs::path VdbFrameWriter::framePath(int frame) const {
+    char number[16];
+    std::snprintf(number, sizeof number, "%05d", frame);
+    return directory_ / (baseName_ + "_" + number + ".vdb");
+}
+
+void VdbFrameWriter::writeFrame(int frame, double time, const ExportFrame& arrays) const {
+    EIKON_CHECK_MSG(frame >= 0, "frame " + std::to_string(frame));
+    EIKON_CHECK_MSG(std::isfinite(time), "time of frame " + std::to_string(frame));
+    const std::size_t cells = arrays.grid.cellCount();
+    const auto transform = cellTransform(arrays.grid);
+    openvdb::GridPtrVec grids;
+    for (const NamedArray& array : arrays.arrays) {
+        EIKON_CHECK_MSG((array.components == 1 || array.components == 3) &&
+                            array.values.size() == static_cast<std::size_t>(array.components) * cells,
+                        "OpenVDB array \"" + array.name + "\" size");
+        openvdb::GridBase::Ptr grid;
+        if (array.components == 1) {
+            std::vector<float> values = array.values;
+            grid = sparseGrid<openvdb::FloatGrid>(values, arrays.grid);
+        } else {
+            std::vector<openvdb::Vec3s> values(cells);
+            for (std::size_t c = 0; c < cells; ++c)
+                values[c] = openvdb::Vec3s(array.values[3 * c], array.values[3 * c + 1], array.values[3 * c + 2]);
+            grid = sparseGrid<openvdb::Vec3SGrid>(values, arrays.grid);
+        }
+        grid->setName(array.name);
+        grid->setTransform(transform->copy());
+        grids.push_back(grid);
+    }
+    openvdb::MetaMap meta;
+    meta.insertMeta("frame", openvdb::Int32Metadata(frame));
+    meta.insertMeta("time", openvdb::DoubleMetadata(time));
+
+    const fs::path path = framePath(frame);
+    const fs::path temporary = temporaryPathFor(path);
+    bool written = true;
+    try {
+        openvdb::io::File file(temporary.string());
+        file.write(grids, meta);
+        file.close();
+    } catch (const openvdb::Exception&) {
+        written = false;
+    }
+    commitTemporary(temporary, path, written);
+}
+
+}  // namespace eikon::io

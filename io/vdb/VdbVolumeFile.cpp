@@ -1,0 +1,149 @@
+#include "io/vdb/VdbVolumeFile.h"
+
+#include "bridge/core/Error.h"
+#include "io/vdb/VdbFileCheck.h"
+
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Interpolation.h>
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <mutex>
+
+namespace eikon::io {
+
+namespace fs = std::filesystem;
+
+struct VdbVolumeFile::Grids {
+    std::string bytes;  // the whole file, as checked
+    VdbFileLayout layout;
+    std::unique_ptr<openvdb::io::File> file;
+};
+
+namespace {
+
+void initializeOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
+std::string readWholeFile(const fs::path& path) {
+    std::error_code error;
+    if (!fs::is_regular_file(path, error)) throw InputError(path.string(), "an OpenVDB file", "no such file");
+    const std::uintmax_t size = fs::file_size(path, error);
+    if (error) throw InputError(path.string(), "a readable OpenVDB file", error.message());
+    if (size > VdbVolumeFile::maxFileBytes)
+        throw InputError(path.string(), "an OpenVDB file of at most 2 GiB", std::to_string(size) + " bytes");
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(size));
+    if (!in) throw InputError(path.string(), "a readable OpenVDB file", "a read error");
+    return bytes;
+}
+
+std::string quotedNames(const std::vector<std::string>& names) {
+    if (names.empty()) return "no grids";
+    std::string list;
+    for (const auto& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
+    return list;
+}
+
+// Samples `grid` trilinearly at each render cell centre (x fastest),
+// through one accessor per z slice (accessors are not thread-safe).
+template <class GridT, class Sampler, class Store>
+void sampleGrid(const GridT& grid, const GridSpec& spec, const glm::dvec3& offset, Store store) {
+    const openvdb::math::Transform& transform = grid.transform();
+    tbb::parallel_for(0, spec.resolution.z, [&](int k) {
+        auto accessor = grid.getConstAccessor();
+        for (int j = 0; j < spec.resolution.y; ++j)
+            for (int i = 0; i < spec.resolution.x; ++i) {
+                const glm::dvec3 x = spec.cellCentre(i, j, k) - offset;
+                const openvdb::Vec3d index = transform.worldToIndex(openvdb::Vec3d(x.x, x.y, x.z));
+                store(spec.linearIndex(i, j, k), Sampler::sample(accessor, index));
+            }
+    });
+}
+
+}  // namespace
+
+VdbVolumeFile::VdbVolumeFile(const fs::path& path) : path_(path), grids_(std::make_unique<Grids>()) {
+    initializeOpenVdb();
+    grids_->bytes = readWholeFile(path);
+    grids_->layout = checkVdbHeader(grids_->bytes, path.string());
+    try {
+        grids_->file = std::make_unique<openvdb::io::File>(path.string());
+        grids_->file->open(/*delayLoad=*/false);
+    } catch (const std::exception& error) {
+        throw InputError(path.string(), "a valid OpenVDB file", std::string("OpenVDB: ") + error.what());
+    }
+}
+
+VdbVolumeFile::~VdbVolumeFile() = default;
+VdbVolumeFile::VdbVolumeFile(VdbVolumeFile&&) noexcept = default;
+VdbVolumeFile& VdbVolumeFile::operator=(VdbVolumeFile&&) noexcept = default;
+
+std::vector<std::string> VdbVolumeFile::gridNames() const {
+    std::vector<std::string> names;
+    for (const VdbGridEntry& grid : grids_->layout.grids) names.push_back(grid.name);
+    return names;
+}
+
+std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
+                                         const glm::dvec3& offset) const {
+    EIKON_CHECK(components == 1 || components == 3);
+    const std::string where = path_.string() + ": grid \"" + name + "\"";
+    const VdbGridEntry* entry = nullptr;
+    for (const VdbGridEntry& grid : grids_->layout.grids)
+        if (grid.name == name && !entry) entry = &grid;
+    if (!entry) throw InputError(path_.string(), "a grid named \"" + name + "\"", "the grids " + quotedNames(gridNames()));
+    const std::string wanted = components == 1 ? "float" : "vec3s";
+    if (entry->valueType != wanted)
+        throw InputError(where, "a " + wanted + " grid", "a grid of type \"" + entry->treeType + "\"");
+    checkVdbGrid(grids_->bytes, *entry, path_.string());
+
+    openvdb::GridBase::Ptr base;
+    try {
+        base = grids_->file->readGrid(name);
+    } catch (const std::exception& error) {
+        throw InputError(where, "a readable grid", std::string("OpenVDB: ") + error.what());
+    }
+    const openvdb::math::Transform& transform = base->transform();
+    const openvdb::Vec3d voxel = transform.voxelSize();
+    if (!transform.isLinear() || !std::isfinite(voxel[0] * voxel[1] * voxel[2]) ||
+        !(std::abs(transform.baseMap()->determinant()) > 0.0) || !std::isfinite(transform.baseMap()->determinant()))
+        throw InputError(where, "an affine, invertible transform",
+                         transform.isLinear() ? "a singular or non-finite one" : "a non-linear (frustum) one");
+
+    std::vector<float> values(static_cast<std::size_t>(components) * spec.cellCount());
+    if (components == 1) {
+        const auto grid = openvdb::gridConstPtrCast<openvdb::FloatGrid>(base);
+        EIKON_CHECK(grid != nullptr);
+        sampleGrid<openvdb::FloatGrid, openvdb::tools::BoxSampler>(
+            *grid, spec, offset, [&](std::size_t cell, float v) { values[cell] = v; });
+    } else {
+        const auto grid = openvdb::gridConstPtrCast<openvdb::Vec3SGrid>(base);
+        EIKON_CHECK(grid != nullptr);
+        auto store = [&](std::size_t cell, const openvdb::Vec3s& v) {
+            for (int a = 0; a < 3; ++a) values[3 * cell + static_cast<std::size_t>(a)] = v[a];
+        };
+        if (grid->getGridClass() == openvdb::GRID_STAGGERED)
+            sampleGrid<openvdb::Vec3SGrid, openvdb::tools::StaggeredBoxSampler>(*grid, spec, offset, store);
+        else
+            sampleGrid<openvdb::Vec3SGrid, openvdb::tools::BoxSampler>(*grid, spec, offset, store);
+    }
+    const auto bad = std::find_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
+    if (bad != values.end()) {
+        const auto cell = static_cast<std::size_t>(bad - values.begin()) / static_cast<std::size_t>(components);
+        const auto nx = static_cast<std::size_t>(spec.resolution.x), ny = static_cast<std::size_t>(spec.resolution.y);
+        throw InputError(where, "finite values",
+                         "a non-finite value sampled at render cell (" + std::to_string(cell % nx) + ", " +
+                             std::to_string(cell / nx % ny) + ", " + std::to_string(cell / (nx * ny)) + ")");
+    }
+    return values;
+}
+
+}  // namespace eikon::io

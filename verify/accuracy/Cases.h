@@ -1,0 +1,17 @@
+// Constructors of the individual accuracy cases (allCases() lists them).
+#pragma once
+
+#include "verify/accuracy/AccuracyCase.h"
+
+namespace eikon::accuracy {
+
+std::unique_ptr<AccuracyCase> makePointLightCase();    // IrradianceCases.cpp
+std::unique_ptr<AccuracyCase> makeBeerLambertCase();   // IrradianceCases.cpp
+std::unique_ptr<AccuracyCase> makeLinearSlabCase();    // LayeredCases.cpp
+std::unique_ptr<AccuracyCase> makeMirageCase();        // LayeredCases.cpp
+std::unique_ptr<AccuracyCase> makeLuneburgCase();      // LensCases.cpp
+std::unique_ptr<AccuracyCase> makeFishEyeCase();       // LensCases.cpp
+std::unique_ptr<AccuracyCase> makeGlassSphereCase();   // LensCases.cpp
+std::unique_ptr<AccuracyCase> makeHeatShimmerCase();   // ShimmerCase.cpp
+
+}  // namespace eikon::accuracy
