@@ -6,10 +6,10 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "common/grid_sampling.glsl"
 
-layout(std430, binding = 13) readonly buffer RawFluence { float raw_fluence[]; };
-layout(std430, binding = 14) readonly buffer RawFluenceDirection { float raw_fluence_direction[]; };
-layout(std430, binding = 5) writeonly buffer Fluence { float fluence[]; };
-layout(std430, binding = 12) writeonly buffer FluenceDirection { float fluence_direction[]; };
+layout(std430, binding = kRawFluence) readonly buffer RawFluence { float raw_fluence[]; };
+layout(std430, binding = kRawFluenceDirection) readonly buffer RawFluenceDirection { float raw_fluence_direction[]; };
+layout(std430, binding = kFluence) writeonly buffer Fluence { float fluence[]; };
+layout(std430, binding = kFluenceDirection) writeonly buffer FluenceDirection { float fluence_direction[]; };
 
 void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID);

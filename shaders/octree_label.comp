@@ -16,10 +16,10 @@
 // +550% for κ = 1 to 5 /m, against 0.01% with it.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-layout(binding = 0) uniform sampler3D pyramid;  // (min δn, max δn, min κ, max κ), one mip level per octree level
+layout(binding = kPyramidTexture) uniform sampler3D pyramid;  // (min δn, max δn, min κ, max κ), one mip level per octree level
 // (level, step cap in m, 1 if the node holds no extinction — hence no
 // scattering, so a camera ray may cross it in one step — 0)
-layout(rgba32f, binding = 0) writeonly uniform image3D step_structure;
+layout(rgba32f, binding = kStepImage) writeonly uniform image3D step_structure;
 
 uniform int levels;
 uniform float epsilon;

@@ -9,12 +9,12 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #define EIKON_HAS_EXTINCTION 0
 #endif
 
-layout(binding = 0) uniform sampler3D index_texture;  // r: smoothed δn (level 0 input)
+layout(binding = kIndexTexture) uniform sampler3D index_texture;  // r: smoothed δn (level 0 input)
 #if EIKON_HAS_EXTINCTION
-layout(binding = 2) uniform sampler3D extinction_texture;  // rgb: κ (level 0 input)
+layout(binding = kExtinctionTexture) uniform sampler3D extinction_texture;  // rgb: κ (level 0 input)
 #endif
-layout(rgba32f, binding = 0) readonly uniform image3D finer_level;  // level k − 1 (k > 0)
-layout(rgba32f, binding = 1) writeonly uniform image3D this_level;
+layout(rgba32f, binding = kFinerLevelImage) readonly uniform image3D finer_level;  // level k − 1 (k > 0)
+layout(rgba32f, binding = kPyramidLevelImage) writeonly uniform image3D this_level;
 
 uniform int level;
 

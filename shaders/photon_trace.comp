@@ -12,7 +12,7 @@
 //   EIKON_RENORMALIZE      1: |v| = n(x) after every step
 //   EIKON_DISPERSION       1: each photon carries one RGB channel with its own index scale
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
-//   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].bounce)
+//   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].map.z)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
@@ -80,38 +80,31 @@ struct Emitter {
     vec4 spot_edge;     // x: cos inner half-angle
     uvec4 photons;      // x: first photon, y: count, z, w: strata
 };
-layout(std430, binding = 2) readonly buffer Emitters { Emitter emitters[]; };
+layout(std430, binding = kEmitters) readonly buffer Emitters { Emitter emitters[]; };
 
 #if EIKON_STORE_FLUENCE > 0
-layout(std430, binding = 13) buffer RawFluence { float raw_fluence[]; };                    // RGB per cell, W/m²
-layout(std430, binding = 14) buffer RawFluenceDirection { float raw_fluence_direction[]; };  // xyz per cell
+layout(std430, binding = kRawFluence) buffer RawFluence { float raw_fluence[]; };  // RGB per cell, W/m²
+layout(std430, binding = kRawFluenceDirection) buffer RawFluenceDirection { float raw_fluence_direction[]; };  // xyz per cell
 #endif
 #if EIKON_OCTREE_STEPS
-layout(binding = 4) uniform sampler3D step_structure;  // (octree level, step cap in m)
+layout(binding = kStepTexture) uniform sampler3D step_structure;  // (octree level, step cap in m)
 #endif
-layout(std430, binding = 11) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
+layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
-// C++ mirror: layout::GpuPhotonStats (powers in 64-bit fixed point).
-const int TALLY_EMITTED = 0;
-const int TALLY_ABSORBED = 1;
-const int TALLY_ESCAPED = 2;
-const int TALLY_RECEIVED = 3;
-const int TALLY_CUT_OFF = 4;
-const int TALLY_BLOCKED = 5;
-const int TALLY_REFLECTED = 6;  // sent back out by bouncing receivers: a source
-const int TALLY_COUNT = 7;
+// C++ mirror: layout::GpuPhotonStats (powers in 64-bit fixed point), indexed
+// by the tallies kEmitted … kReflected of layout::PowerTally.
 const uint MAX_BOUNCES = 16u;
-layout(std430, binding = 6) buffer PhotonStats {
-    uint power_tallies[42];   // [2·(3·tally + channel) + word]
+layout(std430, binding = kPhotonStats) buffer PhotonStats {
+    uint power_tallies[2 * 3 * kTallyCount];  // [2·(3·tally + channel) + word]
     uint photon_tallies[4];   // escaped, received, cut off, blocked
     uint step_tallies[4];     // low word, high word, max invariant error bits
     uint deposit_tallies[4];  // low word, high word
-    float invariant_sum;
+    float invariant_sum[4];   // x: sum over steps of the relative invariant error; yzw unused, as in C++
 };
 
 #if EIKON_RECORD_PATHS > 0
-layout(std430, binding = 9) writeonly buffer PhotonPaths { vec4 path_vertices[]; };  // xyz, w: 1 written
-layout(std430, binding = 16) writeonly buffer PhotonPathPower { vec4 path_power[]; };  // rgb: W at the vertex
+layout(std430, binding = kPhotonPaths) writeonly buffer PhotonPaths { vec4 path_vertices[]; };  // xyz, w: 1 written
+layout(std430, binding = kPhotonPathPower) writeonly buffer PhotonPathPower { vec4 path_power[]; };  // rgb: W at the vertex
 #endif
 
 uniform uint photon_offset;    // index of this batch's first photon
@@ -126,7 +119,7 @@ uniform vec3 power_unit;       // W per fixed-point tally unit, per channel
 // Tallies of this work group, flushed to PhotonStats once by its first
 // invocation: a global atomic per work group instead of per photon (64
 // photons of at most 2^24 units each cannot overflow a 32-bit word here).
-shared uint group_power[3 * TALLY_COUNT];  // [3·tally + channel]
+shared uint group_power[3 * kTallyCount];  // [3·tally + channel]
 shared uint group_photons[4];
 shared uint group_steps;
 shared uint group_max_invariant_bits;
@@ -180,11 +173,11 @@ void deposit_on_receiver(ReceiverHit hit, vec3 power) {
 
 uint deposits = 0u;
 
-// Track-length estimator over the segment a → b (DESIGN.md: φ = Σ Φ·ℓ / h³):
-// a 3D DDA (Amanatides and Woo 1987) visits every voxel the segment crosses
-// and adds the power-weighted length spent in it, with Beer–Lambert decay
-// along the way at the segment's extinction κ; the power-weighted direction
-// goes beside it.
+// Track-length estimator over the segment a → b (docs/architecture.md,
+// Conventions: φ = Σ Φ·ℓ / h³): a 3D DDA (Amanatides and Woo 1987) visits
+// every voxel the segment crosses and adds the power-weighted length spent in
+// it, with Beer–Lambert decay along the way at the segment's extinction κ;
+// the power-weighted direction goes beside it.
 void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa) {
 #if EIKON_STORE_FLUENCE > 0
     vec3 delta = b - a;
@@ -274,18 +267,18 @@ float spot_profile(Emitter emitter, vec3 direction) {
 bool land_on_receiver(ReceiverHit hit, uint photon, INOUT(uint) bounces, INOUT(vec3) x, INOUT(vec3) x_lost,
                       INOUT(vec3) v, INOUT(vec4) field, INOUT(vec3) power, INOUT(vec3) reflected, INOUT(int) fate) {
     if (!hit.lit_side) {
-        fate = TALLY_BLOCKED;
+        fate = kBlocked;
         return false;
     }
     deposit_on_receiver(hit, power);
 #if EIKON_BOUNCE
     Receiver receiver = receivers[hit.receiver];
     if (receiver.map.z == 0u || bounces >= MAX_BOUNCES) {
-        fate = TALLY_RECEIVED;
+        fate = kReceived;
         return false;
     }
     // The arriving power is received; what the albedo sends back is a new source.
-    add_power(TALLY_RECEIVED, power);
+    add_power(kReceived, power);
     power *= receiver.albedo.rgb;
     reflected += power;
     vec3 direction = sample_cosine_hemisphere(receiver.normal.xyz, receiver.axis_u.xyz, receiver.axis_v.xyz,
@@ -298,7 +291,7 @@ bool land_on_receiver(ReceiverHit hit, uint photon, INOUT(uint) bounces, INOUT(v
     v = field.w * direction;
     return true;
 #else
-    fate = TALLY_RECEIVED;
+    fate = kReceived;
     return false;
 #endif
 }
@@ -360,7 +353,7 @@ void trace_photon(uint photon) {
     uint vertex = 0u;
     float max_invariant_error = 0.0f;
     float invariant_error_sum = 0.0f;
-    int fate = TALLY_ESCAPED;
+    int fate = kEscaped;
     record_vertex(photon, vertex++, x, power);
 
     for (;;) {
@@ -377,7 +370,7 @@ void trace_photon(uint photon) {
 #endif
             if (!flight.enters_grid) {
                 record_vertex(photon, vertex++, x + flight.distance * d, power);
-                fate = TALLY_ESCAPED;
+                fate = kEscaped;
                 break;
             }
             x = grid_entry_point(x, d, flight);
@@ -390,7 +383,7 @@ void trace_photon(uint photon) {
             continue;
         }
         if (steps >= max_steps) {
-            fate = TALLY_CUT_OFF;
+            fate = kCutOff;
             break;
         }
         float ds = next_step(x, v);
@@ -421,17 +414,17 @@ void trace_photon(uint photon) {
 #endif
         record_vertex(photon, vertex++, x, power);
         if (max(power.r, max(power.g, power.b)) < cutoff) {
-            fate = TALLY_CUT_OFF;
+            fate = kCutOff;
             break;
         }
         if (!grid_contains(x)) v = reference_index() * normalize(v);
     }
 
-    add_power(TALLY_EMITTED, emitted);
-    add_power(TALLY_REFLECTED, reflected);
-    add_power(TALLY_ABSORBED, absorbed);
+    add_power(kEmitted, emitted);
+    add_power(kReflected, reflected);
+    add_power(kAbsorbed, absorbed);
     add_power(fate, power);
-    atomicAdd(group_photons[fate - TALLY_ESCAPED], 1u);
+    atomicAdd(group_photons[fate - kEscaped], 1u);
     atomicAdd(group_steps, steps);
     atomicMax(group_max_invariant_bits, floatBitsToUint(max_invariant_error));
     atomicAdd(group_deposits, deposits);
@@ -439,7 +432,7 @@ void trace_photon(uint photon) {
 }
 
 void flush_group_tallies() {
-    for (int i = 0; i < 3 * TALLY_COUNT; ++i)
+    for (int i = 0; i < 3 * kTallyCount; ++i)
         if (group_power[i] != 0u) add_wide_power(uint(2 * i), group_power[i]);
     for (int i = 0; i < 4; ++i) atomicAdd(photon_tallies[i], group_photons[i]);
     uint steps_before = atomicAdd(step_tallies[0], group_steps);
@@ -447,12 +440,12 @@ void flush_group_tallies() {
     atomicMax(step_tallies[2], group_max_invariant_bits);
     uint deposits_before = atomicAdd(deposit_tallies[0], group_deposits);
     if (deposits_before + group_deposits < deposits_before) atomicAdd(deposit_tallies[1], 1u);
-    atomicAdd(invariant_sum, group_invariant_sum);
+    atomicAdd(invariant_sum[0], group_invariant_sum);
 }
 
 void main() {
     if (gl_LocalInvocationIndex == 0u) {
-        for (int i = 0; i < 3 * TALLY_COUNT; ++i) group_power[i] = 0u;
+        for (int i = 0; i < 3 * kTallyCount; ++i) group_power[i] = 0u;
         for (int i = 0; i < 4; ++i) group_photons[i] = 0u;
         group_steps = 0u;
         group_max_invariant_bits = 0u;

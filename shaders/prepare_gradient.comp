@@ -5,8 +5,8 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "common/grid_sampling.glsl"
 
-layout(binding = 0) uniform sampler3D index_texture;  // r: δn
-layout(rgba32f, binding = 0) writeonly uniform image3D gradient_image;
+layout(binding = kIndexTexture) uniform sampler3D index_texture;  // r: δn
+layout(rgba32f, binding = kGradientImage) writeonly uniform image3D gradient_image;
 
 float delta_at(ivec3 cell) {
     return texelFetch(index_texture, clamp(cell, ivec3(0), grid.resolution.xyz - 1), 0).r;

@@ -4,8 +4,8 @@
 // and the rest renormalised) — the density estimate the view pass reads.
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 11) readonly buffer ReceiverTallies { uint receiver_tallies[]; };
-layout(std430, binding = 4) writeonly buffer ReceiverMaps { float receiver_irradiance[]; };
+layout(std430, binding = kReceiverTallies) readonly buffer ReceiverTallies { uint receiver_tallies[]; };
+layout(std430, binding = kReceiverMaps) writeonly buffer ReceiverMaps { float receiver_irradiance[]; };
 
 uniform uint first_texel;
 uniform int resolution;

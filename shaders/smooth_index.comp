@@ -4,8 +4,8 @@
 // side, normalised to sum to one; samples past the grid take the edge value.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-layout(binding = 0) uniform sampler3D source_texture;  // r: δn
-layout(r32f, binding = 0) writeonly uniform image3D target_image;
+layout(binding = kIndexTexture) uniform sampler3D source_texture;  // r: δn
+layout(r32f, binding = kSmoothedIndexImage) writeonly uniform image3D target_image;
 
 const int MAX_RADIUS = 31;
 uniform int radius;

@@ -2,8 +2,8 @@
 // of the ACES reference rendering transform) → sRGB encoding → RGBA8.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 7) readonly buffer HdrImage { vec4 hdr_radiance[]; };
-layout(std430, binding = 8) writeonly buffer LdrImage { uint ldr_rgba8[]; };
+layout(std430, binding = kHdrImage) readonly buffer HdrImage { vec4 hdr_radiance[]; };
+layout(std430, binding = kLdrImage) writeonly buffer LdrImage { uint ldr_rgba8[]; };
 
 uniform uint pixel_count;
 uniform float exposure_scale;

@@ -49,7 +49,7 @@ vec4 field_at(vec3 x) {
 #define EIKON_RECORD_EXIT 0
 #endif
 
-layout(std140, binding = 1) uniform CameraBlock {
+layout(std140, binding = kCameraBlock) uniform CameraBlock {
     vec4 position;    // w: tan(fov / 2)
     vec4 forward;     // w: aspect
     vec4 right;
@@ -66,18 +66,18 @@ layout(std140, binding = 1) uniform CameraBlock {
 #include "common/environment.glsl"
 
 #if EIKON_HAS_SCATTERING
-layout(std430, binding = 5) readonly buffer Fluence { float fluence[]; };
-layout(std430, binding = 12) readonly buffer FluenceDirection { float fluence_direction[]; };
+layout(std430, binding = kFluence) readonly buffer Fluence { float fluence[]; };
+layout(std430, binding = kFluenceDirection) readonly buffer FluenceDirection { float fluence_direction[]; };
 #endif
 #if EIKON_HAS_ANISOTROPY
-layout(binding = 6) uniform sampler3D anisotropy_texture;
+layout(binding = kAnisotropyTexture) uniform sampler3D anisotropy_texture;
 #endif
 #if EIKON_STEP_STRUCTURE
-layout(binding = 4) uniform sampler3D step_structure;
+layout(binding = kStepTexture) uniform sampler3D step_structure;
 #endif
-layout(std430, binding = 7) writeonly buffer HdrImage { vec4 hdr_radiance[]; };
+layout(std430, binding = kHdrImage) writeonly buffer HdrImage { vec4 hdr_radiance[]; };
 #if EIKON_RECORD_EXIT
-layout(std430, binding = 15) writeonly buffer ViewExit { vec4 view_exit[]; };  // xyz direction; w: 1 escaped, 2 receiver, 0 cut
+layout(std430, binding = kViewExit) writeonly buffer ViewExit { vec4 view_exit[]; };  // xyz direction; w: 1 escaped, 2 receiver, 0 cut
 #endif
 
 uniform float step_length;

@@ -1,9 +1,19 @@
 // C++ mirrors of every GPU buffer layout eikon uses. These structs are the
-// source of truth (after Filament's UibStructs.h): the GLSL blocks in
+// source of truth (after [Filament]'s UibStructs.h): the GLSL blocks in
 // shaders/ declare the same members in the same order, and the
 // static_asserts below pin sizes and offsets to the std140/std430 rules so a
 // reordering breaks the build, not the picture. Only vec4-sized members are
 // used, which packs identically under std140 and std430.
+//
+// The binding points, texture and image units and power-tally indices are
+// listed once each, below, as X-macro lists of (name, value). A list expands
+// here into its C++ enum and, in the embedded shader set
+// (cmake/EmbedShaders.cmake), into the table the shader library declares
+// ahead of every program as `const int NAME = VALUE;`, so GLSL writes
+// layout(binding = kEmitters) and never a number.
+// tests/integration/test_gpu_contract.cpp reads every block, sampler and
+// image of every production program back from OpenGL and checks it against
+// these names and the structs' sizes.
 #pragma once
 
 #include <glm/vec4.hpp>
@@ -11,39 +21,82 @@
 #include <cstddef>
 #include <cstdint>
 
+// (Comments inside the lists are /* */: a // comment would swallow the line
+// continuation.)
+
+// Binding points shared by the C++ stages and the shaders; each names the
+// GLSL block it binds, less the k.
+#define EIKON_LAYOUT_BINDINGS(X)                                                                                                \
+    X(kGridBlock, 0)            /* uniform GridBlock (GpuGrid) */                                                               \
+    X(kCameraBlock, 1)          /* uniform CameraBlock (GpuCamera) */                                                           \
+    X(kEmitters, 2)             /* buffer Emitters { GpuEmitter emitters[]; } */                                                \
+    X(kReceivers, 3)            /* buffer Receivers { GpuReceiver receivers[]; } */                                             \
+    X(kReceiverMaps, 4)         /* buffer ReceiverMaps { float irradiance[]; }: RGB per texel, W/m² */                          \
+    X(kFluence, 5)              /* buffer Fluence { float fluence[]; }: RGB per cell, W/m², track-length estimator, smoothed */ \
+    X(kPhotonStats, 6)          /* buffer PhotonStats (GpuPhotonStats) */                                                       \
+    X(kHdrImage, 7)             /* buffer HdrImage { vec4 radiance[]; } */                                                      \
+    X(kLdrImage, 8)             /* buffer LdrImage { uint rgba8[]; } */                                                         \
+    X(kPhotonPaths, 9)          /* buffer PhotonPaths { vec4 vertices[]; }: optional recording for tests and export */          \
+    X(kReceiverTallies, 11)     /* buffer ReceiverTallies { uint units[]; }: per texel and channel a 64-bit fixed-point sum */  \
+    X(kFluenceDirection, 12)    /* buffer FluenceDirection { float direction[]; }: xyz per cell, power-weighted */              \
+    X(kRawFluence, 13)          /* buffer RawFluence: the photon pass's unsmoothed fluence, RGB per cell */                     \
+    X(kRawFluenceDirection, 14) /* buffer RawFluenceDirection: and its unsmoothed direction sums */                             \
+    X(kViewExit, 15)            /* buffer ViewExit { vec4 exit[]; }: per pixel, direction leaving the scene, w: how (tests) */  \
+    X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */
+
+// Texture (sampler) units. Unit 0 carries δn into the passes that derive
+// from it (smoothing, gradient, min/max pyramid) and later the pyramid into
+// the octree labels, which read no δn.
+#define EIKON_LAYOUT_TEXTURE_UNITS(X)                                                                              \
+    X(kIndexTexture, 0)       /* r32f δn, raw or part-smoothed */                                                  \
+    X(kPyramidTexture, 0)     /* rgba32f (min δn, max δn, min κ, max κ) per octree level (octree_label) */         \
+    X(kGradientTexture, 1)    /* rgba32f (∇n, δn) */                                                               \
+    X(kExtinctionTexture, 2)  /* rgba32f (κ rgb, 0) */                                                             \
+    X(kScatteringTexture, 3)  /* rgba32f (σs rgb, 0) */                                                            \
+    X(kStepTexture, 4)        /* rgba32f (octree level, step cap in m, 1 if the node is empty of extinction, 0) */ \
+    X(kEnvironmentTexture, 5) /* rgba32f equirectangular environment */                                            \
+    X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */
+
+// Image units of the passes that write textures; each program binds its own.
+#define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \
+    X(kSmoothedIndexImage, 0) /* r32f: one axis of the Gaussian of δn, written (smooth_index) */ \
+    X(kGradientImage, 0)      /* rgba32f (∇n, δn), written (prepare_gradient) */                 \
+    X(kFinerLevelImage, 0)    /* rgba32f pyramid level k − 1, read (octree_minmax) */            \
+    X(kPyramidLevelImage, 1)  /* rgba32f pyramid level k, written (octree_minmax) */             \
+    X(kStepImage, 0)          /* rgba32f step structure, written (octree_label) */
+
+// Energy balance tallies of a photon pass (GpuPhotonStats::power). Every
+// emitted photon ends in exactly one of escaped, received, cut off, blocked
+// (in this order: GpuPhotonStats::photons counts them so); absorbed collects
+// what extinction took along the way, so
+//   emitted = absorbed + escaped + received + cutOff + blocked.
+// kReflected is power receivers send back out (bounce): a source, like kEmitted.
+#define EIKON_LAYOUT_POWER_TALLIES(X) \
+    X(kEmitted, 0)                    \
+    X(kAbsorbed, 1)                   \
+    X(kEscaped, 2)                    \
+    X(kReceived, 3)                   \
+    X(kCutOff, 4)                     \
+    X(kBlocked, 5)                    \
+    X(kReflected, 6)                  \
+    X(kTallyCount, 7)
+
+// Every list above: the constants each shader program is given.
+#define EIKON_LAYOUT_SHADER_CONSTANTS(X) \
+    EIKON_LAYOUT_BINDINGS(X)             \
+    EIKON_LAYOUT_TEXTURE_UNITS(X)        \
+    EIKON_LAYOUT_IMAGE_UNITS(X)          \
+    EIKON_LAYOUT_POWER_TALLIES(X)
+
 namespace eikon::layout {
 
-// Binding points shared by the C++ stages and the shaders.
-enum Binding : unsigned {
-    kGridBlock = 0,        // uniform GridBlock (GpuGrid)
-    kCameraBlock = 1,      // uniform CameraBlock (GpuCamera)
-    kEmitters = 2,         // buffer Emitters { GpuEmitter emitters[]; }
-    kReceivers = 3,        // buffer Receivers { GpuReceiver receivers[]; }
-    kReceiverMaps = 4,     // buffer ReceiverMaps { float irradiance[]; } — RGB per texel, W·(texel area)⁻¹ accumulated
-    kFluence = 5,          // buffer Fluence { float fluence[]; } — RGB per cell, track-length estimator
-    kPhotonStats = 6,      // buffer PhotonStats (GpuPhotonStats)
-    kHdrImage = 7,         // buffer HdrImage { vec4 radiance[]; }
-    kLdrImage = 8,         // buffer LdrImage { uint rgba8[]; }
-    kPhotonPaths = 9,      // buffer PhotonPaths { vec4 vertices[]; } — optional recording for tests and export
-    kProbe = 10,           // buffer used by the shared-math probe
-    kReceiverTallies = 11, // buffer ReceiverTallies { uint units[]; } — per texel and channel a 64-bit fixed-point sum
-    kFluenceDirection = 12,// buffer FluenceDirection { float direction[]; } — xyz per cell, power-weighted
-    kRawFluence = 13,      // the photon pass's unsmoothed fluence, RGB per cell
-    kRawFluenceDirection = 14,  // and its unsmoothed direction sums
-    kViewExit = 15,        // buffer ViewExit { vec4 exit[]; } — per pixel: direction leaving the scene, w: how (tests)
-    kPhotonPathPower = 16, // buffer PhotonPathPower { vec4 power[]; } — RGB power at each recorded path vertex
-};
-
-// Texture units.
-enum TextureUnit : unsigned {
-    kIndexTexture = 0,       // r32f δn
-    kGradientTexture = 1,    // rgba32f (∇n, δn)
-    kExtinctionTexture = 2,  // rgba32f (κ rgb, 0)
-    kScatteringTexture = 3,  // rgba32f (σs rgb, 0)
-    kStepTexture = 4,        // rgba32f (octree level, step cap in m, 1 if the node is empty of extinction, 0)
-    kEnvironmentTexture = 5, // rgba32f equirectangular environment
-    kAnisotropyTexture = 6,  // r32f Henyey–Greenstein g
-};
+#define EIKON_LAYOUT_ENUMERATOR(name, value) name = value,
+enum Binding : unsigned { EIKON_LAYOUT_BINDINGS(EIKON_LAYOUT_ENUMERATOR) };
+enum TextureUnit : unsigned { EIKON_LAYOUT_TEXTURE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
+enum ImageUnit : unsigned { EIKON_LAYOUT_IMAGE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
+enum PowerTally : unsigned { EIKON_LAYOUT_POWER_TALLIES(EIKON_LAYOUT_ENUMERATOR) };
+#undef EIKON_LAYOUT_ENUMERATOR
+static_assert(kTallyCount == kReflected + 1, "kTallyCount counts the tallies");
 
 // uniform GridBlock (std140): the world box of the field grid.
 struct GpuGrid {
@@ -83,15 +136,11 @@ static_assert(sizeof(GpuReceiver) == 96);
 static_assert(offsetof(GpuReceiver, map) == 80);
 
 // Energy balance and error figures of one photon pass, accumulated with
-// atomics. Every emitted photon ends in exactly one of escaped, received,
-// cut off, blocked; absorbed collects what extinction took along the way, so
-//   emitted = absorbed + escaped + received + cutOff + blocked.
+// atomics (the tallies: PowerTally above).
 // Powers are tallied in 64-bit fixed point (two 32-bit words with carry) in
 // units of the largest per-photon power / 2^24 per channel: float atomics
 // adding a million equal values drift by a percent, these stay exact to the
 // per-photon rounding and are independent of summation order.
-// kReflected is power receivers send back out (bounce): a source, like kEmitted.
-enum PowerTally : unsigned { kEmitted = 0, kAbsorbed, kEscaped, kReceived, kCutOff, kBlocked, kReflected, kTallyCount };
 constexpr double kPowerUnitsPerPhoton = 16777216.0;  // 2^24
 
 struct GpuPhotonStats {

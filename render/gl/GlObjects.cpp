@@ -65,6 +65,14 @@ Texture2D::Texture2D(int width, int height, const float* rgba) {
     glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+GLint Program::uniform(const char* name) const {
+    const GLint location = glGetUniformLocation(id(), name);
+    if (location < 0)
+        throw std::runtime_error("program " + shaderName_ + " has no active uniform '" + std::string(name) +
+                                 "' (misspelt, or compiled out of this variant)");
+    return location;
+}
+
 void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX,
                                GLuint localY, GLuint localZ) const {
     auto groups = [](std::size_t count, GLuint local) { return static_cast<GLuint>((count + local - 1) / local); };

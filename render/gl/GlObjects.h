@@ -103,15 +103,22 @@ private:
     GlName<deleteTexture> name_;
 };
 
-// A linked compute program.
+// A linked compute program, named in its errors after the shader it was
+// compiled from (gl::compileComputeProgram).
 class Program {
 public:
     Program() = default;
-    explicit Program(GLuint id) : name_(id) {}
+    explicit Program(GLuint id, std::string shaderName = "(unnamed)")
+        : name_(id), shaderName_(std::move(shaderName)) {}
 
     GLuint id() const { return name_.id(); }
     void use() const { glUseProgram(id()); }
-    GLint uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+    // The location of a uniform the program has; throws std::runtime_error
+    // naming program and uniform where it has none. OpenGL answers a
+    // misspelt name with −1, which glUniform* ignores: a wrong picture, not
+    // an error. Compilers also drop uniforms a program never reads, so every
+    // uniform a stage sets must be read in every #define variant it compiles.
+    GLint uniform(const char* name) const;
     // Dispatches enough work groups of `localSize` to cover `count` items.
     void dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX, GLuint localY,
                           GLuint localZ) const;
@@ -120,6 +127,7 @@ public:
 
 private:
     GlName<deleteProgram> name_;
+    std::string shaderName_;
 };
 
 }  // namespace eikon::gl

@@ -34,8 +34,8 @@ void PrepareStage::run(FieldTextures& fields) {
         const glm::ivec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
         for (int pass = 0; pass < 3; ++pass) {
             glUniform3i(smoothProgram_.uniform("axis"), axes[pass].x, axes[pass].y, axes[pass].z);
-            sources[pass]->bindSampler(0);
-            targets[pass]->bindImage(0, GL_WRITE_ONLY);
+            sources[pass]->bindSampler(layout::kIndexTexture);
+            targets[pass]->bindImage(layout::kSmoothedIndexImage, GL_WRITE_ONLY);
             smoothProgram_.dispatchOverCells(r);
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
@@ -43,7 +43,7 @@ void PrepareStage::run(FieldTextures& fields) {
     }
     fields.gridBlock().bindUniform(layout::kGridBlock);
     smoothedIndex(fields).bindSampler(layout::kIndexTexture);
-    fields.gradient().bindImage(0, GL_WRITE_ONLY);
+    fields.gradient().bindImage(layout::kGradientImage, GL_WRITE_ONLY);
     gradientProgram_.dispatchOverCells(r);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("prepare stage");

@@ -28,19 +28,20 @@ StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& t
 
 void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields) {
     minmaxProgram_.use();
-    smoothedIndex.bindSampler(0);
+    smoothedIndex.bindSampler(layout::kIndexTexture);
     if (fields.hasExtinction()) fields.bindForTracing();  // κ at its texture unit
     for (int level = 0; level < levels_; ++level) {
         glUniform1i(minmaxProgram_.uniform("level"), level);
-        if (level > 0) glBindImageTexture(0, pyramid_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(1, pyramid_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        if (level > 0)
+            glBindImageTexture(layout::kFinerLevelImage, pyramid_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
+        glBindImageTexture(layout::kPyramidLevelImage, pyramid_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         minmaxProgram_.dispatchOverCells(glm::max(paddedSize_ >> level, glm::ivec3(1)));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     const float maxDispersion = static_cast<float>(std::max({tracer_.dispersion.r, tracer_.dispersion.g, tracer_.dispersion.b}));
     labelProgram_.use();
-    pyramid_.bindSampler(0);
-    step_.bindImage(0, GL_WRITE_ONLY);
+    pyramid_.bindSampler(layout::kPyramidTexture);
+    step_.bindImage(layout::kStepImage, GL_WRITE_ONLY);
     glUniform1i(labelProgram_.uniform("levels"), levels_);
     glUniform1f(labelProgram_.uniform("epsilon"), static_cast<float>(tracer_.epsilon));
     glUniform1f(labelProgram_.uniform("epsilon_prime"), static_cast<float>(tracer_.epsilonPrime));

@@ -6,8 +6,8 @@ vec3 beer_lambert_transmittance(vec3 kappa, float ds) {
 
 // ∫_0^ds exp(−κ·s) ds per channel: the length a unit of power "spends" in a
 // segment whose power decays while crossing it. The track-length estimator of
-// fluence deposits Φ0 times this (DESIGN.md: φ = Σ Φ·ℓ / h³); it tends to ds
-// as κ·ds → 0.
+// fluence deposits Φ0 times this (docs/architecture.md, Conventions:
+// φ = Σ Φ·ℓ / h³); it tends to ds as κ·ds → 0.
 vec3 attenuated_track_length(vec3 kappa, float ds) {
     vec3 optical_depth = kappa * ds;
     vec3 small = ds * (1.0f - 0.5f * optical_depth);

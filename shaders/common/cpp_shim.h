@@ -1,6 +1,9 @@
 // C++ side of the GLSL/C++ shim (GLSL side: shaders/common/glsl_prelude.glsl).
 // Including a shared .glsl file after this header compiles the very code the
-// GPU runs into namespace eikon::shader, so C++ tests can check it.
+// GPU runs into namespace eikon::shader, so C++ tests can check it. This
+// header includes every shared file but integrators.glsl, which needs its
+// includer's field_at (tests/unit/test_integrators.cpp); the other files of
+// shaders/common declare GPU blocks and are GLSL only.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -32,6 +35,7 @@ namespace {
 #include "shaders/common/sampling.glsl"
 #include "shaders/common/receiver.glsl"
 #include "shaders/common/fresnel.glsl"
+#include "shaders/common/step_size.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 

@@ -6,7 +6,7 @@
 #endif
 
 #if EIKON_ENVIRONMENT == 2
-layout(binding = 5) uniform sampler2D environment_texture;
+layout(binding = kEnvironmentTexture) uniform sampler2D environment_texture;
 #endif
 
 vec3 environment_radiance(vec3 x, vec3 d) {

@@ -1,6 +1,7 @@
-// GLSL side of the shim that lets shaders/common/*.glsl compile both as GLSL
-// and as C++ over GLM (the C++ side is shaders/common/cpp_shim.h), in the way
-// NanoVDB's PNanoVDB.h serves C and GLSL with PNANOVDB_INOUT(T).
+// GLSL side of the shim that lets the shared files of shaders/common (those
+// cpp_shim.h includes, and integrators.glsl) compile both as GLSL and as C++
+// over GLM (the C++ side is shaders/common/cpp_shim.h), in the way NanoVDB's
+// PNanoVDB.h serves C and GLSL with PNANOVDB_INOUT(T).
 // Rules for shared files: float literals carry an `f`, parameters that are
 // written use INOUT(T), no GLSL-only built-ins beyond what GLM provides;
 // `precise` (no reassociation) is honoured by GLSL and is a no-op in C++,

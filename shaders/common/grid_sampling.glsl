@@ -9,19 +9,19 @@
 #define EIKON_HAS_SCATTERING 0
 #endif
 
-layout(std140, binding = 0) uniform GridBlock {
+layout(std140, binding = kGridBlock) uniform GridBlock {
     vec4 bounds_min;   // w: n_ref
     vec4 bounds_max;
     vec4 voxel_size;   // w: voxel volume
     ivec4 resolution;
 } grid;
 
-layout(binding = 1) uniform sampler3D gradient_texture;  // (∇n in 1/m, δn)
+layout(binding = kGradientTexture) uniform sampler3D gradient_texture;  // (∇n in 1/m, δn)
 #if EIKON_HAS_EXTINCTION
-layout(binding = 2) uniform sampler3D extinction_texture;  // κ rgb in 1/m
+layout(binding = kExtinctionTexture) uniform sampler3D extinction_texture;  // κ rgb in 1/m
 #endif
 #if EIKON_HAS_SCATTERING
-layout(binding = 3) uniform sampler3D scattering_texture;  // σs rgb in 1/m
+layout(binding = kScatteringTexture) uniform sampler3D scattering_texture;  // σs rgb in 1/m
 #endif
 
 const float EIKON_INFINITY = 1e30f;

@@ -9,8 +9,8 @@ struct Receiver {
     uvec4 map;     // x: first texel, y: texels per edge, z: 1 if photons bounce
 };
 
-layout(std430, binding = 3) readonly buffer Receivers { Receiver receivers[]; };
-layout(std430, binding = 4) buffer ReceiverMaps { float receiver_irradiance[]; };  // RGB per texel, W/m²
+layout(std430, binding = kReceivers) readonly buffer Receivers { Receiver receivers[]; };
+layout(std430, binding = kReceiverMaps) buffer ReceiverMaps { float receiver_irradiance[]; };  // RGB per texel, W/m²
 
 uniform uint receiver_count;
 

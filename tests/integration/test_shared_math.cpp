@@ -1,7 +1,6 @@
 // The physics math of shaders/common is written once and compiled both as
 // GLSL and as C++ (shaders/common/cpp_shim.h). This runs the same functions
 // on random inputs in a compute shader and on the CPU and compares.
-#include "bridge/layout/GpuLayouts.h"
 #include "render/gl/GlObjects.h"
 #include "render/gl/ShaderLibrary.h"
 #include "shaders/common/cpp_shim.h"
@@ -9,13 +8,30 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace eikon {
 namespace {
 
 constexpr unsigned kCases = 512;
+constexpr GLuint kProbeBinding = 0;  // the probe's one buffer; no production program runs beside it
+
+// The probe is a test shader, read from the source tree: production embeds
+// only shaders/.
+gl::Program compileProbe() {
+    const std::string name = "tests/integration/shaders/shared_math_probe.comp";
+    std::ifstream file(std::string(EIKON_SOURCE_DIR) + "/" + name);
+    if (!file) throw std::runtime_error("cannot read " + name);
+    std::ostringstream text;
+    text << file.rdbuf();
+    return gl::compileComputeProgramFromSource(name, text.str(),
+                                               {{"EIKON_PROBE_BINDING", std::to_string(kProbeBinding)}});
+}
 
 struct ProbeCase {
     glm::vec4 in[4];
@@ -36,7 +52,7 @@ std::vector<ProbeCase> randomCases() {
     return cases;
 }
 
-// The C++ twin of shaders/shared_math_probe.comp.
+// The C++ twin of tests/integration/shaders/shared_math_probe.comp.
 void evaluateOnCpu(ProbeCase& c, unsigned i) {
     using namespace eikon::shader;
     vec3 x = vec3(c.in[0]);
@@ -56,8 +72,8 @@ TEST(SharedMath, GlslAndCppAgree) {
     test::glContext();
     std::vector<ProbeCase> gpu = randomCases();
     gl::Buffer buffer(gpu.size() * sizeof(ProbeCase), gpu.data());
-    const gl::Program program = gl::compileComputeProgram("shared_math_probe.comp");
-    buffer.bindStorage(layout::kProbe);
+    const gl::Program program = compileProbe();
+    buffer.bindStorage(kProbeBinding);
     program.use();
     glUniform1ui(program.uniform("case_count"), kCases);
     program.dispatchCovering(kCases, 1, 1, 64, 1, 1);

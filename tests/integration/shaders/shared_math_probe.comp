@@ -1,7 +1,9 @@
 // Test probe: evaluates the shared math of shaders/common on inputs from a
 // buffer, so tests can compare the GPU's results with the same functions
 // compiled as C++ (tests/integration/test_shared_math.cpp). Layout per case:
-// 4 vec4 inputs followed by 4 vec4 outputs.
+// 4 vec4 inputs followed by 4 vec4 outputs. Not a production shader: tests
+// compile it with gl::compileComputeProgramFromSource, which resolves its
+// includes from the embedded shaders/, and define EIKON_PROBE_BINDING.
 layout(local_size_x = 64) in;
 
 #include "common/random.glsl"
@@ -11,7 +13,7 @@ layout(local_size_x = 64) in;
 #include "common/sampling.glsl"
 #include "common/receiver.glsl"
 
-layout(std430, binding = 10) buffer Probe { vec4 probe[]; };
+layout(std430, binding = EIKON_PROBE_BINDING) buffer Probe { vec4 probe[]; };
 
 uniform uint case_count;
 

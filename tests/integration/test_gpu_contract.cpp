@@ -1,0 +1,350 @@
+// The GPU contract as OpenGL reports it: every uniform block, shader storage
+// block, sampler and image of every production program (in the #define
+// variants that change which of them exist) sits at the binding point or
+// unit bridge/layout/GpuLayouts.h names for it, every block has the size of
+// its C++ mirror, and no two resources of one program share a binding. A
+// resource whose name the tables below do not know fails the test: a new
+// block, sampler or image needs its row here.
+#include "bridge/layout/GpuLayouts.h"
+#include "render/gl/EmbeddedShaders.h"
+#include "render/gl/GlObjects.h"
+#include "render/gl/ShaderLibrary.h"
+#include "tests/integration/GlTestContext.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <regex>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eikon {
+namespace {
+
+// A block's layout: the bytes before its runtime-sized array (all of it when
+// it has none) and that array's element stride (0: none).
+struct BlockRow {
+    unsigned binding;
+    std::size_t fixedBytes;
+    std::size_t elementBytes;
+};
+
+const std::map<std::string, BlockRow>& uniformBlocks() {
+    static const std::map<std::string, BlockRow> rows = {
+        {"GridBlock", {layout::kGridBlock, sizeof(layout::GpuGrid), 0}},
+        {"CameraBlock", {layout::kCameraBlock, sizeof(layout::GpuCamera), 0}},
+    };
+    return rows;
+}
+
+const std::map<std::string, BlockRow>& storageBlocks() {
+    static const std::map<std::string, BlockRow> rows = {
+        {"Emitters", {layout::kEmitters, 0, sizeof(layout::GpuEmitter)}},
+        {"Receivers", {layout::kReceivers, 0, sizeof(layout::GpuReceiver)}},
+        {"ReceiverMaps", {layout::kReceiverMaps, 0, sizeof(float)}},
+        {"Fluence", {layout::kFluence, 0, sizeof(float)}},
+        {"PhotonStats", {layout::kPhotonStats, sizeof(layout::GpuPhotonStats), 0}},
+        {"HdrImage", {layout::kHdrImage, 0, sizeof(glm::vec4)}},
+        {"LdrImage", {layout::kLdrImage, 0, sizeof(std::uint32_t)}},
+        {"PhotonPaths", {layout::kPhotonPaths, 0, sizeof(glm::vec4)}},
+        {"ReceiverTallies", {layout::kReceiverTallies, 0, sizeof(std::uint32_t)}},
+        {"FluenceDirection", {layout::kFluenceDirection, 0, sizeof(float)}},
+        {"RawFluence", {layout::kRawFluence, 0, sizeof(float)}},
+        {"RawFluenceDirection", {layout::kRawFluenceDirection, 0, sizeof(float)}},
+        {"ViewExit", {layout::kViewExit, 0, sizeof(glm::vec4)}},
+        {"PhotonPathPower", {layout::kPhotonPathPower, 0, sizeof(glm::vec4)}},
+    };
+    return rows;
+}
+
+// GLSL sampler name → texture unit.
+const std::map<std::string, unsigned>& samplers() {
+    static const std::map<std::string, unsigned> rows = {
+        {"index_texture", layout::kIndexTexture},           {"source_texture", layout::kIndexTexture},
+        {"pyramid", layout::kPyramidTexture},               {"gradient_texture", layout::kGradientTexture},
+        {"extinction_texture", layout::kExtinctionTexture}, {"scattering_texture", layout::kScatteringTexture},
+        {"step_structure", layout::kStepTexture},           {"environment_texture", layout::kEnvironmentTexture},
+        {"anisotropy_texture", layout::kAnisotropyTexture},
+    };
+    return rows;
+}
+
+// GLSL image name → image unit.
+const std::map<std::string, unsigned>& images() {
+    static const std::map<std::string, unsigned> rows = {
+        {"target_image", layout::kSmoothedIndexImage}, {"gradient_image", layout::kGradientImage},
+        {"finer_level", layout::kFinerLevelImage},     {"this_level", layout::kPyramidLevelImage},
+        {"step_structure", layout::kStepImage},
+    };
+    return rows;
+}
+
+struct Variant {
+    std::string shader;
+    gl::ShaderDefines defines;
+
+    std::string label() const {
+        std::string text = shader;
+        for (const auto& [key, value] : defines) text += " " + key + "=" + value;
+        return text;
+    }
+};
+
+// Every program the stages compile, with no options (the fewest resources),
+// with every option that adds one, and the photon pass as `eikon bench`
+// runs it bare.
+std::vector<Variant> productionVariants() {
+    return {
+        {"smooth_index.comp", {}},
+        {"prepare_gradient.comp", {}},
+        {"octree_minmax.comp", {{"EIKON_HAS_EXTINCTION", "0"}}},
+        {"octree_minmax.comp", {{"EIKON_HAS_EXTINCTION", "1"}}},
+        {"octree_label.comp", {}},
+        {"receiver_filter.comp", {}},
+        {"fluence_smooth.comp", {}},
+        {"tonemap.comp", {}},
+        {"photon_trace.comp", {}},
+        {"photon_trace.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"},
+          {"EIKON_HAS_SCATTERING", "1"},
+          {"EIKON_OCTREE_STEPS", "1"},
+          {"EIKON_DISPERSION", "1"},
+          {"EIKON_STORE_FLUENCE", "1"},
+          {"EIKON_BOUNCE", "1"},
+          {"EIKON_RECORD_PATHS", "8"}}},
+        {"photon_trace.comp", {{"EIKON_BARE_MARCH", "1"}}},
+        {"view_rays.comp", {}},
+        {"view_rays.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"},
+          {"EIKON_HAS_SCATTERING", "1"},
+          {"EIKON_HAS_ANISOTROPY", "1"},
+          {"EIKON_STEP_STRUCTURE", "1"},
+          {"EIKON_ENVIRONMENT", std::to_string(layout::kHdrEnvironment)},
+          {"EIKON_RECORD_EXIT", "1"}}},
+    };
+}
+
+std::string resourceName(GLuint program, GLenum interface, GLuint index) {
+    GLint length = 0;
+    const GLenum property = GL_NAME_LENGTH;
+    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &length);
+    std::string name(static_cast<std::size_t>(length), '\0');
+    glGetProgramResourceName(program, interface, index, length, nullptr, name.data());
+    name.resize(name.find('\0'));
+    return name;
+}
+
+GLint resourceProperty(GLuint program, GLenum interface, GLuint index, GLenum property) {
+    GLint value = 0;
+    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &value);
+    return value;
+}
+
+GLuint activeResources(GLuint program, GLenum interface) {
+    GLint count = 0;
+    glGetProgramInterfaceiv(program, interface, GL_ACTIVE_RESOURCES, &count);
+    return static_cast<GLuint>(count);
+}
+
+std::vector<GLint> activeVariables(GLuint program, GLenum interface, GLuint block) {
+    const GLint count = resourceProperty(program, interface, block, GL_NUM_ACTIVE_VARIABLES);
+    std::vector<GLint> members(static_cast<std::size_t>(count));
+    const GLenum property = GL_ACTIVE_VARIABLES;
+    glGetProgramResourceiv(program, interface, block, 1, &property, count, nullptr, members.data());
+    return members;
+}
+
+// Bytes of one value of a block member's basic type.
+std::size_t typeBytes(GLenum type) {
+    switch (type) {
+        case GL_FLOAT: case GL_INT: case GL_UNSIGNED_INT: return 4;
+        case GL_FLOAT_VEC2: case GL_INT_VEC2: case GL_UNSIGNED_INT_VEC2: return 8;
+        case GL_FLOAT_VEC3: case GL_INT_VEC3: case GL_UNSIGNED_INT_VEC3: return 12;
+        case GL_FLOAT_VEC4: case GL_INT_VEC4: case GL_UNSIGNED_INT_VEC4: return 16;
+        default: throw std::runtime_error("a block member has GL type " + std::to_string(type) + ", unknown here");
+    }
+}
+
+// A block's layout from its members' offsets and strides: GL_BUFFER_DATA_SIZE
+// would do for most, but Mesa rounds it up to 16 bytes.
+BlockRow measuredLayout(GLuint program, GLenum blockInterface, GLuint block) {
+    const GLenum memberInterface = blockInterface == GL_SHADER_STORAGE_BLOCK ? GL_BUFFER_VARIABLE : GL_UNIFORM;
+    BlockRow layout{static_cast<unsigned>(resourceProperty(program, blockInterface, block, GL_BUFFER_BINDING)), 0, 0};
+    for (const GLint member : activeVariables(program, blockInterface, block)) {
+        auto property = [&](GLenum name) {
+            return resourceProperty(program, memberInterface, static_cast<GLuint>(member), name);
+        };
+        // A runtime-sized array has size 0: an array of structs at the top
+        // level, one of a basic type (for Mesa) in the member itself.
+        if (memberInterface == GL_BUFFER_VARIABLE && property(GL_TOP_LEVEL_ARRAY_SIZE) == 0) {
+            layout.elementBytes = static_cast<std::size_t>(property(GL_TOP_LEVEL_ARRAY_STRIDE));
+            continue;
+        }
+        if (memberInterface == GL_BUFFER_VARIABLE && property(GL_ARRAY_SIZE) == 0) {
+            layout.elementBytes = static_cast<std::size_t>(property(GL_ARRAY_STRIDE));
+            continue;
+        }
+        const auto elements = static_cast<std::size_t>(std::max(property(GL_ARRAY_SIZE), 1));
+        const std::size_t end = static_cast<std::size_t>(property(GL_OFFSET)) +
+                                (elements - 1) * static_cast<std::size_t>(property(GL_ARRAY_STRIDE)) +
+                                typeBytes(static_cast<GLenum>(property(GL_TYPE)));
+        layout.fixedBytes = std::max(layout.fixedBytes, end);
+    }
+    return layout;
+}
+
+// What one program declares, checked against the tables; `seen` collects
+// the rows met, so rows no program uses can be told apart.
+class ContractCheck {
+public:
+    explicit ContractCheck(std::set<std::string>& seen) : seen_(seen) {}
+
+    void blocks(const gl::Program& program, const std::string& label, GLenum interface) {
+        const auto& rows = interface == GL_UNIFORM_BLOCK ? uniformBlocks() : storageBlocks();
+        const char* kind = interface == GL_UNIFORM_BLOCK ? "uniform block" : "shader storage block";
+        std::map<GLint, std::string> byBinding;
+        for (GLuint i = 0; i < activeResources(program.id(), interface); ++i) {
+            const std::string name = resourceName(program.id(), interface, i);
+            const BlockRow measured = measuredLayout(program.id(), interface, i);
+            noteBinding(byBinding, static_cast<GLint>(measured.binding), name, label, kind);
+            const auto row = rows.find(name);
+            if (row == rows.end()) {
+                ADD_FAILURE() << label << ": " << kind << " " << name << " is not in the contract tables";
+                continue;
+            }
+            seen_.insert(std::string(kind) + " " + name);
+            const BlockRow& expected = row->second;
+            EXPECT_EQ(measured.binding, expected.binding) << label << ": " << kind << " " << name << " is bound at "
+                                                          << measured.binding << ", bridge/layout/GpuLayouts.h says "
+                                                          << expected.binding;
+            EXPECT_EQ(measured.fixedBytes, expected.fixedBytes)
+                << label << ": " << kind << " " << name << " has " << measured.fixedBytes
+                << " bytes before any runtime-sized array, its C++ mirror " << expected.fixedBytes;
+            EXPECT_EQ(measured.elementBytes, expected.elementBytes)
+                << label << ": " << kind << " " << name << " has an element stride of " << measured.elementBytes
+                << " bytes, its C++ mirror " << expected.elementBytes;
+        }
+    }
+
+    void opaqueUniforms(const gl::Program& program, const std::string& label) {
+        std::map<GLint, std::string> samplerUnits, imageUnits;
+        for (GLuint i = 0; i < activeResources(program.id(), GL_UNIFORM); ++i) {
+            const auto type = static_cast<GLenum>(resourceProperty(program.id(), GL_UNIFORM, i, GL_TYPE));
+            const bool sampler = isSampler(type), image = isImage(type);
+            if (!sampler && !image) continue;
+            const std::string name = resourceName(program.id(), GL_UNIFORM, i);
+            GLint unit = -1;
+            glGetUniformiv(program.id(), resourceProperty(program.id(), GL_UNIFORM, i, GL_LOCATION), &unit);
+            const char* kind = sampler ? "sampler" : "image";
+            noteBinding(sampler ? samplerUnits : imageUnits, unit, name, label, kind);
+            const auto& rows = sampler ? samplers() : images();
+            const auto row = rows.find(name);
+            if (row == rows.end()) {
+                ADD_FAILURE() << label << ": " << kind << " " << name << " is not in the contract tables";
+                continue;
+            }
+            seen_.insert(std::string(kind) + " " + name);
+            EXPECT_EQ(static_cast<unsigned>(unit), row->second)
+                << label << ": " << kind << " " << name << " is at unit " << unit
+                << ", bridge/layout/GpuLayouts.h says " << row->second;
+        }
+    }
+
+private:
+    static bool isSampler(GLenum type) {
+        static const std::set<GLenum> types = {GL_SAMPLER_1D, GL_SAMPLER_2D, GL_SAMPLER_3D, GL_SAMPLER_CUBE,
+                                               GL_SAMPLER_2D_ARRAY, GL_SAMPLER_BUFFER, GL_INT_SAMPLER_2D,
+                                               GL_INT_SAMPLER_3D, GL_UNSIGNED_INT_SAMPLER_2D,
+                                               GL_UNSIGNED_INT_SAMPLER_3D};
+        return types.count(type) > 0;
+    }
+
+    static bool isImage(GLenum type) {
+        static const std::set<GLenum> types = {GL_IMAGE_1D, GL_IMAGE_2D, GL_IMAGE_3D, GL_IMAGE_CUBE,
+                                               GL_IMAGE_2D_ARRAY, GL_IMAGE_BUFFER, GL_INT_IMAGE_2D,
+                                               GL_INT_IMAGE_3D, GL_UNSIGNED_INT_IMAGE_2D,
+                                               GL_UNSIGNED_INT_IMAGE_3D};
+        return types.count(type) > 0;
+    }
+
+    // Two resources of one kind at one binding would read each other's data.
+    static void noteBinding(std::map<GLint, std::string>& byBinding, GLint binding, const std::string& name,
+                            const std::string& label, const char* kind) {
+        const auto [existing, fresh] = byBinding.emplace(binding, name);
+        EXPECT_TRUE(fresh) << label << ": " << kind << "s " << existing->second << " and " << name
+                           << " share binding " << binding;
+    }
+
+    std::set<std::string>& seen_;
+};
+
+// Every row of the tables, as ContractCheck notes the ones it meets.
+std::set<std::string> tableRows() {
+    std::set<std::string> rows;
+    for (const auto& [name, row] : uniformBlocks()) rows.insert("uniform block " + name);
+    for (const auto& [name, row] : storageBlocks()) rows.insert("shader storage block " + name);
+    for (const auto& [name, unit] : samplers()) rows.insert("sampler " + name);
+    for (const auto& [name, unit] : images()) rows.insert("image " + name);
+    return rows;
+}
+
+TEST(GpuContract, EveryProgramBindsWhatGpuLayoutsNames) {
+    test::glContext();
+    std::set<std::string> seen;
+    ContractCheck check(seen);
+    for (const Variant& variant : productionVariants()) {
+        const gl::Program program = gl::compileComputeProgram(variant.shader, variant.defines);
+        check.blocks(program, variant.label(), GL_UNIFORM_BLOCK);
+        check.blocks(program, variant.label(), GL_SHADER_STORAGE_BLOCK);
+        check.opaqueUniforms(program, variant.label());
+    }
+    // A row no program uses is a stale contract (or a variant missing above).
+    for (const std::string& row : tableRows()) EXPECT_TRUE(seen.count(row)) << row << " is used by no program";
+}
+
+// What the names are for: a number in a shader would not follow the enum.
+TEST(GpuContract, ShadersBindByNameNeverByNumber) {
+    static const std::regex numbered(R"(binding\s*=\s*\d)");
+    for (const auto& [name, text] : gl::embeddedShaders())
+        EXPECT_FALSE(std::regex_search(text.begin(), text.end(), numbered)) << name << " binds by number";
+}
+
+TEST(GpuContract, MisspeltUniformIsAnErrorNamingProgramAndUniform) {
+    test::glContext();
+    const gl::Program program = gl::compileComputeProgram("tonemap.comp");
+    EXPECT_GE(program.uniform("exposure_scale"), 0);
+    try {
+        program.uniform("exposure_scael");
+        FAIL() << "a misspelt uniform was accepted";
+    } catch (const std::runtime_error& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("tonemap.comp"), std::string::npos) << message;
+        EXPECT_NE(message.find("exposure_scael"), std::string::npos) << message;
+    }
+}
+
+// The generated constants and the prelude come before the shader's own
+// text, and an include sits inside it: messages must still name its line.
+TEST(GpuContract, CompilerMessagesNameTheShadersOwnLine) {
+    test::glContext();
+    const char* source =
+        "layout(local_size_x = 1) in;\n"
+        "#include \"common/random.glsl\"\n"
+        "void main() { undeclared_name = 1; }\n";
+    try {
+        gl::compileComputeProgramFromSource("line_check.comp", source);
+        FAIL() << "a broken shader compiled";
+    } catch (const std::runtime_error& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("line_check.comp:3"), std::string::npos) << message;
+    }
+}
+
+}  // namespace
+}  // namespace eikon
