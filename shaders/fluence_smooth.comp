@@ -1,4 +1,4 @@
-// The 3×3×3 smoothing of the stored photon radiance (Sun et al. 2008, §4.4):
+// The 3×3×3 smoothing of the stored photon radiance ([Sun08] §4.4):
 // fluence and power-weighted direction are filtered with the binomial kernel
 // [1 2 1]/4 along each axis (weights outside the grid left out and the rest
 // renormalised), for the view pass to read.

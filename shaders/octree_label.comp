@@ -1,15 +1,15 @@
-// Per-voxel octree level and step cap (Sun et al. 2008, §4.2 and §5.3): from
+// Per-voxel octree level and step cap ([Sun08] §4.2 and §5.3): from
 // the coarsest level down, the first node around the voxel whose index range
 // is below ε gives the level with no cap; one whose range is below ε′ gives
-// the level with the finite cap. Unlike the paper, ε and ε′ are fractions of
+// the level with the finite cap. Unlike [Sun08], ε and ε′ are fractions of
 // the whole field's index range (read off the pyramid's top), so one setting
 // serves glass (Δn ≈ 0.5) and hot air (Δn ≈ 1e-4) alike; an absolute ε
 // fit for glass would call a whole mirage uniform. Voxels that find neither step by Δs_min —
-// where the paper stepped to the voxel's face, up to √3 voxels: in the
+// where [Sun08] stepped to the voxel's face, up to √3 voxels: in the
 // steepest part of an interface that doubled the caustic's error against
 // uniform half-voxel steps.
 //
-// Unlike the paper, a node must also hold extinction nearly constant: its κ
+// Unlike [Sun08], a node must also hold extinction nearly constant: its κ
 // range times its edge must stay below an optical-depth tolerance, because a
 // step attenuates by exp(−κ(start)·Δs). Without this bound a step from clear
 // air jumps over an absorbing slab: a measured Beer–Lambert error of +45% to

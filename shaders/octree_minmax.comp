@@ -1,4 +1,4 @@
-// Min/max pyramid (Sun et al. 2008, §4.2), like a mipmap whose texels hold
+// Min/max pyramid ([Sun08] §4.2), like a mipmap whose texels hold
 // (min δn, max δn, min κ, max κ) with κ the largest extinction channel.
 // Level 0 takes each voxel's 3×3×3 neighbourhood, the cells trilinear
 // interpolation mixes anywhere inside it; level k > 0 reduces the 2×2×2

@@ -1,4 +1,4 @@
-// Photon pass (Sun et al. 2008, §4.3–4.4 and §5.3): each invocation emits
+// Photon pass ([Sun08] §4.3–4.4 and §5.3): each invocation emits
 // one photon toward the traced region, flies it straight outside the field
 // grid (common/straight_flight.glsl) and marches it inside with the chosen
 // integrator (common/integrators.glsl) and step policy (uniform, or octree-
@@ -174,7 +174,7 @@ void deposit_on_receiver(ReceiverHit hit, vec3 power) {
 uint deposits = 0u;
 
 // Track-length estimator over the segment a → b (docs/architecture.md,
-// Conventions: φ = Σ Φ·ℓ / h³): a 3D DDA (Amanatides and Woo 1987) visits
+// Conventions: φ = Σ Φ·ℓ / h³): a 3D DDA ([Amanatides87]) visits
 // every voxel the segment crosses and adds the power-weighted length spent in
 // it, with Beer–Lambert decay along the way at the segment's extinction κ;
 // the power-weighted direction goes beside it.

@@ -1,5 +1,5 @@
 // One axis of the separable Gaussian that smooths δn before its gradient is
-// taken (Sun et al. 2008, §4.1: σ = window/6, 9³ by default), so ∇n is
+// taken ([Sun08] §4.1: σ = window/6, 9³ by default), so ∇n is
 // finite and rays bend smoothly across interfaces. Weights come from the C++
 // side, normalised to sum to one; samples past the grid take the edge value.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;

@@ -1,4 +1,4 @@
-// Post: linear HDR radiance → exposure 2^EV → filmic curve (Narkowicz's fit
+// Post: linear HDR radiance → exposure 2^EV → filmic curve ([Narkowicz16]'s fit
 // of the ACES reference rendering transform) → sRGB encoding → RGBA8.
 layout(local_size_x = 64) in;
 

@@ -1,5 +1,5 @@
-// Viewing pass (Sun et al. 2008, §4.5; image formation of Ihrke et al. 2007,
-// §3 and §5.3): one camera ray per pixel, bent by the same ray equation as
+// Viewing pass ([Sun08] §4.5; image formation of [Ihrke07] §3 and §5.3):
+// one camera ray per pixel, bent by the same ray equation as
 // photons inside the field grid (leapfrog: one field sample per step, and
 // second order — Euler's one-voxel steps misplaced a totally reflected ray
 // by 6°), straight outside it. Inside media it steps
@@ -87,8 +87,8 @@ uniform float interface_half_width;  // m: beyond the smoothing kernel, where n 
 // σs·φ·p toward the camera (d: the ray's direction of travel). The radiance
 // stored per voxel is its fluence φ and the power-weighted mean direction
 // m of the photons through it (|m| ≤ 1); the phase function mixes
-// isotropic and Henyey–Greenstein scattering about m by |m| (Sun et al.
-// 2008, §4.4: the mean direction stands for the distribution).
+// isotropic and Henyey–Greenstein scattering about m by |m| ([Sun08]
+// §4.4: the mean direction stands for the distribution).
 vec3 in_scattered_radiance(vec3 x, vec3 d) {
 #if EIKON_HAS_SCATTERING
     uint index = 3u * uint(grid_linear_index(grid_cell(x)));

@@ -3,7 +3,8 @@
 // InputError is for anything a user supplied (scene file, CLI, mesh, image):
 // the message names where (file and JSON path or line), what was expected and
 // what was found, and the CLI turns it into exit code 2. CHECK is for
-// invariants of our own code (after pbrt-v4 util/check.h): a failure is a bug.
+// invariants of our own code (after pbrt-v4 util/check.h, [Pharr23]): a
+// failure is a bug.
 #pragma once
 
 #include <stdexcept>

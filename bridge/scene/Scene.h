@@ -27,9 +27,9 @@ struct GridDesc {
     glm::ivec3 resolution{64, 64, 64};  // cells per axis, each >= 1
     glm::dvec3 boundsMin{-1.0};         // metres; boundsMax > boundsMin on every axis
     glm::dvec3 boundsMax{1.0};
-    double smoothingSigmaVoxels = 1.5;  // Gaussian σ of index smoothing in voxels (Sun et al. 2008 §4.1: 9³ window, σ = 9/6); 0: none
+    double smoothingSigmaVoxels = 1.5;  // Gaussian σ of index smoothing in voxels ([Sun08] §4.1: 9³ window, σ = 9/6); 0: none
     int smoothingWindowVoxels = 0;      // odd kernel width; 0: 2·floor(3σ) + 1 (9 for σ = 1.5)
-    int supersampling = 4;              // coverage samples per voxel axis (Sun et al. 2008 §4.1: 4)
+    int supersampling = 4;              // coverage samples per voxel axis ([Sun08] §4.1: 4)
 
     // The cells and world box this describes.
     GridSpec spec() const { return {resolution, boundsMin, boundsMax}; }
@@ -76,9 +76,9 @@ struct ObjectDesc {
     Material material;
 };
 
-// A brush dragged along a path through the volume (Sun et al. 2008, §6.2.1,
-// volume painting): a pattern of material added to the fields, scaled to the
-// brush radius and turned to follow the path.
+// A brush dragged along a path through the volume ([Sun08] §6.2.1, volume
+// painting): a pattern of material added to the fields, scaled to the brush
+// radius and turned to follow the path.
 struct PaintStroke {
     enum class Brush {
         Soft,   // Gaussian, σ = radius/2
@@ -147,18 +147,18 @@ struct RenderDesc {
     int height = 480;             // >= 1
     unsigned seed = 1;
     double exposureEv = 0.0;      // exposure compensation in stops
-    double stepVoxels = 1.0;      // camera-ray step in media, in voxels, > 0 (Sun et al. §4.5: one voxel)
+    double stepVoxels = 1.0;      // camera-ray step in media, in voxels, > 0 ([Sun08] §4.5: one voxel)
     EnvironmentDesc environment;  // `background` in the file sets a uniform environment's radiance
     bool writeHdr = true;         // also write the linear image as Radiance .hdr
 };
 
-// How photons are marched (Sun et al. 2008, §4.2–4.4 and §5.3).
+// How photons are marched ([Sun08] §4.2–4.4 and §5.3).
 struct TracerDesc {
     enum class Integrator { Euler, Leapfrog, Rk4 } integrator = Integrator::Leapfrog;
     enum class StepPolicy { Uniform, Octree } stepPolicy = StepPolicy::Octree;
     double stepVoxels = 0.5;      // uniform: Δs; octree: Δs_min. In voxels, > 0
     // Octree tolerances, as fractions of the field's whole index range (so
-    // glass and hot air need no retuning). Sun et al. used absolute ε = 0.005,
+    // glass and hot air need no retuning). [Sun08] used absolute ε = 0.005,
     // ε′ = 0.02 (0.01, 0.04 of a glass sphere's range) with an 8-voxel cap; on
     // the glass-sphere caustic that doubled the error of uniform half-voxel
     // steps, while ε = ε′ = 0.002 beats uniform steps with 3.6× fewer

@@ -48,7 +48,6 @@ public:
 
     // Guards the commands issued so far (replacing an earlier fence).
     void insert();
-    bool pending() const { return sync_ != nullptr; }
     bool signaled() const;
     // Blocks until the guarded commands completed; returns how long that
     // took (zero when they already had). A fence never inserted is complete.

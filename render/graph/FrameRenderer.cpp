@@ -44,7 +44,6 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
     view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr, options.recordViewExits);
     const double voxel = fields.grid.smallestVoxelEdge();
-    photonSettings_.photons = scene.render.photons;
     photonSettings_.seed = scene.render.seed;
     photonSettings_.stepLength = scene.tracer.stepVoxels * voxel;
     photonSettings_.maxSteps = scene.tracer.maxSteps > 0 ? static_cast<unsigned>(scene.tracer.maxSteps)
@@ -77,7 +76,6 @@ void FrameRenderer::setLight(std::size_t index, const LightDesc& light) {
 void FrameRenderer::setPhotonCount(long long photons) {
     if (photons == scene_.render.photons) return;
     scene_.render.photons = photons;
-    photonSettings_.photons = photons;
     if (photons_) photons_->setEmitters(scene_);  // photons are shared among lights by power
     lightsChanged_ = true;
 }

@@ -69,7 +69,6 @@ public:
     const ReceiverMaps& receivers() const { return receivers_; }
     // Null when the scene has nothing for photons to light (no receivers, no scattering).
     const PhotonStage* photonStage() const { return photons_.get(); }
-    const PhotonSettings& photonSettings() const { return photonSettings_; }
     const ViewStage& viewStage() const { return *view_; }
 
 private:

@@ -85,10 +85,4 @@ void FieldRing::fenceCurrent() {
     slots_[static_cast<std::size_t>(current_)].readByGpu.insert();
 }
 
-std::size_t FieldRing::bytesPerSlot() const {
-    std::size_t floats = 0;
-    for (std::size_t f : floats_) floats += f;
-    return floats * sizeof(float);
-}
-
 }  // namespace eikon::render

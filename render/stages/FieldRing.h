@@ -1,6 +1,6 @@
 // The zero-copy bridge between the simulation and the GPU.
 //
-// Sun et al. 2008 (§5.2) lost about a tenth of every frame copying volumes
+// Sun et al. ([Sun08] §5.2) lost about a tenth of every frame copying volumes
 // between OpenGL and CUDA. Here each field the scene has (δn, κ, σs, g) lives
 // in a ring of persistently mapped GL buffers (render/gl/MappedBuffer.h): the
 // simulation writes frame k+1 straight into one slot, from any thread, while
@@ -48,7 +48,6 @@ public:
     void fenceCurrent();
 
     const FieldRingStats& stats() const { return stats_; }
-    std::size_t bytesPerSlot() const;
 
 private:
     struct Slot {

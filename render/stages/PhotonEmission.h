@@ -1,4 +1,4 @@
-// Photon emission set-up (Sun et al. 2008, §4.3, with the shadow-map trick
+// Photon emission set-up ([Sun08] §4.3, with the shadow-map trick
 // replaced by a bounding cone): photons leave each light only toward the box
 // that holds the non-empty medium and the receivers, and each carries the
 // power of the solid angle (point, spot) or area (directional) it stands for,

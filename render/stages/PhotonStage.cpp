@@ -91,7 +91,8 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
 }
 
 void PhotonStage::setEmitters(const Scene& scene) {
-    const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), scene.render.photons);
+    photons_ = scene.render.photons;
+    const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), photons_);
     powerUnit_ = glm::vec3(0.0f);
     for (const auto& emitter : emitters)
         for (int c = 0; c < 3; ++c) powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c]);
@@ -132,7 +133,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     glUniform3f(program_.uniform("power_unit"), powerUnit_.r, powerUnit_.g, powerUnit_.b);
     glUniform3f(program_.uniform("dispersion"), static_cast<float>(dispersion_.r), static_cast<float>(dispersion_.g),
                 static_cast<float>(dispersion_.b));
-    const auto total = static_cast<std::size_t>(settings.photons);
+    const auto total = static_cast<std::size_t>(photons_);
     for (std::size_t offset = 0; offset < total; offset += kBatchPhotons) {
         const std::size_t batch = std::min(kBatchPhotons, total - offset);
         glUniform1ui(program_.uniform("photon_offset"), static_cast<GLuint>(offset));
@@ -156,7 +157,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     const auto gpu = stats_.downloadAs<layout::GpuPhotonStats>();
     const Rgb unit(powerUnit_);
     PhotonStats stats;
-    stats.photons = settings.photons;
+    stats.photons = photons_;
     stats.emitted = tallyOf(gpu, layout::kEmitted, unit);
     stats.absorbed = tallyOf(gpu, layout::kAbsorbed, unit);
     stats.escaped = tallyOf(gpu, layout::kEscaped, unit);

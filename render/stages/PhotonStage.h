@@ -17,8 +17,8 @@
 
 namespace eikon::render {
 
+// How a pass traces; the photon count is the scene's (setEmitters).
 struct PhotonSettings {
-    long long photons = 1 << 20;
     unsigned seed = 1;
     double stepLength = 0.0;      // uniform Δs, or the octree's Δs_min, in metres
     unsigned maxSteps = 0;        // trapped-ray cap
@@ -80,6 +80,7 @@ private:
     gl::Program fluenceSmoothProgram_;
     gl::Buffer emitters_;
     unsigned emitterCount_ = 0;
+    long long photons_ = 0;      // the count the emitters were built for
     glm::vec3 powerUnit_{0.0f};  // W per fixed-point tally unit, per channel
     gl::Buffer rawFluence_, rawDirection_, fluence_, direction_;
     gl::Buffer stats_;

@@ -1,4 +1,4 @@
-// The step-size structure of Sun et al. 2008 (§4.2, §5.3) on the GPU: a
+// The step-size structure of [Sun08] (§4.2, §5.3) on the GPU: a
 // min/max pyramid of δn (shaders/octree_minmax.comp), then per voxel the
 // level of the largest octree node around it whose index varies by less than
 // ε (no step cap) or ε′ (step capped), and whose extinction varies by less

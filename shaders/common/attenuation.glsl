@@ -1,5 +1,5 @@
 // Beer–Lambert attenuation over a path segment of length ds through a medium
-// of extinction κ (1/m per RGB channel): T = exp(−κ·ds) (Ihrke et al. 2007, §3).
+// of extinction κ (1/m per RGB channel): T = exp(−κ·ds) ([Ihrke07] §3, eq. 5).
 vec3 beer_lambert_transmittance(vec3 kappa, float ds) {
     return exp(-kappa * ds);
 }

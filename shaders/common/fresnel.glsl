@@ -1,6 +1,6 @@
 // Unpolarised Fresnel reflectance for light passing from index n_i into n_t
-// at incidence cos θi (Born and Wolf §1.5.2; the reflection term of Ihrke et
-// al. 2007, eq. 2): the mean of the s and p reflectances, 1 beyond the
+// at incidence cos θi ([Born99] §1.5.2; the reflection term of
+// [Ihrke07] eq. 2): the mean of the s and p reflectances, 1 beyond the
 // critical angle.
 float fresnel_reflectance(float cos_i, float n_i, float n_t) {
     float eta = n_i / n_t;

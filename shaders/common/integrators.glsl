@@ -7,7 +7,7 @@
 // (the photon shader samples the prepared textures; C++ tests use closed-form
 // fields), then includes this file.
 
-// Forward Euler (Sun et al. 2008, Eqs. 4–5): first order, one sample per step.
+// Forward Euler ([Sun08] §3, eqs. 4–5): first order, one sample per step.
 void integrate_euler(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field, float ds) {
     eikonal_euler_step(x, x_lost, v, field.w, xyz_of(field), ds);
     field = field_at(x);

@@ -1,4 +1,4 @@
-// Henyey–Greenstein phase function (Ihrke et al. 2007, §3), normalised so
+// Henyey–Greenstein phase function ([Ihrke07] §3, eqs. 3, 6; Henyey–Greenstein named in §5.1), normalised so
 // that its integral over the sphere is 1 (units 1/sr):
 //   p(θ) = (1 − g²) / (4π · (1 + g² − 2g·cosθ)^{3/2}),   −1 < g < 1.
 float henyey_greenstein(float cos_theta, float g) {

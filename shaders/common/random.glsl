@@ -1,6 +1,6 @@
-// Seeded, stateless random numbers: the PCG hash (Jarzynski and Olano 2020,
-// "Hash Functions for GPU Rendering") turns (seed, photon, dimension) into a
-// uniform float, so the same seed gives the same frame on any device.
+// Seeded, stateless random numbers: the PCG hash ([Jarzynski20]) turns
+// (seed, photon, dimension) into a uniform float, so the same seed gives the
+// same frame on any device.
 uint pcg_hash(uint value) {
     uint state = value * 747796405u + 2891336453u;
     uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;

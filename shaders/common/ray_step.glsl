@@ -1,5 +1,5 @@
 // The ray equation of geometric optics, d/ds (n dx/ds) = ∇n, written for the
-// state (x, v) with v = n·dx/ds (Sun et al. 2008, §3; Ihrke et al. 2007, §3):
+// state (x, v) with v = n·dx/ds ([Sun08] §3; [Ihrke07] §4.1, eqs. 9–10):
 //   dx/ds = v / n,   dv/ds = ∇n.
 // The invariant |v| = n(x) holds along the exact path; its drift is the free
 // error signal of every step.
@@ -14,7 +14,7 @@ void compensated_add(INOUT(vec3) x, INOUT(vec3) lost, vec3 increment) {
     x = sum;
 }
 
-// Forward Euler step (Sun et al. 2008, Eqs. 4 and 5):
+// Forward Euler step ([Sun08] §3, eqs. 4–5):
 //   x_{i+1} = x_i + (Δs / n(x_i)) · v_i,   v_{i+1} = v_i + Δs · ∇n(x_i),
 // with the position sum compensated (x_lost: see compensated_add).
 void eikonal_euler_step(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, float n, vec3 grad_n, float ds) {

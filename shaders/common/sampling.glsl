@@ -10,7 +10,7 @@ vec3 sample_cone(vec3 axis, vec3 tangent, vec3 bitangent, float cos_max, float u
     return cos_theta * axis + sin_theta * (cos(phi) * tangent + sin(phi) * bitangent);
 }
 
-// A point uniformly distributed over the unit disk (Shirley–Chiu concentric
+// A point uniformly distributed over the unit disk ([Shirley97] concentric
 // map, which keeps strata compact).
 vec2 sample_disk_concentric(float u1, float u2) {
     float a = 2.0f * u1 - 1.0f;

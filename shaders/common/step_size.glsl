@@ -1,4 +1,4 @@
-// Adaptive step sizes from the octree of Sun et al. 2008 (§4.2, §5.3): the
+// Adaptive step sizes from the octree of [Sun08] (§4.2, §5.3): the
 // step reaches the boundary of the octree node around the photon, clamped
 // between Δs_min and the node's step cap. Shared by GLSL and C++
 // (cpp_shim.h; tests/unit/test_step_size.cpp).

@@ -1,12 +1,11 @@
-// As-rigid-as-possible surface deformation (Sorkine & Alexa 2007, "As-Rigid-
-// As-Possible Surface Modeling"): handle vertices follow keyed rigid poses
-// and the rest minimise
-//   E = Σ_i Σ_{j∈N(i)} w_ij ‖(p'_i − p'_j) − R_i (p_i − p_j)‖²      (their Eq. 3)
-// with cotangent weights w_ij = ½(cot α_ij + cot β_ij) (Eq. 5, clamped at a
+// As-rigid-as-possible surface deformation ([Sorkine07]): handle vertices
+// follow keyed rigid poses and the rest minimise
+//   E = Σ_i Σ_{j∈N(i)} w_ij ‖(p'_i − p'_j) − R_i (p_i − p_j)‖²  ([Sorkine07] eq. 3)
+// with cotangent weights w_ij = ½(cot α_ij + cot β_ij) (eq. 5, clamped at a
 // small positive floor so the system stays positive definite on meshes with
 // obtuse triangles). Local step (parallel over vertices): R_i = V·Uᵀ from the SVD of
-// S_i = Σ_j w_ij e_ij e'_ijᵀ (Eq. 6, the sign fixed so det R_i = +1). Global
-// step: L p' = b with b_i = Σ_j ½ w_ij (R_i + R_j)(p_i − p_j) (Eqs. 8–9);
+// S_i = Σ_j w_ij e_ij e'_ijᵀ (eq. 6, the sign fixed so det R_i = +1). Global
+// step: L p' = b with b_i = Σ_j ½ w_ij (R_i + R_j)(p_i − p_j) (eqs. 8–9);
 // L restricted to the free vertices does not change with time, so its
 // sparse Cholesky factor (Eigen SimplicialLDLT) is computed once.
 #pragma once

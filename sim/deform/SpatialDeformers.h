@@ -5,8 +5,7 @@
 //    along it, θ = τ(t)·s (τ in degrees per metre);
 //  - bend: the axis curved into a circular arc of curvature κ(t) (degrees
 //    per metre) toward a direction ⟂ axis, cross-sections kept
-//    perpendicular to the arc (Barr 1984, "Global and local deformations of
-//    solid primitives").
+//    perpendicular to the arc ([Barr84]).
 #pragma once
 
 #include "sim/deform/Deformer.h"

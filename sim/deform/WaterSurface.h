@@ -1,7 +1,7 @@
 // A water body whose surface height h(x, z, t) obeys the damped 2D wave
 // equation h_tt = c²∇²h − γ·h_t + f, with reflecting walls (∂h/∂n = 0), drops
 // and moving disturbances as inputs, closed into a triangle mesh each frame
-// (pool caustics, Hu & Qin, Fig. 28).
+// (pool caustics, [Hu07] Fig. 28).
 //
 // Discretisation: heights on a node grid spanning the basin, the five-point
 // Laplacian with mirrored walls (−L is symmetric positive semidefinite), and

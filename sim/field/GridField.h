@@ -1,7 +1,7 @@
 // A dense 3D array of doubles sampled on a regular lattice: the cell-centred
-// scalars and each staggered velocity component of a MAC grid (Bridson,
-// "Fluid Simulation for Computer Graphics", 2nd ed., §2.4) are GridFields that
-// differ only in size and in where sample (0, 0, 0) sits.
+// scalars and each staggered velocity component of a MAC grid
+// ([Bridson15] §2.4) are GridFields that differ only in size and in where
+// sample (0, 0, 0) sits.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -33,7 +33,7 @@ struct GridField {
 };
 
 // A trilinear sample and the smallest and largest of the 8 values it blends:
-// the bounds of the MacCormack limiter (Selle et al. 2008, §3.1).
+// the bounds of the MacCormack limiter ([Selle08] §3.1).
 struct StencilSample {
     double value;
     double min;

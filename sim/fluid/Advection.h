@@ -1,12 +1,11 @@
-// Advection by the MacCormack scheme of Selle, Fedkiw, Kim, Liu and Rossignac
-// 2008, "An unconditionally stable MacCormack method", Eqs. 3–5: a
-// semi-Lagrangian step back along the flow (Stam 1999, "Stable Fluids", §2.2),
-// a step forward from its result to estimate the error, and half that error
-// added back. The result is clamped to the smallest and largest of the eight
-// values the backward step blended (their §3.1 limiter), so no new extrema
-// appear and the scheme stays unconditionally stable. Characteristics are
-// traced with the midpoint rule through the velocity of the start of the
-// step, once per cell centre; the face velocities reuse them (Advection.cpp).
+// Advection by the MacCormack scheme ([Selle08] eqs. 3–5): a semi-Lagrangian
+// step back along the flow ([Stam99] §2.2), a step forward from its result to
+// estimate the error, and half that error added back. The result is clamped
+// to the smallest and largest of the eight values the backward step blended
+// (the limiter of [Selle08] §3.1), so no new extrema appear and the scheme
+// stays unconditionally stable. Characteristics are traced with the midpoint
+// rule through the velocity of the start of the step, once per cell centre;
+// the face velocities reuse them (Advection.cpp).
 #pragma once
 
 #include "sim/fluid/MacGrid.h"

@@ -1,6 +1,6 @@
 // Where the fluid may go: the six faces of the solver box (closed walls or
 // open to a still exterior at pressure 0) and a per-cell solid mask (static
-// obstacles; any voxelizer may fill it). Bridson 2nd ed. §5.1: fluid faces
+// obstacles; any voxelizer may fill it). [Bridson15] §5.1: fluid faces
 // that touch a solid or a closed wall carry the solid's (zero) normal velocity.
 #pragma once
 

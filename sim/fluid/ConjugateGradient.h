@@ -1,7 +1,6 @@
-// Preconditioned conjugate gradients on a SevenPointOperator (Saad,
-// "Iterative Methods for Sparse Linear Systems", Alg. 9.1; McAdams et al.
-// 2010, "A parallel multigrid Poisson solver for fluids simulation on large
-// grids", Alg. 2 with their multigrid V-cycle as the preconditioner).
+// Preconditioned conjugate gradients on a SevenPointOperator
+// ([Saad03] Alg. 9.1; [McAdams10] Alg. 2, with its multigrid V-cycle as the
+// preconditioner).
 #pragma once
 
 #include "sim/fluid/StencilOperator.h"

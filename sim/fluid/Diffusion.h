@@ -1,7 +1,7 @@
-// Implicit diffusion, ∂φ/∂t = D ∇²φ by backward Euler (Stam 1999, "Stable
-// Fluids", §2.3): (I + Δt·D·L) φⁿ⁺¹ = φⁿ with L the positive seven-point
-// Laplacian, unconditionally stable for any Δt·D/h². Solved for the
-// increment δ = φⁿ⁺¹ − φⁿ, so the tolerance is relative to the change, not
+// Implicit diffusion, ∂φ/∂t = D ∇²φ by backward Euler ([Stam99] §2.3):
+// (I + Δt·D·L) φⁿ⁺¹ = φⁿ with L the positive seven-point Laplacian,
+// unconditionally stable for any Δt·D/h². Solved for the increment
+// δ = φⁿ⁺¹ − φⁿ, so the tolerance is relative to the change, not
 // to the (possibly large) values: by red–black Gauss–Seidel when Δt·D/h² is
 // small enough that it contracts fast (GaussSeidelIteration.h), by
 // Jacobi-preconditioned conjugate gradients otherwise.

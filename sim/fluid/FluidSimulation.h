@@ -1,6 +1,6 @@
 // The built-in fluid and mixing solver, as the frame loop sees it.
 //
-// One substep (Stam 1999, "Stable Fluids", §2; Bridson 2nd ed. ch. 2–6):
+// One substep ([Stam99] §2; [Bridson15] ch. 2–6):
 //   sources   hot plates, jet scalars, Boussinesq buoyancy, jet velocities
 //             (fixed scalars are set again after advection, jet velocities before projection)
 //   advection MacCormack with the extrema limiter (Advection.h), velocity and

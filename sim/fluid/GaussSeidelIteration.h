@@ -1,13 +1,13 @@
-// Red–black Gauss–Seidel iteration (Saad, "Iterative Methods for Sparse
-// Linear Systems", §4.1, with the red–black ordering of §12.4.1) for a
-// seven-point operator: each sweep updates the cells with (i + j + k) even
-// from their neighbours, then the others from the new values,
+// Red–black Gauss–Seidel iteration ([Saad03] §4.1, with the red–black
+// ordering of §12.4.1) for a seven-point operator: each sweep updates the
+// cells with (i + j + k) even from their neighbours, then the others from
+// the new values,
 //   x_c ← x_c + (b − A x)_c / diag_c,
 // in one pass over memory (WavefrontSlices.h). For a diagonally dominant A
 // such as the backward-Euler diffusion matrix I + Δt·D·L, Jacobi contracts
 // the error by ρ = max_c Σ_n w / diag_c per sweep and this ordering by about
-// ρ² (Saad §4.2.4, consistently ordered matrices): half the sweeps, and no
-// second vector. A sweep reads and writes a quarter of what a
+// ρ² ([Saad03] §4.2.4, consistently ordered matrices): half the sweeps, and
+// no second vector. A sweep reads and writes a quarter of what a
 // conjugate-gradient step does, so when ρ is small — diffusion over a time
 // step much shorter than a cell's diffusion time — it reaches a tolerance
 // for far less.

@@ -1,8 +1,8 @@
-// The staggered (marker-and-cell) velocity grid of Harlow and Welch 1965, as
-// in Bridson, "Fluid Simulation for Computer Graphics", 2nd ed., §2.4: cell
-// (i, j, k) holds scalars at its centre; velocity component a lives on the
-// faces normal to axis a, so u has (nx + 1)·ny·nz samples. Divergence and
-// pressure gradients then are exact central differences over one cell.
+// The staggered (marker-and-cell) velocity grid of [Harlow65], as in
+// [Bridson15] §2.4: cell (i, j, k) holds scalars at its centre; velocity
+// component a lives on the faces normal to axis a, so u has (nx + 1)·ny·nz
+// samples. Divergence and pressure gradients then are exact central
+// differences over one cell.
 #pragma once
 
 #include "bridge/grid/GridSpec.h"

@@ -1,11 +1,10 @@
 // A geometric multigrid V-cycle on the cell-centred pressure Poisson problem,
-// used as the preconditioner of conjugate gradients (McAdams, Sifakis and
-// Teran 2010, "A parallel multigrid Poisson solver for fluids simulation on
-// large grids", §3–4): coarse levels rediscretise the operator at 2h, a
-// coarse cell is active when any of its children is; trilinear prolongation
-// P and restriction R = Pᵀ / 2^d, red–black Gauss–Seidel smoothing in the
-// order (red, black) before and (black, red) after the coarse correction, so
-// the cycle is a symmetric operator as CG requires.
+// used as the preconditioner of conjugate gradients ([McAdams10] §3–4):
+// coarse levels rediscretise the operator at 2h, a coarse cell is active when
+// any of its children is; trilinear prolongation P and restriction
+// R = Pᵀ / 2^d, red–black Gauss–Seidel smoothing in the order (red, black)
+// before and (black, red) after the coarse correction, so the cycle is a
+// symmetric operator as CG requires.
 #pragma once
 
 #include "sim/fluid/StencilOperator.h"

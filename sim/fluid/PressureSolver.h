@@ -1,9 +1,9 @@
-// Pressure projection (Bridson 2nd ed. ch. 5; Chorin's projection as in Stam
-// 1999, "Stable Fluids", §2): find p with L p = −∇·u* on the fluid cells
+// Pressure projection ([Bridson15] ch. 5; Chorin's projection as in
+// [Stam99] §2): find p with L p = −∇·u* on the fluid cells
 // (L the positive Laplacian of poissonOperator) and set u = u* − ∇p, so that
 // the discrete divergence of u vanishes up to the solver tolerance. p absorbs
 // Δt/ρ (units m²/s). Solved by conjugate gradients preconditioned with a
-// multigrid V-cycle (McAdams et al. 2010).
+// multigrid V-cycle ([McAdams10]).
 #pragma once
 
 #include "sim/fluid/Boundaries.h"

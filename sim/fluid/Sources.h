@@ -13,11 +13,11 @@
 
 namespace eikon::sim {
 
-// Boussinesq approximation (Bridson 2nd ed. §6.2; Fedkiw, Stam and Jensen
-// 2001, "Visual simulation of smoke", Eq. 8 with their α, β exchanged to name
-// the physical coefficients): density ρ = ρ0 (1 − β (T − T_amb) + α c), so the
-// buoyant acceleration is f = g (α c − β (T − T_amb)): hot fluid rises, dense
-// fluid sinks. Adds Δt·f to every free face, from the mean of its two cells.
+// Boussinesq approximation ([Bridson15] §6.2; [Fedkiw01] eq. 8 with its α, β
+// exchanged to name the physical coefficients): density
+// ρ = ρ0 (1 − β (T − T_amb) + α c), so the buoyant acceleration is
+// f = g (α c − β (T − T_amb)): hot fluid rises, dense fluid sinks. Adds Δt·f
+// to every free face, from the mean of its two cells.
 void addBuoyancy(FluidState& state, const FluidDomain& domain, const SimDesc& desc, double dt);
 
 class SceneSources {

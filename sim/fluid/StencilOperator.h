@@ -1,7 +1,7 @@
 // A symmetric seven-point operator on a cell lattice, matrix-free:
 //   (A x)_c = diag_c · x_c − Σ_{n coupled to c} w_axis(c,n) · x_n
 // for the unknowns; other cells (solids, held samples) map to 0. Both the
-// pressure Poisson matrix (Bridson 2nd ed. §5.3) and the backward-Euler
+// pressure Poisson matrix ([Bridson15] §5.3) and the backward-Euler
 // diffusion matrix (I + Δt·D·L) have this form; Dirichlet neighbours (open
 // boundaries, held samples) add to diag_c without a coupling.
 #pragma once
@@ -159,7 +159,7 @@ double sumOverSlices(const SevenPointOperator& op, const Body& body) {
 
 // The pressure operator Σ_n (p_c − p_n)/h² over fluid cells (active != 0):
 // solid neighbours and closed walls are Neumann (no term), open faces are
-// Dirichlet p = 0 (Bridson 2nd ed. §5.3, Eq. 5.14 generalised to 3D).
+// Dirichlet p = 0 ([Bridson15] §5.3, eq. 5.14 generalised to 3D).
 SevenPointOperator poissonOperator(glm::ivec3 size, glm::dvec3 h, const std::vector<std::uint8_t>& active,
                                    const bool openFaces[6]);
 

@@ -10,9 +10,7 @@
 // Run as a wavefront — stage q on slice t − q at step t — every update
 // still reads exactly the values it would have read there, so the result is
 // the same bit for bit, but a slice's data is still in cache when the later
-// stages reach it (temporal blocking; Wellein et al. 2009, "Efficient
-// temporal blocking for stencil computations by multicore-aware wavefront
-// parallelization").
+// stages reach it (temporal blocking; [Wellein09]).
 //
 // In parallel the slices are cut into chunks of at least 16 and 2·stages
 // slices; where that leaves fewer chunks than threads, the stages run one

@@ -3,10 +3,9 @@
 //   n − 1 = (n0 − 1) · (p / p0) · (T0 / T).
 // Reference state (SimDesc defaults): n0 − 1 = 2.93e-4 for dry air at
 // T0 = 273.15 K and p0 = 101325 Pa in visible light (≈ 2.926e-4 at 589 nm,
-// Ciddor 1996, "Refractive index of air: new equations for the visible and
-// near infrared", Appl. Opt. 35, Eq. 1–2 evaluated at 0 °C). The pressure
-// is the ambient one: the dynamic pressure of the flow is far too small
-// (≈ ρu²/2 ≈ 0.1 Pa) to matter beside the temperature term.
+// [Ciddor96] eqs. 1–2 evaluated at 0 °C). The pressure is the ambient one:
+// the dynamic pressure of the flow is far too small (≈ ρu²/2 ≈ 0.1 Pa) to
+// matter beside the temperature term.
 #pragma once
 
 namespace eikon::sim {

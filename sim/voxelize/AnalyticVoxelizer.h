@@ -1,6 +1,6 @@
 // Analytic shapes (spheres, boxes) → optical fields on the scene grid.
 //
-// Follows Sun et al. 2008, §4.1: fractional coverage per voxel from
+// Follows [Sun08] §4.1: fractional coverage per voxel from
 // supersampling (s³ samples, 4³ by default, only in voxels the surface
 // crosses); the objects are composited by coverage (Compositor.h).
 #pragma once

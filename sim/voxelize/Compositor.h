@@ -1,5 +1,5 @@
-// Scene objects composited over the medium, in list order by coverage (Sun
-// et al. 2008, §4.1: fractional coverage → index): for a cell an object
+// Scene objects composited over the medium, in list order by coverage
+// ([Sun08] §4.1: fractional coverage → index): for a cell an object
 // covers by f, each property p (n, κ, σs, g) becomes f·p_object + (1 − f)·p.
 // Spheres and boxes are covered analytically (AnalyticVoxelizer); meshes
 // and water bring their coverage grids (MeshCoverage). The Gaussian

@@ -1,7 +1,7 @@
 // The fraction of every grid cell inside a closed triangle mesh, kept from
 // frame to frame so that only the band the mesh moved through is redone.
 //
-// Sun et al. 2008, §4.1, rasterise the mesh at 4× resolution and average
+// Sun et al. [Sun08] §4.1 rasterise the mesh at 4× resolution and average
 // 4³ samples per voxel wherever a voxel and its neighbours disagree. Here a
 // narrow-band signed distance φ on cubes of the grid's smallest edge comes
 // from bandSignedDistance (BandDistance.h) for the cells being redone only:

@@ -5,15 +5,15 @@
 // Rows are the lines {(x, j, k) : x ∈ ℝ} for integers j, k. Each triangle is
 // binned onto the rows its y–z bounding box covers; a row crosses a triangle
 // where its point (j, k) lies inside the triangle's y–z projection. That
-// test is made watertight as in rasterisers and Woop et al. 2013 ("Watertight
-// ray/triangle intersection"): each edge's function is evaluated with its two
-// vertices in one fixed order (by index), so the two triangles sharing an
-// edge see exactly opposite values; a point exactly on an edge or vertex is
-// decided by simulation of simplicity (Edelsbrunner & Mücke 1990), as if it
-// were moved to (j + ε, k + ε²). Each triangle then either holds the moved
-// point or not, consistently with its neighbours, so a row through vertices
-// or along edges crosses a closed mesh an even number of times and counts a
-// shared edge once, whatever the mesh's winding.
+// test is made watertight as in rasterisers and [Woop13]: each edge's
+// function is evaluated with its two vertices in one fixed order (by index),
+// so the two triangles sharing an edge see exactly opposite values; a point
+// exactly on an edge or vertex is decided by simulation of simplicity
+// ([Edelsbrunner90]), as if it were moved to (j + ε, k + ε²). Each triangle
+// then either holds the moved point or not, consistently with its
+// neighbours, so a row through vertices or along edges crosses a closed mesh
+// an even number of times and counts a shared edge once, whatever the mesh's
+// winding.
 #pragma once
 
 #include <glm/vec2.hpp>

@@ -1,4 +1,4 @@
-// Volume painting (Sun et al. 2008, §6.2.1): brushes, each a fixed pattern
+// Volume painting ([Sun08] §6.2.1): brushes, each a fixed pattern
 // of material, dragged through the volume; the pattern, scaled to the brush
 // radius and turned to follow the stroke, is added to δn, κ and σs.
 //

@@ -27,7 +27,7 @@ ObjectDesc sphere(double radius, double index) {
 }
 
 // Σ coverage · h³ against the analytic volume: 4³ supersampling at 64³
-// should be well within 1% (Sun et al. 2008, §4.1, use 4³).
+// should be well within 1% ([Sun08] §4.1 uses 4³).
 TEST(AnalyticVoxelizer, SphereVolumeWithinOnePercent) {
     const Scene scene = sceneWith(sphere(0.6, 1.5), 64);
     const FieldSet fields = voxelizeScene(scene);

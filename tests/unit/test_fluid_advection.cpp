@@ -1,4 +1,4 @@
-// MacCormack advection with the extrema limiter (Selle et al. 2008).
+// MacCormack advection with the extrema limiter ([Selle08]).
 #include "sim/fluid/Advection.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Pressure projection and its multigrid-preconditioned CG (McAdams et al. 2010).
+// Pressure projection and its multigrid-preconditioned CG ([McAdams10]).
 #include "sim/fluid/PressureSolver.h"
 
 #include "sim/fluid/ParallelOps.h"

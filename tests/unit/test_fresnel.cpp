@@ -1,5 +1,5 @@
 // shaders/common/fresnel.glsl compiled as C++: the Fresnel equations' known
-// values (Born and Wolf §1.5.2).
+// values ([Born99] §1.5.2).
 #include "shaders/common/cpp_shim.h"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@ namespace {
 
 // Air at 1 atm: n − 1 ≈ 2.78e-4 at 15 °C and ≈ 2.40e-4 at 60 °C in the
 // visible (Gladstone–Dale from 2.93e-4 at 0 °C; the 15 °C value agrees with
-// Ciddor 1996 for standard air near 550 nm, 2.77e-4 to 2.78e-4). Tolerance 0.5%.
+// [Ciddor96] for standard air near 550 nm, 2.77e-4 to 2.78e-4). Tolerance 0.5%.
 TEST(Optics, AirIndexByGladstoneDale) {
     const GladstoneDale air;
     EXPECT_NEAR(air.refractivityAt(288.15, 101325.0), 2.78e-4, 0.005 * 2.78e-4);
@@ -22,7 +22,7 @@ TEST(Optics, AirIndexByGladstoneDale) {
     EXPECT_NEAR(OpticalModel(desc).index(288.15, 0.0), 1.000278, 2e-6);
 }
 
-// Sucrose solutions at 20 °C (ICUMSA / CRC Handbook tables): index and
+// Sucrose solutions at 20 °C ([ICUMSA] / [CRC] tables): index and
 // density of 20%, 40% and 60% w/w. With water (1.3330, 998.2 kg/m³) as
 // liquid A and 60% syrup (1.4418, 1286.5 kg/m³) as liquid B, a w% solution is
 // the volume fraction φ = (w·ρ_w) / (60·ρ_60) of syrup (sucrose per volume

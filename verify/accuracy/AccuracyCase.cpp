@@ -73,7 +73,7 @@ std::vector<RunSettings> standardSweep(bool quick, const SweepKnobs& knobs) {
         struct Tolerance {
             double epsilon, epsilonPrime, cap;
         };
-        // The default; Sun et al.'s ε = 0.005, ε′ = 0.02 of a unit range with an
+        // The default; [Sun08]'s ε = 0.005, ε′ = 0.02 of a unit range with an
         // 8-voxel cap (0.01, 0.04 of a glass sphere's); a capped middle tier; tighter.
         for (Tolerance t : {Tolerance{0.002, 0.002, 8}, Tolerance{0.01, 0.04, 8}, Tolerance{0.002, 0.008, 4},
                             Tolerance{0.0005, 0.0005, 8}}) {

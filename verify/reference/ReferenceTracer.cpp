@@ -11,7 +11,7 @@ namespace eikon::reference {
 
 namespace {
 
-// Dormand–Prince 5(4) tableau (Hairer, Nørsett and Wanner, Solving ODEs I, Table 5.2).
+// Dormand–Prince 5(4) tableau ([Hairer93] Table 5.2).
 constexpr double a21 = 1.0 / 5;
 constexpr double a31 = 3.0 / 40, a32 = 9.0 / 40;
 constexpr double a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;

@@ -1,7 +1,7 @@
 // Ground truth for the photon tracer: the ray equation d/ds(n dx/ds) = ∇n as
-// the system dx/ds = v/n, dv/ds = ∇n (v = n·dx/ds; Sun et al. 2008 §3),
+// the system dx/ds = v/n, dv/ds = ∇n (v = n·dx/ds; [Sun08] §3),
 // integrated in double precision by the embedded Dormand–Prince 5(4) pair
-// (Dormand and Prince 1980) with step-size control to a tight tolerance, on
+// ([Dormand80]) with step-size control to a tight tolerance, on
 // closed-form fields (IndexField). For accuracy reports and tests only: it is
 // never on the rendering path.
 #pragma once
