@@ -14,6 +14,7 @@
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].map.z)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
+//   EIKON_SHARP_SURFACES   1: the scene has sharp spheres or boxes (common/sharp_surface_blocks.glsl)
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
 layout(local_size_x = 64) in;
@@ -27,6 +28,8 @@ layout(local_size_x = 64) in;
 #include "common/receiver_blocks.glsl"
 #include "common/straight_flight.glsl"
 #include "common/step_size.glsl"
+#include "common/fresnel.glsl"
+#include "common/sharp_surfaces.glsl"
 
 #ifndef EIKON_INTEGRATOR
 #define EIKON_INTEGRATOR 1
@@ -49,6 +52,9 @@ layout(local_size_x = 64) in;
 #ifndef EIKON_BARE_MARCH
 #define EIKON_BARE_MARCH 0
 #endif
+#ifndef EIKON_SHARP_SURFACES
+#define EIKON_SHARP_SURFACES 0
+#endif
 #ifndef EIKON_RECORD_PATHS
 #define EIKON_RECORD_PATHS 0
 #endif
@@ -61,12 +67,17 @@ layout(local_size_x = 64) in;
 
 uniform vec3 dispersion;  // per-channel scale of δn
 float channel_scale = 1.0f;  // this photon's scale (dispersion)
+float sharp_offset = 0.0f;   // δn the sharp objects the photon is inside add to the graded field
 
 // (∇n, n) for this photon's channel; used by the integrators.
 vec4 field_at(vec3 x) {
     vec4 sample_ = sample_gradient_and_delta(x);
-    return vec4(channel_scale * sample_.xyz, reference_index() + channel_scale * sample_.w);
+    return vec4(channel_scale * sample_.xyz, reference_index() + channel_scale * (sample_.w + sharp_offset));
 }
+
+#if EIKON_SHARP_SURFACES
+#include "common/sharp_surface_blocks.glsl"
+#endif
 
 #include "common/integrators.glsl"
 
@@ -100,6 +111,7 @@ layout(std430, binding = kPhotonStats) buffer PhotonStats {
     uint step_tallies[4];     // low word, high word, max invariant error bits
     uint deposit_tallies[4];  // low word, high word
     float invariant_sum[4];   // x: sum over steps of the relative invariant error; yzw unused, as in C++
+    uint surface_tallies[4];  // events at sharp surfaces: reflected, transmitted
 };
 
 #if EIKON_RECORD_PATHS > 0
@@ -125,6 +137,7 @@ shared uint group_steps;
 shared uint group_max_invariant_bits;
 shared uint group_deposits;
 shared float group_invariant_sum;
+shared uint group_surface_events[2];  // reflected, transmitted
 
 // Adds to a 64-bit counter held as two words, carrying into the high word.
 void add_wide_power(uint low_word, uint value) {
@@ -315,6 +328,54 @@ void integrate(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) fie
 #endif
 }
 
+#if EIKON_SHARP_SURFACES
+uint inside_mask = 0u;     // the sharp surfaces the photon is inside (common/sharp_surface_blocks.glsl)
+uint surface_events = 0u;  // this photon's crossings so far: its random dimensions there
+
+// Where a step ended on sharp surface k: Snell refraction into the index on
+// the other side, or reflection with the unpolarised Fresnel probability
+// (Russian roulette: the photon keeps its power either way, so the split is
+// unbiased) and always under total internal reflection. The indices on
+// either side are the graded field at the surface plus each side's offset.
+void cross_sharp_surface(uint k, uint photon, INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field) {
+    vec4 shape_a = sharp_surfaces[k].shape_a;
+    vec4 shape_b = sharp_surfaces[k].shape_b;
+    x = onto_surface(shape_a, shape_b, x);
+    x_lost = vec3(0.0f);
+    vec3 d = normalize(v);
+    vec3 outward = surface_normal(shape_a, shape_b, x);
+    vec3 facing = dot(d, outward) < 0.0f ? outward : -outward;
+    uint beyond_mask = inside_mask ^ (1u << k);
+    float graded = sample_gradient_and_delta(x).w;
+    float n_here = reference_index() + channel_scale * (graded + sharp_offset);
+    float beyond_offset = sharp_index_offset(beyond_mask);
+    float n_beyond = reference_index() + channel_scale * (graded + beyond_offset);
+    float cos_i = -dot(d, facing);
+    float reflectance = fresnel_reflectance(cos_i, n_here, n_beyond);
+    bool fresnel = sharp_surfaces[k].optics.y > 0.5f;
+    bool reflects = reflectance >= 1.0f ||
+                    (fresnel && random_uniform(seed, photon, 64u + surface_events) < reflectance);
+    ++surface_events;
+    if (reflects) {
+        d = mirrored_direction(d, facing);
+        atomicAdd(group_surface_events[0], 1u);
+    } else {
+        d = refracted_direction(d, facing, n_here, n_beyond);
+        inside_mask = beyond_mask;
+        sharp_offset = beyond_offset;
+        atomicAdd(group_surface_events[1], 1u);
+    }
+    field = field_at(x);
+    v = field.w * d;
+}
+
+// The photon's sharp surfaces at x, when it enters the grid or starts there.
+void enter_sharp_region(vec3 x) {
+    inside_mask = inside_mask_at(x);
+    sharp_offset = sharp_index_offset(inside_mask);
+}
+#endif
+
 void trace_photon(uint photon) {
     Emitter emitter = emitters[emitter_of(photon)];
     vec2 u = emission_sample(emitter, photon);
@@ -347,6 +408,9 @@ void trace_photon(uint photon) {
     uint bounces = 0u;
     float cutoff = power_cutoff * max(power.r, max(power.g, power.b));
     vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
+#if EIKON_SHARP_SURFACES
+    if (grid_contains(x)) enter_sharp_region(x);
+#endif
     vec4 field = grid_contains(x) ? field_at(x) : vec4(0.0f, 0.0f, 0.0f, reference_index());
     vec3 v = field.w * direction;  // |v| = n where the photon starts, inside the grid or out
     uint steps = 0u;
@@ -376,6 +440,9 @@ void trace_photon(uint photon) {
             x = grid_entry_point(x, d, flight);
             x_lost = vec3(0.0f);
             if (!grid_contains(x)) continue;
+#if EIKON_SHARP_SURFACES
+            enter_sharp_region(x);
+#endif
             // Keep |v| = n at entry so the invariant starts exact.
             field = field_at(x);
             v = field.w * d;
@@ -387,6 +454,12 @@ void trace_photon(uint photon) {
             break;
         }
         float ds = next_step(x, v);
+#if EIKON_SHARP_SURFACES
+        // A step never crosses a sharp surface: it ends there, and the
+        // crossing is resolved before the next one.
+        SurfaceCrossing crossing = nearest_surface_crossing(x, normalize(v), inside_mask, ds, 1e-4f * grid.voxel_size.x);
+        ds = crossing.distance;
+#endif
         vec3 start = x;
         integrate(x, x_lost, v, field, ds);
         ++steps;
@@ -411,6 +484,9 @@ void trace_photon(uint photon) {
             if (land_on_receiver(hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
             break;
         }
+#endif
+#if EIKON_SHARP_SURFACES
+        if (crossing.surface >= 0) cross_sharp_surface(uint(crossing.surface), photon, x, x_lost, v, field);
 #endif
         record_vertex(photon, vertex++, x, power);
         if (max(power.r, max(power.g, power.b)) < cutoff) {
@@ -441,6 +517,8 @@ void flush_group_tallies() {
     uint deposits_before = atomicAdd(deposit_tallies[0], group_deposits);
     if (deposits_before + group_deposits < deposits_before) atomicAdd(deposit_tallies[1], 1u);
     atomicAdd(invariant_sum[0], group_invariant_sum);
+    atomicAdd(surface_tallies[0], group_surface_events[0]);
+    atomicAdd(surface_tallies[1], group_surface_events[1]);
 }
 
 void main() {
@@ -451,6 +529,8 @@ void main() {
         group_max_invariant_bits = 0u;
         group_deposits = 0u;
         group_invariant_sum = 0.0f;
+        group_surface_events[0] = 0u;
+        group_surface_events[1] = 0u;
     }
     barrier();
     uint id = gl_GlobalInvocationID.x;

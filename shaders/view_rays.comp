@@ -11,11 +11,15 @@
 // transmittance, and at interfaces the environment reflected about ∇n/|∇n|
 // weighted by the Fresnel term (total internal reflection is left to the ray
 // equation). A receiver it meets shows albedo/π × its photon irradiance; a
-// ray that escapes sees the environment.
+// ray that escapes sees the environment. At a sharp surface
+// (common/sharp_surfaces.glsl) a step ends exactly there and the ray splits
+// into its Fresnel-weighted reflection and refraction, both traced, until
+// `surface_depth` surface events; past that it follows the stronger branch.
 //
 // Program options: EIKON_HAS_EXTINCTION, EIKON_HAS_SCATTERING,
 // EIKON_HAS_ANISOTROPY, EIKON_STEP_STRUCTURE (1: large steps through empty
 // nodes), EIKON_FRESNEL, EIKON_ENVIRONMENT (layout::EnvironmentKind),
+// EIKON_SHARP_SURFACES (1: the scene has sharp spheres or boxes),
 // EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -28,11 +32,23 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/receiver.glsl"
 #include "common/receiver_blocks.glsl"
 #include "common/straight_flight.glsl"
+#include "common/sharp_surfaces.glsl"
+
+#ifndef EIKON_SHARP_SURFACES
+#define EIKON_SHARP_SURFACES 0
+#endif
+
+float sharp_offset = 0.0f;  // δn the sharp objects the ray is inside add to the graded field
 
 vec4 field_at(vec3 x) {
     vec4 sample_ = sample_gradient_and_delta(x);
-    return vec4(sample_.xyz, reference_index() + sample_.w);
+    return vec4(sample_.xyz, reference_index() + sample_.w + sharp_offset);
 }
+
+#if EIKON_SHARP_SURFACES
+#include "common/sharp_surface_blocks.glsl"
+uniform uint surface_depth;  // surface events that split a ray in two; at most MAX_PENDING
+#endif
 
 #include "common/integrators.glsl"
 
@@ -151,70 +167,173 @@ float fresnel_share(vec3 start, vec3 end, vec3 d, float n_start, vec3 gradient, 
 #endif
 }
 
+// One branch of a camera ray: where it is, where it goes (v = n·dx/ds), what
+// fraction of the pixel's radiance it carries, the sharp surfaces it is
+// inside and how many surface events it has met.
+struct ViewRay {
+    vec3 x;
+    vec3 v;
+    vec3 throughput;
+    uint inside_mask;
+    uint depth;
+};
+
+const int MAX_PENDING = 8;
+ViewRay pending[MAX_PENDING];  // branches split off and not yet traced (depth first)
+int pending_count = 0;
+
+#if EIKON_SHARP_SURFACES
+// Where a step ended on sharp surface k: the branch goes on refracted with
+// (1 − R) of its throughput and, while it has met fewer than surface_depth
+// events, the reflection with R is traced as well; past that it follows the
+// stronger of the two. Total internal reflection keeps all of it.
+void split_at_sharp_surface(uint k, INOUT(ViewRay) ray) {
+    vec4 shape_a = sharp_surfaces[k].shape_a;
+    vec4 shape_b = sharp_surfaces[k].shape_b;
+    ray.x = onto_surface(shape_a, shape_b, ray.x);
+    vec3 d = normalize(ray.v);
+    vec3 outward = surface_normal(shape_a, shape_b, ray.x);
+    vec3 facing = dot(d, outward) < 0.0f ? outward : -outward;
+    uint beyond_mask = ray.inside_mask ^ (1u << k);
+    float graded = reference_index() + sample_gradient_and_delta(ray.x).w;
+    float n_here = graded + sharp_index_offset(ray.inside_mask);
+    float n_beyond = graded + sharp_index_offset(beyond_mask);
+    float reflectance = fresnel_reflectance(-dot(d, facing), n_here, n_beyond);
+    bool fresnel = sharp_surfaces[k].optics.y > 0.5f;
+    ++ray.depth;
+    if (reflectance >= 1.0f) {
+        ray.v = n_here * mirrored_direction(d, facing);
+        return;
+    }
+    if (!fresnel) reflectance = 0.0f;
+    ViewRay mirrored = ray;
+    mirrored.v = n_here * mirrored_direction(d, facing);
+    mirrored.throughput = ray.throughput * reflectance;
+    ray.v = n_beyond * refracted_direction(d, facing, n_here, n_beyond);
+    ray.inside_mask = beyond_mask;
+    ray.throughput *= 1.0f - reflectance;
+    if (reflectance <= 0.0f) return;
+    if (ray.depth <= surface_depth && pending_count < MAX_PENDING) {
+        pending[pending_count++] = mirrored;
+    } else if (reflectance > 0.5f) {
+        mirrored.throughput = ray.throughput + mirrored.throughput;  // the stronger branch carries the whole
+        ray = mirrored;
+    } else {
+        ray.throughput += mirrored.throughput;
+    }
+}
+#endif
+
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, camera.image.xy))) return;
     vec2 ndc = (vec2(pixel) + 0.5f) / vec2(camera.image.xy) * 2.0f - 1.0f;
     vec3 direction = normalize(camera.forward.xyz + ndc.x * camera.position.w * camera.forward.w * camera.right.xyz -
                                ndc.y * camera.position.w * camera.up.xyz);
-    vec3 x = camera.position.xyz;
-    vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
-    vec3 v = (reference_index() + (grid_contains(x) ? sample_gradient_and_delta(x).w : 0.0f)) * direction;
+    ViewRay ray;
+    ray.x = camera.position.xyz;
+    ray.inside_mask = 0u;
+#if EIKON_SHARP_SURFACES
+    if (grid_contains(ray.x)) ray.inside_mask = inside_mask_at(ray.x);
+    sharp_offset = sharp_index_offset(ray.inside_mask);
+#endif
+    ray.v = (grid_contains(ray.x) ? field_at(ray.x).w : reference_index()) * direction;
+    ray.throughput = vec3(1.0f);
+    ray.depth = 0u;
     vec3 radiance = vec3(0.0f);
-    vec3 throughput = vec3(1.0f);
     uint steps = 0u;
     float exit_kind = 0.0f;
+    vec3 exit_direction = direction;
+    bool first_branch = true;  // the exit recorded for tests is that of the branch traced first
 
     for (;;) {
-        if (!grid_contains(x)) {
+        vec3 x = ray.x;
+        vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
+        vec3 v = ray.v;
+        float branch_exit = 0.0f;
+        for (;;) {
+            if (!grid_contains(x)) {
+                vec3 d = normalize(v);
+                StraightFlight flight = fly_straight(x, d);
+                if (flight.hit.receiver >= 0) {
+                    radiance += ray.throughput * receiver_radiance(flight.hit);
+                    branch_exit = 2.0f;
+                    break;
+                }
+                if (!flight.enters_grid) {
+                    radiance += ray.throughput * environment_radiance(x, d);
+                    branch_exit = 1.0f;
+                    break;
+                }
+                x = grid_entry_point(x, d, flight);
+                x_lost = vec3(0.0f);
+                if (grid_contains(x)) {
+#if EIKON_SHARP_SURFACES
+                    ray.inside_mask = inside_mask_at(x);
+                    sharp_offset = sharp_index_offset(ray.inside_mask);
+#endif
+                    v = field_at(x).w * d;
+                }
+                continue;
+            }
+            if (steps >= max_steps) break;
+            vec4 field = field_at(x);
+            float n_start = field.w;
+            vec3 gradient = field.xyz;
             vec3 d = normalize(v);
-            StraightFlight flight = fly_straight(x, d);
-            if (flight.hit.receiver >= 0) {
-                radiance += throughput * receiver_radiance(flight.hit);
-                exit_kind = 2.0f;
+            float ds = view_step(x, d);
+#if EIKON_SHARP_SURFACES
+            SurfaceCrossing crossing =
+                nearest_surface_crossing(x, d, ray.inside_mask, ds, 1e-4f * grid.voxel_size.x);
+            ds = crossing.distance;
+#endif
+            vec3 start = x;
+            integrate_leapfrog(x, x_lost, v, field, ds);
+            ++steps;
+            ReceiverHit hit = first_receiver_crossing(start, x);
+            float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
+            vec3 kappa = sample_extinction(start);
+            radiance += ray.throughput * in_scattered_radiance(start, d) * attenuated_track_length(kappa, travelled);
+            ray.throughput *= beer_lambert_transmittance(kappa, travelled);
+            vec3 normal = vec3(0.0f);
+            float reflection = fresnel_share(start, x, d, n_start, gradient, normal);
+            if (reflection > 0.0f) {
+                radiance += ray.throughput * reflection * environment_radiance(start, reflect(d, normal));
+                ray.throughput *= 1.0f - reflection;
+            }
+            if (hit.receiver >= 0) {
+                radiance += ray.throughput * receiver_radiance(hit);
+                branch_exit = 2.0f;
+                v = d;
                 break;
             }
-            if (!flight.enters_grid) {
-                radiance += throughput * environment_radiance(x, d);
-                exit_kind = 1.0f;
-                break;
+#if EIKON_SHARP_SURFACES
+            if (crossing.surface >= 0) {
+                ray.x = x;
+                ray.v = v;
+                split_at_sharp_surface(uint(crossing.surface), ray);
+                x = ray.x;
+                x_lost = vec3(0.0f);
+                v = ray.v;
+                sharp_offset = sharp_index_offset(ray.inside_mask);
             }
-            x = grid_entry_point(x, d, flight);
-            x_lost = vec3(0.0f);
-            if (grid_contains(x)) v = (reference_index() + sample_gradient_and_delta(x).w) * d;
-            continue;
+#endif
+            if (!grid_contains(x)) v = reference_index() * normalize(v);
         }
-        if (steps >= max_steps) break;
-        vec4 field = field_at(x);
-        float n_start = field.w;
-        vec3 gradient = field.xyz;
-        vec3 d = normalize(v);
-        float ds = view_step(x, d);
-        vec3 start = x;
-        integrate_leapfrog(x, x_lost, v, field, ds);
-        ++steps;
-        ReceiverHit hit = first_receiver_crossing(start, x);
-        float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
-        vec3 kappa = sample_extinction(start);
-        radiance += throughput * in_scattered_radiance(start, d) * attenuated_track_length(kappa, travelled);
-        throughput *= beer_lambert_transmittance(kappa, travelled);
-        vec3 normal = vec3(0.0f);
-        float reflection = fresnel_share(start, x, d, n_start, gradient, normal);
-        if (reflection > 0.0f) {
-            radiance += throughput * reflection * environment_radiance(start, reflect(d, normal));
-            throughput *= 1.0f - reflection;
+        if (first_branch) {
+            exit_kind = branch_exit;
+            exit_direction = normalize(v);
+            first_branch = false;
         }
-        if (hit.receiver >= 0) {
-            radiance += throughput * receiver_radiance(hit);
-            exit_kind = 2.0f;
-            v = d;
-            break;
-        }
-        if (!grid_contains(x)) v = reference_index() * normalize(v);
+        if (pending_count == 0) break;
+        ray = pending[--pending_count];
+#if EIKON_SHARP_SURFACES
+        sharp_offset = sharp_index_offset(ray.inside_mask);
+#endif
     }
     uint index = pixel.y * camera.image.x + pixel.x;
     hdr_radiance[index] = vec4(radiance, 1.0f);
 #if EIKON_RECORD_EXIT
-    view_exit[index] = vec4(normalize(v), exit_kind);
+    view_exit[index] = vec4(exit_direction, exit_kind);
 #endif
 }

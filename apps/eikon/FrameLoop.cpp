@@ -32,6 +32,7 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
               {"received", p.photonsReceived},
               {"cut_off", p.photonsCutOff},
               {"blocked", p.photonsBlocked}}},
+            {"surface_events", {{"reflected", p.surfaceReflections}, {"transmitted", p.surfaceTransmissions}}},
             {"emitted", p.photons},
             {"energy_balance_error", p.balanceError()},
             {"steps", p.steps},

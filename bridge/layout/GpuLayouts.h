@@ -42,7 +42,8 @@
     X(kRawFluence, 13)          /* buffer RawFluence: the photon pass's unsmoothed fluence, RGB per cell */                     \
     X(kRawFluenceDirection, 14) /* buffer RawFluenceDirection: and its unsmoothed direction sums */                             \
     X(kViewExit, 15)            /* buffer ViewExit { vec4 exit[]; }: per pixel, direction leaving the scene, w: how (tests) */  \
-    X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */
+    X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */          \
+    X(kSharpSurfaces, 17)       /* buffer SharpSurfaces { GpuSharpSurface surfaces[]; } */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into
@@ -149,15 +150,25 @@ struct GpuPhotonStats {
     glm::uvec4 steps;     // x: low 32 bits of the step count, y: high bits; z: max |v|−n invariant error (float bits)
     glm::uvec4 deposits;  // x: low 32 bits of the voxel deposits, y: high bits
     glm::vec4 invariant;  // x: sum over steps of the relative invariant error (float atomics; for the mean only)
+    glm::uvec4 surfaces;  // events at sharp surfaces: x reflected (Fresnel or total internal reflection), y transmitted
 };
 // GLSL declares every member as a scalar array (uint/float), so std430 packs
 // them with 4-byte alignment, as GLM's unaligned vectors do here.
 static_assert(alignof(glm::uvec4) == 4);
-static_assert(sizeof(GpuPhotonStats) == 232);
+static_assert(sizeof(GpuPhotonStats) == 248);
 static_assert(offsetof(GpuPhotonStats, photons) == 168);
 static_assert(offsetof(GpuPhotonStats, steps) == 184);
 static_assert(offsetof(GpuPhotonStats, deposits) == 200);
 static_assert(offsetof(GpuPhotonStats, invariant) == 216);
+static_assert(offsetof(GpuPhotonStats, surfaces) == 232);
+
+// A sharp sphere or box (shaders/common/sharp_surfaces.glsl), in scene order.
+struct GpuSharpSurface {
+    glm::vec4 shapeA;  // xyz: sphere centre or box min (m); w: kind (0 sphere, 1 box)
+    glm::vec4 shapeB;  // x: sphere radius (m); or xyz box max (m)
+    glm::vec4 optics;  // x: n_object − n_ref; y: 1 if Fresnel reflection is on; zw unused
+};
+static_assert(sizeof(GpuSharpSurface) == 48);
 
 
 // uniform CameraBlock (std140): a pinhole camera and the environment.

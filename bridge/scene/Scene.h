@@ -67,6 +67,9 @@ struct BoxShape {
     glm::dvec3 max{0.5};  // > min on every axis
 };
 
+// A ray keeps one bit per sharp surface it is inside.
+constexpr int kMaxSharpObjects = 32;
+
 struct ObjectDesc {
     enum class Kind { Sphere, Box, Mesh, Water } kind = Kind::Sphere;
     SphereShape sphere;  // valid when kind == Sphere
@@ -74,6 +77,17 @@ struct ObjectDesc {
     MeshObjectDesc mesh; // valid when kind == Mesh
     WaterDesc water;     // valid when kind == Water
     Material material;
+    // sharp: the boundary is exact — rays find where each step crosses it and
+    // refract (Snell) and reflect (Fresnel) there, and the inside is the
+    // object's index on top of the graded field; smooth: the object is
+    // voxelized into the index field and Gaussian-smoothed ([Sun08] §4.1).
+    // Spheres and boxes are sharp by default; meshes and water are smooth
+    // (their sharp surfaces are not built yet).
+    enum class Surface { Sharp, Smooth } surface = Surface::Sharp;
+    bool fresnel = true;  // sharp: reflect at the surface by Fresnel; false: transmit only (total internal reflection stays)
+
+    // Only spheres and boxes have sharp surfaces so far; a mesh or water is smooth whatever `surface` says.
+    bool isSharp() const { return surface == Surface::Sharp && (kind == Kind::Sphere || kind == Kind::Box); }
 };
 
 // A brush dragged along a path through the volume ([Sun08] §6.2.1, volume
@@ -148,6 +162,7 @@ struct RenderDesc {
     unsigned seed = 1;
     double exposureEv = 0.0;      // exposure compensation in stops
     double stepVoxels = 1.0;      // camera-ray step in media, in voxels, > 0 ([Sun08] §4.5: one voxel)
+    int surfaceDepth = 4;         // sharp-surface events that split a camera ray into reflection and refraction, 0..8
     EnvironmentDesc environment;  // `background` in the file sets a uniform environment's radiance
     bool writeHdr = true;         // also write the linear image as Radiance .hdr
 };

@@ -131,6 +131,14 @@ void readMedium(const JsonReader& node, Scene& scene) {
     if (auto profile = fields.optional("air_temperature_profile")) scene.airProfile = readAirProfile(*profile);
 }
 
+// `surface` (sharp | smooth) and `fresnel` of a sphere or box.
+void readSurface(const JsonObjectReader& fields, ObjectDesc& object) {
+    if (auto surface = fields.optional("surface"))
+        object.surface = surface->oneOf({"sharp", "smooth"}) == "sharp" ? ObjectDesc::Surface::Sharp
+                                                                        : ObjectDesc::Surface::Smooth;
+    if (auto fresnel = fields.optional("fresnel")) object.fresnel = fresnel->boolean();
+}
+
 ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
     ObjectDesc object;
     const std::string type = node.member("type").oneOf({"sphere", "box", "mesh", "water"});
@@ -141,21 +149,24 @@ ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
         });
     }
     if (type == "sphere") {
-        const auto fields =
-            node.object({"type", "center", "radius", "index", "extinction", "scattering", "anisotropy"});
+        const auto fields = node.object(
+            {"type", "center", "radius", "index", "extinction", "scattering", "anisotropy", "surface", "fresnel"});
         object.kind = ObjectDesc::Kind::Sphere;
         object.sphere.center = fields.member("center").vec3();
         object.sphere.radius = fields.member("radius").number(kPositive);
         object.material.index = fields.member("index").number(kPositive);
         readAttenuation(fields, object.material);
+        readSurface(fields, object);
     } else {
-        const auto fields = node.object({"type", "min", "max", "index", "extinction", "scattering", "anisotropy"});
+        const auto fields = node.object(
+            {"type", "min", "max", "index", "extinction", "scattering", "anisotropy", "surface", "fresnel"});
         object.kind = ObjectDesc::Kind::Box;
         object.box.min = fields.member("min").vec3();
         object.box.max = fields.member("max").vec3();
         requireNonEmpty(fields.member("min"), object.box.min, fields.member("max"), object.box.max);
         object.material.index = fields.member("index").number(kPositive);
         readAttenuation(fields, object.material);
+        readSurface(fields, object);
     }
     return object;
 }
@@ -271,7 +282,7 @@ EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& scene
 RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     RenderDesc render;
     const auto fields = node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background",
-                                     "environment", "write_hdr"});
+                                     "environment", "write_hdr", "surface_depth"});
     if (auto photons = fields.optional("photons")) render.photons = photons->integer(1, kMaxPhotons);
     if (auto width = fields.optional("width")) render.width = static_cast<int>(width->integer(1, kMaxImageEdge));
     if (auto height = fields.optional("height")) render.height = static_cast<int>(height->integer(1, kMaxImageEdge));
@@ -284,6 +295,8 @@ RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     }
     if (auto environment = fields.optional("environment")) render.environment = readEnvironment(*environment, sceneFolder);
     if (auto writeHdr = fields.optional("write_hdr")) render.writeHdr = writeHdr->boolean();
+    if (auto depth = fields.optional("surface_depth"))
+        render.surfaceDepth = static_cast<int>(depth->integer(0, 8));
     return render;
 }
 
@@ -563,6 +576,12 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const std::string sceneFolder = std::filesystem::path(sourceName).parent_path().string();
     scene.objects = readList<ObjectDesc>(fields, "objects",
                                          [&](const JsonReader& node) { return readObject(node, sceneFolder); });
+    const auto sharp = std::count_if(scene.objects.begin(), scene.objects.end(),
+                                     [](const ObjectDesc& object) { return object.isSharp(); });
+    if (sharp > kMaxSharpObjects)
+        fields.member("objects").fail("at most " + std::to_string(kMaxSharpObjects) +
+                                          " sharp spheres and boxes (set \"surface\": \"smooth\" on the others)",
+                                      std::to_string(sharp));
     scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
     scene.lights = readList<LightDesc>(fields, "lights", readLight);
     if (scene.lights.empty()) fields.member("lights").fail("an array of at least one light");

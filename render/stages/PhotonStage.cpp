@@ -55,7 +55,7 @@ unsigned defaultMaxSteps(const GridSpec& grid, double stepLength) {
 
 PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, ReceiverMaps& receivers,
                          PhotonProgramOptions options)
-    : receivers_(receivers), dispersion_(scene.tracer.dispersion) {
+    : receivers_(receivers), surfaces_(scene), dispersion_(scene.tracer.dispersion) {
     storeFluence_ = scene.tracer.storeFluence ? 2 : (fields.hasScattering() ? 1 : 0);
     if (options.bareMarch) storeFluence_ = 0;
     const TracerDesc& tracer = scene.tracer;
@@ -70,6 +70,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_BOUNCE", std::any_of(scene.receivers.begin(), scene.receivers.end(),
                                      [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
         {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
+        {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
         {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))}};
@@ -124,6 +125,10 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
         rawDirection_.bindStorage(layout::kRawFluenceDirection);
     }
     program_.use();
+    if (!surfaces_.empty()) {
+        surfaces_.bind();
+        glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
+    }
     glUniform1ui(program_.uniform("emitter_count"), emitterCount_);
     glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
     glUniform1ui(program_.uniform("seed"), settings.seed);
@@ -171,6 +176,8 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     stats.photonsBlocked = gpu.photons.w;
     stats.steps = wide(gpu.steps.x, gpu.steps.y);
     stats.voxelDeposits = wide(gpu.deposits.x, gpu.deposits.y);
+    stats.surfaceReflections = gpu.surfaces.x;
+    stats.surfaceTransmissions = gpu.surfaces.y;
     float maxError = 0.0f;
     std::memcpy(&maxError, &gpu.steps.z, sizeof maxError);
     stats.maxInvariantError = maxError;

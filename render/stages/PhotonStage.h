@@ -8,6 +8,7 @@
 #include "render/gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/ReceiverMaps.h"
+#include "render/stages/SharpSurfaceBuffer.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -41,6 +42,9 @@ struct PhotonStats {
     std::uint64_t photonsEscaped = 0, photonsReceived = 0, photonsCutOff = 0, photonsBlocked = 0;
     std::uint64_t steps = 0;
     std::uint64_t voxelDeposits = 0;
+    // Events at sharp surfaces: Fresnel reflections (and total internal
+    // reflections) and transmissions; photons keep their power at each.
+    std::uint64_t surfaceReflections = 0, surfaceTransmissions = 0;
     double maxInvariantError = 0.0;   // max over photons and steps of | |v| − n | / n
     double meanInvariantError = 0.0;  // mean over steps
 
@@ -74,6 +78,7 @@ public:
 
 private:
     ReceiverMaps& receivers_;
+    SharpSurfaceBuffer surfaces_;
     Rgb dispersion_{1.0};
     int storeFluence_ = 0;  // 0 none, 1 where σs > 0, 2 everywhere
     gl::Program program_;

@@ -55,7 +55,7 @@ layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render
 
 ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers,
                      bool hasStepStructure, bool recordExit)
-    : receivers_(receivers), render_(scene.render), width_(scene.render.width), height_(scene.render.height) {
+    : receivers_(receivers), surfaces_(scene), render_(scene.render), width_(scene.render.width), height_(scene.render.height) {
     const double voxel = fields.grid().smallestVoxelEdge();
     stepLength_ = scene.render.stepVoxels * voxel;
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
@@ -68,6 +68,7 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                            {"EIKON_HAS_ANISOTROPY", fields.hasAnisotropy() ? "1" : "0"},
                            {"EIKON_STEP_STRUCTURE", hasStepStructure ? "1" : "0"},
                            {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
+                           {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
                            {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"}});
     if (scene.render.environment.kind == EnvironmentDesc::Kind::Hdr) {
         const FloatImage* image = scene.render.environment.image.get();
@@ -99,6 +100,11 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     hdr_.bindStorage(layout::kHdrImage);
     if (exits_.id()) exits_.bindStorage(layout::kViewExit);
     program_.use();
+    if (!surfaces_.empty()) {
+        surfaces_.bind();
+        glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
+        glUniform1ui(program_.uniform("surface_depth"), static_cast<GLuint>(render_.surfaceDepth));
+    }
     glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
     glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength_));
     glUniform1ui(program_.uniform("max_steps"), maxSteps_);

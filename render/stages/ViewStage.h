@@ -7,6 +7,7 @@
 #include "render/gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/ReceiverMaps.h"
+#include "render/stages/SharpSurfaceBuffer.h"
 
 #include <glm/vec4.hpp>
 
@@ -40,6 +41,7 @@ public:
 
 private:
     const ReceiverMaps& receivers_;
+    SharpSurfaceBuffer surfaces_;
     RenderDesc render_;
     int width_, height_;
     double stepLength_;

@@ -36,6 +36,7 @@ namespace {
 #include "shaders/common/receiver.glsl"
 #include "shaders/common/fresnel.glsl"
 #include "shaders/common/step_size.glsl"
+#include "shaders/common/sharp_surfaces.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 

@@ -94,7 +94,9 @@ void paintObjects(const Scene& scene, const FieldViews& fields, const CoverageGr
                                                         : (*grids[o])[cell];
                     if (c <= 0.0) continue;
                     covered = true;
-                    m.index += c * (object.material.index - m.index);
+                    // A sharp object's index is not voxelized: the tracer applies it exactly
+                    // at its surface (render/stages/SharpSurfaces.h); its attenuation is.
+                    if (!object.isSharp()) m.index += c * (object.material.index - m.index);
                     m.extinction += c * (object.material.extinction - m.extinction);
                     m.scattering += c * (object.material.scattering - m.scattering);
                     m.anisotropy += c * (object.material.anisotropy - m.anisotropy);

@@ -1,6 +1,9 @@
 // Scene objects composited over the medium, in list order by coverage
 // ([Sun08] §4.1: fractional coverage → index): for a cell an object
-// covers by f, each property p (n, κ, σs, g) becomes f·p_object + (1 − f)·p.
+// covers by f, each property p (n, κ, σs, g) becomes f·p_object + (1 − f)·p
+// — except the index of a sharp object, which stays out of the field: the
+// tracer applies it exactly at the object's surface, so smoothing never
+// crosses it.
 // Spheres and boxes are covered analytically (AnalyticVoxelizer); meshes
 // and water bring their coverage grids (MeshCoverage). The Gaussian
 // smoothing of the index that follows runs on the GPU, for fields from any

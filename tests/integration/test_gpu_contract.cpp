@@ -59,6 +59,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"RawFluenceDirection", {layout::kRawFluenceDirection, 0, sizeof(float)}},
         {"ViewExit", {layout::kViewExit, 0, sizeof(glm::vec4)}},
         {"PhotonPathPower", {layout::kPhotonPathPower, 0, sizeof(glm::vec4)}},
+        {"SharpSurfaces", {layout::kSharpSurfaces, 0, sizeof(layout::GpuSharpSurface)}},
     };
     return rows;
 }
@@ -117,6 +118,7 @@ std::vector<Variant> productionVariants() {
           {"EIKON_DISPERSION", "1"},
           {"EIKON_STORE_FLUENCE", "1"},
           {"EIKON_BOUNCE", "1"},
+          {"EIKON_SHARP_SURFACES", "1"},
           {"EIKON_RECORD_PATHS", "8"}}},
         {"photon_trace.comp", {{"EIKON_BARE_MARCH", "1"}}},
         {"view_rays.comp", {}},
@@ -126,6 +128,7 @@ std::vector<Variant> productionVariants() {
           {"EIKON_HAS_ANISOTROPY", "1"},
           {"EIKON_STEP_STRUCTURE", "1"},
           {"EIKON_ENVIRONMENT", std::to_string(layout::kHdrEnvironment)},
+          {"EIKON_SHARP_SURFACES", "1"},
           {"EIKON_RECORD_EXIT", "1"}}},
     };
 }

@@ -18,9 +18,11 @@ Scene sceneWith(ObjectDesc object, int resolution) {
     return scene;
 }
 
+// Smooth objects: their index is voxelized (sharp ones keep it for the tracer).
 ObjectDesc sphere(double radius, double index) {
     ObjectDesc object;
     object.kind = ObjectDesc::Kind::Sphere;
+    object.surface = ObjectDesc::Surface::Smooth;
     object.sphere = {glm::dvec3(0.1, -0.05, 0.02), radius};
     object.material.index = index;
     return object;
@@ -40,6 +42,7 @@ TEST(AnalyticVoxelizer, SphereVolumeWithinOnePercent) {
 TEST(AnalyticVoxelizer, BoxCoverageIsExactForAlignedFaces) {
     ObjectDesc box;
     box.kind = ObjectDesc::Kind::Box;
+    box.surface = ObjectDesc::Surface::Smooth;
     box.box = {glm::dvec3(-0.5), glm::dvec3(0.5, 0.5, 0.25)};  // faces on voxel boundaries of an 8³ grid
     box.material.index = 2.0;
     box.material.extinction = Rgb(1.0, 2.0, 3.0);

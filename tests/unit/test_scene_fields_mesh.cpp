@@ -80,6 +80,7 @@ TEST(SceneFieldsMesh, ObjectsCompositeInListOrderWhateverTheirKind) {
     scene.objects[0].mesh.deformer = {};
     ObjectDesc sphere;
     sphere.kind = ObjectDesc::Kind::Sphere;
+    sphere.surface = ObjectDesc::Surface::Smooth;  // voxelized into the index, as the bar is
     sphere.sphere = {glm::dvec3(0.0), 0.05};
     sphere.material.index = 2.0;
     scene.objects.push_back(sphere);  // inside the bar, listed after it: it wins

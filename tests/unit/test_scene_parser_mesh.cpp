@@ -122,5 +122,31 @@ TEST(SceneParserMesh, BadValuesNameTheirJsonPath) {
     expectErrorAt(withSim, "frame_time", "sim.frame_time");
 }
 
+// Spheres and boxes are sharp unless they say smooth, with Fresnel on;
+// meshes and water are smooth and refuse "sharp" until it is built; at
+// most 32 sharp objects.
+TEST(SceneParserMesh, SurfaceKeys) {
+    json root = validScene();
+    root["objects"][0]["surface"] = "smooth";
+    root["objects"][1]["fresnel"] = false;
+    const Scene scene = parseScene(root, "test.json");
+    EXPECT_FALSE(scene.objects[0].isSharp());
+    EXPECT_TRUE(scene.objects[1].isSharp());
+    EXPECT_FALSE(scene.objects[1].fresnel);
+    EXPECT_TRUE(parseScene(validScene(), "test.json").objects[0].isSharp()) << "sharp by default";
+    EXPECT_FALSE(parseScene(sceneWithObject(meshObject()), "test.json").objects[0].isSharp());
+
+    root["objects"][0]["surface"] = "glassy";
+    expectErrorAt(root, "objects[0].surface", "\"sharp\"");
+    json mesh = meshObject();
+    mesh["surface"] = "sharp";
+    expectErrorAt(sceneWithObject(mesh), "objects[0].surface", "not built yet");
+    json many = validScene();
+    many["objects"] = json::array();
+    for (int k = 0; k < 33; ++k)
+        many["objects"].push_back({{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0.1}, {"index", 1.5}});
+    expectErrorAt(many, "objects", "at most 32 sharp");
+}
+
 }  // namespace
 }  // namespace eikon

@@ -1,9 +1,12 @@
-// shaders/common/step_size.glsl compiled as C++ (through cpp_shim.h): the
-// octree step reaches just past the far face of the node around x, within
-// [Δs_min, the node's cap].
+// shaders/common/step_size.glsl and sharp_surfaces.glsl compiled as C++
+// (through cpp_shim.h): the octree step reaches just past the far face of
+// the node around x, within [Δs_min, the node's cap]; sharp surfaces are
+// met where they are.
 #include "shaders/common/cpp_shim.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace eikon {
 namespace {
@@ -34,6 +37,41 @@ TEST(StepSize, OctreeStepIsClamped) {
     const vec3 d(1.0f, 0.0f, 0.0f);
     EXPECT_FLOAT_EQ(shader::octree_step(x, d, vec3(0.0f), voxel, 2.0f, 0.01f, 0.2f), 0.2f);
     EXPECT_FLOAT_EQ(shader::octree_step(x, d, vec3(0.0f), voxel, 0.0f, 0.08f, 1.0f), 0.08f);
+}
+
+// shaders/common/sharp_surfaces.glsl as C++: crossings from outside and
+// inside, the point put on the surface and its outward normal.
+TEST(SharpSurfaceMath, SphereAndBoxCrossings) {
+    using shader::vec4;
+    const vec4 sphereA(0.0f, 0.0f, 0.0f, 0.0f), sphereB(0.5f, 0.0f, 0.0f, 0.0f);
+    const vec3 down(0.0f, -1.0f, 0.0f);
+    EXPECT_NEAR(shader::surface_crossing(sphereA, sphereB, vec3(0.0f, 2.0f, 0.0f), down, false, 1e-6f), 1.5f, 1e-6f);
+    EXPECT_NEAR(shader::surface_crossing(sphereA, sphereB, vec3(0.0f), down, true, 1e-6f), 0.5f, 1e-6f);
+    EXPECT_EQ(shader::surface_crossing(sphereA, sphereB, vec3(1.0f, 2.0f, 0.0f), down, false, 1e-6f),
+              shader::EIKON_NO_CROSSING);
+    const vec3 on = shader::onto_surface(sphereA, sphereB, vec3(0.0f, 0.5001f, 0.0f));
+    EXPECT_NEAR(on.y, 0.5f, 1e-7f);
+    EXPECT_NEAR(shader::surface_normal(sphereA, sphereB, on).y, 1.0f, 1e-6f);
+
+    const vec4 boxA(-1.0f, -1.0f, -1.0f, 1.0f), boxB(1.0f, 0.0f, 1.0f, 0.0f);
+    EXPECT_TRUE(shader::inside_shape(boxA, boxB, vec3(0.0f, -0.5f, 0.0f)));
+    EXPECT_NEAR(shader::surface_crossing(boxA, boxB, vec3(0.2f, 1.0f, 0.0f), down, false, 1e-6f), 1.0f, 1e-6f);
+    EXPECT_NEAR(shader::surface_crossing(boxA, boxB, vec3(0.2f, -0.25f, 0.0f), down, true, 1e-6f), 0.75f, 1e-6f);
+    const vec3 n = shader::surface_normal(boxA, boxB, vec3(0.2f, 0.0f, 0.3f));
+    EXPECT_EQ(n, vec3(0.0f, 1.0f, 0.0f));
+}
+
+// Vector Snell: sin θ′ = sin θ / n going in; the mirror keeps the tangent.
+TEST(SharpSurfaceMath, RefractionObeysSnell) {
+    const float theta = 0.6f;
+    const vec3 d(std::sin(theta), -std::cos(theta), 0.0f);
+    const vec3 up(0.0f, 1.0f, 0.0f);
+    const vec3 t = shader::refracted_direction(d, up, 1.0f, 1.5f);
+    EXPECT_NEAR(t.x, std::sin(theta) / 1.5f, 1e-6f);
+    EXPECT_NEAR(glm::length(t), 1.0f, 1e-6f);
+    const vec3 m = shader::mirrored_direction(d, up);
+    EXPECT_NEAR(m.x, d.x, 1e-7f);
+    EXPECT_NEAR(m.y, -d.y, 1e-7f);
 }
 
 }  // namespace

@@ -1,0 +1,33 @@
+// The scene's sharp surfaces on the GPU (layout::GpuSharpSurface, read by
+// shaders/common/sharp_surface_blocks.glsl): every sphere and box whose
+// `surface` is sharp, in scene order, with the index offset its inside adds
+// to the graded field. Photons and camera rays refract and reflect there
+// exactly; the voxelized fields hold none of their index (sim/voxelize/Compositor.h).
+#pragma once
+
+#include "bridge/layout/GpuLayouts.h"
+#include "bridge/scene/Scene.h"
+#include "render/gl/GlObjects.h"
+
+#include <vector>
+
+namespace eikon::render {
+
+// The scene's sharp objects as surfaces (empty when it has none; at most
+// kMaxSharpObjects, which the scene parser checks).
+std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene);
+
+class SharpSurfaceBuffer {
+public:
+    explicit SharpSurfaceBuffer(const Scene& scene);
+
+    unsigned count() const { return static_cast<unsigned>(surfaces_.size()); }
+    bool empty() const { return surfaces_.empty(); }
+    void bind() const;
+
+private:
+    std::vector<layout::GpuSharpSurface> surfaces_;
+    gl::Buffer buffer_;
+};
+
+}  // namespace eikon::render

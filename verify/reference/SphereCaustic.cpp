@@ -1,0 +1,149 @@
+#include "verify/reference/SphereCaustic.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <thread>
+
+namespace eikon::reference {
+
+namespace {
+
+struct Ray {
+    glm::dvec3 origin;
+    glm::dvec3 direction;  // unit
+    double weight;         // W
+    bool insideSphere;
+};
+
+// Nearest t > tMin where origin + t·direction meets the sphere, or −1.
+double sphereHit(const Ray& ray, const glm::dvec3& centre, double radius, double tMin) {
+    const glm::dvec3 oc = ray.origin - centre;
+    const double b = glm::dot(oc, ray.direction);
+    const double c = glm::dot(oc, oc) - radius * radius;
+    const double discriminant = b * b - c;
+    if (discriminant < 0.0) return -1.0;
+    const double root = std::sqrt(discriminant);
+    const double near = -b - root, far = -b + root;
+    if (near > tMin) return near;
+    if (far > tMin) return far;
+    return -1.0;
+}
+
+// Unpolarised Fresnel reflectance from index ni into nt at incidence cos θi
+// ([Born99] §1.5.2); 1 beyond the critical angle.
+double reflectance(double cosI, double ni, double nt, double& cosT) {
+    const double eta = ni / nt;
+    const double sinT2 = eta * eta * std::max(0.0, 1.0 - cosI * cosI);
+    if (sinT2 >= 1.0) return 1.0;
+    cosT = std::sqrt(1.0 - sinT2);
+    const double rs = (ni * cosI - nt * cosT) / (ni * cosI + nt * cosT);
+    const double rp = (nt * cosI - ni * cosT) / (nt * cosI + ni * cosT);
+    return 0.5 * (rs * rs + rp * rp);
+}
+
+class Tracer {
+public:
+    Tracer(const SphereCausticSetup& setup, std::vector<double>& power) : s_(setup), power_(power) {}
+
+    // Follows a ray and the branches Fresnel splits off it (depth-first).
+    void trace(Ray ray, int crossings) {
+        for (;;) {
+            const double t = sphereHit(ray, s_.centre, s_.radius, 1e-9);
+            if (t < 0.0) {
+                if (!ray.insideSphere) land(ray);
+                return;
+            }
+            if (crossings >= s_.maxCrossings) return;
+            ++crossings;
+            const glm::dvec3 hit = ray.origin + t * ray.direction;
+            glm::dvec3 normal = (hit - s_.centre) / s_.radius;  // outward
+            if (ray.insideSphere) normal = -normal;              // facing the incoming ray
+            const double ni = ray.insideSphere ? s_.sphereIndex : s_.mediumIndex;
+            const double nt = ray.insideSphere ? s_.mediumIndex : s_.sphereIndex;
+            const double cosI = -glm::dot(ray.direction, normal);
+            double cosT = 0.0;
+            const double r = reflectance(cosI, ni, nt, cosT);
+            const glm::dvec3 mirrored = ray.direction + 2.0 * cosI * normal;
+            if (r >= 1.0) {  // total internal reflection
+                ray = {hit, mirrored, ray.weight, ray.insideSphere};
+                continue;
+            }
+            const double eta = ni / nt;
+            const glm::dvec3 refracted = eta * ray.direction + (eta * cosI - cosT) * normal;
+            if (s_.fresnel) trace({hit, mirrored, ray.weight * r, ray.insideSphere}, crossings);
+            const double kept = s_.fresnel ? 1.0 - r : 1.0;
+            ray = {hit, glm::normalize(refracted), ray.weight * kept, !ray.insideSphere};
+        }
+    }
+
+private:
+    void land(const Ray& ray) {
+        if (ray.direction.y >= 0.0) return;
+        const double t = (s_.receiverCentre.y - ray.origin.y) / ray.direction.y;
+        if (t <= 0.0) return;
+        const glm::dvec3 p = ray.origin + t * ray.direction;
+        const double u = (p.x - s_.receiverCentre.x) / s_.size + 0.5;
+        const double v = (p.z - s_.receiverCentre.z) / s_.size + 0.5;
+        if (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0) return;
+        const int i = std::min(static_cast<int>(u * s_.resolution), s_.resolution - 1);
+        const int j = std::min(static_cast<int>(v * s_.resolution), s_.resolution - 1);
+        power_[static_cast<std::size_t>(j) * s_.resolution + i] += ray.weight;
+    }
+
+    const SphereCausticSetup& s_;
+    std::vector<double>& power_;
+};
+
+}  // namespace
+
+IrradianceMap traceSphereCaustic(const SphereCausticSetup& setup) {
+    const std::size_t texels = static_cast<std::size_t>(setup.resolution) * setup.resolution;
+    // The cone from the light that holds the whole receiver square.
+    const double halfSize = 0.5 * setup.size;
+    double cosCone = 1.0;
+    for (double sx : {-1.0, 1.0})
+        for (double sz : {-1.0, 1.0}) {
+            const glm::dvec3 corner = setup.receiverCentre + glm::dvec3(sx * halfSize, 0.0, sz * halfSize);
+            cosCone = std::min(cosCone, glm::dot(glm::normalize(corner - setup.light), glm::dvec3(0.0, -1.0, 0.0)));
+        }
+    const double solidAngle = 2.0 * std::numbers::pi * (1.0 - cosCone);
+    const double weight = setup.power / (4.0 * std::numbers::pi) * solidAngle / static_cast<double>(setup.rays);
+
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::vector<double>> partial(threads, std::vector<double>(texels, 0.0));
+    std::vector<std::thread> workers;
+    for (unsigned w = 0; w < threads; ++w)
+        workers.emplace_back([&, w] {
+            std::mt19937_64 random(setup.seed * 0x9E3779B97F4A7C15ull + w);
+            std::uniform_real_distribution<double> uniform(0.0, 1.0);
+            Tracer tracer(setup, partial[w]);
+            const long long begin = setup.rays * w / threads, end = setup.rays * (w + 1) / threads;
+            for (long long k = begin; k < end; ++k) {
+                // Uniform in the cone about −y: cos θ uniform in [cosCone, 1].
+                const double cosTheta = 1.0 - uniform(random) * (1.0 - cosCone);
+                const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+                const double phi = 2.0 * std::numbers::pi * uniform(random);
+                const glm::dvec3 direction(sinTheta * std::cos(phi), -cosTheta, sinTheta * std::sin(phi));
+                tracer.trace({setup.light, direction, weight, false}, 0);
+            }
+        });
+    for (auto& worker : workers) worker.join();
+
+    IrradianceMap map{setup.resolution, setup.size, std::vector<double>(texels, 0.0)};
+    const double texelArea = (setup.size / setup.resolution) * (setup.size / setup.resolution);
+    for (const auto& part : partial)
+        for (std::size_t t = 0; t < texels; ++t) map.irradiance[t] += part[t] / texelArea;
+    return map;
+}
+
+double shadowRadius(const SphereCausticSetup& setup) {
+    const double h = setup.light.y - setup.receiverCentre.y;
+    const double d = glm::length(setup.centre - setup.light);
+    return h * std::tan(std::asin(setup.radius / d));
+}
+
+}  // namespace eikon::reference
