@@ -3,7 +3,7 @@
 // verify/reference/SphereCaustic — exact ray–sphere intersections, Snell and
 // Fresnel in double precision on the CPU, sharing no code with the renderer.
 // Both maps go through the receiver's 3×3 binomial filter (the renderer
-// applies it to every map; issue of its own), so the comparison measures the
+// applies it to every map), so the comparison measures the
 // model and the tracer. Tolerances: the shadow edge within one texel of the
 // closed form h·tan(asin(R/d)); relative L1 inside the caustic disk ≤ 10%;
 // the peak within 10%.
@@ -11,6 +11,7 @@
 #include "render/graph/FrameRenderer.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
+#include "verify/reference/ReceiverFilter.h"
 #include "verify/reference/SphereCaustic.h"
 
 #include <gtest/gtest.h>
@@ -23,27 +24,6 @@ namespace eikon {
 namespace {
 
 constexpr int kResolution = 192;
-
-// The 3×3 binomial kernel (1 2 1)ᵀ(1 2 1)/16 with the edge texels' weights
-// renormalised, as shaders/receiver_filter.comp applies it.
-std::vector<double> binomialFiltered(const std::vector<double>& map, int n) {
-    std::vector<double> out(map.size(), 0.0);
-    const double w[3] = {1.0, 2.0, 1.0};
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            double sum = 0.0, weight = 0.0;
-            for (int dj = -1; dj <= 1; ++dj)
-                for (int di = -1; di <= 1; ++di) {
-                    const int a = i + di, b = j + dj;
-                    if (a < 0 || b < 0 || a >= n || b >= n) continue;
-                    const double k = w[di + 1] * w[dj + 1];
-                    sum += k * map[static_cast<std::size_t>(b) * n + a];
-                    weight += k;
-                }
-            out[static_cast<std::size_t>(j) * n + i] = sum / weight;
-        }
-    return out;
-}
 
 double texelRadius(int i, int j, double size, int n) {
     const double u = ((i + 0.5) / n - 0.5) * size, v = ((j + 0.5) / n - 0.5) * size;
@@ -131,7 +111,7 @@ TEST(SharpCaustic, DefaultSceneMatchesTheExactSphereReference) {
     setup.resolution = kResolution;
     setup.rays = 8'000'000;
     const std::vector<double> unfiltered = reference::traceSphereCaustic(setup).irradiance;
-    const std::vector<double> exact = binomialFiltered(unfiltered, kResolution);
+    const std::vector<double> exact = reference::binomialFilter(unfiltered, kResolution);
     const double shadow = reference::shadowRadius(setup);
     const double texel = setup.size / kResolution;
 

@@ -2,6 +2,7 @@
 // point light on a plane and Beer–Lambert attenuation through a slab.
 #include "verify/accuracy/CaseScenes.h"
 #include "verify/accuracy/Cases.h"
+#include "verify/reference/ReceiverFilter.h"
 
 #include <glm/geometric.hpp>
 
@@ -12,26 +13,6 @@
 namespace eikon::accuracy {
 
 namespace {
-
-// The receiver filter's 3×3 binomial kernel (shaders/receiver_filter.comp),
-// applied to a closed-form map so that both sides are the same estimator.
-std::vector<double> binomialFilter(const std::vector<double>& map, int resolution) {
-    std::vector<double> out(map.size());
-    for (int j = 0; j < resolution; ++j)
-        for (int i = 0; i < resolution; ++i) {
-            double sum = 0.0, weights = 0.0;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int x = i + dx, y = j + dy;
-                    if (x < 0 || y < 0 || x >= resolution || y >= resolution) continue;
-                    const double w = (2 - std::abs(dx)) * (2 - std::abs(dy));
-                    sum += w * map[static_cast<std::size_t>(y * resolution + x)];
-                    weights += w;
-                }
-            out[static_cast<std::size_t>(j * resolution + i)] = sum / weights;
-        }
-    return out;
-}
 
 // Point light of intensity I = 1 W/sr, 1 m above the centre of a 1 m square
 // receiver (64² texels), in clear air on a 16³ grid. Truth: E = I·h/d³
@@ -73,7 +54,7 @@ public:
                     }
                 truth[static_cast<std::size_t>(j * kTexels + i)] = sum / 64.0;
             }
-        truth = binomialFilter(truth, kTexels);
+        truth = reference::binomialFilter(truth, kTexels);
         std::vector<double> relative;
         for (std::size_t t = 0; t < truth.size(); ++t) relative.push_back(trace.receiverMap[3 * t] / truth[t] - 1.0);
         Measurement m{name(), "RMS over texels of the relative irradiance error against E = I*h/d^3",
