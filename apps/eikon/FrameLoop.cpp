@@ -66,8 +66,8 @@ public:
         if (!result.hdr.empty())
             io::writeHdr(output_.framePath(frame).replace_extension(".hdr"), result.image.width, result.image.height,
                          result.hdr);
-        output_.appendReport(reportLine);
         if (exporter_.wantsFrame(frame)) exporter_.write(frame, exported, renderer);
+        output_.appendReport(reportLine);  // last: a frame's line means all its files are in place
     }
 
 private:

@@ -1,29 +1,41 @@
-// The output folder of a run: DIR/frames/frame_NNNNN.png and DIR/report.jsonl.
-// A folder that already holds files is refused unless `force`, which empties
-// it first, so the frames of two runs never mix.
+// The output folder of a run: DIR/frames/frame_NNNNN.png, DIR/report.jsonl
+// and whatever the exporters add. DIR/.eikon-run lists every file the run
+// wrote, kept up to date after each frame. A folder that already holds files
+// is refused — with `force`, one holding an earlier run is cleared of the
+// files its list names (nothing else is touched), so the frames of two runs
+// never mix and nothing eikon did not write is ever deleted; a folder without
+// that list is refused even with `force`.
 #pragma once
 
 #include <filesystem>
+#include <set>
 #include <string>
-#include <vector>
 
 namespace eikon::io {
 
 class OutputFolder {
 public:
-    // Throws InputError (exit code 2) when `root` is a non-empty folder and
-    // !force, or is a file.
+    // Throws InputError (exit code 2) when `root` is a file, holds files eikon
+    // did not write, or holds an earlier run and !force.
     OutputFolder(std::filesystem::path root, bool force);
+    ~OutputFolder();
 
     const std::filesystem::path& root() const { return root_; }
     std::filesystem::path framePath(int frame) const;
 
     // Appends one JSON line to report.jsonl, rewriting the file atomically so
-    // a reader never sees half a line.
+    // a reader never sees half a line, and brings the list of written files
+    // up to date.
     void appendReport(const std::string& jsonLine);
+    // Rewrites DIR/.eikon-run with every file now in the folder that was not
+    // there when the run began.
+    void recordWrittenFiles() const;
+
+    static constexpr const char* kManifestName = ".eikon-run";
 
 private:
     std::filesystem::path root_;
+    std::set<std::filesystem::path> before_;  // files left in the folder when the run began (relative)
     std::string report_;
 };
 

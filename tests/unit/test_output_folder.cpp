@@ -49,6 +49,46 @@ TEST_F(OutputFolderTest, ForceClearsEarlierRun) {
     EXPECT_FALSE(fs::exists(second.framePath(3)));
 }
 
+// --force clears only what the earlier run listed: files a user put beside
+// it stay, and a folder eikon never wrote is refused even with --force.
+TEST_F(OutputFolderTest, ForceRemovesOnlyWhatEikonWrote) {
+    {
+        OutputFolder first(root_, false);
+        writeFileAtomically(first.framePath(0), "old frame");
+        fs::create_directories(root_ / "vtk");
+        writeFileAtomically(root_ / "vtk" / "fields_00000.vti", "old export");
+        first.appendReport("{\"frame\":0}");
+    }
+    writeFileAtomically(root_ / "notes.txt", "the user's");
+    writeFileAtomically(root_ / "frames" / "mine.jpg", "the user's too");
+    OutputFolder second(root_, true);
+    EXPECT_FALSE(fs::exists(root_ / "frames" / "frame_00000.png"));
+    EXPECT_FALSE(fs::exists(root_ / "vtk")) << "emptied folders of the earlier run go too";
+    EXPECT_FALSE(fs::exists(root_ / "report.jsonl"));
+    EXPECT_EQ(readAll(root_ / "notes.txt"), "the user's");
+    EXPECT_EQ(readAll(root_ / "frames" / "mine.jpg"), "the user's too");
+    second.appendReport("{\"frame\":0}");
+    const std::string list = readAll(root_ / OutputFolder::kManifestName);
+    EXPECT_NE(list.find("report.jsonl"), std::string::npos);
+    EXPECT_EQ(list.find("notes.txt"), std::string::npos) << "the user's files are never listed as eikon's";
+}
+
+TEST_F(OutputFolderTest, RefusesAFolderEikonDidNotWriteEvenWithForce) {
+    fs::create_directories(root_ / "photos");
+    writeFileAtomically(root_ / "notes.txt", "keep");
+    writeFileAtomically(root_ / "photos" / "a.jpg", "keep");
+    for (bool force : {false, true}) {
+        try {
+            OutputFolder folder(root_, force);
+            ADD_FAILURE() << "accepted a folder eikon did not write";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find("eikon did not write"), std::string::npos) << error.what();
+        }
+    }
+    EXPECT_EQ(readAll(root_ / "notes.txt"), "keep");
+    EXPECT_EQ(readAll(root_ / "photos" / "a.jpg"), "keep");
+}
+
 TEST_F(OutputFolderTest, ReportAccumulatesWholeLines) {
     OutputFolder folder(root_, false);
     folder.appendReport("{\"frame\":0}");
