@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace eikon::sim {
@@ -30,10 +31,13 @@ struct CellBox {
         CellBox box;
         for (int axis = 0; axis < 3; ++axis) {
             if (!(a[axis] <= b[axis])) return {};  // an empty or non-finite range
-            const double first = std::ceil(std::max(a[axis], -1.0));
-            const double last = std::floor(std::min(b[axis], static_cast<double>(grid.resolution[axis])));
-            box.min[axis] = static_cast<int>(std::max(first, 0.0));
-            box.max[axis] = static_cast<int>(std::min(last + 1.0, static_cast<double>(grid.resolution[axis])));
+            // Clamped in double before the cast: a box far outside the grid
+            // (any finite placement) covers no cell, and no int overflows.
+            const double cells = static_cast<double>(grid.resolution[axis]);
+            const double first = std::ceil(std::clamp(a[axis], -1.0, cells));
+            const double last = std::floor(std::clamp(b[axis], -1.0, cells));
+            box.min[axis] = static_cast<int>(std::clamp(first, 0.0, cells));
+            box.max[axis] = static_cast<int>(std::clamp(last + 1.0, 0.0, cells));
         }
         return box;
     }

@@ -91,6 +91,18 @@ TEST(SceneFieldsMesh, ObjectsCompositeInListOrderWhateverTheirKind) {
     EXPECT_FLOAT_EQ(fields.fields().deltaIndex[grid.linearIndex(24, 10, 24)], 0.5f);  // the bar's
 }
 
+// Any finite placement works: a deforming mesh a million kilometres from the
+// grid covers no cell, frame after frame (its cell boxes once overflowed int).
+TEST(SceneFieldsMesh, MeshFarOutsideTheGridCoversNothing) {
+    for (double offset : {1e9, -1e9, 1e300}) {
+        Scene scene = twistingBarScene();
+        scene.objects[0].mesh.placement.translate = glm::dvec3(offset, 0.0, 0.0);
+        SceneFields fields(scene);
+        fields.advanceFrame();
+        for (float delta : fields.fields().deltaIndex) ASSERT_EQ(delta, 0.0f) << offset;
+    }
+}
+
 TEST(SceneFieldsMesh, WaterMovesWithSceneTime) {
     Scene scene;
     scene.grid.resolution = glm::ivec3(32, 16, 32);
