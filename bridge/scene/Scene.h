@@ -128,6 +128,9 @@ struct ReceiverDesc {
     double size = 2.0;           // metres, edge of the recorded square, > 0
     int resolution = 256;        // texels per edge, >= 1
     bool bounce = false;         // reflect photons diffusely (power × albedo) instead of stopping them
+    // How the map turns photon tallies into irradiance: the 3×3 binomial
+    // kernel (less noise, some blur), or each texel's own tally (unbiased).
+    enum class Filter { Binomial, None } filter = Filter::Binomial;
 };
 
 struct CameraDesc {

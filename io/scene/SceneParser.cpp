@@ -214,7 +214,7 @@ LightDesc readLight(const JsonReader& node) {
 ReceiverDesc readReceiver(const JsonReader& node) {
     ReceiverDesc receiver;
     node.member("type").oneOf({"plane"});
-    const auto fields = node.object({"type", "point", "normal", "albedo", "size", "resolution", "bounce"});
+    const auto fields = node.object({"type", "point", "normal", "albedo", "size", "resolution", "bounce", "filter"});
     receiver.point = fields.member("point").vec3();
     receiver.normal = readDirection(fields.member("normal"));
     if (auto albedo = fields.optional("albedo")) receiver.albedo = albedo->rgb(NumberRange::closed(0.0, 1.0));
@@ -223,6 +223,9 @@ ReceiverDesc readReceiver(const JsonReader& node) {
         receiver.resolution = static_cast<int>(resolution->integer(1, kMaxReceiverResolution));
     }
     if (auto bounce = fields.optional("bounce")) receiver.bounce = bounce->boolean();
+    if (auto filter = fields.optional("filter"))
+        receiver.filter = filter->oneOf({"binomial", "none"}) == "none" ? ReceiverDesc::Filter::None
+                                                                       : ReceiverDesc::Filter::Binomial;
     return receiver;
 }
 

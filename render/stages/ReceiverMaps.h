@@ -29,6 +29,7 @@ public:
 
 private:
     std::vector<layout::GpuReceiver> receivers_;
+    std::vector<int> kernelRadius_;  // per receiver: 1 the 3×3 binomial, 0 none
     gl::Buffer geometry_;
     gl::Buffer tallies_;
     gl::Buffer maps_;

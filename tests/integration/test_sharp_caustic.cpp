@@ -2,9 +2,10 @@
 // with its sharp glass sphere, traced by the photon pass on the GPU, against
 // verify/reference/SphereCaustic — exact ray–sphere intersections, Snell and
 // Fresnel in double precision on the CPU, sharing no code with the renderer.
-// Both maps go through the receiver's 3×3 binomial filter (the renderer
-// applies it to every map), so the comparison measures the
-// model and the tracer. Tolerances: the shadow edge within one texel of the
+// Twice: with the receiver's default 3×3 binomial filter, against the
+// reference through the same filter (the model and the tracer alone); and
+// with `filter: "none"` against the unfiltered truth (photon noise
+// included). Tolerances, both: the shadow edge within one texel of the
 // closed form h·tan(asin(R/d)); relative L1 inside the caustic disk ≤ 10%;
 // the peak within 10%.
 #include "io/scene/SceneParser.h"
@@ -125,11 +126,22 @@ TEST(SharpCaustic, DefaultSceneMatchesTheExactSphereReference) {
     test::reportFigure("sharp_caustic_peak_ratio", error.peakRatio);
     EXPECT_LE(error.relativeL1, 0.10);
     EXPECT_NEAR(error.peakRatio, 1.0, 0.10);
-    // For the record: against the unfiltered truth (what the receiver filter
-    // costs), and the paper's smoothed glass against the same reference.
+    // For the record: the filtered map against the unfiltered truth (what
+    // the filter costs), and the paper's smoothed glass.
     const DiskError raw = diskError(sharp, unfiltered, shadow, setup.size);
     test::reportFigure("sharp_caustic_disk_relative_l1_vs_unfiltered_truth", raw.relativeL1);
     test::reportFigure("sharp_caustic_peak_ratio_vs_unfiltered_truth", raw.peakRatio);
+    const std::vector<double> unfilteredMap = floorIrradiance({"receivers.0.filter=\"none\""});
+    const DiskError direct = diskError(unfilteredMap, unfiltered, shadow, setup.size);
+    test::reportFigure("sharp_unfiltered_caustic_disk_relative_l1", direct.relativeL1);
+    test::reportFigure("sharp_unfiltered_caustic_peak_ratio", direct.peakRatio);
+    // And against the truth itself, with the receiver unfiltered: photon noise
+    // of 2²¹ photons included.
+    EXPECT_LE(direct.relativeL1, 0.10);
+    EXPECT_NEAR(direct.peakRatio, 1.0, 0.10);
+    const double unfilteredEdge = shadowEdge(radialProfile(unfilteredMap, setup.size, kResolution), setup);
+    test::reportFigure("sharp_unfiltered_shadow_edge_m", unfilteredEdge);
+    EXPECT_NEAR(unfilteredEdge, shadow, texel);
     const std::vector<double> smooth = floorIrradiance({"objects.0.surface=\"smooth\""});
     const DiskError smoothError = diskError(smooth, exact, shadow, setup.size);
     test::reportFigure("smooth_caustic_disk_relative_l1", smoothError.relativeL1);

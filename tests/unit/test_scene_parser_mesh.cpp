@@ -148,5 +148,14 @@ TEST(SceneParserMesh, SurfaceKeys) {
     expectErrorAt(many, "objects", "at most 32 sharp");
 }
 
+TEST(SceneParserMesh, ReceiverFilter) {
+    json root = validScene();
+    EXPECT_EQ(parseScene(root, "test.json").receivers[0].filter, ReceiverDesc::Filter::Binomial);
+    root["receivers"][0]["filter"] = "none";
+    EXPECT_EQ(parseScene(root, "test.json").receivers[0].filter, ReceiverDesc::Filter::None);
+    root["receivers"][0]["filter"] = "gaussian";
+    expectErrorAt(root, "receivers[0].filter", "\"binomial\"");
+}
+
 }  // namespace
 }  // namespace eikon
