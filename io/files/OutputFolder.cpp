@@ -3,9 +3,12 @@
 #include "bridge/core/Error.h"
 #include "io/files/AtomicFile.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <regex>
 #include <system_error>
+#include <vector>
 
 namespace eikon::io {
 
@@ -23,26 +26,45 @@ std::set<fs::path> filesBelow(const fs::path& root) {
     return files;
 }
 
-// Removes the files an earlier run's list names — only files inside the
-// folder — and then the folders that left empty; the list goes last.
-void clearEarlierRun(const fs::path& root) {
+// The files an earlier run's list names (only paths inside the folder).
+std::vector<fs::path> listedFiles(const fs::path& root) {
     std::ifstream manifest(root / OutputFolder::kManifestName);
-    std::set<fs::path> folders;
+    std::vector<fs::path> files;
     std::string line;
     while (std::getline(manifest, line)) {
         if (line.empty() || line[0] == '#') continue;
         const fs::path relative = fs::path(line).lexically_normal();
         if (relative.is_absolute() || relative.empty() || *relative.begin() == "..") continue;
+        files.push_back(relative);
+    }
+    return files;
+}
+
+// Runs from before the list existed: a folder all of whose files have the
+// names eikon gives its outputs (frames, report, VTK and OpenVDB series).
+bool holdsOnlyUnlistedEikonOutput(const fs::path& root) {
+    static const std::regex names(
+        R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|)"
+        R"(vtk/(fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series))");
+    const std::set<fs::path> files = filesBelow(root);
+    return std::all_of(files.begin(), files.end(),
+                       [](const fs::path& file) { return std::regex_match(file.generic_string(), names); });
+}
+
+// Removes `files` and then the folders that left empty; the list goes last.
+void clearEarlierRun(const fs::path& root, const std::vector<fs::path>& files) {
+    std::set<fs::path> folders;
+    for (const fs::path& relative : files) {
         std::error_code ignored;
         if (fs::is_regular_file(root / relative)) fs::remove(root / relative, ignored);
         for (fs::path parent = relative.parent_path(); !parent.empty(); parent = parent.parent_path()) folders.insert(parent);
     }
-    manifest.close();
     for (auto folder = folders.rbegin(); folder != folders.rend(); ++folder) {  // deepest first
         std::error_code ignored;
         if (fs::is_directory(root / *folder) && fs::is_empty(root / *folder)) fs::remove(root / *folder, ignored);
     }
-    fs::remove(root / OutputFolder::kManifestName);
+    std::error_code ignored;
+    fs::remove(root / OutputFolder::kManifestName, ignored);
 }
 
 }  // namespace
@@ -51,14 +73,16 @@ OutputFolder::OutputFolder(fs::path root, bool force) : root_(std::move(root)) {
     if (fs::exists(root_) && !fs::is_directory(root_))
         throw InputError(root_.string(), "an output folder", "a file");
     if (fs::exists(root_) && !fs::is_empty(root_)) {
-        if (!fs::is_regular_file(root_ / kManifestName))
+        const bool listed = fs::is_regular_file(root_ / kManifestName);
+        if (!listed && !holdsOnlyUnlistedEikonOutput(root_))
             throw InputError(root_.string() +
                              ": the folder holds files eikon did not write; choose another --out (--force only clears "
                              "a folder an earlier eikon run wrote)");
         if (!force)
             throw InputError(root_.string() +
                              ": the output folder holds an earlier run; choose another --out or pass --force to clear it");
-        clearEarlierRun(root_);
+        const std::set<fs::path> all = filesBelow(root_);
+        clearEarlierRun(root_, listed ? listedFiles(root_) : std::vector<fs::path>(all.begin(), all.end()));
     }
     fs::create_directories(root_ / "frames");
     before_ = filesBelow(root_);

@@ -73,6 +73,29 @@ TEST_F(OutputFolderTest, ForceRemovesOnlyWhatEikonWrote) {
     EXPECT_EQ(list.find("notes.txt"), std::string::npos) << "the user's files are never listed as eikon's";
 }
 
+// A run from before the list existed: every file has an eikon output name,
+// so it is an earlier run (refused, cleared with --force); one foreign file
+// makes it a folder eikon did not write.
+TEST_F(OutputFolderTest, UnlistedEarlierRunIsRecognisedByItsNames) {
+    fs::create_directories(root_ / "frames");
+    fs::create_directories(root_ / "vtk");
+    writeFileAtomically(root_ / "frames" / "frame_00000.png", "old");
+    writeFileAtomically(root_ / "report.jsonl", "{}\n");
+    writeFileAtomically(root_ / "vtk" / "fields_00000.vti", "old");
+    writeFileAtomically(root_ / "vtk" / "fields.pvd", "old");
+    EXPECT_THROW(OutputFolder(root_, false), InputError);
+    { OutputFolder cleared(root_, true); }
+    EXPECT_FALSE(fs::exists(root_ / "vtk"));
+    EXPECT_FALSE(fs::exists(root_ / "report.jsonl"));
+
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "frames");
+    writeFileAtomically(root_ / "frames" / "frame_00000.png", "old");
+    writeFileAtomically(root_ / "frames" / "holiday.png", "the user's");
+    EXPECT_THROW(OutputFolder(root_, true), InputError);
+    EXPECT_TRUE(fs::exists(root_ / "frames" / "frame_00000.png"));
+}
+
 TEST_F(OutputFolderTest, RefusesAFolderEikonDidNotWriteEvenWithForce) {
     fs::create_directories(root_ / "photos");
     writeFileAtomically(root_ / "notes.txt", "keep");
