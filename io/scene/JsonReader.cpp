@@ -10,12 +10,20 @@ namespace eikon {
 
 namespace {
 
+// Text quoted from the input in a message, cut to a line's worth: a 4 MB key
+// or string must not become a 4 MB message.
+std::string clipped(const std::string& text) {
+    constexpr std::size_t kLongest = 80;
+    if (text.size() <= kLongest) return text;
+    return text.substr(0, kLongest) + "… (" + std::to_string(text.size()) + " characters)";
+}
+
 std::string describeNode(const nlohmann::json* node) {
     if (node == nullptr) return "nothing";
     switch (node->type()) {
     case nlohmann::json::value_t::null: return "null";
     case nlohmann::json::value_t::boolean: return node->get<bool>() ? "true" : "false";
-    case nlohmann::json::value_t::string: return "a string " + node->dump();
+    case nlohmann::json::value_t::string: return "a string " + clipped(node->dump());
     case nlohmann::json::value_t::object: return "an object";
     case nlohmann::json::value_t::array: {
         const std::size_t size = node->size();
@@ -155,7 +163,8 @@ JsonReader JsonReader::element(std::size_t index) const {
 
 JsonReader JsonReader::child(const std::string& key) const {
     const bool present = node_ != nullptr && node_->is_object() && node_->contains(key);
-    return JsonReader(present ? &node_->at(key) : nullptr, sourceName_, path_.empty() ? key : path_ + "." + key);
+    const std::string name = clipped(key);
+    return JsonReader(present ? &node_->at(key) : nullptr, sourceName_, path_.empty() ? name : path_ + "." + name);
 }
 
 JsonObjectReader::JsonObjectReader(const JsonReader& node, std::initializer_list<const char*> allowedKeys)

@@ -476,5 +476,20 @@ TEST(SceneParserErrors, UnknownTracerKey) {
     expectErrorAt(scene, "tracer", "an object, found a string \"rk4\"");
 }
 
+// Input quoted in a message is cut to a line: a 4 MB unknown key or string
+// value gives a short message that still names where.
+TEST(SceneParser, LongKeysAndValuesAreClippedInMessages) {
+    json root = validScene();
+    root[std::string(4 << 20, 'k')] = 1;
+    const std::string key = parseErrorMessage(root);
+    EXPECT_LT(key.size(), 600u) << key.substr(0, 200);
+    EXPECT_NE(key.find("characters)"), std::string::npos) << key.substr(0, 200);
+    json value = validScene();
+    value["objects"][0]["type"] = std::string(4 << 20, 'v');
+    const std::string found = parseErrorMessage(value);
+    EXPECT_LT(found.size(), 600u);
+    EXPECT_NE(found.find("objects[0].type"), std::string::npos) << found;
+}
+
 }  // namespace
 }  // namespace eikon
