@@ -338,31 +338,20 @@ uint surface_events = 0u;  // this photon's crossings so far: its random dimensi
 // unbiased) and always under total internal reflection. The indices on
 // either side are the graded field at the surface plus each side's offset.
 void cross_sharp_surface(uint k, uint photon, INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field) {
-    vec4 shape_a = sharp_surfaces[k].shape_a;
-    vec4 shape_b = sharp_surfaces[k].shape_b;
-    x = onto_surface(shape_a, shape_b, x);
-    x_lost = vec3(0.0f);
     vec3 d = normalize(v);
-    vec3 outward = surface_normal(shape_a, shape_b, x);
-    vec3 facing = dot(d, outward) < 0.0f ? outward : -outward;
-    uint beyond_mask = inside_mask ^ (1u << k);
-    float graded = sample_gradient_and_delta(x).w;
-    float n_here = reference_index() + channel_scale * (graded + sharp_offset);
-    float beyond_offset = sharp_index_offset(beyond_mask);
-    float n_beyond = reference_index() + channel_scale * (graded + beyond_offset);
-    float cos_i = -dot(d, facing);
-    float reflectance = fresnel_reflectance(cos_i, n_here, n_beyond);
-    bool fresnel = sharp_surfaces[k].optics.y > 0.5f;
-    bool reflects = reflectance >= 1.0f ||
-                    (fresnel && random_uniform(seed, photon, 64u + surface_events) < reflectance);
+    SurfaceEvent event = sharp_surface_event(k, x, d, inside_mask, channel_scale);
+    x = event.x;
+    x_lost = vec3(0.0f);
+    bool reflects = event.reflectance >= 1.0f ||
+                    (event.reflectance > 0.0f && random_uniform(seed, photon, 64u + surface_events) < event.reflectance);
     ++surface_events;
     if (reflects) {
-        d = mirrored_direction(d, facing);
+        d = mirrored_direction(d, event.facing);
         atomicAdd(group_surface_events[0], 1u);
     } else {
-        d = refracted_direction(d, facing, n_here, n_beyond);
-        inside_mask = beyond_mask;
-        sharp_offset = beyond_offset;
+        d = refracted_direction(d, event.facing, event.n_here, event.n_beyond);
+        inside_mask = event.beyond_mask;
+        sharp_offset = event.beyond_offset;
         atomicAdd(group_surface_events[1], 1u);
     }
     field = field_at(x);

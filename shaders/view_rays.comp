@@ -188,29 +188,20 @@ int pending_count = 0;
 // events, the reflection with R is traced as well; past that it follows the
 // stronger of the two. Total internal reflection keeps all of it.
 void split_at_sharp_surface(uint k, INOUT(ViewRay) ray) {
-    vec4 shape_a = sharp_surfaces[k].shape_a;
-    vec4 shape_b = sharp_surfaces[k].shape_b;
-    ray.x = onto_surface(shape_a, shape_b, ray.x);
     vec3 d = normalize(ray.v);
-    vec3 outward = surface_normal(shape_a, shape_b, ray.x);
-    vec3 facing = dot(d, outward) < 0.0f ? outward : -outward;
-    uint beyond_mask = ray.inside_mask ^ (1u << k);
-    float graded = reference_index() + sample_gradient_and_delta(ray.x).w;
-    float n_here = graded + sharp_index_offset(ray.inside_mask);
-    float n_beyond = graded + sharp_index_offset(beyond_mask);
-    float reflectance = fresnel_reflectance(-dot(d, facing), n_here, n_beyond);
-    bool fresnel = sharp_surfaces[k].optics.y > 0.5f;
+    SurfaceEvent event = sharp_surface_event(k, ray.x, d, ray.inside_mask, 1.0f);
+    ray.x = event.x;
+    float reflectance = event.reflectance;
     ++ray.depth;
     if (reflectance >= 1.0f) {
-        ray.v = n_here * mirrored_direction(d, facing);
+        ray.v = event.n_here * mirrored_direction(d, event.facing);
         return;
     }
-    if (!fresnel) reflectance = 0.0f;
     ViewRay mirrored = ray;
-    mirrored.v = n_here * mirrored_direction(d, facing);
+    mirrored.v = event.n_here * mirrored_direction(d, event.facing);
     mirrored.throughput = ray.throughput * reflectance;
-    ray.v = n_beyond * refracted_direction(d, facing, n_here, n_beyond);
-    ray.inside_mask = beyond_mask;
+    ray.v = event.n_beyond * refracted_direction(d, event.facing, event.n_here, event.n_beyond);
+    ray.inside_mask = event.beyond_mask;
     ray.throughput *= 1.0f - reflectance;
     if (reflectance <= 0.0f) return;
     if (ray.depth <= surface_depth && pending_count < MAX_PENDING) {

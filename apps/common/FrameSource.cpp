@@ -1,23 +1,6 @@
 #include "apps/common/FrameSource.h"
 
-#include <chrono>
-
 namespace eikon::app {
-
-namespace {
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// What export reads of the host fields' current frame.
-void captureHost(const sim::SceneFields& fields, ProducedFrame& frame) {
-    frame.exportArrays = fields.exportArrays();
-    frame.meshes.clear();
-    for (const TriangleMesh* mesh : fields.deformedMeshes()) frame.meshes.push_back(*mesh);
-}
-
-}  // namespace
 
 FrameSource::FrameSource(const Scene& scene, sim::SceneFields& fields, const render::RendererOptions& options,
                          bool pipelined, bool captureExportArrays)
@@ -28,7 +11,7 @@ FrameSource::FrameSource(const Scene& scene, sim::SceneFields& fields, const ren
     } else {
         host_.time = fields.time();
         host_.phases = fields.lastTimings();
-        if (captureExportArrays_) captureHost(fields_, host_);
+        if (captureExportArrays_) captureForExport(fields_, host_);
         renderer_ = std::make_unique<render::FrameRenderer>(scene, fields.fields(), options);
     }
 }
@@ -61,7 +44,7 @@ void FrameSource::publishNext() {
     host_.simulateMs = millisecondsSince(start);
     host_.time = fields_.time();
     host_.phases = fields_.lastTimings();
-    if (captureExportArrays_) captureHost(fields_, host_);
+    if (captureExportArrays_) captureForExport(fields_, host_);
 }
 
 const ProducedFrame& FrameSource::current() const { return live_ ? live_->current() : host_; }

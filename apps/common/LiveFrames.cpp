@@ -1,23 +1,23 @@
 #include "apps/common/LiveFrames.h"
 
-#include <chrono>
-
 namespace eikon::app {
-
-namespace {
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace
+void captureForExport(const sim::SceneFields& fields, ProducedFrame& frame) {
+    frame.exportArrays = fields.exportArrays();
+    frame.meshes.clear();
+    for (const TriangleMesh* mesh : fields.deformedMeshes()) frame.meshes.push_back(*mesh);
+}
 
 LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays)
     : fields_(fields), pipelined_(pipelined), captureExportArrays_(captureExportArrays), ring_(fields.fields()) {
     const auto start = std::chrono::steady_clock::now();
     fields_.writeFrameInto(ring_.acquire());
     current_.time = fields_.time();
-    if (captureExportArrays_) capture(current_);
+    if (captureExportArrays_) captureForExport(fields_, current_);
     current_.writeFieldsMs = millisecondsSince(start);
     ring_.publish(version_, version_, version_);
 }
@@ -37,13 +37,8 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     frame.writeFieldsMs = millisecondsSince(start);
     frame.time = fields_.time();
     frame.phases = fields_.lastTimings();
-    if (captureExportArrays_) capture(frame);
+    if (captureExportArrays_) captureForExport(fields_, frame);
     return frame;
-}
-
-void LiveFrames::capture(ProducedFrame& frame) const {
-    frame.exportArrays = fields_.exportArrays();
-    for (const TriangleMesh* mesh : fields_.deformedMeshes()) frame.meshes.push_back(*mesh);
 }
 
 void LiveFrames::beginNext() {

@@ -8,6 +8,7 @@
 #include "render/stages/FieldRing.h"
 #include "sim/SceneFields.h"
 
+#include <chrono>
 #include <future>
 #include <vector>
 
@@ -24,6 +25,13 @@ struct ProducedFrame {
     std::vector<NamedArray> exportArrays;  // the solver's own fields, when captured for export
     std::vector<TriangleMesh> meshes;          // the deformed meshes, when captured for export
 };
+
+// Wall time since `start`, in milliseconds (the frame loop's stage figures).
+double millisecondsSince(std::chrono::steady_clock::time_point start);
+
+// Copies what export reads of the frame `fields` now hold (the simulation's
+// own arrays and the deformed meshes) into `frame`.
+void captureForExport(const sim::SceneFields& fields, ProducedFrame& frame);
 
 class LiveFrames {
 public:
@@ -49,8 +57,6 @@ public:
 
 private:
     ProducedFrame produce(const FieldViews& slot);
-    // What export needs of the frame the fields now hold, copied.
-    void capture(ProducedFrame& frame) const;
 
     sim::SceneFields& fields_;
     bool pipelined_;

@@ -43,10 +43,6 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
             {"mean_invariant_error", p.meanInvariantError}};
 }
 
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
 double renderMilliseconds(const render::FrameResult& result) {
     double ms = 0.0;
     for (const auto& stage : result.stages) ms += stage.milliseconds;

@@ -27,6 +27,39 @@ float sharp_index_offset(uint mask) {
     return 0.0f;
 }
 
+// What a ray of unit direction d meets where a step ended on sharp surface
+// k: the point put exactly on the surface, the unit normal facing the ray,
+// the inside mask beyond it, the indices on either side — the graded field
+// at the point plus each side's offset, δn scaled by `index_scale`
+// (dispersion) — and the unpolarised Fresnel reflectance (1 under total
+// internal reflection; 0 where the object's Fresnel reflection is off).
+struct SurfaceEvent {
+    vec3 x;
+    vec3 facing;
+    uint beyond_mask;
+    float n_here;
+    float n_beyond;
+    float beyond_offset;
+    float reflectance;
+};
+
+SurfaceEvent sharp_surface_event(uint k, vec3 x, vec3 d, uint inside_mask, float index_scale) {
+    vec4 shape_a = sharp_surfaces[k].shape_a;
+    vec4 shape_b = sharp_surfaces[k].shape_b;
+    SurfaceEvent event;
+    event.x = onto_surface(shape_a, shape_b, x);
+    vec3 outward = surface_normal(shape_a, shape_b, event.x);
+    event.facing = dot(d, outward) < 0.0f ? outward : -outward;
+    event.beyond_mask = inside_mask ^ (1u << k);
+    event.beyond_offset = sharp_index_offset(event.beyond_mask);
+    float graded = sample_gradient_and_delta(event.x).w;
+    event.n_here = reference_index() + index_scale * (graded + sharp_index_offset(inside_mask));
+    event.n_beyond = reference_index() + index_scale * (graded + event.beyond_offset);
+    event.reflectance = fresnel_reflectance(-dot(d, event.facing), event.n_here, event.n_beyond);
+    if (event.reflectance < 1.0f && sharp_surfaces[k].optics.y < 0.5f) event.reflectance = 0.0f;
+    return event;
+}
+
 // The first surface a step from x along the unit d meets within reach
 // (index −1: none), for a ray inside the surfaces of `mask`.
 struct SurfaceCrossing {
