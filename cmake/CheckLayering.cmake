@@ -28,7 +28,7 @@ set(rules
   "render/gl|bridge/core/"
   "render/stages|bridge/,shaders/,render/gl/"
   "render/graph|bridge/,render/gl/,render/stages/"
-  "shaders|common/,shaders/common/"
+  "shaders|common/,shaders/common/,bridge/layout/"
   "verify/reference|bridge/"
   "verify/accuracy|bridge/,io/files/,io/image/,render/,verify/reference/"
   "apps/common|bridge/,io/,sim/,render/"

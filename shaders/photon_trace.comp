@@ -340,11 +340,11 @@ uint surface_events = 0u;  // this photon's crossings so far: its random dimensi
 void cross_sharp_surface(uint k, uint photon, INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field) {
     vec3 d = normalize(v);
     SurfaceEvent event = sharp_surface_event(k, x, d, inside_mask, channel_scale);
-    x = event.x;
     x_lost = vec3(0.0f);
     bool reflects = event.reflectance >= 1.0f ||
                     (event.reflectance > 0.0f && random_uniform(seed, photon, 64u + surface_events) < event.reflectance);
     ++surface_events;
+    x = reflects ? event.x_reflected : event.x_transmitted;
     if (reflects) {
         d = mirrored_direction(d, event.facing);
         atomicAdd(group_surface_events[0], 1u);

@@ -190,15 +190,17 @@ int pending_count = 0;
 void split_at_sharp_surface(uint k, INOUT(ViewRay) ray) {
     vec3 d = normalize(ray.v);
     SurfaceEvent event = sharp_surface_event(k, ray.x, d, ray.inside_mask, 1.0f);
-    ray.x = event.x;
     float reflectance = event.reflectance;
     ++ray.depth;
     if (reflectance >= 1.0f) {
+        ray.x = event.x_reflected;
         ray.v = event.n_here * mirrored_direction(d, event.facing);
         return;
     }
     ViewRay mirrored = ray;
+    mirrored.x = event.x_reflected;
     mirrored.v = event.n_here * mirrored_direction(d, event.facing);
+    ray.x = event.x_transmitted;
     mirrored.throughput = ray.throughput * reflectance;
     ray.v = event.n_beyond * refracted_direction(d, event.facing, event.n_here, event.n_beyond);
     ray.inside_mask = event.beyond_mask;

@@ -8,6 +8,7 @@
 
 #include "bridge/core/Error.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace eikon::sim {
@@ -17,6 +18,7 @@ struct SceneFields::MeshObject {
     AnimatedMesh shape;
     MeshCoverage coverage;
     CellBlocks changed;  // cells whose coverage the last update recomputed
+    int layer;           // its layer of fields().surfaceDistance when its surface is sharp, else −1
 };
 
 namespace {
@@ -31,13 +33,22 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
     fields_.grid = scene.grid.spec();
     fields_.referenceIndex = scene.medium.index;
     fields_.deltaIndex.assign(fields_.grid.cellCount(), 0.0f);
+    int layers = 0;
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& object = scene.objects[o];
         if (object.kind != ObjectDesc::Kind::Mesh && object.kind != ObjectDesc::Kind::Water) continue;
         const std::string where = scene.sourcePath + ": objects[" + std::to_string(o) + "]";
-        meshes_.push_back(std::unique_ptr<MeshObject>(
-            new MeshObject{o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBlocks(fields_.grid)}));
+        const int layer = object.hasDistanceSurface() ? layers++ : -1;
+        meshes_.push_back(std::unique_ptr<MeshObject>(new MeshObject{
+            o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBlocks(fields_.grid), layer}));
     }
+    fields_.surfaceDistance.resize(static_cast<std::size_t>(layers) * fields_.grid.cellCount());
+    fields_.surfaceBounds.resize(static_cast<std::size_t>(layers) * kSurfaceBoundsFloats);
+    for (const auto& mesh : meshes_)  // far from the surface, before any update: the band's edge
+        if (mesh->layer >= 0)
+            std::copy(mesh->coverage.distances().begin(), mesh->coverage.distances().end(),
+                      fields_.surfaceDistance.begin() + static_cast<std::ptrdiff_t>(mesh->layer) *
+                                                            static_cast<std::ptrdiff_t>(fields_.grid.cellCount()));
     updateMeshes();
     fillMedium(scene_, fields_, CellBox::whole(fields_.grid));
     if (scene.sim) {
@@ -51,7 +62,7 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
         paintObjects(scene_, fields_, coverageGrids());
         paintStrokes(scene_, fields_);
     }
-    fields_.indexVersion = fields_.extinctionVersion = fields_.scatteringVersion = 1;
+    fields_.indexVersion = fields_.extinctionVersion = fields_.scatteringVersion = fields_.surfaceVersion = 1;
     validateFields(fields_, scene.sourcePath);
 }
 
@@ -81,9 +92,32 @@ void SceneFields::updateMeshes() {
         deformMs_ += millisecondsSince(start);
         start = std::chrono::steady_clock::now();
         mesh->changed = mesh->coverage.update(mesh->shape.mesh());
+        publishSurface(*mesh);
         voxelizeMs_ += millisecondsSince(start);
         recomputedCells_ += mesh->coverage.lastRecomputedCells();
     }
+}
+
+// A sharp mesh's φ into its layer, where it changed, and its bounds.
+void SceneFields::publishSurface(const MeshObject& mesh) {
+    if (mesh.layer < 0 || mesh.changed.empty()) return;
+    const std::size_t cells = fields_.grid.cellCount();
+    float* layer = fields_.surfaceDistance.data() + static_cast<std::size_t>(mesh.layer) * cells;
+    const std::vector<float>& distances = mesh.coverage.distances();
+    for (const CellBox& box : mesh.changed.boxes())
+        for (int k = box.min.z; k < box.max.z; ++k)
+            for (int j = box.min.y; j < box.max.y; ++j) {
+                const std::size_t row = fields_.grid.linearIndex(box.min.x, j, k);
+                std::copy_n(distances.begin() + static_cast<std::ptrdiff_t>(row), box.max.x - box.min.x, layer + row);
+            }
+    glm::dvec3 min, max;
+    mesh.coverage.distanceBounds(min, max);
+    float* bounds = fields_.surfaceBounds.data() + static_cast<std::size_t>(mesh.layer) * kSurfaceBoundsFloats;
+    for (int axis = 0; axis < 3; ++axis) {
+        bounds[axis] = static_cast<float>(min[axis]);
+        bounds[3 + axis] = static_cast<float>(max[axis]);
+    }
+    ++fields_.surfaceVersion;
 }
 
 void SceneFields::advanceFrame() {
@@ -161,6 +195,11 @@ void SceneFields::writeFrameInto(const FieldViews& target) const {
     EIKON_CHECK_MSG((frame.hasExtinction() || !fluidOptics_->absorbs()) &&
                         (frame.hasScattering() || !fluidOptics_->scatters()),
                     "field views without the fields the optical model writes");
+    EIKON_CHECK_MSG(frame.surfaceDistance.size() == fields_.surfaceDistance.size() &&
+                        frame.surfaceBounds.size() == fields_.surfaceBounds.size(),
+                    "field views without the scene's sharp surface layers");
+    std::copy(fields_.surfaceDistance.begin(), fields_.surfaceDistance.end(), frame.surfaceDistance.begin());
+    std::copy(fields_.surfaceBounds.begin(), fields_.surfaceBounds.end(), frame.surfaceBounds.begin());
     mapOpticalFields(*fluidOptics_, fluid_->scalars(), frame);
     paintObjects(scene_, frame, coverageGrids());
     paintStrokes(scene_, frame);

@@ -17,9 +17,10 @@ LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExp
     const auto start = std::chrono::steady_clock::now();
     fields_.writeFrameInto(ring_.acquire());
     current_.time = fields_.time();
+    current_.surfaceVersion = fields_.fields().surfaceVersion;
     if (captureExportArrays_) captureForExport(fields_, current_);
     current_.writeFieldsMs = millisecondsSince(start);
-    ring_.publish(version_, version_, version_);
+    ring_.publish(version_, version_, version_, current_.surfaceVersion);
 }
 
 LiveFrames::~LiveFrames() {
@@ -36,6 +37,7 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     fields_.writeFrameInto(slot);
     frame.writeFieldsMs = millisecondsSince(start);
     frame.time = fields_.time();
+    frame.surfaceVersion = fields_.fields().surfaceVersion;
     frame.phases = fields_.lastTimings();
     if (captureExportArrays_) captureForExport(fields_, frame);
     return frame;
@@ -56,7 +58,7 @@ void LiveFrames::publishNext() {
     ++version_;
     const std::uint64_t constant = 1;  // κ and σs of a solver without dye never change
     ring_.publish(version_, fields_.extinctionChangesOverTime() ? version_ : constant,
-                  fields_.scatteringChangesOverTime() ? version_ : constant);
+                  fields_.scatteringChangesOverTime() ? version_ : constant, current_.surfaceVersion);
 }
 
 }  // namespace eikon::app

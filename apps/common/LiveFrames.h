@@ -9,6 +9,7 @@
 #include "sim/SceneFields.h"
 
 #include <chrono>
+#include <cstdint>
 #include <future>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct ProducedFrame {
     bool simulated = false;  // false for frame 0, the initial state
     double simulateMs = 0.0;
     double writeFieldsMs = 0.0;
+    std::uint64_t surfaceVersion = 0;  // of the sharp surfaces written into the slot
     std::vector<sim::PhaseTiming> phases;
     std::vector<NamedArray> exportArrays;  // the solver's own fields, when captured for export
     std::vector<TriangleMesh> meshes;          // the deformed meshes, when captured for export

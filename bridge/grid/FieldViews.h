@@ -2,8 +2,9 @@
 // lives: a FieldSet's vectors, or a slot of the renderer's ring of
 // persistently mapped GPU buffers (render/stages/FieldRing.h), so that the
 // simulation writes its output straight into memory the GPU reads.
-// Layout as in FieldSet: δn one float per cell, κ and σs three (RGB), g one;
-// an empty span is a field the scene does not have.
+// Layout as in FieldSet: δn one float per cell, κ and σs three (RGB), g one,
+// the sharp surfaces' φ one per cell and layer and six bounds per layer; an
+// empty span is a field the scene does not have.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -21,13 +22,15 @@ struct BasicFieldViews {
     std::span<Value> extinction;
     std::span<Value> scattering;
     std::span<Value> anisotropy;
+    std::span<Value> surfaceDistance;
+    std::span<Value> surfaceBounds;
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }
     bool hasAnisotropy() const { return !anisotropy.empty(); }
 
     operator BasicFieldViews<const float>() const {
-        return {grid, referenceIndex, deltaIndex, extinction, scattering, anisotropy};
+        return {grid, referenceIndex, deltaIndex, extinction, scattering, anisotropy, surfaceDistance, surfaceBounds};
     }
 };
 using FieldViews = BasicFieldViews<float>;

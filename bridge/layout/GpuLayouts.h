@@ -56,7 +56,8 @@
     X(kScatteringTexture, 3)  /* rgba32f (σs rgb, 0) */                                                            \
     X(kStepTexture, 4)        /* rgba32f (octree level, step cap in m, 1 if the node is empty of extinction, 0) */ \
     X(kEnvironmentTexture, 5) /* rgba32f equirectangular environment */                                            \
-    X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */
+    X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */                                                       \
+    X(kSurfaceDistanceTexture, 7) /* r32f φ of the sharp mesh and water surfaces, layers stacked along z */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \
@@ -82,12 +83,20 @@
     X(kReflected, 6)                  \
     X(kTallyCount, 7)
 
+// Kinds of sharp surface (GpuSharpSurface::shapeA.w): a sphere, a box, or a
+// mesh or water surface given by a layer of signed distance.
+#define EIKON_LAYOUT_SHARP_SURFACE_KINDS(X) \
+    X(kSharpSphere, 0)                      \
+    X(kSharpBox, 1)                         \
+    X(kSharpDistance, 2)
+
 // Every list above: the constants each shader program is given.
 #define EIKON_LAYOUT_SHADER_CONSTANTS(X) \
     EIKON_LAYOUT_BINDINGS(X)             \
     EIKON_LAYOUT_TEXTURE_UNITS(X)        \
     EIKON_LAYOUT_IMAGE_UNITS(X)          \
-    EIKON_LAYOUT_POWER_TALLIES(X)
+    EIKON_LAYOUT_POWER_TALLIES(X)        \
+    EIKON_LAYOUT_SHARP_SURFACE_KINDS(X)
 
 namespace eikon::layout {
 
@@ -96,6 +105,7 @@ enum Binding : unsigned { EIKON_LAYOUT_BINDINGS(EIKON_LAYOUT_ENUMERATOR) };
 enum TextureUnit : unsigned { EIKON_LAYOUT_TEXTURE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
 enum ImageUnit : unsigned { EIKON_LAYOUT_IMAGE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
 enum PowerTally : unsigned { EIKON_LAYOUT_POWER_TALLIES(EIKON_LAYOUT_ENUMERATOR) };
+enum SharpSurfaceKind : int { EIKON_LAYOUT_SHARP_SURFACE_KINDS(EIKON_LAYOUT_ENUMERATOR) };
 #undef EIKON_LAYOUT_ENUMERATOR
 static_assert(kTallyCount == kReflected + 1, "kTallyCount counts the tallies");
 
@@ -162,10 +172,11 @@ static_assert(offsetof(GpuPhotonStats, deposits) == 200);
 static_assert(offsetof(GpuPhotonStats, invariant) == 216);
 static_assert(offsetof(GpuPhotonStats, surfaces) == 232);
 
-// A sharp sphere or box (shaders/common/sharp_surfaces.glsl), in scene order.
+// A sharp surface (shaders/common/sharp_surfaces.glsl), in scene order: a
+// sphere, a box, or a mesh or water surface given by its signed distance.
 struct GpuSharpSurface {
-    glm::vec4 shapeA;  // xyz: sphere centre or box min (m); w: kind (0 sphere, 1 box)
-    glm::vec4 shapeB;  // x: sphere radius (m); or xyz box max (m)
+    glm::vec4 shapeA;  // xyz: sphere centre, or box or distance-layer bounds min (m); w: kind (SharpSurfaceKind)
+    glm::vec4 shapeB;  // x: sphere radius (m); or xyz box or bounds max (m), w: distance layer
     glm::vec4 optics;  // x: n_object − n_ref; y: 1 if Fresnel reflection is on; zw unused
 };
 static_assert(sizeof(GpuSharpSurface) == 48);

@@ -81,13 +81,15 @@ struct ObjectDesc {
     // refract (Snell) and reflect (Fresnel) there, and the inside is the
     // object's index on top of the graded field; smooth: the object is
     // voxelized into the index field and Gaussian-smoothed ([Sun08] §4.1).
-    // Spheres and boxes are sharp by default; meshes and water are smooth
-    // (their sharp surfaces are not built yet).
+    // Every kind is sharp by default. Spheres and boxes are exact shapes; a
+    // mesh or water surface is the zero set of its signed distance on the
+    // grid (sim/voxelize/MeshCoverage.h), one layer per such object.
     enum class Surface { Sharp, Smooth } surface = Surface::Sharp;
     bool fresnel = true;  // sharp: reflect at the surface by Fresnel; false: transmit only (total internal reflection stays)
 
-    // Only spheres and boxes have sharp surfaces so far; a mesh or water is smooth whatever `surface` says.
-    bool isSharp() const { return surface == Surface::Sharp && (kind == Kind::Sphere || kind == Kind::Box); }
+    bool isSharp() const { return surface == Surface::Sharp; }
+    // A sharp mesh or water object: its surface reaches the tracers as a layer of signed distance.
+    bool hasDistanceSurface() const { return isSharp() && (kind == Kind::Mesh || kind == Kind::Water); }
 };
 
 // A brush dragged along a path through the volume ([Sun08] §6.2.1, volume

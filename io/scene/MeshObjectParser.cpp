@@ -165,22 +165,15 @@ WaterDesc readWater(const JsonObjectReader& fields) {
     return water;
 }
 
-// Mesh and water surfaces are voxelized and smoothed; exact (sharp) ones are
-// not built yet, so `surface` may only say so.
-void readSmoothSurface(const JsonObjectReader& fields) {
-    if (auto surface = fields.optional("surface"))
-        if (surface->string() != "smooth")
-            surface->fail("\"smooth\" (sharp mesh and water surfaces are not built yet)", "\"" + surface->string() + "\"");
-}
-
 }  // namespace
 
 ObjectDesc readMeshOrWaterObject(const JsonReader& node, const std::string& type, const std::string& sceneFolder,
-                                 const MaterialReader& readMaterial) {
+                                 const PropertiesReader& readProperties) {
     ObjectDesc object;
     if (type == "mesh") {
         const auto fields =
-            node.object({"type", "mesh", "deformer", "index", "extinction", "scattering", "anisotropy", "surface"});
+            node.object({"type", "mesh", "deformer", "index", "extinction", "scattering", "anisotropy", "surface",
+                                    "fresnel"});
         object.kind = ObjectDesc::Kind::Mesh;
         const auto mesh = fields.member("mesh").object({"path", "translate", "rotate_deg", "scale"});
         const JsonReader pathNode = mesh.member("path");
@@ -191,17 +184,15 @@ ObjectDesc readMeshOrWaterObject(const JsonReader& node, const std::string& type
                           "\"" + object.mesh.path + "\", which does not exist");
         object.mesh.placement = readPlacement(mesh);
         if (auto deformer = fields.optional("deformer")) object.mesh.deformer = readDeformer(*deformer);
-        readMaterial(fields, object.material);
-        readSmoothSurface(fields);
+        readProperties(fields, object);
     } else {
         const auto fields = node.object({"type", "basin", "cells", "wave_speed", "damping", "swell", "drops",
-                                         "disturbances", "index", "extinction", "scattering", "anisotropy", "surface"});
+                                         "disturbances", "index", "extinction", "scattering", "anisotropy", "surface",
+                                         "fresnel"});
         object.kind = ObjectDesc::Kind::Water;
         object.water = readWater(fields);
-        readMaterial(fields, object.material);
-        readSmoothSurface(fields);
+        readProperties(fields, object);
     }
-    object.surface = ObjectDesc::Surface::Smooth;  // as isSharp() says
     return object;
 }
 

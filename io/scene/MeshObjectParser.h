@@ -1,7 +1,7 @@
 // The scene objects of type "mesh" and "water" (docs/scene-format.md):
-// shape, placement and deformer keys. The material keys (index,
-// extinction, scattering, anisotropy) are read by the caller's
-// `readMaterial`, as for spheres and boxes.
+// shape, placement and deformer keys. The material and surface keys (index,
+// extinction, scattering, anisotropy, surface, fresnel) are read by the
+// caller's `readProperties`, as for spheres and boxes.
 #pragma once
 
 #include "io/scene/JsonReader.h"
@@ -12,11 +12,11 @@
 
 namespace eikon {
 
-using MaterialReader = std::function<void(const JsonObjectReader&, Material&)>;
+using PropertiesReader = std::function<void(const JsonObjectReader&, ObjectDesc&)>;
 
 // `type` is the object's "type", already read: "mesh" or "water". Mesh paths
 // are resolved against `sceneFolder`.
 ObjectDesc readMeshOrWaterObject(const JsonReader& node, const std::string& type, const std::string& sceneFolder,
-                                 const MaterialReader& readMaterial);
+                                 const PropertiesReader& readProperties);
 
 }  // namespace eikon

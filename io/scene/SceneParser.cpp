@@ -131,7 +131,7 @@ void readMedium(const JsonReader& node, Scene& scene) {
     if (auto profile = fields.optional("air_temperature_profile")) scene.airProfile = readAirProfile(*profile);
 }
 
-// `surface` (sharp | smooth) and `fresnel` of a sphere or box.
+// `surface` (sharp | smooth) and `fresnel` of an object.
 void readSurface(const JsonObjectReader& fields, ObjectDesc& object) {
     if (auto surface = fields.optional("surface"))
         object.surface = surface->oneOf({"sharp", "smooth"}) == "sharp" ? ObjectDesc::Surface::Sharp
@@ -143,9 +143,10 @@ ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
     ObjectDesc object;
     const std::string type = node.member("type").oneOf({"sphere", "box", "mesh", "water"});
     if (type == "mesh" || type == "water") {
-        return readMeshOrWaterObject(node, type, sceneFolder, [](const JsonObjectReader& fields, Material& material) {
-            material.index = fields.member("index").number(kPositive);
-            readAttenuation(fields, material);
+        return readMeshOrWaterObject(node, type, sceneFolder, [](const JsonObjectReader& fields, ObjectDesc& shaped) {
+            shaped.material.index = fields.member("index").number(kPositive);
+            readAttenuation(fields, shaped.material);
+            readSurface(fields, shaped);
         });
     }
     if (type == "sphere") {
@@ -583,7 +584,7 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
                                      [](const ObjectDesc& object) { return object.isSharp(); });
     if (sharp > kMaxSharpObjects)
         fields.member("objects").fail("at most " + std::to_string(kMaxSharpObjects) +
-                                          " sharp spheres and boxes (set \"surface\": \"smooth\" on the others)",
+                                          " sharp objects (set \"surface\": \"smooth\" on the others)",
                                       std::to_string(sharp));
     scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
     scene.lights = readList<LightDesc>(fields, "lights", readLight);

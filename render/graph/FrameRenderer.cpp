@@ -94,7 +94,9 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     FrameResult result;
     const bool indexChanged = fields.indexVersion != tracedIndexVersion_;
     const bool extinctionChanged = fields.extinctionVersion != tracedExtinctionVersion_;
-    const bool fieldsChanged = indexChanged || extinctionChanged || fields.scatteringVersion != tracedScatteringVersion_;
+    const bool fieldsChanged = indexChanged || extinctionChanged ||
+                               fields.scatteringVersion != tracedScatteringVersion_ ||
+                               fields.surfaceVersion != tracedSurfaceVersion_;
     result.stages.push_back(runStage("upload", fieldsChanged, [&] {
         const UploadBytes bytes = fields_.upload(fields);
         result.copied = {std::exchange(pendingUpload_, {}).host + bytes.host, bytes.gpu};
@@ -121,6 +123,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     tracedIndexVersion_ = fields.indexVersion;
     tracedExtinctionVersion_ = fields.extinctionVersion;
     tracedScatteringVersion_ = fields.scatteringVersion;
+    tracedSurfaceVersion_ = fields.surfaceVersion;
     cameraChanged_ = lightsChanged_ = exposureChanged_ = false;
     if (viewNeeded && scene_.render.writeHdr) last_.hdr = view_->downloadHdr();
     result.image = last_.image;

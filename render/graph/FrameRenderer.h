@@ -87,7 +87,8 @@ private:
     PostStage post_;
     PhotonSettings photonSettings_;
 
-    std::uint64_t tracedIndexVersion_ = ~0ull, tracedExtinctionVersion_ = ~0ull, tracedScatteringVersion_ = ~0ull;
+    std::uint64_t tracedIndexVersion_ = ~0ull, tracedExtinctionVersion_ = ~0ull, tracedScatteringVersion_ = ~0ull,
+                  tracedSurfaceVersion_ = ~0ull;
     bool cameraChanged_ = true;
     bool lightsChanged_ = false;
     bool exposureChanged_ = false;

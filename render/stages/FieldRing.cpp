@@ -8,7 +8,7 @@ namespace eikon::render {
 
 namespace {
 
-enum Field { kIndex, kExtinction, kScattering, kAnisotropy };
+enum Field { kIndex, kExtinction, kScattering, kAnisotropy, kSurfaceDistance, kSurfaceBounds };
 
 std::span<float> span(const gl::MappedBuffer& buffer, std::size_t floats) {
     return floats ? std::span<float>(buffer.floats(), floats) : std::span<float>();
@@ -18,12 +18,20 @@ FieldSource source(const gl::MappedBuffer& buffer, std::size_t floats) {
     return floats ? FieldSource{nullptr, buffer.id(), floats} : FieldSource{};
 }
 
+// The bounds are read by the host (a few floats into a uniform buffer): the
+// mapping is coherent, and a published slot is not written again until the
+// GPU is done with it.
+FieldSource hostReadSource(const gl::MappedBuffer& buffer, std::size_t floats) {
+    return floats ? FieldSource{buffer.floats(), buffer.id(), floats} : FieldSource{};
+}
+
 }  // namespace
 
 FieldRing::FieldRing(const FieldSet& layout, int slots)
     : grid_(layout.grid),
       referenceIndex_(layout.referenceIndex),
-      floats_{layout.deltaIndex.size(), layout.extinction.size(), layout.scattering.size(), layout.anisotropy.size()},
+      floats_{layout.deltaIndex.size(),      layout.extinction.size(),    layout.scattering.size(),
+              layout.anisotropy.size(),      layout.surfaceDistance.size(), layout.surfaceBounds.size()},
       slots_(static_cast<std::size_t>(slots)) {
     EIKON_CHECK_MSG(slots >= 2, "a field ring needs two slots or more");
     for (Slot& slot : slots_)
@@ -38,7 +46,9 @@ FieldViews FieldRing::views(const Slot& slot) const {
             span(slot.buffers[kIndex], floats_[kIndex]),
             span(slot.buffers[kExtinction], floats_[kExtinction]),
             span(slot.buffers[kScattering], floats_[kScattering]),
-            span(slot.buffers[kAnisotropy], floats_[kAnisotropy])};
+            span(slot.buffers[kAnisotropy], floats_[kAnisotropy]),
+            span(slot.buffers[kSurfaceDistance], floats_[kSurfaceDistance]),
+            span(slot.buffers[kSurfaceBounds], floats_[kSurfaceBounds])};
 }
 
 FieldViews FieldRing::acquire() {
@@ -52,12 +62,14 @@ FieldViews FieldRing::acquire() {
     return views(slot);
 }
 
-void FieldRing::publish(std::uint64_t indexVersion, std::uint64_t extinctionVersion, std::uint64_t scatteringVersion) {
+void FieldRing::publish(std::uint64_t indexVersion, std::uint64_t extinctionVersion, std::uint64_t scatteringVersion,
+                        std::uint64_t surfaceVersion) {
     EIKON_CHECK_MSG(acquired_ >= 0, "publish without an acquired field ring slot");
     Slot& slot = slots_[static_cast<std::size_t>(acquired_)];
     slot.indexVersion = indexVersion;
     slot.extinctionVersion = extinctionVersion;
     slot.scatteringVersion = scatteringVersion;
+    slot.surfaceVersion = surfaceVersion;
     current_ = std::exchange(acquired_, -1);
 }
 
@@ -70,9 +82,12 @@ FieldUpload FieldRing::current() const {
             source(slot.buffers[kExtinction], floats_[kExtinction]),
             source(slot.buffers[kScattering], floats_[kScattering]),
             source(slot.buffers[kAnisotropy], floats_[kAnisotropy]),
+            source(slot.buffers[kSurfaceDistance], floats_[kSurfaceDistance]),
+            hostReadSource(slot.buffers[kSurfaceBounds], floats_[kSurfaceBounds]),
             slot.indexVersion,
             slot.extinctionVersion,
-            slot.scatteringVersion};
+            slot.scatteringVersion,
+            slot.surfaceVersion};
 }
 
 ConstFieldViews FieldRing::currentViews() const {

@@ -39,7 +39,8 @@ public:
     // publish().
     FieldViews acquire();
     // GL thread. The acquired slot becomes current, with these versions.
-    void publish(std::uint64_t indexVersion, std::uint64_t extinctionVersion, std::uint64_t scatteringVersion);
+    void publish(std::uint64_t indexVersion, std::uint64_t extinctionVersion, std::uint64_t scatteringVersion,
+                 std::uint64_t surfaceVersion);
 
     // The current slot for FieldTextures::upload; after issuing the commands
     // that read it, call fenceCurrent().
@@ -51,15 +52,15 @@ public:
 
 private:
     struct Slot {
-        std::array<gl::MappedBuffer, 4> buffers;  // δn, κ, σs, g (empty when absent)
+        std::array<gl::MappedBuffer, 6> buffers;  // δn, κ, σs, g, surface φ and bounds (empty when absent)
         gl::Fence readByGpu;
-        std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0;
+        std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0, surfaceVersion = 0;
     };
     FieldViews views(const Slot& slot) const;
 
     GridSpec grid_;
     double referenceIndex_ = 1.0;
-    std::array<std::size_t, 4> floats_{};  // per field; 0 when the scene lacks it
+    std::array<std::size_t, 6> floats_{};  // per field; 0 when the scene lacks it
     std::vector<Slot> slots_;
     int current_ = -1;
     int acquired_ = -1;

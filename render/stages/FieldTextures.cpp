@@ -1,6 +1,9 @@
 #include "render/stages/FieldTextures.h"
 
+#include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
+
+#include <string>
 
 namespace eikon::render {
 
@@ -14,9 +17,11 @@ FieldSource hostSource(const std::vector<float>& values) { return {values.data()
 
 // Copies `source` into `texture` (created on demand with `internalFormat`):
 // from a buffer bound as the pixel unpack buffer the copy stays on the GPU.
+// `layers` grids stack along z.
 void uploadField(gl::Texture3D& texture, GLenum internalFormat, GLenum format, const GridSpec& grid,
-                 const FieldSource& source, UploadBytes& bytes) {
-    if (!texture.id()) texture = gl::Texture3D(internalFormat, grid.resolution.x, grid.resolution.y, grid.resolution.z);
+                 const FieldSource& source, UploadBytes& bytes, int layers = 1) {
+    if (!texture.id())
+        texture = gl::Texture3D(internalFormat, grid.resolution.x, grid.resolution.y, grid.resolution.z * layers);
     const std::size_t size = source.floats * sizeof(float);
     if (source.buffer) {
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, source.buffer);
@@ -38,9 +43,12 @@ FieldUpload hostUpload(const FieldSet& fields) {
             hostSource(fields.extinction),
             hostSource(fields.scattering),
             hostSource(fields.anisotropy),
+            hostSource(fields.surfaceDistance),
+            hostSource(fields.surfaceBounds),
             fields.indexVersion,
             fields.extinctionVersion,
-            fields.scatteringVersion};
+            fields.scatteringVersion,
+            fields.surfaceVersion};
 }
 
 UploadBytes FieldTextures::upload(const FieldUpload& fields) {
@@ -59,7 +67,8 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
         extinction_ = {};
         scattering_ = {};
         anisotropy_ = {};
-        indexVersion_ = extinctionVersion_ = scatteringVersion_ = ~0ull;
+        surfaceDistance_ = {};
+        indexVersion_ = extinctionVersion_ = scatteringVersion_ = surfaceVersion_ = ~0ull;
         bytes.host += sizeof block;
     }
     if (fields.indexVersion != indexVersion_) uploadField(index_, GL_R32F, GL_RED, grid_, fields.deltaIndex, bytes);
@@ -74,6 +83,24 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
     if (!fields.anisotropy.floats) anisotropy_ = {};
     else if (scatteringChanged) uploadField(anisotropy_, GL_R32F, GL_RED, grid_, fields.anisotropy, bytes);
     scatteringVersion_ = fields.scatteringVersion;
+    if (!fields.surfaceDistance.floats) {
+        surfaceDistance_ = {};
+        surfaceBounds_.clear();
+    } else if (fields.surfaceVersion != surfaceVersion_) {
+        EIKON_CHECK_MSG(fields.surfaceBounds.host, "sharp surface bounds are read from host memory");
+        const int layers = static_cast<int>(fields.surfaceBounds.floats / kSurfaceBoundsFloats);
+        GLint largest = 0;
+        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+        if (grid_.resolution.z * layers > largest)
+            throw InputError("sharp mesh and water surfaces", "at most " + std::to_string(largest / grid_.resolution.z) +
+                             " on a grid " + std::to_string(grid_.resolution.z) + " cells deep (GL_MAX_3D_TEXTURE_SIZE " +
+                             std::to_string(largest) + "; set \"surface\": \"smooth\" on the others)",
+                             std::to_string(layers));
+        uploadField(surfaceDistance_, GL_R32F, GL_RED, grid_, fields.surfaceDistance, bytes, layers);
+        surfaceBounds_.assign(fields.surfaceBounds.host, fields.surfaceBounds.host + fields.surfaceBounds.floats);
+        bytes.host += fields.surfaceBounds.floats * sizeof(float);
+    }
+    surfaceVersion_ = fields.surfaceVersion;
     return bytes;
 }
 
@@ -83,6 +110,7 @@ void FieldTextures::bindForTracing() const {
     if (hasExtinction()) extinction_.bindSampler(layout::kExtinctionTexture);
     if (hasScattering()) scattering_.bindSampler(layout::kScatteringTexture);
     if (hasAnisotropy()) anisotropy_.bindSampler(layout::kAnisotropyTexture);
+    if (surfaceDistance_.id()) surfaceDistance_.bindSampler(layout::kSurfaceDistanceTexture);
 }
 
 }  // namespace eikon::render

@@ -126,7 +126,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     }
     program_.use();
     if (!surfaces_.empty()) {
-        surfaces_.bind();
+        surfaces_.bind(fields);
         glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
     }
     glUniform1ui(program_.uniform("emitter_count"), emitterCount_);

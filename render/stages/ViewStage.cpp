@@ -101,7 +101,7 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     if (exits_.id()) exits_.bindStorage(layout::kViewExit);
     program_.use();
     if (!surfaces_.empty()) {
-        surfaces_.bind();
+        surfaces_.bind(fields);
         glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
         glUniform1ui(program_.uniform("surface_depth"), static_cast<GLuint>(render_.surfaceDepth));
     }

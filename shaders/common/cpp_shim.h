@@ -6,6 +6,8 @@
 // shaders/common declare GPU blocks and are GLSL only.
 #pragma once
 
+#include "bridge/layout/GpuLayouts.h"
+
 #include <glm/glm.hpp>
 
 #include <cmath>
@@ -17,6 +19,10 @@ namespace eikon::shader {
 
 using namespace glm;
 using uint = glm::uint;
+// Constants GLSL is given (render/gl/ShaderLibrary prepends them).
+using layout::kSharpBox;
+using layout::kSharpDistance;
+using layout::kSharpSphere;
 
 // GLSL built-ins GLM spells differently.
 inline uint floatBitsToUint(float value) { return glm::floatBitsToUint(value); }

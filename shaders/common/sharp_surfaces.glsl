@@ -1,14 +1,19 @@
-// Sharp surfaces: the exact boundaries of spheres and boxes inside graded
-// media. Light follows the ray equation between them and refracts (Snell) or
-// reflects (Fresnel, total internal reflection) where a step meets one.
+// Sharp surfaces: the exact boundaries of objects inside graded media. Light
+// follows the ray equation between them and refracts (Snell) or reflects
+// (Fresnel, total internal reflection) where a step meets one.
 // A surface is two vec4s (bridge/layout/GpuLayouts.h, GpuSharpSurface):
-//   shape_a: xyz sphere centre or box min, w kind (0 sphere, 1 box)
+//   shape_a: xyz sphere centre, or box min; w kind (kSharpSphere, kSharpBox, kSharpDistance)
 //   shape_b: x sphere radius, or xyz box max
+// This file holds the analytic shapes (spheres, boxes) and the refraction
+// law; mesh and water surfaces, given by a signed distance on the grid, are
+// in sharp_distance_surfaces.glsl (GLSL only: it samples a texture).
 // Shared by GLSL and C++ (cpp_shim.h).
 
 const float EIKON_NO_CROSSING = 1e30f;
 
-bool is_box(vec4 shape_a) { return shape_a.w > 0.5f; }
+int surface_kind(vec4 shape_a) { return int(shape_a.w + 0.5f); }
+
+bool is_box(vec4 shape_a) { return surface_kind(shape_a) == kSharpBox; }
 
 // Whether p lies inside the shape.
 bool inside_shape(vec4 shape_a, vec4 shape_b, vec3 p) {

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <fstream>
 
 namespace eikon::test {
 
@@ -52,6 +53,21 @@ double channelMean(const std::vector<float>& map, int channel) {
     double sum = 0.0;
     for (std::size_t i = static_cast<std::size_t>(channel); i < map.size(); i += 3) sum += map[i];
     return sum / static_cast<double>(map.size() / 3);
+}
+
+ObjectDesc meshObject(const TriangleMesh& mesh, const std::string& name, double index) {
+    const std::string path = testing::TempDir() + "/" + name;
+    std::ofstream obj(path);
+    obj.precision(17);
+    for (const glm::dvec3& v : mesh.vertices) obj << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (const glm::ivec3& t : mesh.triangles) obj << "f " << t.x + 1 << " " << t.y + 1 << " " << t.z + 1 << "\n";
+    obj.close();
+    EXPECT_TRUE(obj) << path;
+    ObjectDesc object;
+    object.kind = ObjectDesc::Kind::Mesh;
+    object.mesh.path = path;
+    object.material.index = index;
+    return object;
 }
 
 }  // namespace eikon::test

@@ -2,11 +2,13 @@
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
+#include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
 #include "render/stages/PhotonStage.h"
 
 #include <glm/vec4.hpp>
 
+#include <string>
 #include <vector>
 
 namespace eikon::test {
@@ -35,5 +37,9 @@ TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::Phot
 TraceResult trace(const Scene& scene, render::PhotonProgramOptions options = {});
 
 double channelMean(const std::vector<float>& rgb, int channel);
+
+// A sharp glass object of `index` whose shape is `mesh`, written as an OBJ
+// file `name` into the test's temporary folder.
+ObjectDesc meshObject(const TriangleMesh& mesh, const std::string& name, double index);
 
 }  // namespace eikon::test

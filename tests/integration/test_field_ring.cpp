@@ -88,7 +88,7 @@ TEST_F(FieldRingTest, SlotsHaveTheLayoutsFieldsAndNoHostCopy) {
     EXPECT_EQ(slot.deltaIndex.size(), layout.grid.cellCount());
     EXPECT_FALSE(slot.hasExtinction());
     std::fill(slot.deltaIndex.begin(), slot.deltaIndex.end(), 0.25f);
-    ring.publish(1, 1, 1);
+    ring.publish(1, 1, 1, 1);
     render::FieldTextures textures;
     const render::UploadBytes bytes = textures.upload(ring.current());
     EXPECT_EQ(bytes.gpu, layout.grid.cellCount() * sizeof(float));
@@ -118,7 +118,7 @@ TEST_F(FieldRingTest, ThousandFramesNeverWriteASlotTheGpuReads) {
             slot.extinction[v + 2] = 3.0f * value;
         }
         const auto version = static_cast<std::uint64_t>(frame + 1);
-        ring.publish(version, version, version);
+        ring.publish(version, version, version, 1);
         textures.upload(ring.current());
         ring.fenceCurrent();
         for (int pass = 0; pass < 3; ++pass) probe.check(textures, kCells, value);  // a slow GPU

@@ -72,6 +72,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"extinction_texture", layout::kExtinctionTexture}, {"scattering_texture", layout::kScatteringTexture},
         {"step_structure", layout::kStepTexture},           {"environment_texture", layout::kEnvironmentTexture},
         {"anisotropy_texture", layout::kAnisotropyTexture},
+        {"surface_distance_texture", layout::kSurfaceDistanceTexture},
     };
     return rows;
 }

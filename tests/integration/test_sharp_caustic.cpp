@@ -10,8 +10,11 @@
 // the peak within 10%.
 #include "io/scene/SceneParser.h"
 #include "render/graph/FrameRenderer.h"
+#include "sim/SceneFields.h"
+#include "sim/deform/MeshShapes.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
+#include "tests/integration/TraceHelpers.h"
 #include "verify/reference/ReceiverFilter.h"
 #include "verify/reference/SphereCaustic.h"
 
@@ -60,11 +63,8 @@ double shadowEdge(const std::vector<double>& profile, const reference::SphereCau
     return -1.0;
 }
 
-// The floor irradiance (green, W/m²) of the default scene as the photon pass
-// gives it, with `overrides` applied.
-std::vector<double> floorIrradiance(const std::vector<std::string>& overrides) {
-    const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json", overrides);
-    const FieldSet fields = sim::voxelizeScene(scene);
+// The floor irradiance (green, W/m²) of `scene` as the photon pass gives it.
+std::vector<double> floorIrradianceOf(const Scene& scene, const FieldSet& fields) {
     render::FrameRenderer renderer(scene, fields);
     const render::FrameResult result = renderer.render(fields);
     EXPECT_LE(result.photons.balanceError(), 1e-6);
@@ -72,6 +72,47 @@ std::vector<double> floorIrradiance(const std::vector<std::string>& overrides) {
     std::vector<double> green(rgb.size() / 3);
     for (std::size_t t = 0; t < green.size(); ++t) green[t] = rgb[3 * t + 1];
     return green;
+}
+
+Scene defaultScene(const std::vector<std::string>& overrides) {
+    return loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json", overrides);
+}
+
+// The default scene's floor irradiance, with `overrides` applied.
+std::vector<double> floorIrradiance(const std::vector<std::string>& overrides) {
+    const Scene scene = defaultScene(overrides);
+    return floorIrradianceOf(scene, sim::voxelizeScene(scene));
+}
+
+// The exact-sphere reference of the default scene: `setup` and its map.
+struct Reference {
+    reference::SphereCausticSetup setup;
+    std::vector<double> unfiltered;
+    std::vector<double> filtered;  // through the receiver's 3×3 binomial kernel
+    double shadow = 0.0;           // closed-form shadow radius, m
+    double texel = 0.0;            // m
+};
+
+Reference defaultSceneReference() {
+    const Scene scene = defaultScene({});
+    const ReceiverDesc& receiver = scene.receivers[0];
+    EXPECT_EQ(receiver.resolution, kResolution);
+    Reference truth;
+    reference::SphereCausticSetup& setup = truth.setup;
+    setup.light = scene.lights[0].position;
+    setup.power = scene.lights[0].power.g;
+    setup.centre = scene.objects[0].sphere.center;
+    setup.radius = scene.objects[0].sphere.radius;
+    setup.sphereIndex = scene.objects[0].material.index;
+    setup.receiverCentre = receiver.point;
+    setup.size = receiver.size;
+    setup.resolution = kResolution;
+    setup.rays = 8'000'000;
+    truth.unfiltered = reference::traceSphereCaustic(setup).irradiance;
+    truth.filtered = reference::binomialFilter(truth.unfiltered, kResolution);
+    truth.shadow = reference::shadowRadius(setup);
+    truth.texel = setup.size / kResolution;
+    return truth;
 }
 
 struct DiskError {
@@ -96,25 +137,13 @@ DiskError diskError(const std::vector<double>& map, const std::vector<double>& e
 
 TEST(SharpCaustic, DefaultSceneMatchesTheExactSphereReference) {
     test::glContext();
-    const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json", {});
-    ASSERT_TRUE(scene.objects[0].isSharp()) << "the default scene's glass is sharp";
-    const ReceiverDesc& receiver = scene.receivers[0];
-    ASSERT_EQ(receiver.resolution, kResolution);
-
-    reference::SphereCausticSetup setup;
-    setup.light = scene.lights[0].position;
-    setup.power = scene.lights[0].power.g;
-    setup.centre = scene.objects[0].sphere.center;
-    setup.radius = scene.objects[0].sphere.radius;
-    setup.sphereIndex = scene.objects[0].material.index;
-    setup.receiverCentre = receiver.point;
-    setup.size = receiver.size;
-    setup.resolution = kResolution;
-    setup.rays = 8'000'000;
-    const std::vector<double> unfiltered = reference::traceSphereCaustic(setup).irradiance;
-    const std::vector<double> exact = reference::binomialFilter(unfiltered, kResolution);
-    const double shadow = reference::shadowRadius(setup);
-    const double texel = setup.size / kResolution;
+    ASSERT_TRUE(defaultScene({}).objects[0].isSharp()) << "the default scene's glass is sharp";
+    const Reference truth = defaultSceneReference();
+    const reference::SphereCausticSetup& setup = truth.setup;
+    const std::vector<double>& unfiltered = truth.unfiltered;
+    const std::vector<double>& exact = truth.filtered;
+    const double shadow = truth.shadow;
+    const double texel = truth.texel;
 
     const std::vector<double> sharp = floorIrradiance({});
     const double edge = shadowEdge(radialProfile(sharp, setup.size, kResolution), setup);
@@ -146,6 +175,29 @@ TEST(SharpCaustic, DefaultSceneMatchesTheExactSphereReference) {
     const DiskError smoothError = diskError(smooth, exact, shadow, setup.size);
     test::reportFigure("smooth_caustic_disk_relative_l1", smoothError.relativeL1);
     test::reportFigure("smooth_caustic_shadow_edge_m", shadowEdge(radialProfile(smooth, setup.size, kResolution), setup));
+}
+
+// The same glass sphere as a triangle mesh (96 rings, 36 864 triangles),
+// whose sharp surface the tracers find as the zero set of its signed
+// distance on the scene's grid (h = 1.25 cm): the same tolerances as the
+// analytic sphere, through the same filter.
+TEST(SharpCaustic, SphereMeshMatchesTheExactSphereReference) {
+    test::glContext();
+    const Reference truth = defaultSceneReference();
+    Scene scene = defaultScene({});
+    const SphereShape sphere = scene.objects[0].sphere;
+    scene.objects[0] = test::meshObject(sim::sphereMesh(sphere.center, sphere.radius, 96, 192), "default_sphere96.obj",
+                                        scene.objects[0].material.index);
+    const sim::SceneFields fields(scene);
+    const std::vector<double> map = floorIrradianceOf(scene, fields.fields());
+    const double edge = shadowEdge(radialProfile(map, truth.setup.size, kResolution), truth.setup);
+    test::reportFigure("sharp_mesh_caustic_shadow_edge_m", edge);
+    EXPECT_NEAR(edge, truth.shadow, truth.texel);
+    const DiskError error = diskError(map, truth.filtered, truth.shadow, truth.setup.size);
+    test::reportFigure("sharp_mesh_caustic_disk_relative_l1", error.relativeL1);
+    test::reportFigure("sharp_mesh_caustic_peak_ratio", error.peakRatio);
+    EXPECT_LE(error.relativeL1, 0.10);
+    EXPECT_NEAR(error.peakRatio, 1.0, 0.10);
 }
 
 }  // namespace

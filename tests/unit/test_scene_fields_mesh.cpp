@@ -40,6 +40,7 @@ Scene twistingBarScene() {
     bar.mesh.deformer.amount = {{0.0, 0.0}, {1.0, 300.0}};
     bar.material.index = 1.5;
     bar.material.extinction = Rgb(1.0, 2.0, 3.0);
+    bar.surface = ObjectDesc::Surface::Smooth;  // voxelized into the index
     scene.objects.push_back(bar);
     scene.frameTime = 0.1;
     return scene;
@@ -116,6 +117,7 @@ TEST(SceneFieldsMesh, WaterMovesWithSceneTime) {
     water.water.swellAmplitude = 0.01;
     water.water.swellWavelength = 0.3;
     water.material.index = 1.333;
+    water.surface = ObjectDesc::Surface::Smooth;  // voxelized into the index
     scene.objects.push_back(water);
     scene.frameTime = 0.05;
     SceneFields fields(scene);
@@ -124,6 +126,44 @@ TEST(SceneFieldsMesh, WaterMovesWithSceneTime) {
     EXPECT_NE(fields.fields().deltaIndex, before);
     EXPECT_NEAR(fields.fields().deltaIndex[fields.fields().grid.linearIndex(16, 2, 16)], 0.333f, 1e-6) << "deep water";
     EXPECT_EQ(fields.fields().deltaIndex[fields.fields().grid.linearIndex(16, 14, 16)], 0.0f) << "air above";
+}
+
+// A sharp mesh keeps its index out of the field and hands the tracers its
+// signed distance instead: one layer, negative inside, clamped to the band,
+// bounds that hold the bar, republished (and only then) as it deforms.
+TEST(SceneFieldsMesh, SharpMeshPublishesItsDistanceLayer) {
+    Scene scene = twistingBarScene();
+    scene.objects[0].surface = ObjectDesc::Surface::Sharp;
+    SceneFields fields(scene);
+    const FieldSet& set = fields.fields();
+    const GridSpec& grid = set.grid;
+    ASSERT_EQ(set.surfaceLayers(), 1u);
+    ASSERT_EQ(set.surfaceDistance.size(), grid.cellCount());
+    EXPECT_NO_THROW(validateFields(set, "test"));
+    EXPECT_EQ(set.deltaIndex[grid.linearIndex(24, 24, 24)], 0.0f) << "no index voxelized";
+    EXPECT_GT(set.extinction[3 * grid.linearIndex(24, 24, 24)], 0.0f) << "its extinction is";
+    const double h = grid.smallestVoxelEdge();
+    const float band = set.surfaceDistance[grid.linearIndex(0, 0, 0)];
+    EXPECT_GT(band, 0.0f) << "far outside";
+    EXPECT_EQ(set.surfaceDistance[grid.linearIndex(24, 24, 24)], -band) << "deep inside, clamped";
+    // Cells (28, 24, 24) and (27, 24, 24) have their centres at x = 0.1125
+    // and 0.0875, half a cell either side of the face x = 0.1.
+    EXPECT_NEAR(set.surfaceDistance[grid.linearIndex(28, 24, 24)], 0.5 * h, 1e-3 * h);
+    EXPECT_NEAR(set.surfaceDistance[grid.linearIndex(27, 24, 24)], -0.5 * h, 1e-3 * h);
+    EXPECT_LE(set.surfaceBounds[0], -0.1);
+    EXPECT_GE(set.surfaceBounds[4], 0.4);
+    const std::uint64_t version = set.surfaceVersion;
+    const std::vector<float> before = set.surfaceDistance;
+    fields.advanceFrame();
+    EXPECT_GT(fields.fields().surfaceVersion, version);
+    EXPECT_NE(fields.fields().surfaceDistance, before) << "the bar twists";
+    Scene still = twistingBarScene();
+    still.objects[0].surface = ObjectDesc::Surface::Sharp;
+    still.objects[0].mesh.deformer = {};
+    SceneFields stillFields(still);
+    const std::uint64_t stillVersion = stillFields.fields().surfaceVersion;
+    stillFields.advanceFrame();
+    EXPECT_EQ(stillFields.fields().surfaceVersion, stillVersion) << "nothing moved: nothing to upload";
 }
 
 }  // namespace

@@ -122,9 +122,8 @@ TEST(SceneParserMesh, BadValuesNameTheirJsonPath) {
     expectErrorAt(withSim, "frame_time", "sim.frame_time");
 }
 
-// Spheres and boxes are sharp unless they say smooth, with Fresnel on;
-// meshes and water are smooth and refuse "sharp" until it is built; at
-// most 32 sharp objects.
+// Every object is sharp unless it says smooth, with Fresnel on; meshes and
+// water as spheres and boxes; at most 32 sharp objects.
 TEST(SceneParserMesh, SurfaceKeys) {
     json root = validScene();
     root["objects"][0]["surface"] = "smooth";
@@ -134,13 +133,22 @@ TEST(SceneParserMesh, SurfaceKeys) {
     EXPECT_TRUE(scene.objects[1].isSharp());
     EXPECT_FALSE(scene.objects[1].fresnel);
     EXPECT_TRUE(parseScene(validScene(), "test.json").objects[0].isSharp()) << "sharp by default";
-    EXPECT_FALSE(parseScene(sceneWithObject(meshObject()), "test.json").objects[0].isSharp());
+    const ObjectDesc sharpMesh = parseScene(sceneWithObject(meshObject()), "test.json").objects[0];
+    EXPECT_TRUE(sharpMesh.isSharp()) << "meshes too";
+    EXPECT_TRUE(sharpMesh.hasDistanceSurface());
+    json mesh = meshObject();
+    mesh["surface"] = "smooth";
+    mesh["fresnel"] = false;
+    const ObjectDesc smoothMesh = parseScene(sceneWithObject(mesh), "test.json").objects[0];
+    EXPECT_FALSE(smoothMesh.isSharp());
+    EXPECT_FALSE(smoothMesh.hasDistanceSurface());
+    EXPECT_FALSE(smoothMesh.fresnel);
+    EXPECT_FALSE(scene.objects[1].hasDistanceSurface()) << "a sphere is an exact shape";
 
     root["objects"][0]["surface"] = "glassy";
     expectErrorAt(root, "objects[0].surface", "\"sharp\"");
-    json mesh = meshObject();
-    mesh["surface"] = "sharp";
-    expectErrorAt(sceneWithObject(mesh), "objects[0].surface", "not built yet");
+    mesh["surface"] = "glassy";
+    expectErrorAt(sceneWithObject(mesh), "objects[0].surface", "\"sharp\"");
     json many = validScene();
     many["objects"] = json::array();
     for (int k = 0; k < 33; ++k)
