@@ -14,7 +14,7 @@
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].map.z)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
-//   EIKON_SHARP_SURFACES   1: the scene has sharp spheres or boxes (common/sharp_surface_blocks.glsl)
+//   EIKON_SHARP_SURFACES   1: the scene has sharp surfaces (common/sharp_surface_blocks.glsl)
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
 layout(local_size_x = 64) in;

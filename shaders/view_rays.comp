@@ -19,7 +19,7 @@
 // Program options: EIKON_HAS_EXTINCTION, EIKON_HAS_SCATTERING,
 // EIKON_HAS_ANISOTROPY, EIKON_STEP_STRUCTURE (1: large steps through empty
 // nodes), EIKON_FRESNEL, EIKON_ENVIRONMENT (layout::EnvironmentKind),
-// EIKON_SHARP_SURFACES (1: the scene has sharp spheres or boxes),
+// EIKON_SHARP_SURFACES (1: the scene has sharp surfaces),
 // EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
 layout(local_size_x = 8, local_size_y = 8) in;
 

@@ -95,7 +95,7 @@ void paintObjects(const Scene& scene, const FieldViews& fields, const CoverageGr
                     if (c <= 0.0) continue;
                     covered = true;
                     // A sharp object's index is not voxelized: the tracer applies it exactly
-                    // at its surface (render/stages/SharpSurfaces.h); its attenuation is.
+                    // at its surface (render/stages/SharpSurfaceBuffer.h); its attenuation is.
                     if (!object.isSharp()) m.index += c * (object.material.index - m.index);
                     m.extinction += c * (object.material.extinction - m.extinction);
                     m.scattering += c * (object.material.scattering - m.scattering);
