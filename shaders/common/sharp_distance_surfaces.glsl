@@ -47,12 +47,8 @@ float surface_distance(int layer, vec3 x) {
 
 int distance_layer(vec4 shape_b) { return int(shape_b.w + 0.5f); }
 
-bool inside_distance_box(vec4 shape_a, vec4 shape_b, vec3 x) {
-    return all(greaterThan(x, xyz_of(shape_a))) && all(lessThan(x, xyz_of(shape_b)));
-}
-
 bool inside_distance_surface(vec4 shape_a, vec4 shape_b, vec3 x) {
-    return inside_distance_box(shape_a, shape_b, x) && surface_distance(distance_layer(shape_b), x) < 0.0f;
+    return inside_box(xyz_of(shape_a), xyz_of(shape_b), x) && surface_distance(distance_layer(shape_b), x) < 0.0f;
 }
 
 // The outward unit normal: φ's gradient by central differences one cell apart.
@@ -85,13 +81,9 @@ vec2 distance_surface_crossing(vec4 shape_a, vec4 shape_b, vec3 x, vec3 d, bool 
     float t_low = t_min;
     float t_high = reach;
     if (!inside) {  // φ < 0 only inside the box
-        vec3 safe = mix(d, vec3(1e-12f), lessThan(abs(d), vec3(1e-12f)));
-        vec3 t1 = (xyz_of(shape_a) - x) / safe;
-        vec3 t2 = (xyz_of(shape_b) - x) / safe;
-        vec3 near = min(t1, t2);
-        vec3 far = max(t1, t2);
-        t_low = max(t_low, max(near.x, max(near.y, near.z)));
-        t_high = min(t_high, min(far.x, min(far.y, far.z)));
+        vec2 interval = box_ray_interval(xyz_of(shape_a), xyz_of(shape_b), x, d);
+        t_low = max(t_low, interval.x);
+        t_high = min(t_high, interval.y);
         if (t_low >= t_high) return vec2(reach, 0.0f);
     }
     float smallest_probe = 0.05f * min(grid.voxel_size.x, min(grid.voxel_size.y, grid.voxel_size.z));

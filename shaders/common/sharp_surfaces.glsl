@@ -15,10 +15,24 @@ int surface_kind(vec4 shape_a) { return int(shape_a.w + 0.5f); }
 
 bool is_box(vec4 shape_a) { return surface_kind(shape_a) == kSharpBox; }
 
+// Whether p lies inside the box [low, high].
+bool inside_box(vec3 low, vec3 high, vec3 p) { return all(greaterThan(p, low)) && all(lessThan(p, high)); }
+
+// Parameters (t_enter, t_leave) of the line x + t·d inside the box [low,
+// high] (slabs; a zero component of d becomes tiny so that 0·∞ never
+// appears); t_enter > t_leave when it misses.
+vec2 box_ray_interval(vec3 low, vec3 high, vec3 x, vec3 d) {
+    vec3 safe = mix(d, vec3(1e-12f), lessThan(abs(d), vec3(1e-12f)));
+    vec3 t1 = (low - x) / safe;
+    vec3 t2 = (high - x) / safe;
+    vec3 t_low = min(t1, t2);
+    vec3 t_high = max(t1, t2);
+    return vec2(max(t_low.x, max(t_low.y, t_low.z)), min(t_high.x, min(t_high.y, t_high.z)));
+}
+
 // Whether p lies inside the shape.
 bool inside_shape(vec4 shape_a, vec4 shape_b, vec3 p) {
-    if (is_box(shape_a))
-        return all(greaterThan(p, xyz_of(shape_a))) && all(lessThan(p, xyz_of(shape_b)));
+    if (is_box(shape_a)) return inside_box(xyz_of(shape_a), xyz_of(shape_b), p);
     vec3 offset = p - xyz_of(shape_a);
     return dot(offset, offset) < shape_b.x * shape_b.x;
 }
@@ -29,14 +43,9 @@ bool inside_shape(vec4 shape_a, vec4 shape_b, vec3 p) {
 // EIKON_NO_CROSSING when it does not meet it.
 float surface_crossing(vec4 shape_a, vec4 shape_b, vec3 x, vec3 d, bool inside, float t_min) {
     if (is_box(shape_a)) {
-        // Slabs; a zero component becomes tiny so that 0·∞ never appears.
-        vec3 safe = mix(d, vec3(1e-12f), lessThan(abs(d), vec3(1e-12f)));
-        vec3 t1 = (xyz_of(shape_a) - x) / safe;
-        vec3 t2 = (xyz_of(shape_b) - x) / safe;
-        vec3 t_low = min(t1, t2);
-        vec3 t_high = max(t1, t2);
-        float t_enter = max(t_low.x, max(t_low.y, t_low.z));
-        float t_leave = min(t_high.x, min(t_high.y, t_high.z));
+        vec2 interval = box_ray_interval(xyz_of(shape_a), xyz_of(shape_b), x, d);
+        float t_enter = interval.x;
+        float t_leave = interval.y;
         if (inside) return t_leave > 0.0f ? t_leave : 0.0f;
         return (t_enter <= t_leave && t_enter > t_min) ? t_enter : EIKON_NO_CROSSING;
     }
