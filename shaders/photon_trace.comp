@@ -17,9 +17,12 @@
 //   EIKON_SHARP_SURFACES   1: the scene has sharp surfaces (common/sharp_surface_blocks.glsl)
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
+//   EIKON_LOOP_BUDGET      loop iterations a photon may run where the driver caps them
+//                          (common/loop_budget.glsl); 0: no cap
 layout(local_size_x = 64) in;
 
 #include "common/grid_sampling.glsl"
+#include "common/loop_budget.glsl"
 #include "common/random.glsl"
 #include "common/ray_step.glsl"
 #include "common/attenuation.glsl"
@@ -208,6 +211,7 @@ void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa) {
     vec3 t_delta = mix(inverse, vec3(1e30f), equal(span, vec3(0.0f)));
     float t = 0.0f;
     int guard = 3 * (int(abs(span.x)) + int(abs(span.y)) + int(abs(span.z))) + 6;
+    spend_loops(uint(guard));
     for (int i = 0; i < guard; ++i) {
         float t_next = min(1.0f, min(t_max.x, min(t_max.y, t_max.z)));
         float piece = (t_next - t) * length_;
@@ -249,6 +253,7 @@ void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa) {
 }
 
 uint emitter_of(uint photon) {
+    spend_loops(emitter_count);
     uint e = 0u;
     while (e + 1u < emitter_count && photon >= emitters[e + 1u].photons.x) ++e;
     return e;
@@ -332,14 +337,15 @@ void integrate(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) fie
 uint inside_mask = 0u;     // the sharp surfaces the photon is inside (common/sharp_surface_blocks.glsl)
 uint surface_events = 0u;  // this photon's crossings so far: its random dimensions there
 
-// Where a step ended on sharp surface k: Snell refraction into the index on
+// Where a step ended at a sharp surface (`crossing`): Snell refraction into the index on
 // the other side, or reflection with the unpolarised Fresnel probability
 // (Russian roulette: the photon keeps its power either way, so the split is
 // unbiased) and always under total internal reflection. The indices on
 // either side are the graded field at the surface plus each side's offset.
-void cross_sharp_surface(uint k, uint photon, INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field) {
+void cross_sharp_surface(SurfaceCrossing crossing, uint photon, INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v,
+                         INOUT(vec4) field) {
     vec3 d = normalize(v);
-    SurfaceEvent event = sharp_surface_event(k, x, d, inside_mask, channel_scale);
+    SurfaceEvent event = sharp_surface_event(crossing, x, d, inside_mask, channel_scale);
     x_lost = vec3(0.0f);
     bool reflects = event.reflectance >= 1.0f ||
                     (event.reflectance > 0.0f && random_uniform(seed, photon, 64u + surface_events) < event.reflectance);
@@ -364,6 +370,8 @@ void enter_sharp_region(vec3 x) {
     sharp_offset = sharp_index_offset(inside_mask);
 }
 #endif
+
+#include "common/pass_loops.glsl"
 
 void trace_photon(uint photon) {
     Emitter emitter = emitters[emitter_of(photon)];
@@ -410,6 +418,11 @@ void trace_photon(uint photon) {
     record_vertex(photon, vertex++, x, power);
 
     for (;;) {
+        spend_loops(loops_per_pass());
+        if (!loops_left()) {  // only where the driver caps loops: cut off, and counted
+            fate = kCutOff;
+            break;
+        }
         if (!grid_contains(x)) {
             vec3 d = normalize(v);
             StraightFlight flight = fly_straight(x, d);
@@ -448,6 +461,10 @@ void trace_photon(uint photon) {
         // crossing is resolved before the next one.
         SurfaceCrossing crossing = nearest_surface_crossing(x, normalize(v), inside_mask, ds, 1e-4f * grid.voxel_size.x);
         ds = crossing.distance;
+        if (!loops_left()) {  // the search stopped short
+            fate = kCutOff;
+            break;
+        }
 #endif
         vec3 start = x;
         integrate(x, x_lost, v, field, ds);
@@ -475,7 +492,7 @@ void trace_photon(uint photon) {
         }
 #endif
 #if EIKON_SHARP_SURFACES
-        if (crossing.surface >= 0) cross_sharp_surface(uint(crossing.surface), photon, x, x_lost, v, field);
+        if (crossing.surface >= 0) cross_sharp_surface(crossing, photon, x, x_lost, v, field);
 #endif
         record_vertex(photon, vertex++, x, power);
         if (max(power.r, max(power.g, power.b)) < cutoff) {

@@ -24,6 +24,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/grid_sampling.glsl"
+#include "common/loop_budget.glsl"
 #include "common/ray_step.glsl"
 #include "common/attenuation.glsl"
 #include "common/phase.glsl"
@@ -183,13 +184,13 @@ ViewRay pending[MAX_PENDING];  // branches split off and not yet traced (depth f
 int pending_count = 0;
 
 #if EIKON_SHARP_SURFACES
-// Where a step ended on sharp surface k: the branch goes on refracted with
+// Where a step ended at a sharp surface (`crossing`): the branch goes on refracted with
 // (1 − R) of its throughput and, while it has met fewer than surface_depth
 // events, the reflection with R is traced as well; past that it follows the
 // stronger of the two. Total internal reflection keeps all of it.
-void split_at_sharp_surface(uint k, INOUT(ViewRay) ray) {
+void split_at_sharp_surface(SurfaceCrossing crossing, INOUT(ViewRay) ray) {
     vec3 d = normalize(ray.v);
-    SurfaceEvent event = sharp_surface_event(k, ray.x, d, ray.inside_mask, 1.0f);
+    SurfaceEvent event = sharp_surface_event(crossing, ray.x, d, ray.inside_mask, 1.0f);
     float reflectance = event.reflectance;
     ++ray.depth;
     if (reflectance >= 1.0f) {
@@ -216,6 +217,8 @@ void split_at_sharp_surface(uint k, INOUT(ViewRay) ray) {
     }
 }
 #endif
+
+#include "common/pass_loops.glsl"
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -245,6 +248,10 @@ void main() {
         vec3 v = ray.v;
         float branch_exit = 0.0f;
         for (;;) {
+            // Where the driver caps loops, a ray out of budget keeps the
+            // radiance it has gathered (docs/accuracy.md).
+            spend_loops(loops_per_pass());
+            if (!loops_left()) break;
             if (!grid_contains(x)) {
                 vec3 d = normalize(v);
                 StraightFlight flight = fly_straight(x, d);
@@ -279,6 +286,7 @@ void main() {
             SurfaceCrossing crossing =
                 nearest_surface_crossing(x, d, ray.inside_mask, ds, 1e-4f * grid.voxel_size.x);
             ds = crossing.distance;
+            if (!loops_left()) break;
 #endif
             vec3 start = x;
             integrate_leapfrog(x, x_lost, v, field, ds);
@@ -304,7 +312,7 @@ void main() {
             if (crossing.surface >= 0) {
                 ray.x = x;
                 ray.v = v;
-                split_at_sharp_surface(uint(crossing.surface), ray);
+                split_at_sharp_surface(crossing, ray);
                 x = ray.x;
                 x_lost = vec3(0.0f);
                 v = ray.v;
@@ -318,7 +326,7 @@ void main() {
             exit_direction = normalize(v);
             first_branch = false;
         }
-        if (pending_count == 0) break;
+        if (pending_count == 0 || !loops_left()) break;
         ray = pending[--pending_count];
 #if EIKON_SHARP_SURFACES
         sharp_offset = sharp_index_offset(ray.inside_mask);

@@ -1,5 +1,6 @@
 #include "sim/SceneFields.h"
 
+#include "sim/SharpMeshSurfaces.h"
 #include "sim/deform/AnimatedMesh.h"
 #include "sim/fluid/SolverExport.h"
 #include "sim/voxelize/Compositor.h"
@@ -18,7 +19,11 @@ struct SceneFields::MeshObject {
     AnimatedMesh shape;
     MeshCoverage coverage;
     CellBlocks changed;  // cells whose coverage the last update recomputed
-    int layer;           // its layer of fields().surfaceDistance when its surface is sharp, else −1
+    // When its surface is sharp: its triangles for the tracers, and where
+    // they go in fields().surfaceNodes and surfaceTriangles.
+    std::unique_ptr<SharpMeshSurface> surface;
+    std::size_t root = 0, firstNode = 0, firstTriangle = 0;
+    bool published = false;
 };
 
 namespace {
@@ -33,22 +38,31 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
     fields_.grid = scene.grid.spec();
     fields_.referenceIndex = scene.medium.index;
     fields_.deltaIndex.assign(fields_.grid.cellCount(), 0.0f);
-    int layers = 0;
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& object = scene.objects[o];
         if (object.kind != ObjectDesc::Kind::Mesh && object.kind != ObjectDesc::Kind::Water) continue;
         const std::string where = scene.sourcePath + ": objects[" + std::to_string(o) + "]";
-        const int layer = object.hasDistanceSurface() ? layers++ : -1;
-        meshes_.push_back(std::unique_ptr<MeshObject>(new MeshObject{
-            o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBlocks(fields_.grid), layer}));
+        meshes_.push_back(std::unique_ptr<MeshObject>(
+            new MeshObject{o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBlocks(fields_.grid), {}}));
+        if (object.hasTriangleSurface())
+            meshes_.back()->surface = std::make_unique<SharpMeshSurface>(meshes_.back()->shape.mesh());
     }
-    fields_.surfaceDistance.resize(static_cast<std::size_t>(layers) * fields_.grid.cellCount());
-    fields_.surfaceBounds.resize(static_cast<std::size_t>(layers) * kSurfaceBoundsFloats);
-    for (const auto& mesh : meshes_)  // far from the surface, before any update: the band's edge
-        if (mesh->layer >= 0)
-            std::copy(mesh->coverage.distances().begin(), mesh->coverage.distances().end(),
-                      fields_.surfaceDistance.begin() + static_cast<std::ptrdiff_t>(mesh->layer) *
-                                                            static_cast<std::ptrdiff_t>(fields_.grid.cellCount()));
+    // The roots first (node k: the k-th sharp mesh), then each tree's other nodes.
+    std::size_t roots = 0, triangles = 0;
+    for (const auto& mesh : meshes_)
+        if (mesh->surface) ++roots;
+    std::size_t nodes = roots;
+    roots = 0;
+    for (auto& mesh : meshes_) {
+        if (!mesh->surface) continue;
+        mesh->root = roots++;
+        mesh->firstNode = nodes;
+        mesh->firstTriangle = triangles;
+        nodes += mesh->surface->nodeCount() - 1;
+        triangles += mesh->surface->triangleCount();
+    }
+    fields_.surfaceNodes.resize(nodes * kSurfaceNodeFloats);
+    fields_.surfaceTriangles.resize(triangles * kSurfaceTriangleFloats);
     updateMeshes();
     fillMedium(scene_, fields_, CellBox::whole(fields_.grid));
     if (scene.sim) {
@@ -98,25 +112,13 @@ void SceneFields::updateMeshes() {
     }
 }
 
-// A sharp mesh's φ into its layer, where it changed, and its bounds.
-void SceneFields::publishSurface(const MeshObject& mesh) {
-    if (mesh.layer < 0 || mesh.changed.empty()) return;
-    const std::size_t cells = fields_.grid.cellCount();
-    float* layer = fields_.surfaceDistance.data() + static_cast<std::size_t>(mesh.layer) * cells;
-    const std::vector<float>& distances = mesh.coverage.distances();
-    for (const CellBox& box : mesh.changed.boxes())
-        for (int k = box.min.z; k < box.max.z; ++k)
-            for (int j = box.min.y; j < box.max.y; ++j) {
-                const std::size_t row = fields_.grid.linearIndex(box.min.x, j, k);
-                std::copy_n(distances.begin() + static_cast<std::ptrdiff_t>(row), box.max.x - box.min.x, layer + row);
-            }
-    glm::dvec3 min, max;
-    mesh.coverage.distanceBounds(min, max);
-    float* bounds = fields_.surfaceBounds.data() + static_cast<std::size_t>(mesh.layer) * kSurfaceBoundsFloats;
-    for (int axis = 0; axis < 3; ++axis) {
-        bounds[axis] = static_cast<float>(min[axis]);
-        bounds[3 + axis] = static_cast<float>(max[axis]);
-    }
+// A sharp mesh's tree and triangles, refitted when its vertices moved
+// within the grid (the tracers see no surface outside it).
+void SceneFields::publishSurface(MeshObject& mesh) {
+    if (!mesh.surface || (mesh.published && mesh.changed.empty())) return;
+    mesh.published = true;
+    mesh.surface->write(mesh.shape.mesh(), mesh.root, mesh.firstNode, mesh.firstTriangle, fields_.surfaceNodes.data(),
+                        fields_.surfaceTriangles.data());
     ++fields_.surfaceVersion;
 }
 
@@ -195,11 +197,11 @@ void SceneFields::writeFrameInto(const FieldViews& target) const {
     EIKON_CHECK_MSG((frame.hasExtinction() || !fluidOptics_->absorbs()) &&
                         (frame.hasScattering() || !fluidOptics_->scatters()),
                     "field views without the fields the optical model writes");
-    EIKON_CHECK_MSG(frame.surfaceDistance.size() == fields_.surfaceDistance.size() &&
-                        frame.surfaceBounds.size() == fields_.surfaceBounds.size(),
-                    "field views without the scene's sharp surface layers");
-    std::copy(fields_.surfaceDistance.begin(), fields_.surfaceDistance.end(), frame.surfaceDistance.begin());
-    std::copy(fields_.surfaceBounds.begin(), fields_.surfaceBounds.end(), frame.surfaceBounds.begin());
+    EIKON_CHECK_MSG(frame.surfaceNodes.size() == fields_.surfaceNodes.size() &&
+                        frame.surfaceTriangles.size() == fields_.surfaceTriangles.size(),
+                    "field views without the scene's sharp surfaces");
+    std::copy(fields_.surfaceNodes.begin(), fields_.surfaceNodes.end(), frame.surfaceNodes.begin());
+    std::copy(fields_.surfaceTriangles.begin(), fields_.surfaceTriangles.end(), frame.surfaceTriangles.begin());
     mapOpticalFields(*fluidOptics_, fluid_->scalars(), frame);
     paintObjects(scene_, frame, coverageGrids());
     paintStrokes(scene_, frame);

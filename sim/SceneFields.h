@@ -2,8 +2,9 @@
 // voxelized once; or the fluid solver's fields (a `sim` section) or an
 // OpenVDB file or sequence (a `volume`, one file per frame) with the objects
 // composited over them. Mesh and water objects move with scene time; without
-// a solver or volume only the cells their motion touched are recomputed,
-// and so are the signed distances of those whose surface is sharp.
+// a solver or volume only the cells their motion touched are recomputed;
+// the triangles of those whose surface is sharp are refitted into their
+// trees (sim/SharpMeshSurfaces.h).
 // Paint strokes go over everything. Fields are validated as they leave here,
 // toward the renderer.
 #pragma once
@@ -64,7 +65,7 @@ public:
 private:
     struct MeshObject;
     void updateMeshes();
-    void publishSurface(const MeshObject& mesh);
+    void publishSurface(MeshObject& mesh);
     CoverageGrids coverageGrids() const;
     void refreshFromSimulation();
 

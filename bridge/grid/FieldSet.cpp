@@ -44,13 +44,13 @@ void validateFields(const ConstFieldViews& fields, const std::string& source) {
                 throw InputError(source + ": field anisotropy, " + cellName(fields.grid, c), "a value in (-1, 1)",
                                  std::to_string(fields.anisotropy[c]));
     }
-    checkSize(fields.surfaceDistance, cells * (fields.surfaceBounds.size() / kSurfaceBoundsFloats),
-              source + ": field surface_distance");
-    for (std::size_t v = 0; v < fields.surfaceDistance.size(); ++v)
-        if (!std::isfinite(fields.surfaceDistance[v]))
-            throw InputError(source + ": field surface_distance, layer " + std::to_string(v / cells) + ", " +
-                                 cellName(fields.grid, v % cells),
-                             "a finite distance", std::to_string(fields.surfaceDistance[v]));
+    if (fields.surfaceTriangles.size() % kSurfaceTriangleFloats != 0)
+        throw InputError(source + ": sharp surface triangles", "a multiple of " + std::to_string(kSurfaceTriangleFloats) +
+                         " floats", std::to_string(fields.surfaceTriangles.size()));
+    for (std::size_t v = 0; v < fields.surfaceTriangles.size(); ++v)
+        if (!std::isfinite(fields.surfaceTriangles[v]))
+            throw InputError(source + ": sharp surface triangle " + std::to_string(v / kSurfaceTriangleFloats),
+                             "finite corners and normals", std::to_string(fields.surfaceTriangles[v]));
     for (std::size_t v = 0; v < 3 * cells; ++v) {
         const float kappa = fields.hasExtinction() ? fields.extinction[v] : 0.0f;
         const float sigma = fields.hasScattering() ? fields.scattering[v] : 0.0f;

@@ -13,7 +13,16 @@
 
 namespace eikon {
 
-constexpr std::size_t kSurfaceBoundsFloats = 6;  // per sharp-surface layer: min xyz, max xyz
+// The sharp mesh and water surfaces as triangles in bounding-volume
+// hierarchies (bridge/mesh/TriangleBvh.h), all objects in two arrays whose
+// layout the tracers read (shaders/common/sharp_triangle_surfaces.glsl):
+// a node is min xyz, then `first`, max xyz, then `count` (integers held
+// exactly as floats); a triangle is its three corners, each followed by a
+// padding float, then its three corner normals likewise (the normal
+// of the smooth surface the facets approximate, or the facet's own at a
+// crease).
+constexpr std::size_t kSurfaceNodeFloats = 8;
+constexpr std::size_t kSurfaceTriangleFloats = 24;
 
 struct FieldSet {
     GridSpec grid;
@@ -22,29 +31,27 @@ struct FieldSet {
     std::vector<float> extinction;    // three per cell (RGB), empty when κ = 0 everywhere
     std::vector<float> scattering;    // three per cell (RGB), empty when σs = 0 everywhere
     std::vector<float> anisotropy;    // Henyey–Greenstein g, one per cell, empty when g = 0 everywhere
-    // The sharp mesh and water surfaces (sim/voxelize/MeshCoverage.h), one
-    // layer per object in scene order: φ at every cell centre in metres,
-    // negative inside, exact within a narrow band of the surface and clamped
-    // to its edge beyond, layer after layer (empty when the scene has none);
-    // and per layer the box outside which φ is positive (min xyz, max xyz).
-    std::vector<float> surfaceDistance;
-    std::vector<float> surfaceBounds;
+    // The sharp mesh and water surfaces (sim/SharpMeshSurfaces.h), empty
+    // when the scene has none: the nodes of every object's tree, the roots
+    // first (node k is the root of the k-th such object in scene order), and
+    // the triangles the leaves index.
+    std::vector<float> surfaceNodes;
+    std::vector<float> surfaceTriangles;
     std::uint64_t indexVersion = 0;
     std::uint64_t extinctionVersion = 0;
     std::uint64_t scatteringVersion = 0;  // σs and g together
-    std::uint64_t surfaceVersion = 0;     // surface distances and bounds together
+    std::uint64_t surfaceVersion = 0;     // surface nodes and triangles together
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }
     bool hasAnisotropy() const { return !anisotropy.empty(); }
-    std::size_t surfaceLayers() const { return surfaceBounds.size() / kSurfaceBoundsFloats; }
 };
 
 // Replaces `current` with `next` and bumps `version` if their values differ.
 void publishField(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version);
 
 // Throws InputError naming the field and cell of the first value that is not
-// finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ, φ not finite): fields are checked
+// finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ, a surface vertex or normal not finite): fields are checked
 // where they enter the bridge, never traced silently.
 void validateFields(const FieldSet& fields, const std::string& source);
 

@@ -3,7 +3,7 @@
 // persistently mapped GPU buffers (render/stages/FieldRing.h), so that the
 // simulation writes its output straight into memory the GPU reads.
 // Layout as in FieldSet: δn one float per cell, κ and σs three (RGB), g one,
-// the sharp surfaces' φ one per cell and layer and six bounds per layer; an
+// the sharp surfaces' tree nodes and triangles as FieldSet lays them out; an
 // empty span is a field the scene does not have.
 #pragma once
 
@@ -22,15 +22,15 @@ struct BasicFieldViews {
     std::span<Value> extinction;
     std::span<Value> scattering;
     std::span<Value> anisotropy;
-    std::span<Value> surfaceDistance;
-    std::span<Value> surfaceBounds;
+    std::span<Value> surfaceNodes;
+    std::span<Value> surfaceTriangles;
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }
     bool hasAnisotropy() const { return !anisotropy.empty(); }
 
     operator BasicFieldViews<const float>() const {
-        return {grid, referenceIndex, deltaIndex, extinction, scattering, anisotropy, surfaceDistance, surfaceBounds};
+        return {grid, referenceIndex, deltaIndex, extinction, scattering, anisotropy, surfaceNodes, surfaceTriangles};
     }
 };
 using FieldViews = BasicFieldViews<float>;

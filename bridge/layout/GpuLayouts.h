@@ -43,7 +43,9 @@
     X(kRawFluenceDirection, 14) /* buffer RawFluenceDirection: and its unsmoothed direction sums */                             \
     X(kViewExit, 15)            /* buffer ViewExit { vec4 exit[]; }: per pixel, direction leaving the scene, w: how (tests) */  \
     X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */          \
-    X(kSharpSurfaces, 17)       /* buffer SharpSurfaces { GpuSharpSurface surfaces[]; } */
+    X(kSharpSurfaces, 17)       /* buffer SharpSurfaces { GpuSharpSurface surfaces[]; } */                                      \
+    X(kSurfaceNodes, 18)        /* buffer SurfaceNodes { vec4 nodes[]; }: the sharp meshes' trees (FieldSet.h) */              \
+    X(kSurfaceTriangles, 19)    /* buffer SurfaceTriangles { vec4 triangles[]; }: their corners and normals (FieldSet.h) */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into
@@ -56,8 +58,7 @@
     X(kScatteringTexture, 3)  /* rgba32f (σs rgb, 0) */                                                            \
     X(kStepTexture, 4)        /* rgba32f (octree level, step cap in m, 1 if the node is empty of extinction, 0) */ \
     X(kEnvironmentTexture, 5) /* rgba32f equirectangular environment */                                            \
-    X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */                                                       \
-    X(kSurfaceDistanceTexture, 7) /* r32f φ of the sharp mesh and water surfaces, layers stacked along z */
+    X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \
@@ -84,11 +85,11 @@
     X(kTallyCount, 7)
 
 // Kinds of sharp surface (GpuSharpSurface::shapeA.w): a sphere, a box, or a
-// mesh or water surface given by a layer of signed distance.
+// mesh or water surface given by its triangles.
 #define EIKON_LAYOUT_SHARP_SURFACE_KINDS(X) \
     X(kSharpSphere, 0)                      \
     X(kSharpBox, 1)                         \
-    X(kSharpDistance, 2)
+    X(kSharpTriangles, 2)
 
 // Every list above: the constants each shader program is given.
 #define EIKON_LAYOUT_SHADER_CONSTANTS(X) \
@@ -173,10 +174,10 @@ static_assert(offsetof(GpuPhotonStats, invariant) == 216);
 static_assert(offsetof(GpuPhotonStats, surfaces) == 232);
 
 // A sharp surface (shaders/common/sharp_surfaces.glsl), in scene order: a
-// sphere, a box, or a mesh or water surface given by its signed distance.
+// sphere, a box, or a mesh or water surface given by its triangles.
 struct GpuSharpSurface {
-    glm::vec4 shapeA;  // xyz: sphere centre, or box or distance-layer bounds min (m); w: kind (SharpSurfaceKind)
-    glm::vec4 shapeB;  // x: sphere radius (m); or xyz box or bounds max (m), w: distance layer
+    glm::vec4 shapeA;  // xyz: sphere centre or box min (m); w: kind (SharpSurfaceKind)
+    glm::vec4 shapeB;  // x: sphere radius (m); or xyz box max (m); w: a mesh's root node (FieldSet::surfaceNodes)
     glm::vec4 optics;  // x: n_object − n_ref; y: 1 if Fresnel reflection is on; zw unused
 };
 static_assert(sizeof(GpuSharpSurface) == 48);

@@ -88,8 +88,8 @@ struct ObjectDesc {
     bool fresnel = true;  // sharp: reflect at the surface by Fresnel; false: transmit only (total internal reflection stays)
 
     bool isSharp() const { return surface == Surface::Sharp; }
-    // A sharp mesh or water object: its surface reaches the tracers as a layer of signed distance.
-    bool hasDistanceSurface() const { return isSharp() && (kind == Kind::Mesh || kind == Kind::Water); }
+    // A sharp mesh or water object: its surface reaches the tracers as triangles.
+    bool hasTriangleSurface() const { return isSharp() && (kind == Kind::Mesh || kind == Kind::Water); }
 };
 
 // A brush dragged along a path through the volume ([Sun08] §6.2.1, volume

@@ -4,6 +4,8 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <regex>
 #include <stdexcept>
 #include <string>
 
@@ -17,6 +19,17 @@ std::string glString(GLenum name) {
 }
 
 }  // namespace
+
+unsigned loopBudgetForRenderer(const std::string& renderer) {
+    if (renderer.find("llvmpipe") == std::string::npos) return 0;
+    static const std::regex width(R"((\d+) bits\))");
+    std::smatch match;
+    const int bits = std::regex_search(renderer, match, width) ? std::stoi(match[1].str()) : 512;
+    constexpr unsigned kLlvmpipeLoopIterations = 65535;
+    return kLlvmpipeLoopIterations / static_cast<unsigned>(std::max(1, bits / 32));
+}
+
+unsigned currentLoopBudget() { return loopBudgetForRenderer(glString(GL_RENDERER)); }
 
 void GlContext::initialiseCurrent(const std::string& platform) {
     info_.vendor = glString(GL_VENDOR);

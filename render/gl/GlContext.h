@@ -21,6 +21,18 @@ struct GlInfo {
     }
 };
 
+// Loop iterations a shader invocation may run on a driver that caps them
+// (0: no cap), for all its loops together. llvmpipe runs invocations in
+// SIMD vectors of `bits`/32 lanes (its renderer string ends "(LLVM x, 256
+// bits)") and ends every loop of a vector once the vector's loops have
+// iterated LP_MAX_TGSI_LOOP_ITERATIONS = 65 535 times between them, leaving
+// the invocation's state wherever it was. A vector iterates at most as
+// often as its lanes do together, so a lane that keeps to 65 535 / lanes
+// iterations is never cut short. Unknown widths count as 512 bits.
+unsigned loopBudgetForRenderer(const std::string& renderer);
+// The same for the current context.
+unsigned currentLoopBudget();
+
 class GlContext {
 public:
     virtual ~GlContext() = default;

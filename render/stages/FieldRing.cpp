@@ -8,7 +8,7 @@ namespace eikon::render {
 
 namespace {
 
-enum Field { kIndex, kExtinction, kScattering, kAnisotropy, kSurfaceDistance, kSurfaceBounds };
+enum Field { kIndex, kExtinction, kScattering, kAnisotropy, kSurfaceNodes, kSurfaceTriangles };
 
 std::span<float> span(const gl::MappedBuffer& buffer, std::size_t floats) {
     return floats ? std::span<float>(buffer.floats(), floats) : std::span<float>();
@@ -18,20 +18,13 @@ FieldSource source(const gl::MappedBuffer& buffer, std::size_t floats) {
     return floats ? FieldSource{nullptr, buffer.id(), floats} : FieldSource{};
 }
 
-// The bounds are read by the host (a few floats into a uniform buffer): the
-// mapping is coherent, and a published slot is not written again until the
-// GPU is done with it.
-FieldSource hostReadSource(const gl::MappedBuffer& buffer, std::size_t floats) {
-    return floats ? FieldSource{buffer.floats(), buffer.id(), floats} : FieldSource{};
-}
-
 }  // namespace
 
 FieldRing::FieldRing(const FieldSet& layout, int slots)
     : grid_(layout.grid),
       referenceIndex_(layout.referenceIndex),
       floats_{layout.deltaIndex.size(),      layout.extinction.size(),    layout.scattering.size(),
-              layout.anisotropy.size(),      layout.surfaceDistance.size(), layout.surfaceBounds.size()},
+              layout.anisotropy.size(),      layout.surfaceNodes.size(),    layout.surfaceTriangles.size()},
       slots_(static_cast<std::size_t>(slots)) {
     EIKON_CHECK_MSG(slots >= 2, "a field ring needs two slots or more");
     for (Slot& slot : slots_)
@@ -47,8 +40,8 @@ FieldViews FieldRing::views(const Slot& slot) const {
             span(slot.buffers[kExtinction], floats_[kExtinction]),
             span(slot.buffers[kScattering], floats_[kScattering]),
             span(slot.buffers[kAnisotropy], floats_[kAnisotropy]),
-            span(slot.buffers[kSurfaceDistance], floats_[kSurfaceDistance]),
-            span(slot.buffers[kSurfaceBounds], floats_[kSurfaceBounds])};
+            span(slot.buffers[kSurfaceNodes], floats_[kSurfaceNodes]),
+            span(slot.buffers[kSurfaceTriangles], floats_[kSurfaceTriangles])};
 }
 
 FieldViews FieldRing::acquire() {
@@ -82,8 +75,8 @@ FieldUpload FieldRing::current() const {
             source(slot.buffers[kExtinction], floats_[kExtinction]),
             source(slot.buffers[kScattering], floats_[kScattering]),
             source(slot.buffers[kAnisotropy], floats_[kAnisotropy]),
-            source(slot.buffers[kSurfaceDistance], floats_[kSurfaceDistance]),
-            hostReadSource(slot.buffers[kSurfaceBounds], floats_[kSurfaceBounds]),
+            source(slot.buffers[kSurfaceNodes], floats_[kSurfaceNodes]),
+            source(slot.buffers[kSurfaceTriangles], floats_[kSurfaceTriangles]),
             slot.indexVersion,
             slot.extinctionVersion,
             slot.scatteringVersion,

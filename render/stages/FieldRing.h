@@ -52,7 +52,7 @@ public:
 
 private:
     struct Slot {
-        std::array<gl::MappedBuffer, 6> buffers;  // δn, κ, σs, g, surface φ and bounds (empty when absent)
+        std::array<gl::MappedBuffer, 6> buffers;  // δn, κ, σs, g, surface nodes and triangles (empty when absent)
         gl::Fence readByGpu;
         std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0, surfaceVersion = 0;
     };

@@ -17,11 +17,9 @@ FieldSource hostSource(const std::vector<float>& values) { return {values.data()
 
 // Copies `source` into `texture` (created on demand with `internalFormat`):
 // from a buffer bound as the pixel unpack buffer the copy stays on the GPU.
-// `layers` grids stack along z.
 void uploadField(gl::Texture3D& texture, GLenum internalFormat, GLenum format, const GridSpec& grid,
-                 const FieldSource& source, UploadBytes& bytes, int layers = 1) {
-    if (!texture.id())
-        texture = gl::Texture3D(internalFormat, grid.resolution.x, grid.resolution.y, grid.resolution.z * layers);
+                 const FieldSource& source, UploadBytes& bytes) {
+    if (!texture.id()) texture = gl::Texture3D(internalFormat, grid.resolution.x, grid.resolution.y, grid.resolution.z);
     const std::size_t size = source.floats * sizeof(float);
     if (source.buffer) {
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, source.buffer);
@@ -30,6 +28,27 @@ void uploadField(gl::Texture3D& texture, GLenum internalFormat, GLenum format, c
         bytes.gpu += size;
     } else {
         texture.upload(format, GL_FLOAT, source.host);
+        bytes.host += size;
+    }
+}
+
+// Copies `source` into the storage buffer `buffer` (made anew when its size
+// changes), from host memory or, on the GPU, from a GL buffer.
+void uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& bytes) {
+    const std::size_t size = source.floats * sizeof(float);
+    GLint64 largest = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
+    if (size > static_cast<std::size_t>(largest))
+        throw InputError("sharp mesh and water surfaces",
+                         "at most " + std::to_string(largest) + " bytes of triangles or tree nodes "
+                         "(GL_MAX_SHADER_STORAGE_BLOCK_SIZE; set \"surface\": \"smooth\" on some)",
+                         std::to_string(size) + " bytes");
+    if (buffer.bytes() != size) buffer = gl::Buffer(size);
+    if (source.buffer) {
+        glCopyNamedBufferSubData(source.buffer, buffer.id(), 0, 0, static_cast<GLsizeiptr>(size));
+        bytes.gpu += size;
+    } else {
+        buffer.upload(source.host, size);
         bytes.host += size;
     }
 }
@@ -43,8 +62,8 @@ FieldUpload hostUpload(const FieldSet& fields) {
             hostSource(fields.extinction),
             hostSource(fields.scattering),
             hostSource(fields.anisotropy),
-            hostSource(fields.surfaceDistance),
-            hostSource(fields.surfaceBounds),
+            hostSource(fields.surfaceNodes),
+            hostSource(fields.surfaceTriangles),
             fields.indexVersion,
             fields.extinctionVersion,
             fields.scatteringVersion,
@@ -67,7 +86,6 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
         extinction_ = {};
         scattering_ = {};
         anisotropy_ = {};
-        surfaceDistance_ = {};
         indexVersion_ = extinctionVersion_ = scatteringVersion_ = surfaceVersion_ = ~0ull;
         bytes.host += sizeof block;
     }
@@ -83,22 +101,12 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
     if (!fields.anisotropy.floats) anisotropy_ = {};
     else if (scatteringChanged) uploadField(anisotropy_, GL_R32F, GL_RED, grid_, fields.anisotropy, bytes);
     scatteringVersion_ = fields.scatteringVersion;
-    if (!fields.surfaceDistance.floats) {
-        surfaceDistance_ = {};
-        surfaceBounds_.clear();
+    if (!fields.surfaceTriangles.floats) {
+        surfaceNodes_ = {};
+        surfaceTriangles_ = {};
     } else if (fields.surfaceVersion != surfaceVersion_) {
-        EIKON_CHECK_MSG(fields.surfaceBounds.host, "sharp surface bounds are read from host memory");
-        const int layers = static_cast<int>(fields.surfaceBounds.floats / kSurfaceBoundsFloats);
-        GLint largest = 0;
-        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
-        if (grid_.resolution.z * layers > largest)
-            throw InputError("sharp mesh and water surfaces", "at most " + std::to_string(largest / grid_.resolution.z) +
-                             " on a grid " + std::to_string(grid_.resolution.z) + " cells deep (GL_MAX_3D_TEXTURE_SIZE " +
-                             std::to_string(largest) + "; set \"surface\": \"smooth\" on the others)",
-                             std::to_string(layers));
-        uploadField(surfaceDistance_, GL_R32F, GL_RED, grid_, fields.surfaceDistance, bytes, layers);
-        surfaceBounds_.assign(fields.surfaceBounds.host, fields.surfaceBounds.host + fields.surfaceBounds.floats);
-        bytes.host += fields.surfaceBounds.floats * sizeof(float);
+        uploadBuffer(surfaceNodes_, fields.surfaceNodes, bytes);
+        uploadBuffer(surfaceTriangles_, fields.surfaceTriangles, bytes);
     }
     surfaceVersion_ = fields.surfaceVersion;
     return bytes;
@@ -110,7 +118,10 @@ void FieldTextures::bindForTracing() const {
     if (hasExtinction()) extinction_.bindSampler(layout::kExtinctionTexture);
     if (hasScattering()) scattering_.bindSampler(layout::kScatteringTexture);
     if (hasAnisotropy()) anisotropy_.bindSampler(layout::kAnisotropyTexture);
-    if (surfaceDistance_.id()) surfaceDistance_.bindSampler(layout::kSurfaceDistanceTexture);
+    if (surfaceTriangles_.id()) {
+        surfaceNodes_.bindStorage(layout::kSurfaceNodes);
+        surfaceTriangles_.bindStorage(layout::kSurfaceTriangles);
+    }
 }
 
 }  // namespace eikon::render

@@ -1,17 +1,16 @@
 // The field grid on the GPU: the GridBlock uniform and one 3D texture per
-// field the scene has (δn always; κ, σs and the sharp surfaces' distance
-// layers only when present). Re-uploads a
-// field only when its version changed. Values come either from host memory
-// (the driver copies them: host bytes) or from a GL buffer the simulation
-// wrote in place (render/stages/FieldRing.h; the copy into the texture runs
-// on the GPU: no host bytes).
+// field the scene has (δn always; κ, σs only when present), and the storage
+// buffers of the sharp mesh and water surfaces' trees and triangles (when
+// the scene has such surfaces). Re-uploads a field only when its version
+// changed. Values come either from host memory (the driver copies them: host
+// bytes) or from a GL buffer the simulation wrote in place
+// (render/stages/FieldRing.h; the copy runs on the GPU: no host bytes).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
 #include "render/gl/GlObjects.h"
 
 #include <cstdint>
-#include <vector>
 
 namespace eikon::render {
 
@@ -27,8 +26,7 @@ struct FieldUpload {
     GridSpec grid;
     double referenceIndex = 1.0;
     FieldSource deltaIndex, extinction, scattering, anisotropy;
-    FieldSource surfaceDistance;
-    FieldSource surfaceBounds;  // read from host memory (`host` is set)
+    FieldSource surfaceNodes, surfaceTriangles;
     std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0, surfaceVersion = 0;
 };
 
@@ -50,13 +48,11 @@ public:
     bool hasExtinction() const { return static_cast<bool>(extinction_.id()); }
     bool hasScattering() const { return static_cast<bool>(scattering_.id()); }
     bool hasAnisotropy() const { return static_cast<bool>(anisotropy_.id()); }
-    // The sharp surfaces' bounds, six floats per layer (FieldSet::surfaceBounds), and their version.
-    const std::vector<float>& surfaceBounds() const { return surfaceBounds_; }
     std::uint64_t surfaceVersion() const { return surfaceVersion_; }
     const GridSpec& grid() const { return grid_; }
     std::uint64_t indexVersion() const { return indexVersion_; }
 
-    // Binds the grid block and the textures tracers sample.
+    // Binds the grid block, the textures tracers sample and the surface buffers.
     void bindForTracing() const;
 
 private:
@@ -67,8 +63,8 @@ private:
     gl::Texture3D extinction_;
     gl::Texture3D scattering_;
     gl::Texture3D anisotropy_;
-    gl::Texture3D surfaceDistance_;  // layers stacked along z
-    std::vector<float> surfaceBounds_;
+    gl::Buffer surfaceNodes_;
+    gl::Buffer surfaceTriangles_;
     std::uint64_t indexVersion_ = ~0ull;
     std::uint64_t extinctionVersion_ = ~0ull;
     std::uint64_t scatteringVersion_ = ~0ull;  // also covers anisotropy, which scattering owns

@@ -1,6 +1,7 @@
 #include "render/stages/PhotonStage.h"
 
 #include "bridge/layout/GpuLayouts.h"
+#include "render/gl/GlContext.h"
 #include "render/gl/GlDebug.h"
 #include "render/gl/ShaderLibrary.h"
 #include "render/stages/PhotonEmission.h"
@@ -73,7 +74,8 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
-        {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))}};
+        {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))},
+        {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())}};
     program_ = gl::compileComputeProgram("photon_trace.comp", defines);
     setEmitters(scene);
     if (storeFluence_ > 0) {
@@ -126,7 +128,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     }
     program_.use();
     if (!surfaces_.empty()) {
-        surfaces_.bind(fields);
+        surfaces_.bind();
         glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
     }
     glUniform1ui(program_.uniform("emitter_count"), emitterCount_);

@@ -2,16 +2,15 @@
 // shaders/common/sharp_surface_blocks.glsl): every object whose `surface` is
 // sharp, in scene order, with the index offset its inside adds to the graded
 // field. Spheres and boxes are exact shapes; a mesh or water surface is its
-// layer of signed distance in the field textures, with bounds that follow
-// the deforming mesh frame by frame. Photons and camera rays refract and
-// reflect there exactly; the voxelized fields hold none of their index
+// tree of triangles, which the field buffers carry frame by frame
+// (FieldTextures, FieldSet::surfaceNodes). Photons and camera rays refract
+// and reflect there exactly; the voxelized fields hold none of their index
 // (sim/voxelize/Compositor.h).
 #pragma once
 
 #include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
-#include "render/stages/FieldTextures.h"
 
 #include <cstdint>
 #include <vector>
@@ -19,8 +18,8 @@
 namespace eikon::render {
 
 // The scene's sharp objects as surfaces (empty when it has none; at most
-// kMaxSharpObjects, which the scene parser checks). Distance surfaces get
-// their layer, in scene order; their bounds are set by SharpSurfaceBuffer.
+// kMaxSharpObjects, which the scene parser checks). Mesh and water surfaces
+// get their root node: the k-th such object in scene order has node k.
 std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene);
 
 class SharpSurfaceBuffer {
@@ -29,14 +28,11 @@ public:
 
     unsigned count() const { return static_cast<unsigned>(surfaces_.size()); }
     bool empty() const { return surfaces_.empty(); }
-    // Brings the distance surfaces' bounds up to date with `fields` and binds
-    // the buffer and the distance layers.
-    void bind(const FieldTextures& fields);
+    void bind() const;
 
 private:
     std::vector<layout::GpuSharpSurface> surfaces_;
     gl::Buffer buffer_;
-    std::uint64_t boundsVersion_ = ~0ull;
 };
 
 }  // namespace eikon::render

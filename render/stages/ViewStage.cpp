@@ -1,6 +1,7 @@
 #include "render/stages/ViewStage.h"
 
 #include "bridge/core/Error.h"
+#include "render/gl/GlContext.h"
 #include "render/gl/GlDebug.h"
 #include "render/gl/ShaderLibrary.h"
 #include "render/stages/GaussianKernel.h"
@@ -69,7 +70,8 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                            {"EIKON_STEP_STRUCTURE", hasStepStructure ? "1" : "0"},
                            {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
                            {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
-                           {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"}});
+                           {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"},
+                           {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())}});
     if (scene.render.environment.kind == EnvironmentDesc::Kind::Hdr) {
         const FloatImage* image = scene.render.environment.image.get();
         EIKON_CHECK_MSG(image != nullptr, "an hdr environment arrives with its image read (io/scene)");
@@ -101,7 +103,7 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     if (exits_.id()) exits_.bindStorage(layout::kViewExit);
     program_.use();
     if (!surfaces_.empty()) {
-        surfaces_.bind(fields);
+        surfaces_.bind();
         glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
         glUniform1ui(program_.uniform("surface_depth"), static_cast<GLuint>(render_.surfaceDepth));
     }

@@ -21,7 +21,7 @@ using namespace glm;
 using uint = glm::uint;
 // Constants GLSL is given (render/gl/ShaderLibrary prepends them).
 using layout::kSharpBox;
-using layout::kSharpDistance;
+using layout::kSharpTriangles;
 using layout::kSharpSphere;
 
 // GLSL built-ins GLM spells differently.

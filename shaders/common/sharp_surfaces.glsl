@@ -2,11 +2,11 @@
 // follows the ray equation between them and refracts (Snell) or reflects
 // (Fresnel, total internal reflection) where a step meets one.
 // A surface is two vec4s (bridge/layout/GpuLayouts.h, GpuSharpSurface):
-//   shape_a: xyz sphere centre, or box min; w kind (kSharpSphere, kSharpBox, kSharpDistance)
-//   shape_b: x sphere radius, or xyz box max
+//   shape_a: xyz sphere centre, or box min; w kind (kSharpSphere, kSharpBox, kSharpTriangles)
+//   shape_b: x sphere radius, or xyz box max; w a mesh's root node
 // This file holds the analytic shapes (spheres, boxes) and the refraction
-// law; mesh and water surfaces, given by a signed distance on the grid, are
-// in sharp_distance_surfaces.glsl (GLSL only: it samples a texture).
+// law; mesh and water surfaces, given by their triangles, are in
+// sharp_triangle_surfaces.glsl (GLSL only: it reads storage buffers).
 // Shared by GLSL and C++ (cpp_shim.h).
 
 const float EIKON_NO_CROSSING = 1e30f;

@@ -25,8 +25,7 @@ void initializeOpenVdbOnce() {
 
 }  // namespace
 
-MeshCoverage::MeshCoverage(const GridSpec& grid)
-    : grid_(grid), coverage_(grid.cellCount(), 0.0f), distance_(grid.cellCount(), static_cast<float>(bandDistance())) {
+MeshCoverage::MeshCoverage(const GridSpec& grid) : grid_(grid), coverage_(grid.cellCount(), 0.0f) {
     initializeOpenVdbOnce();
 }
 
@@ -52,16 +51,6 @@ double MeshCoverage::coveredVolume() const {
 // trilinear stencil of their gradient; in voxels of the smallest edge.
 double MeshCoverage::bandHalfWidth() const {
     return std::max(2.0, std::ceil(0.5 * glm::length(grid_.voxelSize()) / grid_.smallestVoxelEdge()) + 1.0);
-}
-
-double MeshCoverage::bandDistance() const { return bandHalfWidth() * grid_.smallestVoxelEdge(); }
-
-void MeshCoverage::distanceBounds(glm::dvec3& min, glm::dvec3& max) const {
-    EIKON_CHECK_MSG(!first_, "distance bounds before the first update");
-    vertexBounds(previous_, min, max);
-    const double reach = glm::length(grid_.voxelSize());
-    min -= reach;
-    max += reach;
 }
 
 // A cell reads φ at its centre and half a voxel to either side of it.
@@ -122,7 +111,6 @@ void MeshCoverage::recompute(const TriangleMesh& mesh, const CellBlocks& region)
     const auto start = std::chrono::steady_clock::now();
     const glm::dvec3 step = 0.5 * voxel;
     const double certain = halfDiagonal + 0.5 * h;  // beyond this from the centre φ cannot change sign in the cell
-    const double band = bandDistance();
     tbb::parallel_for(std::size_t{0}, boxes.size(), [&](std::size_t b) {
         const CellBox& box = boxes[b];
         openvdb::FloatGrid::ConstAccessor accessor = distance->getConstAccessor();
@@ -134,7 +122,6 @@ void MeshCoverage::recompute(const TriangleMesh& mesh, const CellBlocks& region)
                 for (int i = box.min.x; i < box.max.x; ++i) {
                     const glm::dvec3 centre = grid_.cellCentre(i, j, k);
                     const double atCentre = phi(centre);
-                    distance_[grid_.linearIndex(i, j, k)] = static_cast<float>(std::clamp(atCentre, -band, band));
                     double value = atCentre >= certain ? 0.0 : 1.0;
                     if (std::abs(atCentre) < certain) {
                         // The surface as the plane φ = 0 of φ's local linear model;

@@ -17,8 +17,7 @@
 // — which moves in steps of 1/s of a voxel — it follows a surface
 // continuously as it moves by a fraction of a voxel: the millimetre ripples
 // of a water surface in centimetre voxels are still seen. Volume errors are
-// in docs/accuracy.md. φ at the cell centres is kept too: it is a sharp
-// mesh's surface for the tracers.
+// in docs/accuracy.md.
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
@@ -43,15 +42,6 @@ public:
 
     const GridSpec& grid() const { return grid_; }
     const std::vector<float>& values() const { return coverage_; }  // one per cell, in [0, 1]
-    // φ at every cell centre, m: negative inside, exact within the band
-    // (±bandDistance() of the surface) and clamped to ±bandDistance() beyond.
-    // This is the sharp surface the tracers find crossings of
-    // (shaders/common/sharp_distance_surfaces.glsl).
-    const std::vector<float>& distances() const { return distance_; }
-    double bandDistance() const;  // m
-    // The box outside which φ > 0 everywhere trilinear sampling reaches: the
-    // mesh's vertex bounds widened by one cell diagonal.
-    void distanceBounds(glm::dvec3& min, glm::dvec3& max) const;
     // Σ coverage · voxel volume, m³.
     double coveredVolume() const;
     // Cells recomputed by the last update, the triangles whose distance it
@@ -72,7 +62,6 @@ private:
 
     GridSpec grid_;
     std::vector<float> coverage_;
-    std::vector<float> distance_;
     TriangleMesh previous_;
     bool first_ = true;
     long long lastRecomputed_ = 0;

@@ -7,12 +7,14 @@
 // block, sampler or image needs its row here.
 #include "bridge/layout/GpuLayouts.h"
 #include "render/gl/EmbeddedShaders.h"
+#include "render/gl/GlContext.h"
 #include "render/gl/GlObjects.h"
 #include "render/gl/ShaderLibrary.h"
 #include "tests/integration/GlTestContext.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
@@ -60,6 +62,8 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"ViewExit", {layout::kViewExit, 0, sizeof(glm::vec4)}},
         {"PhotonPathPower", {layout::kPhotonPathPower, 0, sizeof(glm::vec4)}},
         {"SharpSurfaces", {layout::kSharpSurfaces, 0, sizeof(layout::GpuSharpSurface)}},
+        {"SurfaceNodes", {layout::kSurfaceNodes, 0, sizeof(glm::vec4)}},
+        {"SurfaceTriangles", {layout::kSurfaceTriangles, 0, sizeof(glm::vec4)}},
     };
     return rows;
 }
@@ -72,7 +76,6 @@ const std::map<std::string, unsigned>& samplers() {
         {"extinction_texture", layout::kExtinctionTexture}, {"scattering_texture", layout::kScatteringTexture},
         {"step_structure", layout::kStepTexture},           {"environment_texture", layout::kEnvironmentTexture},
         {"anisotropy_texture", layout::kAnisotropyTexture},
-        {"surface_distance_texture", layout::kSurfaceDistanceTexture},
     };
     return rows;
 }
@@ -347,6 +350,52 @@ TEST(GpuContract, CompilerMessagesNameTheShadersOwnLine) {
     } catch (const std::runtime_error& error) {
         const std::string message = error.what();
         EXPECT_NE(message.find("line_check.comp:3"), std::string::npos) << message;
+    }
+}
+
+// llvmpipe caps the loop iterations of each SIMD vector of invocations,
+// all loops together (render/gl/GlContext.h); the budget a lane may spend
+// is 65 535 over its lane count, and no cap elsewhere.
+TEST(GpuContract, LoopBudgetKeepsUnderTheDriversCap) {
+    EXPECT_EQ(gl::loopBudgetForRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"), 65535u / 8u);
+    EXPECT_EQ(gl::loopBudgetForRenderer("llvmpipe (LLVM 15.0.6, 512 bits)"), 65535u / 16u);
+    EXPECT_EQ(gl::loopBudgetForRenderer("llvmpipe"), 65535u / 16u) << "unknown width: the widest";
+    EXPECT_EQ(gl::loopBudgetForRenderer("NVIDIA H100 80GB HBM3/PCIe/SSE2"), 0u);
+    // Every invocation runs nested loops of 160 000 iterations in all (far
+    // past any cap), spending from the budget, and stops where it runs out:
+    // its count is then exactly the budget, or all of it where there is no
+    // cap, and the mark written after the loops shows it got there.
+    test::glContext();
+    const unsigned budget = gl::currentLoopBudget();
+    const char* source =
+        "layout(local_size_x = 64) in;\n"
+        "#include \"common/loop_budget.glsl\"\n"
+        "layout(std430, binding = 0) buffer Counts { uvec2 counts[]; };\n"
+        "void main() {\n"
+        "    uint count = 0u;\n"
+        "    for (uint outer = 0u; outer < 400u && loops_left(); ++outer)\n"
+        "        for (uint inner = 0u; inner < 400u; ++inner) {\n"
+        "            spend_loops(1u);\n"
+        "            if (!loops_left()) break;\n"
+        "            ++count;\n"
+        "        }\n"
+        "    counts[gl_GlobalInvocationID.x] = uvec2(count, 12345u);\n"
+        "}\n";
+    const gl::Program program = gl::compileComputeProgramFromSource(
+        "loop_budget_check.comp", source, {{"EIKON_LOOP_BUDGET", std::to_string(budget)}});
+    constexpr std::size_t kInvocations = 256;
+    gl::Buffer counts(kInvocations * sizeof(glm::uvec2));
+    counts.bindStorage(0);
+    program.use();
+    glDispatchCompute(kInvocations / 64, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<glm::uvec2> result(kInvocations);
+    counts.download(result.data(), result.size() * sizeof(glm::uvec2));
+    // The budget is spent once more by the iteration that finds it gone.
+    const unsigned expected = budget > 0 ? budget - 1 : 160000u;
+    for (const glm::uvec2& r : result) {
+        ASSERT_EQ(r.y, 12345u) << "the invocation reached its end";
+        ASSERT_EQ(r.x, expected);
     }
 }
 

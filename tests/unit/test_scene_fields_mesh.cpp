@@ -2,11 +2,17 @@
 // only where they moved, composited in list order with spheres and boxes.
 #include "sim/SceneFields.h"
 
+#include "bridge/mesh/TriangleBvh.h"
+
 #include "sim/deform/MeshShapes.h"
 #include "sim/voxelize/Compositor.h"
 #include "sim/voxelize/MeshCoverage.h"
 
 #include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
 
 #include <filesystem>
 #include <fstream>
@@ -129,34 +135,74 @@ TEST(SceneFieldsMesh, WaterMovesWithSceneTime) {
 }
 
 // A sharp mesh keeps its index out of the field and hands the tracers its
-// signed distance instead: one layer, negative inside, clamped to the band,
-// bounds that hold the bar, republished (and only then) as it deforms.
-TEST(SceneFieldsMesh, SharpMeshPublishesItsDistanceLayer) {
+// triangles instead, in a tree (sim/SharpMeshSurfaces.h): every triangle
+// once, each inside its leaf's box and each box inside its parent's; corner
+// normals that are the faces' own on the bar's flat faces and at its 90°
+// edges; republished (and only then) as it deforms.
+TEST(SceneFieldsMesh, SharpMeshPublishesItsTriangleTree) {
     Scene scene = twistingBarScene();
     scene.objects[0].surface = ObjectDesc::Surface::Sharp;
     SceneFields fields(scene);
     const FieldSet& set = fields.fields();
     const GridSpec& grid = set.grid;
-    ASSERT_EQ(set.surfaceLayers(), 1u);
-    ASSERT_EQ(set.surfaceDistance.size(), grid.cellCount());
+    const TriangleMesh& mesh = *fields.deformedMeshes()[0];
+    const std::size_t triangles = set.surfaceTriangles.size() / kSurfaceTriangleFloats;
+    const std::size_t nodes = set.surfaceNodes.size() / kSurfaceNodeFloats;
+    ASSERT_EQ(triangles, mesh.triangles.size());
+    ASSERT_GE(nodes, 2 * triangles / TriangleBvh::kLeafTriangles - 1);
     EXPECT_NO_THROW(validateFields(set, "test"));
     EXPECT_EQ(set.deltaIndex[grid.linearIndex(24, 24, 24)], 0.0f) << "no index voxelized";
     EXPECT_GT(set.extinction[3 * grid.linearIndex(24, 24, 24)], 0.0f) << "its extinction is";
-    const double h = grid.smallestVoxelEdge();
-    const float band = set.surfaceDistance[grid.linearIndex(0, 0, 0)];
-    EXPECT_GT(band, 0.0f) << "far outside";
-    EXPECT_EQ(set.surfaceDistance[grid.linearIndex(24, 24, 24)], -band) << "deep inside, clamped";
-    // Cells (28, 24, 24) and (27, 24, 24) have their centres at x = 0.1125
-    // and 0.0875, half a cell either side of the face x = 0.1.
-    EXPECT_NEAR(set.surfaceDistance[grid.linearIndex(28, 24, 24)], 0.5 * h, 1e-3 * h);
-    EXPECT_NEAR(set.surfaceDistance[grid.linearIndex(27, 24, 24)], -0.5 * h, 1e-3 * h);
-    EXPECT_LE(set.surfaceBounds[0], -0.1);
-    EXPECT_GE(set.surfaceBounds[4], 0.4);
+
+    auto node = [&](std::size_t n) { return set.surfaceNodes.data() + n * kSurfaceNodeFloats; };
+    auto corner = [&](std::size_t t, int c) {
+        const float* v = set.surfaceTriangles.data() + t * kSurfaceTriangleFloats + 4 * c;
+        return glm::dvec3(v[0], v[1], v[2]);
+    };
+    EXPECT_NEAR(node(0)[0], -0.1, 1e-6);
+    EXPECT_NEAR(node(0)[5], 0.4, 1e-6);
+    std::vector<int> seen(triangles, 0);
+    std::vector<std::size_t> pending = {0};
+    while (!pending.empty()) {
+        const std::size_t n = pending.back();
+        pending.pop_back();
+        const float* box = node(n);
+        const auto first = static_cast<std::size_t>(box[3]), count = static_cast<std::size_t>(box[7]);
+        auto inside = [&](const float* child) {
+            for (int axis = 0; axis < 3; ++axis)
+                if (child[axis] < box[axis] || child[4 + axis] > box[4 + axis]) return false;
+            return true;
+        };
+        if (count == 0) {
+            ASSERT_GT(first, 0u) << "the root is no node's child";
+            ASSERT_LT(first + 1, nodes);
+            EXPECT_TRUE(inside(node(first)) && inside(node(first + 1))) << "node " << n;
+            pending.push_back(first);
+            pending.push_back(first + 1);
+            continue;
+        }
+        for (std::size_t t = first; t < first + count; ++t) {
+            ASSERT_LT(t, triangles);
+            ++seen[t];
+            for (int c = 0; c < 3; ++c)
+                for (int axis = 0; axis < 3; ++axis) {
+                    EXPECT_GE(corner(t, c)[axis], box[axis]);
+                    EXPECT_LE(corner(t, c)[axis], box[4 + axis]);
+                }
+        }
+    }
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(triangles)) << "each triangle once";
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const glm::dvec3 facet = glm::normalize(glm::cross(corner(t, 1) - corner(t, 0), corner(t, 2) - corner(t, 0)));
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(std::abs(glm::dot(corner(t, 3 + c), facet)), 1.0, 1e-6) << "a box has no smooth corner";
+    }
+
     const std::uint64_t version = set.surfaceVersion;
-    const std::vector<float> before = set.surfaceDistance;
+    const std::vector<float> before = set.surfaceTriangles;
     fields.advanceFrame();
     EXPECT_GT(fields.fields().surfaceVersion, version);
-    EXPECT_NE(fields.fields().surfaceDistance, before) << "the bar twists";
+    EXPECT_NE(fields.fields().surfaceTriangles, before) << "the bar twists";
     Scene still = twistingBarScene();
     still.objects[0].surface = ObjectDesc::Surface::Sharp;
     still.objects[0].mesh.deformer = {};

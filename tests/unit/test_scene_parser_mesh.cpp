@@ -135,15 +135,15 @@ TEST(SceneParserMesh, SurfaceKeys) {
     EXPECT_TRUE(parseScene(validScene(), "test.json").objects[0].isSharp()) << "sharp by default";
     const ObjectDesc sharpMesh = parseScene(sceneWithObject(meshObject()), "test.json").objects[0];
     EXPECT_TRUE(sharpMesh.isSharp()) << "meshes too";
-    EXPECT_TRUE(sharpMesh.hasDistanceSurface());
+    EXPECT_TRUE(sharpMesh.hasTriangleSurface());
     json mesh = meshObject();
     mesh["surface"] = "smooth";
     mesh["fresnel"] = false;
     const ObjectDesc smoothMesh = parseScene(sceneWithObject(mesh), "test.json").objects[0];
     EXPECT_FALSE(smoothMesh.isSharp());
-    EXPECT_FALSE(smoothMesh.hasDistanceSurface());
+    EXPECT_FALSE(smoothMesh.hasTriangleSurface());
     EXPECT_FALSE(smoothMesh.fresnel);
-    EXPECT_FALSE(scene.objects[1].hasDistanceSurface()) << "a sphere is an exact shape";
+    EXPECT_FALSE(scene.objects[1].hasTriangleSurface()) << "a sphere is an exact shape";
 
     root["objects"][0]["surface"] = "glassy";
     expectErrorAt(root, "objects[0].surface", "\"sharp\"");
