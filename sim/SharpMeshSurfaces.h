@@ -7,9 +7,11 @@
 // for: the mean of the normals of the corner's triangles that meet this
 // one at less than kCreaseDegrees, weighted by their angles at the corner
 // (Thürmer and Wüthrich 1998: unlike area weights, it does not depend on
-// how the surface was cut into triangles). A sphere's facets, a
-// blob's or a water surface's thus turn continuously; the edges of a bar
-// (90°) stay sharp. Triangles are exact: crossings lie on the mesh, and a
+// how the surface was cut into triangles). 50° smooths any surface cut into
+// eight or more facets per turn — a sphere's, a deformed blob's (whose
+// coarse facets an as-rigid-as-possible bend folds by up to 47°), a water
+// surface's — and keeps the edges of a hexagonal prism (60°) or a bar
+// (90°) sharp. Triangles are exact: crossings lie on the mesh, and a
 // step needs one traversal of the tree along its chord.
 #pragma once
 
@@ -23,7 +25,7 @@ namespace eikon::sim {
 
 class SharpMeshSurface {
 public:
-    static constexpr double kCreaseDegrees = 30.0;
+    static constexpr double kCreaseDegrees = 50.0;
 
     explicit SharpMeshSurface(const TriangleMesh& mesh);
 

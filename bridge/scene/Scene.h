@@ -82,8 +82,7 @@ struct ObjectDesc {
     // object's index on top of the graded field; smooth: the object is
     // voxelized into the index field and Gaussian-smoothed ([Sun08] §4.1).
     // Every kind is sharp by default. Spheres and boxes are exact shapes; a
-    // mesh or water surface is the zero set of its signed distance on the
-    // grid (sim/voxelize/MeshCoverage.h), one layer per such object.
+    // mesh or water surface is its triangles (sim/SharpMeshSurfaces.h).
     enum class Surface { Sharp, Smooth } surface = Surface::Sharp;
     bool fresnel = true;  // sharp: reflect at the surface by Fresnel; false: transmit only (total internal reflection stays)
 

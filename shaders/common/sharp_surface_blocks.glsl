@@ -56,7 +56,10 @@ SurfaceCrossing nearest_surface_crossing(vec3 x, vec3 d, uint mask, float reach,
         vec4 shape_a = sharp_surfaces[k].shape_a;
         vec4 shape_b = sharp_surfaces[k].shape_b;
         if (is_triangle_surface(k)) {
-            TriangleTrace hit = triangle_surface_crossing(shape_b, x, d, crossing.distance, t_min);
+            // No t_min: a ray leaves a facet a clearance off it, on the side it
+            // goes on to, so it cannot meet that facet again, and a neighbour
+            // may be nearer than any t_min at an edge.
+            TriangleTrace hit = triangle_surface_crossing(shape_b, x, d, crossing.distance, 0.0f);
             if (hit.triangle >= 0) {
                 crossing.surface = int(k);
                 crossing.distance = hit.t;
