@@ -106,7 +106,7 @@ layout(binding = kStepTexture) uniform sampler3D step_structure;  // (octree lev
 layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
 // C++ mirror: layout::GpuPhotonStats (powers in 64-bit fixed point), indexed
-// by the tallies kEmitted … kReflected of layout::PowerTally.
+// by the tallies kEmitted … kRouletteGain of layout::PowerTally.
 const uint MAX_BOUNCES = 16u;
 layout(std430, binding = kPhotonStats) buffer PhotonStats {
     uint power_tallies[2 * 3 * kTallyCount];  // [2·(3·tally + channel) + word]
@@ -128,7 +128,10 @@ uniform uint emitter_count;
 uniform uint seed;
 uniform float step_length;     // uniform Δs, or the octree's Δs_min, in metres
 uniform uint max_steps;        // trapped-ray cap
-uniform float power_cutoff;    // stop once every channel is below this fraction of the emitted power
+uniform float power_cutoff;    // Russian roulette once every channel is below this fraction of the emitted power
+// Random dimensions of the roulette draws, apart from those of emission (0,
+// 1), receiver bounces (2, 3, …) and sharp surfaces (64, 65, …).
+const uint kRouletteDimensions = 0x80000000u;
 uniform vec3 power_unit;       // W per fixed-point tally unit, per channel
 
 // Tallies of this work group, flushed to PhotonStats once by its first
@@ -402,7 +405,9 @@ void trace_photon(uint photon) {
     vec3 power = emitted;
     vec3 absorbed = vec3(0.0f);
     vec3 reflected = vec3(0.0f);
+    vec3 roulette_gain = vec3(0.0f);
     uint bounces = 0u;
+    uint roulettes = 0u;
     float cutoff = power_cutoff * max(power.r, max(power.g, power.b));
     vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
 #if EIKON_SHARP_SURFACES
@@ -495,15 +500,27 @@ void trace_photon(uint photon) {
         if (crossing.surface >= 0) cross_sharp_surface(crossing, photon, x, x_lost, v, field);
 #endif
         record_vertex(photon, vertex++, x, power);
-        if (max(power.r, max(power.g, power.b)) < cutoff) {
-            fate = kCutOff;
-            break;
+        float brightest = max(power.r, max(power.g, power.b));
+        if (brightest < cutoff) {
+            // Russian roulette: go on with probability brightest/cutoff and
+            // power divided by it, else stop; unbiased, and the tallies stay
+            // exact with the gain counted as a source.
+            float survival = brightest / cutoff;
+            if (!(random_uniform(seed, photon, kRouletteDimensions + roulettes) < survival)) {
+                fate = kCutOff;
+                break;
+            }
+            vec3 boosted = power / survival;
+            roulette_gain += boosted - power;
+            power = boosted;
+            ++roulettes;
         }
         if (!grid_contains(x)) v = reference_index() * normalize(v);
     }
 
     add_power(kEmitted, emitted);
     add_power(kReflected, reflected);
+    add_power(kRouletteGain, roulette_gain);
     add_power(kAbsorbed, absorbed);
     add_power(fate, power);
     atomicAdd(group_photons[fate - kEscaped], 1u);

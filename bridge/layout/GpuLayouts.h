@@ -73,7 +73,9 @@
 // (in this order: GpuPhotonStats::photons counts them so); absorbed collects
 // what extinction took along the way, so
 //   emitted = absorbed + escaped + received + cutOff + blocked.
-// kReflected is power receivers send back out (bounce): a source, like kEmitted.
+// kReflected is power receivers send back out (bounce): a source, like
+// kEmitted; so is kRouletteGain, what Russian roulette adds to the photons it
+// lets go on (it takes as much from those it cuts off, on average).
 #define EIKON_LAYOUT_POWER_TALLIES(X) \
     X(kEmitted, 0)                    \
     X(kAbsorbed, 1)                   \
@@ -82,7 +84,8 @@
     X(kCutOff, 4)                     \
     X(kBlocked, 5)                    \
     X(kReflected, 6)                  \
-    X(kTallyCount, 7)
+    X(kRouletteGain, 7)               \
+    X(kTallyCount, 8)
 
 // Kinds of sharp surface (GpuSharpSurface::shapeA.w): a sphere, a box, or a
 // mesh or water surface given by its triangles.
@@ -108,7 +111,7 @@ enum ImageUnit : unsigned { EIKON_LAYOUT_IMAGE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
 enum PowerTally : unsigned { EIKON_LAYOUT_POWER_TALLIES(EIKON_LAYOUT_ENUMERATOR) };
 enum SharpSurfaceKind : int { EIKON_LAYOUT_SHARP_SURFACE_KINDS(EIKON_LAYOUT_ENUMERATOR) };
 #undef EIKON_LAYOUT_ENUMERATOR
-static_assert(kTallyCount == kReflected + 1, "kTallyCount counts the tallies");
+static_assert(kTallyCount == kRouletteGain + 1, "kTallyCount counts the tallies");
 
 // uniform GridBlock (std140): the world box of the field grid.
 struct GpuGrid {
@@ -166,12 +169,12 @@ struct GpuPhotonStats {
 // GLSL declares every member as a scalar array (uint/float), so std430 packs
 // them with 4-byte alignment, as GLM's unaligned vectors do here.
 static_assert(alignof(glm::uvec4) == 4);
-static_assert(sizeof(GpuPhotonStats) == 248);
-static_assert(offsetof(GpuPhotonStats, photons) == 168);
-static_assert(offsetof(GpuPhotonStats, steps) == 184);
-static_assert(offsetof(GpuPhotonStats, deposits) == 200);
-static_assert(offsetof(GpuPhotonStats, invariant) == 216);
-static_assert(offsetof(GpuPhotonStats, surfaces) == 232);
+static_assert(sizeof(GpuPhotonStats) == 272);
+static_assert(offsetof(GpuPhotonStats, photons) == 192);
+static_assert(offsetof(GpuPhotonStats, steps) == 208);
+static_assert(offsetof(GpuPhotonStats, deposits) == 224);
+static_assert(offsetof(GpuPhotonStats, invariant) == 240);
+static_assert(offsetof(GpuPhotonStats, surfaces) == 256);
 
 // A sharp surface (shaders/common/sharp_surfaces.glsl), in scene order: a
 // sphere, a box, or a mesh or water surface given by its triangles.

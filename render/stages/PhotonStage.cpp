@@ -41,7 +41,7 @@ int integratorNumber(TracerDesc::Integrator integrator) {
 }  // namespace
 
 double PhotonStats::balanceError() const {
-    const Rgb sources = emitted + reflected;
+    const Rgb sources = emitted + reflected + rouletteGain;
     const Rgb sinks = absorbed + escaped + received + cutOff + blocked;
     double worst = 0.0;
     for (int c = 0; c < 3; ++c)
@@ -172,6 +172,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     stats.cutOff = tallyOf(gpu, layout::kCutOff, unit);
     stats.blocked = tallyOf(gpu, layout::kBlocked, unit);
     stats.reflected = tallyOf(gpu, layout::kReflected, unit);
+    stats.rouletteGain = tallyOf(gpu, layout::kRouletteGain, unit);
     stats.photonsEscaped = gpu.photons.x;
     stats.photonsReceived = gpu.photons.y;
     stats.photonsCutOff = gpu.photons.z;

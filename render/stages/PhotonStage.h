@@ -39,6 +39,9 @@ struct PhotonStats {
     long long photons = 0;
     Rgb emitted{0.0}, absorbed{0.0}, escaped{0.0}, received{0.0}, cutOff{0.0}, blocked{0.0};
     Rgb reflected{0.0};  // sent back out by bouncing receivers (a source, like emitted)
+    // Added by Russian roulette to the dim photons it lets go on, a source
+    // too; on average it equals what it cut off (part of cutOff).
+    Rgb rouletteGain{0.0};
     std::uint64_t photonsEscaped = 0, photonsReceived = 0, photonsCutOff = 0, photonsBlocked = 0;
     std::uint64_t steps = 0;
     std::uint64_t voxelDeposits = 0;

@@ -127,6 +127,36 @@ TEST(PhotonPhysics, BeerLambertThroughSlab) {
     EXPECT_LT(result.stats.balanceError(), 1e-6);
 }
 
+// Deep attenuation past the power cutoff: κL = (10, 11, 12) through the same
+// slab, every channel below the default cutoff of 1e-4 of a photon's power
+// before it leaves the slab. Russian roulette keeps the estimate unbiased:
+// E0·exp(−κL) per channel (4.5e-5 and below, within 2%: some 30 000 photons
+// survive to the receiver), where stopping dim photons outright gave 0; the
+// balance, the roulette's gain counted as a source, stays exact.
+TEST(PhotonPhysics, RussianRouletteKeepsDeepAttenuationUnbiased) {
+    Scene scene = emptyScene(glm::dvec3(-0.5), glm::dvec3(0.5), 32);
+    ObjectDesc slab;
+    slab.kind = ObjectDesc::Kind::Box;
+    slab.box = {glm::dvec3(-1.0, -0.1875, -1.0), glm::dvec3(1.0, 0.1875, 1.0)};
+    slab.material.index = 1.0;
+    slab.material.extinction = Rgb(10.0, 11.0, 12.0) / 0.375;
+    scene.objects.push_back(slab);
+    scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 2.0));
+    scene.receivers.push_back(floorReceiver(-0.45, 0.5, 16));
+    scene.render.photons = 1 << 18;
+    ASSERT_EQ(scene.tracer.powerCutoff, 1e-4);
+    const TraceResult result = trace(scene);
+    for (int channel = 0; channel < 3; ++channel) {
+        const double expected = 2.0 * std::exp(-slab.material.extinction[channel] * 0.375);
+        const double ratio = channelMean(result.map, channel) / expected;
+        test::reportFigure(("roulette_deep_slab_measured_over_exact_channel_" + std::to_string(channel)).c_str(), ratio);
+        EXPECT_NEAR(ratio, 1.0, 0.02) << "channel " << channel;
+    }
+    EXPECT_GT(result.stats.rouletteGain.r, 0.0);
+    EXPECT_GT(result.stats.photonsCutOff, 0u);
+    EXPECT_LT(result.stats.balanceError(), 1e-6);
+}
+
 // Every watt emitted is absorbed, escapes, lands on a receiver, is cut off or
 // blocked: the fixed-point tallies balance to 1e-6 even with extinction,
 // refraction and a receiver seen from both sides.
