@@ -8,6 +8,7 @@
 #include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -116,6 +117,103 @@ std::optional<std::size_t> dataLines(const std::string& extension, const std::st
     return count;
 }
 
+// The least room a declared vertex and face take after the header: as text
+// "0 0 0\n" and "3 0 1 2\n"; in binary PLY three 1-byte coordinates and a
+// 1-byte count with three 1-byte indices.
+struct ElementBytes {
+    std::size_t vertex, face;
+};
+constexpr ElementBytes kTextElement{6, 8}, kBinaryElement{3, 4};
+
+// Where the data of a text OFF file start and the counts its header
+// declares ("OFF" and its variants, then V F E; '#' comments anywhere);
+// nullopt for a binary OFF or a header that does not parse (OpenMesh then
+// refuses it).
+std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string& bytes, std::size_t& dataStart) {
+    std::size_t at = 0;
+    auto nextToken = [&]() -> std::string {
+        for (;;) {
+            while (at < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
+            if (at < bytes.size() && bytes[at] == '#') {
+                while (at < bytes.size() && bytes[at] != '\n') ++at;
+                continue;
+            }
+            break;
+        }
+        const std::size_t start = at;
+        while (at < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
+        return bytes.substr(start, at - start);
+    };
+    const std::string keyword = nextToken();
+    if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return std::nullopt;
+    std::array<unsigned long long, 3> counts{};
+    for (auto& count : counts) {
+        const std::string token = nextToken();
+        if (token == "BINARY" || token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
+            return std::nullopt;
+        count = std::stoull(token.substr(0, 19));
+    }
+    dataStart = at;
+    return counts;
+}
+
+// The same for a PLY header: its vertex and face element counts, and whether
+// its data are text.
+std::optional<std::array<unsigned long long, 2>> plyCounts(const std::string& bytes, std::size_t& dataStart,
+                                                           bool& text) {
+    const std::size_t end = bytes.find("end_header");
+    if (end == std::string::npos) return std::nullopt;
+    std::istringstream header(bytes.substr(0, end));
+    std::array<unsigned long long, 2> counts{};
+    std::string line;
+    text = false;
+    while (std::getline(header, line)) {
+        std::istringstream words(line);
+        std::string first, second;
+        unsigned long long count = 0;
+        words >> first >> second;
+        if (first == "format") text = second == "ascii";
+        if (first == "element" && (second == "vertex" || second == "face") && words >> count)
+            counts[second == "vertex" ? 0 : 1] = count;
+    }
+    const std::size_t newline = bytes.find('\n', end);
+    dataStart = newline == std::string::npos ? bytes.size() : newline + 1;
+    return counts;
+}
+
+// Counts an OFF or PLY header declares must fit in the file before any
+// reader allocates for them (a header declaring 2e9 faces would have
+// OpenMesh add faces past the end of the file for gigabytes).
+void checkDeclaredCountsFit(const std::string& path, const std::string& extension, const std::string& bytes) {
+    std::size_t dataStart = 0;
+    unsigned long long vertices = 0, faces = 0;
+    ElementBytes least = kTextElement;
+    if (extension == ".off") {
+        const auto counts = textOffCounts(bytes, dataStart);
+        if (!counts) return;
+        vertices = (*counts)[0];
+        faces = (*counts)[1];
+    } else if (extension == ".ply") {
+        bool text = false;
+        const auto counts = plyCounts(bytes, dataStart, text);
+        if (!counts) return;
+        vertices = (*counts)[0];
+        faces = (*counts)[1];
+        if (!text) least = kBinaryElement;
+    } else {
+        return;
+    }
+    const unsigned long long room = bytes.size() - std::min(dataStart, bytes.size()) + 1;  // the last line may lack its newline
+    const long double needed = static_cast<long double>(vertices) * least.vertex + static_cast<long double>(faces) * least.face;
+    if (needed > static_cast<long double>(room))
+        throw InputError(path,
+                         "vertex and face counts its " + std::to_string(room - 1) + " bytes of data can hold (" +
+                             std::to_string(least.vertex) + " bytes a vertex, " + std::to_string(least.face) +
+                             " a face at least)",
+                         "a header declaring " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
+                             " faces (truncated, or wrong counts)");
+}
+
 std::string readBytes(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
     std::ostringstream bytes;
@@ -165,6 +263,7 @@ TriangleMesh readMesh(const std::string& path, MeshClosure closure) {
         throw InputError(path, "a mesh file ending in .obj, .ply, .off or .stl", "\"" + extension + "\"");
     const std::string bytes = readBytes(path);
     if (bytes.empty()) throw InputError(path, "a mesh", "an empty file");
+    checkDeclaredCountsFit(path, extension, bytes);
     rejectNonFiniteLiterals(path, bytes);
 
     OmMesh scratch;

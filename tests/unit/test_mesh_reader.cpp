@@ -134,6 +134,30 @@ TEST_F(MeshReaderTest, TruncatedFilesAreRefused) {
     EXPECT_NE(messageOf(write("empty.off", "")).find("empty"), std::string::npos);
 }
 
+// Headers declaring more vertices or faces than the file can hold are
+// refused before anything is allocated for them, naming the file and the
+// counts (OpenMesh would add faces past the end for gigabytes).
+TEST_F(MeshReaderTest, DeclaredCountsBeyondTheFileAreRefusedUpFront) {
+    std::string off = cubeOff();
+    off.replace(off.find("8 6 0"), 5, "8 2000000000 0");
+    const std::string offMessage = messageOf(write("huge.off", off));
+    EXPECT_NE(offMessage.find("huge.off"), std::string::npos) << offMessage;
+    EXPECT_NE(offMessage.find("2000000000 faces"), std::string::npos) << offMessage;
+
+    std::string ply = cubePly();
+    ply.replace(ply.find("element vertex 8"), 16, "element vertex 4000000000");
+    const std::string plyMessage = messageOf(write("huge.ply", ply));
+    EXPECT_NE(plyMessage.find("huge.ply"), std::string::npos) << plyMessage;
+    EXPECT_NE(plyMessage.find("4000000000 vertices"), std::string::npos) << plyMessage;
+
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3000000000\n"
+                         "property float x\nproperty float y\nproperty float z\nend_header\n";
+    binary.append(36, '\0');
+    const std::string binaryMessage = messageOf(write("huge_binary.ply", binary));
+    EXPECT_NE(binaryMessage.find("huge_binary.ply"), std::string::npos) << binaryMessage;
+    EXPECT_NE(binaryMessage.find("3000000000 vertices"), std::string::npos) << binaryMessage;
+}
+
 TEST_F(MeshReaderTest, NonFiniteCoordinatesAreRefusedWithTheirPlace) {
     std::string off = cubeOff();
     off.replace(off.find("1 1 0"), 5, "1 nan 0");
