@@ -2,6 +2,8 @@
 
 #include "bridge/core/Error.h"
 #include "io/files/AtomicFile.h"
+#include "io/files/FileBytes.h"
+#include "io/image/RadianceCheck.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
@@ -49,9 +51,16 @@ void writeHdr(const std::filesystem::path& path, int width, int height, const st
 }
 
 FloatImage readFloatImage(const std::filesystem::path& path) {
+    const std::string bytes = readFileBytes(path, "a readable Radiance .hdr (or PNG/JPEG) image");
+    if (bytes.size() > 0x7fffffff) throw InputError(path.string(), "an image file below 2 GiB", std::to_string(bytes.size()) + " bytes");
+    if (isRadiance(bytes)) checkRadiance(bytes, path.string());
     FloatImage image;
     image.rgba = loadRgba<float>(path, image.width, image.height, "a readable Radiance .hdr (or PNG/JPEG) image",
-                                 stbi_loadf);
+                                 [&](const char*, int* w, int* h, int* channels, int wanted) {
+                                     return stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                                                   static_cast<int>(bytes.size()), w, h, channels,
+                                                                   wanted);
+                                 });
     return image;
 }
 

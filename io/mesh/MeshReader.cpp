@@ -1,6 +1,7 @@
 #include "io/mesh/MeshReader.h"
 
 #include "bridge/core/Error.h"
+#include "io/files/FileBytes.h"
 
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/importer/ImporterT.hh>
@@ -12,7 +13,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <sstream>
 
@@ -214,14 +214,6 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
                              " faces (truncated, or wrong counts)");
 }
 
-std::string readBytes(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream bytes;
-    bytes << file.rdbuf();
-    if (!file) throw InputError(path, "a readable mesh file", "a file that cannot be read");
-    return bytes.str();
-}
-
 // Silences OpenMesh's complaints on std::cerr while it reads: every defect
 // it would print is reported through InputError instead.
 class QuietOpenMesh {
@@ -261,7 +253,7 @@ TriangleMesh readMesh(const std::string& path, MeshClosure closure) {
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
     if (extension != ".obj" && extension != ".ply" && extension != ".off" && extension != ".stl")
         throw InputError(path, "a mesh file ending in .obj, .ply, .off or .stl", "\"" + extension + "\"");
-    const std::string bytes = readBytes(path);
+    const std::string bytes = readFileBytes(path, "a readable mesh file");
     if (bytes.empty()) throw InputError(path, "a mesh", "an empty file");
     checkDeclaredCountsFit(path, extension, bytes);
     rejectNonFiniteLiterals(path, bytes);
