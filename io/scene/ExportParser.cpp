@@ -177,7 +177,7 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
                     formatNumber(volume.densityScattering[channel]) + " in channel " + std::to_string(channel));
         }
     }
-    if (auto v = fields.optional("anisotropy")) volume.anisotropy = v->number(NumberRange::open(-1.0, 1.0));
+    if (auto v = fields.optional("anisotropy")) volume.anisotropy = v->number(kAnisotropyRange);
     if (auto v = fields.optional("ambient_temperature")) volume.ambientTemperature = v->number(kPositive);
     if (auto v = fields.optional("temperature_scale")) volume.temperatureScale = v->number(kNonNegative);
     if (auto v = fields.optional("flame_temperature")) volume.flameTemperature = v->number(kNonNegative);

@@ -120,9 +120,9 @@ std::string JsonReader::oneOf(std::initializer_list<const char*> choices) const 
     return value;
 }
 
-glm::dvec3 JsonReader::vec3() const {
+glm::dvec3 JsonReader::vec3(NumberRange range) const {
     if (node_ == nullptr || !node_->is_array() || node_->size() != 3) fail("an array of 3 numbers");
-    return {element(0).number(), element(1).number(), element(2).number()};
+    return {element(0).number(range), element(1).number(range), element(2).number(range)};
 }
 
 glm::ivec3 JsonReader::ivec3(int min, int max) const {

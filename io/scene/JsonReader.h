@@ -35,6 +35,10 @@ struct NumberRange {
     std::string describe(const std::string& noun) const;  // "a number > 0", "an integer in [1, 16]"
 };
 
+// Henyey–Greenstein g as the fields hold it: float32 rounds |g| > 1 − 6e-8
+// to 1, where the phase function is a delta.
+inline const NumberRange kAnisotropyRange = NumberRange::closed(-0.99999, 0.99999);
+
 class JsonObjectReader;
 
 // One node of the document (possibly absent), with its file and JSON path.
@@ -54,7 +58,7 @@ public:
     bool boolean() const;  // JSON true or false only, not 0/1 or "true"
     std::string string() const;
     std::string oneOf(std::initializer_list<const char*> choices) const;
-    glm::dvec3 vec3() const;
+    glm::dvec3 vec3(NumberRange range = NumberRange::any()) const;  // each component in range
     glm::ivec3 ivec3(int min, int max) const;
     Rgb rgb(NumberRange channelRange) const;  // one number (grey) or [r, g, b]
     std::vector<JsonReader> array() const;

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace eikon {
@@ -30,6 +31,12 @@ constexpr long long kMaxSubsteps = 10000;
 
 const NumberRange kPositive = NumberRange::above(0.0);
 const NumberRange kNonNegative = NumberRange::atLeast(0.0);
+// Light powers (W) and irradiances (W/m²) whose sums over photons and
+// channels stay far from a double's overflow (the Sun emits 3.8e26 W).
+const NumberRange kLightPower = NumberRange::closed(0.0, 1e30);
+// Grid corners, m: the extent max − min must stay finite and its cells
+// representable (a million kilometres).
+const NumberRange kCoordinate = NumberRange::closed(-1e9, 1e9);
 
 std::string formatVector(const glm::dvec3& v) {
     return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
@@ -63,7 +70,7 @@ void requireNonEmpty(const JsonReader& minNode, const glm::dvec3& min, const Jso
 // Optional extinction and scattering (default 0), with scattering <= extinction.
 void readAttenuation(const JsonObjectReader& fields, Material& material) {
     if (auto node = fields.optional("extinction")) material.extinction = node->rgb(kNonNegative);
-    if (auto node = fields.optional("anisotropy")) material.anisotropy = node->number(NumberRange::open(-1.0, 1.0));
+    if (auto node = fields.optional("anisotropy")) material.anisotropy = node->number(kAnisotropyRange);
     if (auto node = fields.optional("scattering")) {
         material.scattering = node->rgb(kNonNegative);
         for (int channel = 0; channel < 3; ++channel) {
@@ -100,8 +107,8 @@ GridDesc readGrid(const JsonReader& node) {
     }
     if (auto bounds = fields.optional("bounds")) {
         const auto corners = bounds->object({"min", "max"});
-        grid.boundsMin = corners.member("min").vec3();
-        grid.boundsMax = corners.member("max").vec3();
+        grid.boundsMin = corners.member("min").vec3(kCoordinate);
+        grid.boundsMax = corners.member("max").vec3(kCoordinate);
         requireNonEmpty(corners.member("min"), grid.boundsMin, corners.member("max"), grid.boundsMax);
     }
     if (auto sigma = fields.optional("smoothing_sigma_voxels")) grid.smoothingSigmaVoxels = sigma->number(kNonNegative);
@@ -194,20 +201,20 @@ LightDesc readLight(const JsonReader& node) {
         const auto fields = node.object({"type", "position", "power"});
         light.kind = LightDesc::Kind::Point;
         light.position = fields.member("position").vec3();
-        light.power = fields.member("power").rgb(kNonNegative);
+        light.power = fields.member("power").rgb(kLightPower);
     } else if (type == "spot") {
         const auto fields =
             node.object({"type", "position", "direction", "power", "cone_angle_deg", "falloff_deg"});
         light.kind = LightDesc::Kind::Spot;
         light.position = fields.member("position").vec3();
         light.direction = readDirection(fields.member("direction"));
-        light.power = fields.member("power").rgb(kNonNegative);
+        light.power = fields.member("power").rgb(kLightPower);
         readSpotCone(fields, light);
     } else {
         const auto fields = node.object({"type", "direction", "irradiance"});
         light.kind = LightDesc::Kind::Directional;
         light.direction = readDirection(fields.member("direction"));
-        light.irradiance = fields.member("irradiance").rgb(kNonNegative);
+        light.irradiance = fields.member("irradiance").rgb(kLightPower);
     }
     return light;
 }
@@ -513,9 +520,68 @@ std::string readTextFile(const std::string& path) {
     return text.str();
 }
 
+// JSON allows a key twice in an object and nlohmann keeps the last value;
+// for a scene that silently drops what the user wrote first. This parser
+// callback follows the key path of what is being read and refuses a key
+// given twice, naming its path.
+class DuplicateKeyCheck {
+public:
+    explicit DuplicateKeyCheck(std::string sourceName) : sourceName_(std::move(sourceName)) {}
+
+    bool operator()(int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+        using Event = nlohmann::json::parse_event_t;
+        switch (event) {
+        case Event::object_start:
+        case Event::array_start:
+            enterElement();
+            frames_.push_back({event == Event::object_start, {}, {}, -1});
+            break;
+        case Event::object_end:
+        case Event::array_end:
+            frames_.pop_back();
+            break;
+        case Event::key: {
+            Frame& object = frames_.back();
+            const std::string key = parsed.get<std::string>();
+            if (!object.keys.insert(key).second)
+                throw InputError(sourceName_ + ": " + pathTo(key), "each key once in its object",
+                                 "\"" + key + "\" twice (the first value would be lost)");
+            object.key = key;
+            break;
+        }
+        case Event::value:
+            enterElement();
+            break;
+        }
+        return true;
+    }
+
+private:
+    struct Frame {
+        bool object;
+        std::set<std::string> keys;
+        std::string key;  // the member being read
+        int index;        // the element being read
+    };
+
+    void enterElement() {
+        if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+    }
+    std::string pathTo(const std::string& key) const {
+        std::string path;
+        for (std::size_t f = 0; f + 1 < frames_.size(); ++f)
+            path += frames_[f].object ? (path.empty() ? "" : ".") + frames_[f].key
+                                      : "[" + std::to_string(frames_[f].index) + "]";
+        return path + (path.empty() ? "" : ".") + key;
+    }
+
+    std::string sourceName_;
+    std::vector<Frame> frames_;
+};
+
 nlohmann::json parseJsonText(const std::string& text, const std::string& sourceName) {
     try {
-        return nlohmann::json::parse(text);
+        return nlohmann::json::parse(text, DuplicateKeyCheck(sourceName));
     } catch (const nlohmann::json::parse_error& error) {
         // Drops "[json.exception.parse_error.101] parse error at line L, column C: ".
         const std::string reason = textAfter(error.what(), ": ");

@@ -53,6 +53,21 @@ TEST(SceneFile, SyntaxErrorGivesLineAndColumn) {
     }
 }
 
+// JSON parsers keep the last of a key given twice; a scene must not lose
+// what was written first without a word.
+TEST(SceneFile, DuplicateKeysAreRefusedWithTheirPath) {
+    const std::string path = writeTempFile(
+        "eikon_duplicate.json",
+        R"({"lights": [], "objects": [{"type": "sphere"}, {"type": "sphere", "radius": 0.1, "radius": 0.2}]})");
+    try {
+        loadSceneFile(path);
+        FAIL() << "no InputError";
+    } catch (const InputError& error) {
+        EXPECT_EQ(error.where(), path + ": objects[1].radius");
+        EXPECT_NE(std::string(error.what()).find("twice"), std::string::npos) << error.what();
+    }
+}
+
 TEST(SceneFile, NumberTooLargeForADouble) {
     const std::string path =
         writeTempFile("eikon_overflow.json", R"({"lights": [], "render": {"exposure_ev": 1e999}})");

@@ -190,6 +190,21 @@ TEST(SceneParserErrors, UnknownTopLevelKey) {
     expectErrorAt(scene, "lightz", "\"lights\"");  // lists the allowed keys
 }
 
+// Values the documented ranges used to admit and later stages could not
+// hold: g that float32 rounds to 1, powers whose tallies overflow to
+// infinity (null in the report), grid corners whose extent does.
+TEST(SceneParserErrors, ValuesBeyondWhatTheFieldsAndTalliesHoldAreRefusedAtTheirPath) {
+    json scene = validScene();
+    scene["medium"]["anisotropy"] = 0.9999999999;
+    expectErrorAt(scene, "medium.anisotropy", "0.99999");
+    scene = validScene();
+    scene["lights"][0]["power"] = 1e308;
+    expectErrorAt(scene, "lights[0].power", "1e+30");
+    scene = validScene();
+    scene["grid"]["bounds"]["max"][0] = 1e308;
+    expectErrorAt(scene, "grid.bounds.max[0]", "1000000000]");
+}
+
 TEST(SceneParserErrors, UnknownNestedKey) {
     json scene = validScene();
     scene["objects"][0].erase("radius");
