@@ -214,6 +214,36 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
                              " faces (truncated, or wrong counts)");
 }
 
+// OpenMesh's OBJ reader drops a face whose vertex index does not parse as
+// an int (99999999999999999999, say) or points nowhere, without a word:
+// every face's vertex references are checked here first, by line. OBJ
+// indices count from 1, negative ones back from the latest vertex.
+void checkObjFaceIndices(const std::string& path, const std::string& bytes) {
+    std::istringstream lines(bytes);
+    std::string line;
+    long long vertices = 0;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        std::istringstream tokens(line);
+        std::string keyword;
+        tokens >> keyword;
+        if (keyword == "v") ++vertices;
+        if (keyword != "f") continue;
+        std::string corner;
+        while (tokens >> corner) {
+            const std::string index = corner.substr(0, corner.find('/'));
+            const bool digits = !index.empty() && index.size() <= 18 &&
+                                index.find_first_not_of("0123456789", index[0] == '-' ? 1 : 0) == std::string::npos &&
+                                index != "-";
+            const long long value = digits ? std::stoll(index) : 0;
+            if (!digits || value == 0 || value > vertices || value < -vertices)
+                throw InputError(path + ": line " + std::to_string(number),
+                                 "vertex indices from 1 to " + std::to_string(vertices) + " (or -1 to -" +
+                                     std::to_string(vertices) + "), the vertices defined so far",
+                                 "\"" + (index.size() > 40 ? index.substr(0, 40) + "…" : index) + "\"");
+        }
+    }
+}
+
 // Silences OpenMesh's complaints on std::cerr while it reads: every defect
 // it would print is reported through InputError instead.
 class QuietOpenMesh {
@@ -256,6 +286,7 @@ TriangleMesh readMesh(const std::string& path, MeshClosure closure) {
     const std::string bytes = readFileBytes(path, "a readable mesh file");
     if (bytes.empty()) throw InputError(path, "a mesh", "an empty file");
     checkDeclaredCountsFit(path, extension, bytes);
+    if (extension == ".obj") checkObjFaceIndices(path, bytes);
     rejectNonFiniteLiterals(path, bytes);
 
     OmMesh scratch;

@@ -158,6 +158,22 @@ TEST_F(MeshReaderTest, DeclaredCountsBeyondTheFileAreRefusedUpFront) {
     EXPECT_NE(binaryMessage.find("3000000000 vertices"), std::string::npos) << binaryMessage;
 }
 
+// OpenMesh drops OBJ faces whose index overflows an int or points nowhere;
+// they are refused with their line instead.
+TEST_F(MeshReaderTest, ObjFaceIndicesOutOfRangeAreRefusedWithTheirLine) {
+    std::string obj = cubeObj();
+    obj.replace(obj.find("f 1 4 3 2"), 9, "f 1 4 3 99999999999999999999");
+    const std::string hugeMessage = messageOf(write("huge_index.obj", obj));
+    EXPECT_NE(hugeMessage.find("huge_index.obj: line 9"), std::string::npos) << hugeMessage;
+    EXPECT_NE(hugeMessage.find("from 1 to 8"), std::string::npos) << hugeMessage;
+    obj = cubeObj();
+    obj.replace(obj.find("f 1 4 3 2"), 9, "f 1 4 3 9");
+    EXPECT_NE(messageOf(write("past_end.obj", obj)).find("past_end.obj: line 9"), std::string::npos);
+    obj = cubeObj();
+    obj.replace(obj.find("f 1 4 3 2"), 9, "f -8 -5 -6 -7");  // relative indices stay valid
+    EXPECT_EQ(readMesh(write("relative.obj", obj)).triangles.size(), 12u);
+}
+
 TEST_F(MeshReaderTest, NonFiniteCoordinatesAreRefusedWithTheirPlace) {
     std::string off = cubeOff();
     off.replace(off.find("1 1 0"), 5, "1 nan 0");
