@@ -20,7 +20,9 @@ int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program
     } catch (const CLI::Success& success) {
         return app.exit(success);
     } catch (const CLI::ParseError& error) {
-        app.exit(error);
+        // One line in eikon's own form, then CLI11's hint.
+        std::cerr << program << ": error: " << error.what() << "\n"
+                  << "Run with --help for more information.\n";
         return 2;
     }
     try {

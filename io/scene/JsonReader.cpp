@@ -8,15 +8,13 @@
 
 namespace eikon {
 
-namespace {
-
-// Text quoted from the input in a message, cut to a line's worth: a 4 MB key
-// or string must not become a 4 MB message.
 std::string clipped(const std::string& text) {
     constexpr std::size_t kLongest = 80;
     if (text.size() <= kLongest) return text;
     return text.substr(0, kLongest) + "… (" + std::to_string(text.size()) + " characters)";
 }
+
+namespace {
 
 std::string describeNode(const nlohmann::json* node) {
     if (node == nullptr) return "nothing";

@@ -35,6 +35,10 @@ struct NumberRange {
     std::string describe(const std::string& noun) const;  // "a number > 0", "an integer in [1, 16]"
 };
 
+// Text quoted from the input in a message, cut to a line's worth: a 4 MB key
+// or string must not become a 4 MB message.
+std::string clipped(const std::string& text);
+
 // Henyey–Greenstein g as the fields hold it: float32 rounds |g| > 1 − 6e-8
 // to 1, where the phase function is a delta.
 inline const NumberRange kAnisotropyRange = NumberRange::closed(-0.99999, 0.99999);

@@ -544,8 +544,8 @@ public:
             Frame& object = frames_.back();
             const std::string key = parsed.get<std::string>();
             if (!object.keys.insert(key).second)
-                throw InputError(sourceName_ + ": " + pathTo(key), "each key once in its object",
-                                 "\"" + key + "\" twice (the first value would be lost)");
+                throw InputError(sourceName_ + ": " + pathTo(clipped(key)), "each key once in its object",
+                                 "\"" + clipped(key) + "\" twice (the first value would be lost)");
             object.key = key;
             break;
         }
@@ -570,7 +570,7 @@ private:
     std::string pathTo(const std::string& key) const {
         std::string path;
         for (std::size_t f = 0; f + 1 < frames_.size(); ++f)
-            path += frames_[f].object ? (path.empty() ? "" : ".") + frames_[f].key
+            path += frames_[f].object ? (path.empty() ? "" : ".") + clipped(frames_[f].key)
                                       : "[" + std::to_string(frames_[f].index) + "]";
         return path + (path.empty() ? "" : ".") + key;
     }

@@ -330,7 +330,9 @@ TEST_F(Cli, MissingSceneFileAndBadJson) {
 TEST_F(Cli, BadCommandLineIsExitCodeTwo) {
     EXPECT_EQ(runEikon("run").exitCode, 2);
     EXPECT_EQ(runEikon("frobnicate").exitCode, 2);
-    EXPECT_EQ(runEikon("run x.json --frames 0").exitCode, 2);
+    const Outcome outcome = runEikon("run x.json --frames 0");
+    EXPECT_EQ(outcome.exitCode, 2);
+    EXPECT_EQ(outcome.output.rfind("eikon: error: ", 0), 0u) << "every message in eikon's form: " << outcome.output;
 }
 
 TEST_F(Cli, HelpOnEveryCommand) {
