@@ -1,9 +1,11 @@
 // The exit codes of eikon's programs: 0 success, 2 bad input (command line,
 // scene file, --set), 1 anything else. Parses the command line and runs
-// `body`, mapping each failure to its code with one message.
+// `body`, mapping each failure to its code with one message; SIGINT and
+// SIGTERM remove the temporaries being written before the program ends.
 #pragma once
 
 #include "bridge/core/Error.h"
+#include "io/files/AtomicFile.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +27,7 @@ int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program
                   << "Run with --help for more information.\n";
         return 2;
     }
+    io::removeTemporariesOnSignals();  // an interrupted run leaves no half-written files
     try {
         return body();
     } catch (const InputError& error) {

@@ -18,4 +18,11 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
 void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written);
 
+// Makes SIGINT, SIGTERM and SIGHUP remove the temporaries being written
+// (temporaryPathFor to commitTemporary, and writeFileAtomically's own)
+// before the process ends by the signal as it would have: an interrupted
+// run leaves only whole files under their final names and no temporaries.
+// (kill -9 cannot be caught: OutputFolder clears what it leaves.)
+void removeTemporariesOnSignals();
+
 }  // namespace eikon::io

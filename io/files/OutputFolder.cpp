@@ -40,15 +40,27 @@ std::vector<fs::path> listedFiles(const fs::path& root) {
     return files;
 }
 
+// The names eikon gives its outputs (frames, report, VTK and OpenVDB
+// series), relative to the folder.
+const std::string kOutputNames =
+    R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|)"
+    R"(vtk/(fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series))";
+
+// A temporary eikon was writing when it was killed (AtomicFile.h names
+// them NAME.tmpPID): an output's, or the list's.
+bool isEikonTemporary(const fs::path& relative) {
+    static const std::regex temporary("(" + kOutputNames + R"(|\.eikon-run)\.tmp\d+)");
+    return std::regex_match(relative.generic_string(), temporary);
+}
+
 // Runs from before the list existed: a folder all of whose files have the
-// names eikon gives its outputs (frames, report, VTK and OpenVDB series).
+// names eikon gives its outputs, or its temporaries'.
 bool holdsOnlyUnlistedEikonOutput(const fs::path& root) {
-    static const std::regex names(
-        R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|)"
-        R"(vtk/(fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series))");
+    static const std::regex names(kOutputNames);
     const std::set<fs::path> files = filesBelow(root);
-    return std::all_of(files.begin(), files.end(),
-                       [](const fs::path& file) { return std::regex_match(file.generic_string(), names); });
+    return std::all_of(files.begin(), files.end(), [](const fs::path& file) {
+        return std::regex_match(file.generic_string(), names) || isEikonTemporary(file);
+    });
 }
 
 // Removes `files` and then the folders that left empty; the list goes last.
@@ -82,7 +94,10 @@ OutputFolder::OutputFolder(fs::path root, bool force) : root_(std::move(root)) {
             throw InputError(root_.string() +
                              ": the output folder holds an earlier run; choose another --out or pass --force to clear it");
         const std::set<fs::path> all = filesBelow(root_);
-        clearEarlierRun(root_, listed ? listedFiles(root_) : std::vector<fs::path>(all.begin(), all.end()));
+        std::vector<fs::path> earlier = listed ? listedFiles(root_) : std::vector<fs::path>(all.begin(), all.end());
+        for (const fs::path& file : all)  // what a killed run was writing
+            if (listed && isEikonTemporary(file)) earlier.push_back(file);
+        clearEarlierRun(root_, earlier);
     }
     fs::create_directories(root_ / "frames");
     before_ = filesBelow(root_);

@@ -2,7 +2,8 @@
 // and whatever the exporters add. DIR/.eikon-run lists every file the run
 // wrote, kept up to date after each frame. A folder that already holds files
 // is refused — with `force`, one holding an earlier run is cleared of the
-// files its list names (nothing else is touched), so the frames of two runs
+// files its list names and of the temporaries a killed run was writing
+// (NAME.tmpPID of eikon's own file names; nothing else is touched), so the frames of two runs
 // never mix and nothing eikon did not write is ever deleted; a folder without
 // that list is refused even with `force`.
 #pragma once

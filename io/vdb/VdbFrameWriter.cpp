@@ -2,6 +2,8 @@
 
 #include "bridge/core/Error.h"
 #include "io/files/AtomicFile.h"
+#include "io/files/FileBytes.h"
+#include "io/vdb/VdbFileCheck.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
@@ -103,6 +105,18 @@ void VdbFrameWriter::writeFrame(int frame, double time, const ExportFrame& array
         file.close();
     } catch (const openvdb::Exception&) {
         written = false;
+    }
+    // openvdb::io::File does not report a failed write: on a full disk it
+    // closed a truncated file as if whole. So the file is walked as a reader
+    // will walk it (VdbFileCheck.h) before it may take its final name.
+    if (written) {
+        try {
+            const std::string bytes = readFileBytes(temporary);
+            for (const VdbGridEntry& grid : checkVdbHeader(bytes, temporary.string()).grids)
+                if (!grid.instance) checkVdbGrid(bytes, grid, temporary.string());
+        } catch (const InputError&) {
+            written = false;
+        }
     }
     commitTemporary(temporary, path, written);
 }

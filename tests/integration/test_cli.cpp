@@ -8,7 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 #include <cstdio>
 #include <filesystem>
@@ -325,6 +330,39 @@ TEST_F(Cli, MissingSceneFileAndBadJson) {
     const Outcome outcome = runEikon("run " + broken);
     EXPECT_EQ(outcome.exitCode, 2);
     EXPECT_NE(outcome.output.find("broken.json: line 3"), std::string::npos) << outcome.output;
+}
+
+// SIGTERM in the middle of a run that writes VTK and OpenVDB every frame:
+// eikon ends by the signal as a program does, and removes the temporaries it
+// was writing, so only whole files remain under final names.
+TEST_F(Cli, SigtermLeavesNoTemporaries) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const fs::path out = dir_ / "run";
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        const std::string outArgument = out.string();
+        execl(EIKON_EXECUTABLE, EIKON_EXECUTABLE, "run", scene.c_str(), "--out", outArgument.c_str(), "--frames", "500",
+              "--quiet", "--vtk", "--set", "export.vdb.enabled=true", "--set", "render.width=64", "--set",
+              "render.height=48", "--set", "render.photons=4096", static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    // Until some frames are written, then a little longer: the signal lands
+    // while frames are being exported.
+    for (int wait = 0; wait < 600 && !fs::exists(out / "vtk" / "fields_00002.vti"); ++wait)
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::this_thread::sleep_for(std::chrono::milliseconds(150));
+    ASSERT_EQ(kill(child, SIGTERM), 0);
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before the signal";
+    EXPECT_EQ(WTERMSIG(status), SIGTERM);
+    int files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(out)) {
+        ++files;
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    }
+    EXPECT_GT(files, 6);
 }
 
 TEST_F(Cli, BadCommandLineIsExitCodeTwo) {

@@ -73,6 +73,25 @@ TEST_F(OutputFolderTest, ForceRemovesOnlyWhatEikonWrote) {
     EXPECT_EQ(list.find("notes.txt"), std::string::npos) << "the user's files are never listed as eikon's";
 }
 
+// A run killed with -9 (no handler runs) leaves the temporaries it was
+// writing, NAME.tmpPID of its own file names: --force clears them with the
+// run they belong to, and a user's file that merely ends in ".tmp" stays.
+TEST_F(OutputFolderTest, ForceClearsTheTemporariesOfAKilledRun) {
+    {
+        OutputFolder first(root_, false);
+        writeFileAtomically(first.framePath(0), "old frame");
+        first.appendReport("{\"frame\":0}");
+    }
+    writeFileAtomically(root_ / "frames" / "frame_00001.png.tmp4242", "half a frame");
+    writeFileAtomically(root_ / "report.jsonl.tmp4242", "half a report");
+    writeFileAtomically(root_ / "draft.tmp", "the user's");
+    EXPECT_THROW(OutputFolder(root_, false), InputError);
+    { OutputFolder second(root_, true); }
+    EXPECT_FALSE(fs::exists(root_ / "frames" / "frame_00001.png.tmp4242"));
+    EXPECT_FALSE(fs::exists(root_ / "report.jsonl.tmp4242"));
+    EXPECT_EQ(readAll(root_ / "draft.tmp"), "the user's");
+}
+
 // A run from before the list existed: every file has an eikon output name,
 // so it is an earlier run (refused, cleared with --force); one foreign file
 // makes it a folder eikon did not write.

@@ -8,6 +8,9 @@
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 
+#include <csignal>
+#include <sys/resource.h>
+
 namespace eikon::io {
 namespace {
 
@@ -76,6 +79,49 @@ TEST(VdbExport, CubicAndBoxVoxelsRoundTripBitExact) {
     int files = 0;
     for (const auto& entry : fs::directory_iterator(root / "vdb")) files += entry.path().extension() == ".vdb";
     EXPECT_EQ(files, 1);  // no temporaries left
+    fs::remove_all(root);
+}
+
+// A full disk, simulated by a file-size limit (writes past it fail with
+// EFBIG, as they fail with ENOSPC on a full disk): openvdb::io::File closed
+// such a truncated file as if whole. The export must fail with an error,
+// leave no file under the final name (the last good frame stays whole) and
+// no temporary.
+TEST(VdbExport, AWriteFailureLeavesNeitherAFinalFileNorATemporary) {
+    const fs::path root = fs::path(::testing::TempDir()) / "eikon_vdb_full";
+    fs::remove_all(root);
+    const VdbFrameWriter writer(root, "fields");
+    ExportFrame frame;
+    frame.grid = GridSpec{{48, 48, 48}, glm::dvec3(0.0), glm::dvec3(1.0)};
+    NamedArray noise{"noise", 1, {}};
+    for (std::size_t c = 0; c < frame.grid.cellCount(); ++c) noise.values.push_back(1.0f + 1e-3f * static_cast<float>(c % 977));
+    frame.arrays = {noise};
+    writer.writeFrame(0, 0.0, frame);  // under no limit: the frame before the disk fills
+    const auto whole = fs::file_size(writer.framePath(0));
+
+    rlimit previous{};
+    ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &previous), 0);
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit limited = previous;
+    limited.rlim_cur = whole / 2;
+    ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
+    bool failed = false;
+    try {
+        writer.writeFrame(1, 0.04, frame);
+    } catch (const std::runtime_error&) {
+        failed = true;
+    }
+    setrlimit(RLIMIT_FSIZE, &previous);
+    std::signal(SIGXFSZ, oldHandler);
+    EXPECT_TRUE(failed) << "a truncated frame was taken for a whole one";
+    EXPECT_FALSE(fs::exists(writer.framePath(1)));
+    EXPECT_EQ(fs::file_size(writer.framePath(0)), whole);
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(root / "vdb")) {
+        ++files;
+        EXPECT_EQ(entry.path().extension(), ".vdb") << entry.path();
+    }
+    EXPECT_EQ(files, 1);
     fs::remove_all(root);
 }
 
