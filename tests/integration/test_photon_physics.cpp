@@ -105,21 +105,28 @@ TEST(PhotonPhysics, InverseSquareLaw) {
 // κ = (1, 3, 5) /m: the receiver below sees E0·exp(−κL) per channel (≤ 1%).
 // The slab's faces lie on voxel faces, so coverage is exact and the check is
 // of the tracer alone (voxelization has its own tests).
-TEST(PhotonPhysics, BeerLambertThroughSlab) {
+// A beam of 2 W/m² straight down through an absorbing slab 0.375 m thick
+// (y in ±0.1875, on voxel faces of a 32³ grid) onto a floor receiver.
+Scene absorbingSlabScene(const Rgb& extinction) {
     Scene scene = emptyScene(glm::dvec3(-0.5), glm::dvec3(0.5), 32);
     ObjectDesc slab;
     slab.kind = ObjectDesc::Kind::Box;
     slab.box = {glm::dvec3(-1.0, -0.1875, -1.0), glm::dvec3(1.0, 0.1875, 1.0)};
     slab.material.index = 1.0;
-    slab.material.extinction = Rgb(1.0, 3.0, 5.0);
+    slab.material.extinction = extinction;
     scene.objects.push_back(slab);
     scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 2.0));
     scene.receivers.push_back(floorReceiver(-0.45, 0.5, 16));
     scene.render.photons = 1 << 18;
-    const TraceResult result = trace(scene);
+    return scene;
+}
+
+TEST(PhotonPhysics, BeerLambertThroughSlab) {
+    const Rgb kappa(1.0, 3.0, 5.0);
+    const TraceResult result = trace(absorbingSlabScene(kappa));
 
     for (int channel = 0; channel < 3; ++channel) {
-        const double expected = 2.0 * std::exp(-slab.material.extinction[channel] * 0.375);
+        const double expected = 2.0 * std::exp(-kappa[channel] * 0.375);
         test::reportFigure(("beer_lambert_measured_over_exact_channel_" + std::to_string(channel)).c_str(),
                            channelMean(result.map, channel) / expected);
         EXPECT_NEAR(channelMean(result.map, channel) / expected, 1.0, 0.01) << "channel " << channel;
@@ -134,20 +141,12 @@ TEST(PhotonPhysics, BeerLambertThroughSlab) {
 // survive to the receiver), where stopping dim photons outright gave 0; the
 // balance, the roulette's gain counted as a source, stays exact.
 TEST(PhotonPhysics, RussianRouletteKeepsDeepAttenuationUnbiased) {
-    Scene scene = emptyScene(glm::dvec3(-0.5), glm::dvec3(0.5), 32);
-    ObjectDesc slab;
-    slab.kind = ObjectDesc::Kind::Box;
-    slab.box = {glm::dvec3(-1.0, -0.1875, -1.0), glm::dvec3(1.0, 0.1875, 1.0)};
-    slab.material.index = 1.0;
-    slab.material.extinction = Rgb(10.0, 11.0, 12.0) / 0.375;
-    scene.objects.push_back(slab);
-    scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 2.0));
-    scene.receivers.push_back(floorReceiver(-0.45, 0.5, 16));
-    scene.render.photons = 1 << 18;
+    const Rgb kappa = Rgb(10.0, 11.0, 12.0) / 0.375;
+    const Scene scene = absorbingSlabScene(kappa);
     ASSERT_EQ(scene.tracer.powerCutoff, 1e-4);
     const TraceResult result = trace(scene);
     for (int channel = 0; channel < 3; ++channel) {
-        const double expected = 2.0 * std::exp(-slab.material.extinction[channel] * 0.375);
+        const double expected = 2.0 * std::exp(-kappa[channel] * 0.375);
         const double ratio = channelMean(result.map, channel) / expected;
         test::reportFigure(("roulette_deep_slab_measured_over_exact_channel_" + std::to_string(channel)).c_str(), ratio);
         EXPECT_NEAR(ratio, 1.0, 0.02) << "channel " << channel;
