@@ -66,7 +66,11 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
     updateMeshes();
     fillMedium(scene_, fields_, CellBox::whole(fields_.grid));
     if (scene.sim) {
-        fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid);
+        try {
+            fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid);
+        } catch (const InputError& error) {  // the solver knows key paths, not the file
+            throw InputError(scene.sourcePath + ": " + error.what());
+        }
         fluidOptics_ = std::make_unique<OpticalModel>(*scene.sim);
         refreshFromSimulation();
     } else if (scene.volume) {

@@ -2,6 +2,8 @@
 // guards, field output on the render grid, solids and source regions.
 #include "sim/fluid/FluidSimulation.h"
 
+#include "sim/SceneFields.h"
+
 #include "bridge/core/Error.h"
 #include "sim/optics/OpticalMapping.h"
 
@@ -155,6 +157,25 @@ TEST(FluidSimulation, SourceRegionWithoutCellsIsAnInputError) {
     } catch (const InputError& error) {
         EXPECT_EQ(std::string(error.what()),
                   "sim.sources[0]: expected a region holding at least one cell centre of the solver grid, found none");
+    }
+}
+
+// Through SceneFields, as eikon run meets it, the message names the file.
+TEST(FluidSimulation, SourceErrorsThroughTheSceneNameTheSceneFile) {
+    Scene scene;
+    scene.sourcePath = "plume.json";
+    scene.grid.resolution = kRenderGrid.resolution;
+    scene.grid.boundsMin = kRenderGrid.boundsMin;
+    scene.grid.boundsMax = kRenderGrid.boundsMax;
+    scene.sim = smallAir();
+    SimDesc::Source plate;
+    plate.region = {glm::dvec3(0.0, 0.001, 0.0), glm::dvec3(0.01, 0.002, 0.01)};
+    scene.sim->sources.push_back(plate);
+    try {
+        SceneFields fields(scene);
+        FAIL() << "accepted an empty source region";
+    } catch (const InputError& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("plume.json: sim.sources[0]: expected a region", 0), 0u) << error.what();
     }
 }
 
