@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 #include <memory>
 #include <optional>
 
@@ -72,6 +73,36 @@ private:
     FrameExporter exporter_;
 };
 
+// Says on stderr, once a run, when a frame's photons do not account for
+// their power (balance error above 1e-3), or when photons stopped before
+// their light was spent lose more than 0.1% of it net of the roulette's
+// gain (tracer.max_steps, or llvmpipe's loop cap): the figures are then
+// not what the scene would give.
+class PowerWarning {
+public:
+    void check(int frame, const render::FrameResult& result) {
+        if (warned_) return;
+        const render::PhotonStats& p = result.photons;
+        const double emitted = p.emitted.r + p.emitted.g + p.emitted.b;
+        if (p.photons == 0 || emitted <= 0.0) return;
+        const Rgb lost = p.cutOff - p.rouletteGain;
+        const double lostShare = (lost.r + lost.g + lost.b) / emitted;
+        if (p.balanceError() > 1e-3) {
+            std::cerr << "eikon: warning: frame " << frame << ": the photons' energy balance is off by "
+                      << p.balanceError() << " (report.jsonl, photons); later frames are not reported here\n";
+            warned_ = true;
+        } else if (lostShare > 1e-3) {
+            std::cerr << "eikon: warning: frame " << frame << ": " << 100.0 * lostShare
+                      << "% of the emitted power was cut off with photons still in flight (tracer.max_steps, or "
+                         "the loop cap of OpenGL on the CPU); later frames are not reported here\n";
+            warned_ = true;
+        }
+    }
+
+private:
+    bool warned_ = false;
+};
+
 // Each turn renders the current frame and, while more follow, produces the
 // next (FrameSource.h). The host fields' frame time includes the advance
 // that produced the frame, as the ring's includes nothing of the next one's
@@ -81,6 +112,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, Fram
     FrameSource source(scene, fields, rendererOptionsFor(scene), pipelined,
                        scene.exports.vtk.enabled || scene.exports.vdb.enabled);
     const bool simulated = fields.changesOverTime();
+    PowerWarning warning;
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
         const bool more = frame + 1 < frames;
@@ -92,6 +124,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, Fram
             timing.produceNextMs = next.simulateMs + next.writeFieldsMs;
         }
         const ProducedFrame& current = source.current();
+        warning.check(frame, result);
         timing.frameMs = millisecondsSince(start) + (source.throughRing() ? 0.0 : current.simulateMs);
         outputs.write(frame, result,
                       frameReportJson(frame, current, simulated, result, timing, pipelined && source.throughRing()),

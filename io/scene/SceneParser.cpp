@@ -34,6 +34,9 @@ const NumberRange kNonNegative = NumberRange::atLeast(0.0);
 // Light powers (W) and irradiances (W/m²) whose sums over photons and
 // channels stay far from a double's overflow (the Sun emits 3.8e26 W).
 const NumberRange kLightPower = NumberRange::closed(0.0, 1e30);
+// Refractive indices: the fields hold n − n_ref in float32, which must leave
+// n > 0 (an index of 1e-300 became 0 at some cell).
+const NumberRange kRefractiveIndex = NumberRange::closed(1e-3, 1e3);
 // Grid corners, m: the extent max − min must stay finite and its cells
 // representable (a million kilometres).
 const NumberRange kCoordinate = NumberRange::closed(-1e9, 1e9);
@@ -133,7 +136,7 @@ AirTemperatureProfile readAirProfile(const JsonReader& node) {
 void readMedium(const JsonReader& node, Scene& scene) {
     Material& medium = scene.medium;
     const auto fields = node.object({"index", "extinction", "scattering", "anisotropy", "air_temperature_profile"});
-    if (auto index = fields.optional("index")) medium.index = index->number(kPositive);
+    if (auto index = fields.optional("index")) medium.index = index->number(kRefractiveIndex);
     readAttenuation(fields, medium);
     if (auto profile = fields.optional("air_temperature_profile")) scene.airProfile = readAirProfile(*profile);
 }
@@ -151,7 +154,7 @@ ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
     const std::string type = node.member("type").oneOf({"sphere", "box", "mesh", "water"});
     if (type == "mesh" || type == "water") {
         return readMeshOrWaterObject(node, type, sceneFolder, [](const JsonObjectReader& fields, ObjectDesc& shaped) {
-            shaped.material.index = fields.member("index").number(kPositive);
+            shaped.material.index = fields.member("index").number(kRefractiveIndex);
             readAttenuation(fields, shaped.material);
             readSurface(fields, shaped);
         });
@@ -162,7 +165,7 @@ ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
         object.kind = ObjectDesc::Kind::Sphere;
         object.sphere.center = fields.member("center").vec3();
         object.sphere.radius = fields.member("radius").number(kPositive);
-        object.material.index = fields.member("index").number(kPositive);
+        object.material.index = fields.member("index").number(kRefractiveIndex);
         readAttenuation(fields, object.material);
         readSurface(fields, object);
     } else {
@@ -172,7 +175,7 @@ ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
         object.box.min = fields.member("min").vec3();
         object.box.max = fields.member("max").vec3();
         requireNonEmpty(fields.member("min"), object.box.min, fields.member("max"), object.box.max);
-        object.material.index = fields.member("index").number(kPositive);
+        object.material.index = fields.member("index").number(kRefractiveIndex);
         readAttenuation(fields, object.material);
         readSurface(fields, object);
     }
@@ -421,8 +424,8 @@ void readSimOptics(const JsonReader& node, SimDesc& sim) {
     if (auto v = fields.optional("refractivity")) sim.refractivity = v->number(kPositive);
     if (auto v = fields.optional("reference_temperature")) sim.referenceTemperature = v->number(kPositive);
     if (auto v = fields.optional("reference_pressure")) sim.referencePressure = v->number(kPositive);
-    if (auto v = fields.optional("index_a")) sim.indexA = v->number(kPositive);
-    if (auto v = fields.optional("index_b")) sim.indexB = v->number(kPositive);
+    if (auto v = fields.optional("index_a")) sim.indexA = v->number(kRefractiveIndex);
+    if (auto v = fields.optional("index_b")) sim.indexB = v->number(kRefractiveIndex);
     if (auto v = fields.optional("mixing")) {
         sim.mixing = v->oneOf({"linear", "lorentz_lorenz"}) == "linear" ? SimDesc::Mixing::Linear
                                                                         : SimDesc::Mixing::LorentzLorenz;

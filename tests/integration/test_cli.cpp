@@ -332,6 +332,23 @@ TEST_F(Cli, MissingSceneFileAndBadJson) {
     EXPECT_NE(outcome.output.find("broken.json: line 3"), std::string::npos) << outcome.output;
 }
 
+// Photons stopped in flight (here by tracer.max_steps at tiny uniform
+// steps; on llvmpipe its loop cap may come first) are counted as cut off, so
+// the energy balance holds, and the run says on stderr that power was lost.
+TEST_F(Cli, PhotonsCutOffInFlightAreCountedAndReported) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const fs::path out = dir_ / "run";
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() +
+                                     " --quiet --set 'tracer.step_policy=\"uniform\"' --set tracer.step_voxels=0.01"
+                                     " --set tracer.max_steps=1000");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_NE(outcome.output.find("eikon: warning: frame 0:"), std::string::npos) << outcome.output;
+    std::ifstream report(out / "report.jsonl");
+    const nlohmann::json line = nlohmann::json::parse(std::string(std::istreambuf_iterator<char>(report), {}));
+    EXPECT_GT(line["photons"]["count"]["cut_off"].get<long long>(), 0);
+    EXPECT_LT(line["photons"]["energy_balance_error"].get<double>(), 1e-6);
+}
+
 // SIGTERM in the middle of a run that writes VTK and OpenVDB every frame:
 // eikon ends by the signal as a program does, and removes the temporaries it
 // was writing, so only whole files remain under final names.

@@ -224,10 +224,14 @@ TEST(SceneParserErrors, StringForANumber) {
     expectErrorAt(scene, "objects[0].radius", "a number > 0, found a string \"big\"");
 }
 
-TEST(SceneParserErrors, NonPositiveIndex) {
+// An index the float32 fields cannot hold apart from 0 (1e-300 was refused
+// later, at a field cell) is refused at its key path.
+TEST(SceneParserErrors, IndexOutsideWhatTheFieldsHold) {
     json scene = validScene();
     scene["objects"][1]["index"] = 0;
-    expectErrorAt(scene, "objects[1].index", "a number > 0, found 0");
+    expectErrorAt(scene, "objects[1].index", "a number in [0.001, 1000], found 0");
+    scene["objects"][1]["index"] = 1e-300;
+    expectErrorAt(scene, "objects[1].index", "a number in [0.001, 1000], found 1e-300");
 }
 
 TEST(SceneParserErrors, MissingRequiredKey) {
