@@ -1,11 +1,11 @@
 // Post: linear HDR radiance → exposure 2^EV → filmic curve ([Narkowicz16]'s fit
 // of the ACES reference rendering transform) → sRGB encoding → RGBA8.
-layout(local_size_x = 64) in;
+layout(local_size_x = 8, local_size_y = 8) in;  // over the image, so a wide one stays within the work-group count
 
 layout(std430, binding = kHdrImage) readonly buffer HdrImage { vec4 hdr_radiance[]; };
 layout(std430, binding = kLdrImage) writeonly buffer LdrImage { uint ldr_rgba8[]; };
 
-uniform uint pixel_count;
+uniform uvec2 image_size;  // pixels
 uniform float exposure_scale;
 
 vec3 aces_filmic(vec3 x) {
@@ -17,8 +17,9 @@ vec3 srgb_encode(vec3 linear) {
 }
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
-    if (i >= pixel_count) return;
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, image_size))) return;
+    uint i = pixel.y * image_size.x + pixel.x;
     vec3 encoded = srgb_encode(aces_filmic(max(hdr_radiance[i].rgb, vec3(0.0f)) * exposure_scale));
     ldr_rgba8[i] = packUnorm4x8(vec4(encoded, 1.0f));
 }

@@ -3,6 +3,7 @@
 #include "render/gl/GlContext.h"
 
 #include <iostream>
+#include <string>
 
 namespace eikon::app {
 
@@ -19,7 +20,11 @@ int infoCommand() {
                   << "OpenGL vendor:   " << info.vendor << "\n"
                   << "OpenGL renderer: " << info.renderer << "\n"
                   << "OpenGL version:  " << info.version << "\n"
-                  << "GLSL version:    " << info.glslVersion << "\n";
+                  << "GLSL version:    " << info.glslVersion << "\n"
+                  << "OpenGL limits:   storage buffers " << info.maxStorageBlockBytes << " bytes, textures "
+                  << info.maxTextureSize << " (2D) and " << info.max3dTextureSize << " (3D) texels a side, loop budget "
+                  << (info.loopBudget > 0 ? std::to_string(info.loopBudget) + " iterations an invocation"
+                                          : std::string("none")) << "\n";
     } catch (const std::exception& error) {
         std::cout << "OpenGL: unavailable: " << error.what() << "\n";
     }

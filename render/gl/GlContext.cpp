@@ -37,6 +37,12 @@ void GlContext::initialiseCurrent(const std::string& platform) {
     info_.version = glString(GL_VERSION);
     info_.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
     info_.platform = platform;
+    GLint64 storage = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &storage);
+    info_.maxStorageBlockBytes = storage;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info_.maxTextureSize);
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &info_.max3dTextureSize);
+    info_.loopBudget = loopBudgetForRenderer(info_.renderer);
     if (epoxy_gl_version() < 45)
         throw std::runtime_error(platform + " gave OpenGL " + info_.version + " on " + info_.renderer +
                                  "; eikon needs OpenGL 4.5 core");

@@ -13,6 +13,12 @@ struct GlInfo {
     std::string version;
     std::string glslVersion;
     std::string platform;  // how the context was made, e.g. "EGL surfaceless (Mesa)"
+    // Limits that bound a scene: the largest storage buffer a shader reads
+    // (camera images, sharp meshes), 2D and 3D texture edges (environment
+    // maps, field grids), and the loop budget (loopBudgetForRenderer; 0: none).
+    long long maxStorageBlockBytes = 0;
+    int maxTextureSize = 0, max3dTextureSize = 0;
+    unsigned loopBudget = 0;
 
     // Mesa's llvmpipe or softpipe: "GPU" work runs on the same CPU cores as
     // the simulation.

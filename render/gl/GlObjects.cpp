@@ -1,5 +1,7 @@
 #include "render/gl/GlObjects.h"
 
+#include "bridge/core/Error.h"
+
 #include <stdexcept>
 
 namespace eikon::gl {
@@ -75,9 +77,22 @@ GLint Program::uniform(const char* name) const {
 
 void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX,
                                GLuint localY, GLuint localZ) const {
-    auto groups = [](std::size_t count, GLuint local) { return static_cast<GLuint>((count + local - 1) / local); };
+    const std::size_t counts[3] = {countX, countY, countZ};
+    const GLuint locals[3] = {localX, localY, localZ};
+    GLuint groups[3];
+    for (GLuint axis = 0; axis < 3; ++axis) {
+        GLint most = 0;
+        glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, axis, &most);
+        const std::size_t needed = (counts[axis] + locals[axis] - 1) / locals[axis];
+        // A stage that asks for more work groups than the driver dispatches
+        // must split its work: OpenGL would refuse with GL_INVALID_VALUE.
+        EIKON_CHECK_MSG(needed <= static_cast<std::size_t>(most),
+                        shaderName_ + ": " + std::to_string(needed) + " work groups along axis " +
+                            std::to_string(axis) + ", above GL_MAX_COMPUTE_WORK_GROUP_COUNT " + std::to_string(most));
+        groups[axis] = static_cast<GLuint>(needed);
+    }
     use();
-    glDispatchCompute(groups(countX, localX), groups(countY, localY), groups(countZ, localZ));
+    glDispatchCompute(groups[0], groups[1], groups[2]);
 }
 
 void Program::dispatchOverCells(const glm::ivec3& cells) const {

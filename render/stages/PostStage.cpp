@@ -17,9 +17,9 @@ Image8 PostStage::run(const gl::Buffer& hdrImage, double exposureEv) {
     hdrImage.bindStorage(layout::kHdrImage);
     ldr_.bindStorage(layout::kLdrImage);
     program_.use();
-    glUniform1ui(program_.uniform("pixel_count"), static_cast<GLuint>(pixels));
+    glUniform2ui(program_.uniform("image_size"), static_cast<GLuint>(width_), static_cast<GLuint>(height_));
     glUniform1f(program_.uniform("exposure_scale"), static_cast<float>(std::exp2(exposureEv)));
-    program_.dispatchCovering(pixels, 1, 1, 64, 1, 1);
+    program_.dispatchCovering(static_cast<std::size_t>(width_), static_cast<std::size_t>(height_), 1, 8, 8, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     Image8 image{width_, height_, std::vector<std::uint8_t>(pixels * 4)};
     ldr_.download(image.rgba.data(), image.rgba.size());

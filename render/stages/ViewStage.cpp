@@ -75,11 +75,25 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
     if (scene.render.environment.kind == EnvironmentDesc::Kind::Hdr) {
         const FloatImage* image = scene.render.environment.image.get();
         EIKON_CHECK_MSG(image != nullptr, "an hdr environment arrives with its image read (io/scene)");
+        GLint largest = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+        if (image->width > largest || image->height > largest)
+            throw InputError(scene.sourcePath + ": render.environment.path",
+                             "an image at most " + std::to_string(largest) + " pixels a side (GL_MAX_TEXTURE_SIZE)",
+                             std::to_string(image->width) + " × " + std::to_string(image->height));
         environment_ = gl::Texture2D(image->width, image->height, image->rgba.data());
     }
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
     const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
+    GLint64 largestBlock = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largestBlock);
+    if (pixels * sizeof(glm::vec4) > static_cast<std::size_t>(largestBlock))
+        throw InputError(scene.sourcePath + ": render.width × render.height",
+                         "at most " + std::to_string(static_cast<std::size_t>(largestBlock) / sizeof(glm::vec4)) +
+                             " pixels (the linear image takes 16 bytes a pixel; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " +
+                             std::to_string(largestBlock) + " bytes)",
+                         std::to_string(width_) + " × " + std::to_string(height_) + " = " + std::to_string(pixels));
     hdr_ = gl::Buffer(pixels * sizeof(glm::vec4));
     if (recordExit) exits_ = gl::Buffer(pixels * sizeof(glm::vec4));
 }

@@ -1,6 +1,7 @@
 // The viewing pass against closed forms: heat-shimmer deflection through a
 // Gaussian hot-air bump, single scattering in a homogeneous slab, total
 // internal reflection in glass; and the default picture against a reference.
+#include "bridge/core/Error.h"
 #include "io/image/ImageIo.h"
 #include "io/scene/SceneParser.h"
 #include "render/graph/FrameRenderer.h"
@@ -193,6 +194,38 @@ TEST(ViewPass, DefaultPictureMatchesReference) {
     EXPECT_LE(percentile99, 6);
     EXPECT_LE(sum / static_cast<double>(differences.size()), 1.0);
     EXPECT_GT(distinct, static_cast<int>(differences.size() / 4)) << "a picture of one colour is blank";
+}
+
+// Wider than a 1D dispatch can cover (16 384 × 480 pixels: 122 880 groups of
+// 64, past the 65 535 OpenGL guarantees) the image still renders; larger
+// than the biggest storage buffer the context has, it is refused at its key
+// path with the size and the limit, before anything is traced.
+TEST(ViewPass, ImageSizesAreCheckedAgainstTheContextsLimits) {
+    glContext();
+    const std::string path = std::string(EIKON_SOURCE_DIR) + "/scenes/default.json";
+    const Scene wide = loadSceneFile(path, {"grid.resolution=[24,20,24]", "render.photons=4096", "render.width=16384",
+                                            "render.height=480", "receivers.0.resolution=32"});
+    const FieldSet fields = sim::voxelizeScene(wide);
+    render::FrameRenderer renderer(wide, fields);
+    const render::Image8 image = renderer.render(fields).image;
+    ASSERT_EQ(image.width, 16384);
+    const std::size_t middle = (static_cast<std::size_t>(image.height / 2) * image.width + image.width / 2) * 4;
+    EXPECT_GT(image.rgba[middle] + image.rgba[middle + 1] + image.rgba[middle + 2], 0) << "the sphere is not black";
+
+    GLint64 largest = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
+    const long long height = largest / (16LL * 16384) + 1;  // one row more than fits
+    if (height > 16384) GTEST_SKIP() << "this context's storage buffers hold any image the scene format allows";
+    const Scene tall = loadSceneFile(path, {"grid.resolution=[24,20,24]", "render.width=16384",
+                                            "render.height=" + std::to_string(height)});
+    try {
+        render::FrameRenderer refused(tall, fields);
+        FAIL() << "an image larger than the context's storage buffers was accepted";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("render.width × render.height"), std::string::npos) << message;
+        EXPECT_NE(message.find(std::to_string(largest)), std::string::npos) << message;
+    }
 }
 
 }  // namespace

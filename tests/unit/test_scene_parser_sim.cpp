@@ -140,7 +140,7 @@ TEST(SceneParserSim, BadValuesNameTheirJsonPath) {
         {"optics", json::object({{"mixing", "average"}}), "sim.optics.mixing", "one of"},
         {"optics", json::object({{"dye_extinction", 1}, {"dye_scattering", 2}}), "sim.optics.dye_scattering",
          "dye_scattering <= dye_extinction"},
-        {"optics", json::object({{"index_a", -1.3}}), "sim.optics.index_a", "a number > 0"},
+        {"optics", json::object({{"index_a", -1.3}}), "sim.optics.index_a", "a number in [0.001, 1000]"},
         {"heater", 5, "sim.heater", "one of the keys"},
     };
     for (const Case& c : cases) {
