@@ -124,11 +124,12 @@ struct ElementBytes {
     std::size_t vertex, face;
 };
 constexpr ElementBytes kTextElement{6, 8}, kBinaryElement{3, 4};
+// A binary OFF vertex: three 32-bit floats; a face: a count and three indices.
+constexpr ElementBytes kBinaryOffElement{12, 16};
 
 // Where the data of a text OFF file start and the counts its header
 // declares ("OFF" and its variants, then V F E; '#' comments anywhere);
-// nullopt for a binary OFF or a header that does not parse (OpenMesh then
-// refuses it).
+// nullopt for a binary OFF or a header that does not parse.
 std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string& bytes, std::size_t& dataStart) {
     std::size_t at = 0;
     auto nextToken = [&]() -> std::string {
@@ -155,6 +156,33 @@ std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string
     }
     dataStart = at;
     return counts;
+}
+
+// The counts of a binary OFF ("OFF BINARY", then V F E as 32-bit integers).
+// Which byte order the writer used is not stated, so of the two readings
+// the one that asks less of the file is kept: a valid file fits in its own
+// order, and a count that is absurd in one order is large in the other too.
+std::optional<std::array<unsigned long long, 2>> binaryOffCounts(const std::string& bytes, std::size_t& dataStart) {
+    const std::size_t newline = bytes.find('\n');
+    if (newline == std::string::npos || bytes.compare(0, newline, "OFF BINARY") != 0 ||
+        bytes.size() < newline + 1 + 12)
+        return std::nullopt;
+    const auto word = [&](std::size_t at, bool bigEndian) {
+        unsigned long long value = 0;
+        for (int b = 0; b < 4; ++b) {
+            const auto byte = static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(bigEndian ? b : 3 - b)]);
+            value = (value << 8) | byte;
+        }
+        return value;
+    };
+    const std::size_t at = newline + 1;
+    std::array<unsigned long long, 2> little{word(at, false), word(at + 4, false)};
+    std::array<unsigned long long, 2> big{word(at, true), word(at + 4, true)};
+    dataStart = at + 12;
+    const auto need = [](const std::array<unsigned long long, 2>& c) {
+        return static_cast<long double>(c[0]) * kBinaryOffElement.vertex + static_cast<long double>(c[1]) * kBinaryOffElement.face;
+    };
+    return need(little) <= need(big) ? little : big;
 }
 
 // The same for a PLY header: its vertex and face element counts, and whether
@@ -189,10 +217,16 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
     unsigned long long vertices = 0, faces = 0;
     ElementBytes least = kTextElement;
     if (extension == ".off") {
-        const auto counts = textOffCounts(bytes, dataStart);
-        if (!counts) return;
-        vertices = (*counts)[0];
-        faces = (*counts)[1];
+        if (const auto counts = textOffCounts(bytes, dataStart)) {
+            vertices = (*counts)[0];
+            faces = (*counts)[1];
+        } else if (const auto binary = binaryOffCounts(bytes, dataStart)) {
+            vertices = (*binary)[0];
+            faces = (*binary)[1];
+            least = kBinaryOffElement;
+        } else {
+            return;
+        }
     } else if (extension == ".ply") {
         bool text = false;
         const auto counts = plyCounts(bytes, dataStart, text);

@@ -156,6 +156,18 @@ TEST_F(MeshReaderTest, DeclaredCountsBeyondTheFileAreRefusedUpFront) {
     const std::string binaryMessage = messageOf(write("huge_binary.ply", binary));
     EXPECT_NE(binaryMessage.find("huge_binary.ply"), std::string::npos) << binaryMessage;
     EXPECT_NE(binaryMessage.find("3000000000 vertices"), std::string::npos) << binaryMessage;
+
+    // Binary OFF, its counts read in either byte order.
+    std::string offBinary = "OFF BINARY\n";
+    for (const std::uint32_t count : {8u, 2000000000u, 0u}) {
+        const unsigned char be[4] = {static_cast<unsigned char>(count >> 24), static_cast<unsigned char>(count >> 16),
+                                     static_cast<unsigned char>(count >> 8), static_cast<unsigned char>(count)};
+        offBinary.append(reinterpret_cast<const char*>(be), 4);
+    }
+    offBinary.append(8 * 12 + 16, '\0');
+    const std::string offBinaryMessage = messageOf(write("huge_binary.off", offBinary));
+    EXPECT_NE(offBinaryMessage.find("huge_binary.off"), std::string::npos) << offBinaryMessage;
+    EXPECT_NE(offBinaryMessage.find("faces (truncated"), std::string::npos) << offBinaryMessage;
 }
 
 // OpenMesh drops OBJ faces whose index overflows an int or points nowhere;
