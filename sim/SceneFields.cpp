@@ -48,14 +48,12 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
             meshes_.back()->surface = std::make_unique<SharpMeshSurface>(meshes_.back()->shape.mesh());
     }
     // The roots first (node k: the k-th sharp mesh), then each tree's other nodes.
-    std::size_t roots = 0, triangles = 0;
-    for (const auto& mesh : meshes_)
-        if (mesh->surface) ++roots;
-    std::size_t nodes = roots;
-    roots = 0;
+    const auto roots = static_cast<std::size_t>(
+        std::count_if(meshes_.begin(), meshes_.end(), [](const auto& mesh) { return mesh->surface != nullptr; }));
+    std::size_t root = 0, nodes = roots, triangles = 0;
     for (auto& mesh : meshes_) {
         if (!mesh->surface) continue;
-        mesh->root = roots++;
+        mesh->root = root++;
         mesh->firstNode = nodes;
         mesh->firstTriangle = triangles;
         nodes += mesh->surface->nodeCount() - 1;

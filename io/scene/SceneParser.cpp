@@ -1,7 +1,9 @@
 #include "io/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
+#include "io/files/FileBytes.h"
 #include "io/image/ImageIo.h"
+#include "io/scene/DuplicateKeyCheck.h"
 #include "io/scene/ExportParser.h"
 #include "io/scene/JsonReader.h"
 #include "io/scene/MeshObjectParser.h"
@@ -12,9 +14,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
 
 namespace eikon {
 namespace {
@@ -516,71 +515,8 @@ std::string readTextFile(const std::string& path) {
     std::error_code ignored;
     if (!std::filesystem::exists(path, ignored)) throw InputError(path, "a scene file", "no such file");
     if (!std::filesystem::is_regular_file(path, ignored)) throw InputError(path, "a scene file", "not a regular file");
-    std::ifstream file(path, std::ios::binary);
-    std::ostringstream text;
-    text << file.rdbuf();
-    if (!file) throw InputError(path, "a readable scene file", "a file that cannot be read");
-    return text.str();
+    return io::readFileBytes(path, "a readable scene file");
 }
-
-// JSON allows a key twice in an object and nlohmann keeps the last value;
-// for a scene that silently drops what the user wrote first. This parser
-// callback follows the key path of what is being read and refuses a key
-// given twice, naming its path.
-class DuplicateKeyCheck {
-public:
-    explicit DuplicateKeyCheck(std::string sourceName) : sourceName_(std::move(sourceName)) {}
-
-    bool operator()(int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-        using Event = nlohmann::json::parse_event_t;
-        switch (event) {
-        case Event::object_start:
-        case Event::array_start:
-            enterElement();
-            frames_.push_back({event == Event::object_start, {}, {}, -1});
-            break;
-        case Event::object_end:
-        case Event::array_end:
-            frames_.pop_back();
-            break;
-        case Event::key: {
-            Frame& object = frames_.back();
-            const std::string key = parsed.get<std::string>();
-            if (!object.keys.insert(key).second)
-                throw InputError(sourceName_ + ": " + pathTo(clipped(key)), "each key once in its object",
-                                 "\"" + clipped(key) + "\" twice (the first value would be lost)");
-            object.key = key;
-            break;
-        }
-        case Event::value:
-            enterElement();
-            break;
-        }
-        return true;
-    }
-
-private:
-    struct Frame {
-        bool object;
-        std::set<std::string> keys;
-        std::string key;  // the member being read
-        int index;        // the element being read
-    };
-
-    void enterElement() {
-        if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-    }
-    std::string pathTo(const std::string& key) const {
-        std::string path;
-        for (std::size_t f = 0; f + 1 < frames_.size(); ++f)
-            path += frames_[f].object ? (path.empty() ? "" : ".") + clipped(frames_[f].key)
-                                      : "[" + std::to_string(frames_[f].index) + "]";
-        return path + (path.empty() ? "" : ".") + key;
-    }
-
-    std::string sourceName_;
-    std::vector<Frame> frames_;
-};
 
 nlohmann::json parseJsonText(const std::string& text, const std::string& sourceName) {
     try {

@@ -2,6 +2,7 @@
 
 #include "bridge/core/Error.h"
 
+#include <array>
 #include <stdexcept>
 
 namespace eikon::gl {
@@ -80,9 +81,14 @@ void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size
     const std::size_t counts[3] = {countX, countY, countZ};
     const GLuint locals[3] = {localX, localY, localZ};
     GLuint groups[3];
+    // The driver's limits, read once (every context of a process is made by the same driver).
+    static const std::array<GLint, 3> mostGroups = [] {
+        std::array<GLint, 3> most{};
+        for (GLuint axis = 0; axis < 3; ++axis) glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, axis, &most[axis]);
+        return most;
+    }();
     for (GLuint axis = 0; axis < 3; ++axis) {
-        GLint most = 0;
-        glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, axis, &most);
+        const GLint most = mostGroups[axis];
         const std::size_t needed = (counts[axis] + locals[axis] - 1) / locals[axis];
         // A stage that asks for more work groups than the driver dispatches
         // must split its work: OpenGL would refuse with GL_INVALID_VALUE.
