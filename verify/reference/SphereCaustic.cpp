@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <thread>
 
 namespace eikon::reference {
@@ -45,9 +47,12 @@ double reflectance(double cosI, double ni, double nt, double& cosT) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
+// Where a ray meets the receiver's plane, and the power it brings there (W).
+using Landing = std::function<void(const glm::dvec3& point, double weight)>;
+
 class Tracer {
 public:
-    Tracer(const SphereCausticSetup& setup, std::vector<double>& power) : s_(setup), power_(power) {}
+    Tracer(const SphereCausticSetup& setup, Landing landing) : s_(setup), landing_(std::move(landing)) {}
 
     // Follows a ray and the branches Fresnel splits off it (depth-first).
     void trace(Ray ray, int crossings) {
@@ -85,24 +90,16 @@ private:
         if (ray.direction.y >= 0.0) return;
         const double t = (s_.receiverCentre.y - ray.origin.y) / ray.direction.y;
         if (t <= 0.0) return;
-        const glm::dvec3 p = ray.origin + t * ray.direction;
-        const double u = (p.x - s_.receiverCentre.x) / s_.size + 0.5;
-        const double v = (p.z - s_.receiverCentre.z) / s_.size + 0.5;
-        if (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0) return;
-        const int i = std::min(static_cast<int>(u * s_.resolution), s_.resolution - 1);
-        const int j = std::min(static_cast<int>(v * s_.resolution), s_.resolution - 1);
-        power_[static_cast<std::size_t>(j) * s_.resolution + i] += ray.weight;
+        landing_(ray.origin + t * ray.direction, ray.weight);
     }
 
     const SphereCausticSetup& s_;
-    std::vector<double>& power_;
+    Landing landing_;
 };
 
-}  // namespace
-
-IrradianceMap traceSphereCaustic(const SphereCausticSetup& setup) {
-    const std::size_t texels = static_cast<std::size_t>(setup.resolution) * setup.resolution;
-    // The cone from the light that holds the whole receiver square.
+// The cosine of the half-angle of the cone from the light that holds the
+// whole receiver square.
+double receiverConeCosine(const SphereCausticSetup& setup) {
     const double halfSize = 0.5 * setup.size;
     double cosCone = 1.0;
     for (double sx : {-1.0, 1.0})
@@ -110,34 +107,141 @@ IrradianceMap traceSphereCaustic(const SphereCausticSetup& setup) {
             const glm::dvec3 corner = setup.receiverCentre + glm::dvec3(sx * halfSize, 0.0, sz * halfSize);
             cosCone = std::min(cosCone, glm::dot(glm::normalize(corner - setup.light), glm::dvec3(0.0, -1.0, 0.0)));
         }
-    const double solidAngle = 2.0 * std::numbers::pi * (1.0 - cosCone);
-    const double weight = setup.power / (4.0 * std::numbers::pi) * solidAngle / static_cast<double>(setup.rays);
+    return cosCone;
+}
 
-    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-    std::vector<std::vector<double>> partial(threads, std::vector<double>(texels, 0.0));
-    std::vector<std::thread> workers;
-    for (unsigned w = 0; w < threads; ++w)
-        workers.emplace_back([&, w] {
-            std::mt19937_64 random(setup.seed * 0x9E3779B97F4A7C15ull + w);
-            std::uniform_real_distribution<double> uniform(0.0, 1.0);
-            Tracer tracer(setup, partial[w]);
-            const long long begin = setup.rays * w / threads, end = setup.rays * (w + 1) / threads;
-            for (long long k = begin; k < end; ++k) {
-                // Uniform in the cone about −y: cos θ uniform in [cosCone, 1].
-                const double cosTheta = 1.0 - uniform(random) * (1.0 - cosCone);
-                const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-                const double phi = 2.0 * std::numbers::pi * uniform(random);
-                const glm::dvec3 direction(sinTheta * std::cos(phi), -cosTheta, sinTheta * std::sin(phi));
-                tracer.trace({setup.light, direction, weight, false}, 0);
+// Spreads power landing on the circle of radius rho about the receiver's
+// centre over the texels the circle crosses, each by the fraction of the
+// circle's length inside it: the circle's arcs of the first octant
+// (0 ≤ φ ≤ π/4) between the grid lines it crosses, mirrored into the eight
+// octants (the texel grid is symmetric about the centre for an even
+// resolution).
+class CircleDeposit {
+public:
+    CircleDeposit(const SphereCausticSetup& setup, std::vector<double>& power)
+        : half_(setup.resolution / 2), texel_(setup.size / setup.resolution), power_(power) {}
+
+    void add(double rho, double weight) {
+        if (rho <= 0.0) {
+            for (int image = 0; image < 4; ++image) addTexel(0, 0, image, 0.25 * weight);
+            return;
+        }
+        // Crossings of the lines z = k·texel (φ rising from 0) and x = k·texel
+        // (φ rising toward π/4 as k falls), merged in order of φ.
+        const double diagonal = rho / std::sqrt(2.0);
+        int zLine = 1, xLine = static_cast<int>(std::floor(rho / texel_));
+        if (xLine * texel_ >= rho) --xLine;
+        const double lastZ = std::floor(diagonal / texel_);
+        double phi = 0.0;
+        for (;;) {
+            const double nextZ = zLine <= lastZ ? std::asin(std::min(1.0, zLine * texel_ / rho)) : kOctant;
+            const double nextX = xLine * texel_ > diagonal ? std::acos(std::min(1.0, xLine * texel_ / rho)) : kOctant;
+            const double next = std::min({nextZ, nextX, kOctant});
+            if (next > phi) {
+                const double middle = 0.5 * (phi + next);
+                const int i = static_cast<int>(rho * std::cos(middle) / texel_);
+                const int j = static_cast<int>(rho * std::sin(middle) / texel_);
+                const double share = weight * (next - phi) / (2.0 * std::numbers::pi);
+                for (int image = 0; image < 4; ++image) {
+                    addTexel(i, j, image, share);
+                    addTexel(j, i, image, share);
+                }
             }
-        });
-    for (auto& worker : workers) worker.join();
+            if (next >= kOctant) return;
+            phi = next;
+            if (nextZ <= nextX) ++zLine;
+            else --xLine;
+        }
+    }
 
+private:
+    static constexpr double kOctant = std::numbers::pi / 4.0;
+
+    // Texel (i, j) of the quadrant x, z ≥ 0, mirrored into quadrant `image`.
+    void addTexel(int i, int j, int image, double weight) {
+        if (i >= half_ || j >= half_) return;
+        const int x = (image & 1) ? half_ - 1 - i : half_ + i;
+        const int z = (image & 2) ? half_ - 1 - j : half_ + j;
+        power_[static_cast<std::size_t>(z) * (2 * half_) + x] += weight;
+    }
+
+    int half_;
+    double texel_;
+    std::vector<double>& power_;
+};
+
+IrradianceMap toIrradiance(const SphereCausticSetup& setup, const std::vector<std::vector<double>>& partial) {
+    const std::size_t texels = static_cast<std::size_t>(setup.resolution) * setup.resolution;
     IrradianceMap map{setup.resolution, setup.size, std::vector<double>(texels, 0.0)};
     const double texelArea = (setup.size / setup.resolution) * (setup.size / setup.resolution);
     for (const auto& part : partial)
         for (std::size_t t = 0; t < texels; ++t) map.irradiance[t] += part[t] / texelArea;
     return map;
+}
+
+template <typename Work>
+std::vector<std::vector<double>> inParallel(const SphereCausticSetup& setup, Work work) {
+    const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    const std::size_t texels = static_cast<std::size_t>(setup.resolution) * setup.resolution;
+    std::vector<std::vector<double>> partial(threads, std::vector<double>(texels, 0.0));
+    std::vector<std::thread> workers;
+    for (unsigned w = 0; w < threads; ++w) workers.emplace_back([&, w] { work(w, threads, partial[w]); });
+    for (auto& worker : workers) worker.join();
+    return partial;
+}
+
+}  // namespace
+
+IrradianceMap traceSphereCaustic(const SphereCausticSetup& setup) {
+    const double cosCone = receiverConeCosine(setup);
+    const double solidAngle = 2.0 * std::numbers::pi * (1.0 - cosCone);
+    const double weight = setup.power / (4.0 * std::numbers::pi) * solidAngle / static_cast<double>(setup.rays);
+    const auto partial = inParallel(setup, [&](unsigned w, unsigned threads, std::vector<double>& power) {
+        std::mt19937_64 random(setup.seed * 0x9E3779B97F4A7C15ull + w);
+        std::uniform_real_distribution<double> uniform(0.0, 1.0);
+        Tracer tracer(setup, [&](const glm::dvec3& p, double rayWeight) {
+            const double u = (p.x - setup.receiverCentre.x) / setup.size + 0.5;
+            const double v = (p.z - setup.receiverCentre.z) / setup.size + 0.5;
+            if (u < 0.0 || u >= 1.0 || v < 0.0 || v >= 1.0) return;
+            const int i = std::min(static_cast<int>(u * setup.resolution), setup.resolution - 1);
+            const int j = std::min(static_cast<int>(v * setup.resolution), setup.resolution - 1);
+            power[static_cast<std::size_t>(j) * setup.resolution + i] += rayWeight;
+        });
+        const long long begin = setup.rays * w / threads, end = setup.rays * (w + 1) / threads;
+        for (long long k = begin; k < end; ++k) {
+            // Uniform in the cone about −y: cos θ uniform in [cosCone, 1].
+            const double cosTheta = 1.0 - uniform(random) * (1.0 - cosCone);
+            const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+            const double phi = 2.0 * std::numbers::pi * uniform(random);
+            const glm::dvec3 direction(sinTheta * std::cos(phi), -cosTheta, sinTheta * std::sin(phi));
+            tracer.trace({setup.light, direction, weight, false}, 0);
+        }
+    });
+    return toIrradiance(setup, partial);
+}
+
+IrradianceMap integrateSphereCaustic(const SphereCausticSetup& setup, long long angles) {
+    if (setup.resolution % 2 != 0 || setup.light.x != setup.centre.x || setup.light.z != setup.centre.z ||
+        setup.receiverCentre.x != setup.centre.x || setup.receiverCentre.z != setup.centre.z)
+        throw std::invalid_argument("integrateSphereCaustic: the light, sphere and receiver must share one axis, "
+                                    "and the resolution must be even");
+    const double thetaMax = std::acos(receiverConeCosine(setup));
+    const double step = thetaMax / static_cast<double>(angles);
+    const double intensity = setup.power / (4.0 * std::numbers::pi);  // W/sr
+    const auto partial = inParallel(setup, [&](unsigned w, unsigned threads, std::vector<double>& power) {
+        CircleDeposit circles(setup, power);
+        Tracer tracer(setup, [&](const glm::dvec3& p, double rayWeight) {
+            circles.add(std::hypot(p.x - setup.centre.x, p.z - setup.centre.z), rayWeight);
+        });
+        const long long begin = angles * w / threads, end = angles * (w + 1) / threads;
+        for (long long k = begin; k < end; ++k) {
+            // The ring of directions θ ± step/2 about −y: solid angle 2π sin θ dθ (midpoint rule).
+            const double theta = (static_cast<double>(k) + 0.5) * step;
+            const double ring = intensity * 2.0 * std::numbers::pi * std::sin(theta) * step;
+            tracer.trace({setup.light, glm::dvec3(std::sin(theta), -std::cos(theta), 0.0), ring, false}, 0);
+        }
+    });
+    return toIrradiance(setup, partial);
 }
 
 double shadowRadius(const SphereCausticSetup& setup) {

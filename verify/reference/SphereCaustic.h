@@ -42,6 +42,18 @@ struct IrradianceMap {
 
 IrradianceMap traceSphereCaustic(const SphereCausticSetup& setup);
 
+// The same map without noise, for a light, sphere and receiver centre on one
+// vertical axis and an even resolution (std::invalid_argument otherwise): the
+// irradiance is then a function of the distance from the axis, so rays in one
+// meridian plane suffice. `angles` rings of directions about the axis, each
+// of power I·2π·sin θ·dθ (midpoint rule in θ up to the cone of the receiver's
+// corners), follow the same exact ray tree as traceSphereCaustic (Snell,
+// total internal reflection, Fresnel splitting), and each ring's power lands
+// on the circle it reaches, shared among the texels by the length of circle
+// inside each. The error is the quadrature's, far below a texel per ring
+// (`rays` and `seed` are unused).
+IrradianceMap integrateSphereCaustic(const SphereCausticSetup& setup, long long angles = 400'000);
+
 // The radius on the receiver plane of the sphere's geometric shadow from the
 // light: h·tan(asin(R/d)) with h the light's height above the plane and d its
 // distance from the centre (light straight above the centre).
