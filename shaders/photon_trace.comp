@@ -34,12 +34,6 @@ layout(local_size_x = 64) in;
 #include "common/fresnel.glsl"
 #include "common/sharp_surfaces.glsl"
 
-#ifndef EIKON_INTEGRATOR
-#define EIKON_INTEGRATOR 1
-#endif
-#ifndef EIKON_OCTREE_STEPS
-#define EIKON_OCTREE_STEPS 0
-#endif
 #ifndef EIKON_RENORMALIZE
 #define EIKON_RENORMALIZE 0
 #endif
@@ -55,9 +49,6 @@ layout(local_size_x = 64) in;
 #ifndef EIKON_BARE_MARCH
 #define EIKON_BARE_MARCH 0
 #endif
-#ifndef EIKON_SHARP_SURFACES
-#define EIKON_SHARP_SURFACES 0
-#endif
 #ifndef EIKON_RECORD_PATHS
 #define EIKON_RECORD_PATHS 0
 #endif
@@ -68,40 +59,13 @@ layout(local_size_x = 64) in;
 #define EIKON_RECORD_STRIDE 1
 #endif
 
-uniform vec3 dispersion;  // per-channel scale of δn
-float channel_scale = 1.0f;  // this photon's scale (dispersion)
-float sharp_offset = 0.0f;   // δn the sharp objects the photon is inside add to the graded field
+#include "common/ray_march.glsl"
+#include "common/emitters.glsl"
 
-// (∇n, n) for this photon's channel; used by the integrators.
-vec4 field_at(vec3 x) {
-    vec4 sample_ = sample_gradient_and_delta(x);
-    return vec4(channel_scale * sample_.xyz, reference_index() + channel_scale * (sample_.w + sharp_offset));
-}
-
-#if EIKON_SHARP_SURFACES
-#include "common/sharp_surface_blocks.glsl"
-#endif
-
-#include "common/integrators.glsl"
-
-struct Emitter {
-    vec4 origin;        // w: kind (0 cone, 1 disk)
-    vec4 axis;          // w: cone: cos of half-angle; disk: radius
-    vec4 tangent;
-    vec4 bitangent;
-    vec4 photon_power;  // rgb W per photon where the spot profile is 1
-    vec4 spot;          // xyz: spot axis; w: cos outer half-angle (−2: none)
-    vec4 spot_edge;     // x: cos inner half-angle
-    uvec4 photons;      // x: first photon, y: count, z, w: strata
-};
-layout(std430, binding = kEmitters) readonly buffer Emitters { Emitter emitters[]; };
 
 #if EIKON_STORE_FLUENCE > 0
 layout(std430, binding = kRawFluence) buffer RawFluence { float raw_fluence[]; };  // RGB per cell, W/m²
 layout(std430, binding = kRawFluenceDirection) buffer RawFluenceDirection { float raw_fluence_direction[]; };  // xyz per cell
-#endif
-#if EIKON_OCTREE_STEPS
-layout(binding = kStepTexture) uniform sampler3D step_structure;  // (octree level, step cap in m)
 #endif
 layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
@@ -124,10 +88,7 @@ layout(std430, binding = kPhotonPathPower) writeonly buffer PhotonPathPower { ve
 
 uniform uint photon_offset;    // index of this batch's first photon
 uniform uint batch_size;
-uniform uint emitter_count;
 uniform uint seed;
-uniform float step_length;     // uniform Δs, or the octree's Δs_min, in metres
-uniform uint max_steps;        // trapped-ray cap
 uniform float power_cutoff;    // Russian roulette once every channel is below this fraction of the emitted power
 // Random dimensions of the roulette draws, apart from those of emission (0,
 // 1), receiver bounces (2, 3, …) and sharp surfaces (64, 65, …).
@@ -272,15 +233,6 @@ vec2 emission_sample(Emitter emitter, uint photon) {
     return (vec2(local % strata.x, local / strata.x) + jitter) / vec2(strata);
 }
 
-// A spot light's intensity relative to its axis: 1 inside the inner cone,
-// smoothstep in cos θ to 0 at the outer cone.
-float spot_profile(Emitter emitter, vec3 direction) {
-    if (emitter.spot.w < -1.5f) return 1.0f;
-    float cos_theta = dot(direction, emitter.spot.xyz);
-    if (emitter.spot_edge.x <= emitter.spot.w) return cos_theta >= emitter.spot.w ? 1.0f : 0.0f;  // hard edge
-    return smoothstep(emitter.spot.w, emitter.spot_edge.x, cos_theta);
-}
-
 // A photon meets a receiver at x: the lit side records it and, if the
 // receiver bounces, sends power × albedo back out in a cosine-distributed
 // direction (returns true: the photon goes on); otherwise it stops there
@@ -317,27 +269,7 @@ bool land_on_receiver(ReceiverHit hit, uint photon, INOUT(uint) bounces, INOUT(v
 #endif
 }
 
-float next_step(vec3 x, vec3 v) {
-#if EIKON_OCTREE_STEPS
-    vec2 node = texelFetch(step_structure, grid_cell(x), 0).rg;
-    return octree_step(x, normalize(v), grid.bounds_min.xyz, grid.voxel_size.xyz, node.x, step_length, node.y);
-#else
-    return step_length;
-#endif
-}
-
-void integrate(INOUT(vec3) x, INOUT(vec3) x_lost, INOUT(vec3) v, INOUT(vec4) field, float ds) {
-#if EIKON_INTEGRATOR == 0
-    integrate_euler(x, x_lost, v, field, ds);
-#elif EIKON_INTEGRATOR == 1
-    integrate_leapfrog(x, x_lost, v, field, ds);
-#else
-    integrate_rk4(x, x_lost, v, field, ds);
-#endif
-}
-
 #if EIKON_SHARP_SURFACES
-uint inside_mask = 0u;     // the sharp surfaces the photon is inside (common/sharp_surface_blocks.glsl)
 uint surface_events = 0u;  // this photon's crossings so far: its random dimensions there
 
 // Where a step ended at a sharp surface (`crossing`): Snell refraction into the index on
@@ -365,12 +297,6 @@ void cross_sharp_surface(SurfaceCrossing crossing, uint photon, INOUT(vec3) x, I
     }
     field = field_at(x);
     v = field.w * d;
-}
-
-// The photon's sharp surfaces at x, when it enters the grid or starts there.
-void enter_sharp_region(vec3 x) {
-    inside_mask = inside_mask_at(x);
-    sharp_offset = sharp_index_offset(inside_mask);
 }
 #endif
 
