@@ -69,17 +69,8 @@ layout(std430, binding = kRawFluenceDirection) buffer RawFluenceDirection { floa
 #endif
 layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
-// C++ mirror: layout::GpuPhotonStats (powers in 64-bit fixed point), indexed
-// by the tallies kEmitted … kRouletteGain of layout::PowerTally.
 const uint MAX_BOUNCES = 16u;
-layout(std430, binding = kPhotonStats) buffer PhotonStats {
-    uint power_tallies[2 * 3 * kTallyCount];  // [2·(3·tally + channel) + word]
-    uint photon_tallies[4];   // escaped, received, cut off, blocked
-    uint step_tallies[4];     // low word, high word, max invariant error bits
-    uint deposit_tallies[4];  // low word, high word
-    float invariant_sum[4];   // x: sum over steps of the relative invariant error; yzw unused, as in C++
-    uint surface_tallies[4];  // events at sharp surfaces: reflected, transmitted
-};
+#include "common/photon_stats_block.glsl"
 
 #if EIKON_RECORD_PATHS > 0
 layout(std430, binding = kPhotonPaths) writeonly buffer PhotonPaths { vec4 path_vertices[]; };  // xyz, w: 1 written

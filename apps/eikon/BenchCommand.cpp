@@ -88,18 +88,24 @@ int benchCommand(const BenchOptions& options) {
     const FieldSet& fields = sceneFields.fields();
     const auto context = gl::createHeadlessContext();
 
-    const std::vector<Measurement> measurements = {
-        measure("tracer", scene, fields, {}, options.repeats),
-        measure("tracer+fluence", storing, fields, {}, options.repeats),
-        measure("bare march", scene, fields, {.photons = {.bareMarch = true}}, options.repeats),
-    };
+    // The wavefront lights receivers only: no fluence, and no bare march to compare with.
+    const bool byWavefront = scene.tracer.estimator == TracerDesc::Estimator::Wavefront;
+    std::vector<Measurement> measurements = {measure("tracer", scene, fields, {}, options.repeats)};
+    if (!byWavefront) {
+        measurements.push_back(measure("tracer+fluence", storing, fields, {}, options.repeats));
+        measurements.push_back(measure("bare march", scene, fields, {.photons = {.bareMarch = true}}, options.repeats));
+    }
     nlohmann::json summary = {{"scene", options.scenePath},
                               {"resolution", options.resolution},
                               {"photons", options.photons},
                               {"renderer", context->info().renderer},
                               {"runs", nlohmann::json::array()}};
-    std::printf("%s, %d^3, %lld photons, on %s\n", options.scenePath.c_str(), options.resolution, options.photons,
-                context->info().renderer.c_str());
+    if (byWavefront)
+        std::printf("%s, %d^3, wavefront estimator, on %s\n", options.scenePath.c_str(), options.resolution,
+                    context->info().renderer.c_str());
+    else
+        std::printf("%s, %d^3, %lld photons, on %s\n", options.scenePath.c_str(), options.resolution, options.photons,
+                    context->info().renderer.c_str());
     std::printf("%-16s %12s %14s %16s %18s\n", "kernel", "ms/relight", "steps", "M steps/s", "M deposits/s");
     for (const auto& m : measurements) {
         const double seconds = m.medianMs / 1000.0;
@@ -114,10 +120,19 @@ int benchCommand(const BenchOptions& options) {
                                    {"steps_per_second", stepsPerSecond},
                                    {"deposits_per_second", depositsPerSecond}});
     }
-    const double ratio = static_cast<double>(measurements[0].stats.steps) / measurements[0].medianMs /
-                         (static_cast<double>(measurements[2].stats.steps) / measurements[2].medianMs);
-    std::printf("tracer step rate / bare march step rate = %.2f\n", ratio);
-    summary["tracer_over_bare_march_step_rate"] = ratio;
+    if (byWavefront) {
+        const render::WavefrontCounts& w = measurements[0].stats.wavefront;
+        std::printf("wavefront: %llu patches (%llu at the limit), %llu splits, %llu rays\n",
+                    static_cast<unsigned long long>(w.patches), static_cast<unsigned long long>(w.atLimit),
+                    static_cast<unsigned long long>(w.splits), static_cast<unsigned long long>(w.rays));
+        summary["wavefront"] = {{"patches", w.patches}, {"patches_at_limit", w.atLimit}, {"splits", w.splits},
+                                {"rays", w.rays}};
+    } else {
+        const double ratio = static_cast<double>(measurements[0].stats.steps) / measurements[0].medianMs /
+                             (static_cast<double>(measurements[2].stats.steps) / measurements[2].medianMs);
+        std::printf("tracer step rate / bare march step rate = %.2f\n", ratio);
+        summary["tracer_over_bare_march_step_rate"] = ratio;
+    }
     double postMs = 0.0;
     const double viewMs = measureCameraFrames(scene, fields, options.repeats, postMs);
     std::printf("camera-only frame at %dx%d: view %.1f ms, post %.1f ms\n", scene.render.width, scene.render.height,

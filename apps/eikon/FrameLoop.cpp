@@ -20,7 +20,8 @@ namespace {
 nlohmann::json rgbJson(const Rgb& rgb) { return {rgb.r, rgb.g, rgb.b}; }
 
 nlohmann::json photonsJson(const render::PhotonStats& p) {
-    return {{"power_w",
+    nlohmann::json json = {{"estimator", p.byWavefront ? "wavefront" : "photons"},
+            {"power_w",
              {{"emitted", rgbJson(p.emitted)},
               {"absorbed", rgbJson(p.absorbed)},
               {"escaped", rgbJson(p.escaped)},
@@ -28,7 +29,8 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
               {"cut_off", rgbJson(p.cutOff)},
               {"blocked", rgbJson(p.blocked)},
               {"reflected", rgbJson(p.reflected)},
-              {"roulette_gain", rgbJson(p.rouletteGain)}}},
+              {"roulette_gain", rgbJson(p.rouletteGain)},
+              {"unfollowed", rgbJson(p.unfollowed)}}},
             {"count",
              {{"escaped", p.photonsEscaped},
               {"received", p.photonsReceived},
@@ -43,6 +45,12 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
             {"voxel_deposits", p.voxelDeposits},
             {"max_invariant_error", p.maxInvariantError},
             {"mean_invariant_error", p.meanInvariantError}};
+    if (p.byWavefront)
+        json["wavefront"] = {{"patches", p.wavefront.patches},
+                             {"splits", p.wavefront.splits},
+                             {"patches_at_limit", p.wavefront.atLimit},
+                             {"rays", p.wavefront.rays}};
+    return json;
 }
 
 double renderMilliseconds(const render::FrameResult& result) {
@@ -84,7 +92,7 @@ public:
         if (warned_) return;
         const render::PhotonStats& p = result.photons;
         const double emitted = p.emitted.r + p.emitted.g + p.emitted.b;
-        if (p.photons == 0 || emitted <= 0.0) return;
+        if (emitted <= 0.0) return;
         const Rgb lost = p.cutOff - p.rouletteGain;
         const double lostShare = (lost.r + lost.g + lost.b) / emitted;
         if (p.balanceError() > 1e-3) {

@@ -45,7 +45,10 @@
     X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */          \
     X(kSharpSurfaces, 17)       /* buffer SharpSurfaces { GpuSharpSurface surfaces[]; } */                                      \
     X(kSurfaceNodes, 18)        /* buffer SurfaceNodes { vec4 nodes[]; }: the sharp meshes' trees (FieldSet.h) */              \
-    X(kSurfaceTriangles, 19)    /* buffer SurfaceTriangles { vec4 triangles[]; }: their corners and normals (FieldSet.h) */
+    X(kSurfaceTriangles, 19)    /* buffer SurfaceTriangles { vec4 triangles[]; }: their corners and normals (FieldSet.h) */ \
+    X(kWavefrontPatches, 20)    /* buffer Patches { GpuWavefrontPatch patches[]; }: one level of the wavefront, read */    \
+    X(kWavefrontChildren, 21)   /* buffer Children { GpuWavefrontPatch children[]; }: the next level, written */           \
+    X(kWavefrontCounters, 22)   /* buffer Counters (GpuWavefrontCounters) */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into
@@ -76,6 +79,9 @@
 // kReflected is power receivers send back out (bounce): a source, like
 // kEmitted; so is kRouletteGain, what Russian roulette adds to the photons it
 // lets go on (it takes as much from those it cuts off, on average).
+// kUnfollowed, a sink, is what the wavefront pass does not follow: the
+// Fresnel reflections at sharp surfaces its rays cross (it follows the
+// transmitted light, and total internal reflection).
 #define EIKON_LAYOUT_POWER_TALLIES(X) \
     X(kEmitted, 0)                    \
     X(kAbsorbed, 1)                   \
@@ -85,7 +91,8 @@
     X(kBlocked, 5)                    \
     X(kReflected, 6)                  \
     X(kRouletteGain, 7)               \
-    X(kTallyCount, 8)
+    X(kUnfollowed, 8)                 \
+    X(kTallyCount, 9)
 
 // Kinds of sharp surface (GpuSharpSurface::shapeA.w): a sphere, a box, or a
 // mesh or water surface given by its triangles.
@@ -111,7 +118,7 @@ enum ImageUnit : unsigned { EIKON_LAYOUT_IMAGE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
 enum PowerTally : unsigned { EIKON_LAYOUT_POWER_TALLIES(EIKON_LAYOUT_ENUMERATOR) };
 enum SharpSurfaceKind : int { EIKON_LAYOUT_SHARP_SURFACE_KINDS(EIKON_LAYOUT_ENUMERATOR) };
 #undef EIKON_LAYOUT_ENUMERATOR
-static_assert(kTallyCount == kRouletteGain + 1, "kTallyCount counts the tallies");
+static_assert(kTallyCount == kUnfollowed + 1, "kTallyCount counts the tallies");
 
 // uniform GridBlock (std140): the world box of the field grid.
 struct GpuGrid {
@@ -157,6 +164,8 @@ static_assert(offsetof(GpuReceiver, map) == 80);
 // adding a million equal values drift by a percent, these stay exact to the
 // per-photon rounding and are independent of summation order.
 constexpr double kPowerUnitsPerPhoton = 16777216.0;  // 2^24
+// The wavefront pass tallies in units of the brightest light's power / 2^50.
+constexpr double kPowerUnitsPerWavefront = 1125899906842624.0;  // 2^50
 
 struct GpuPhotonStats {
     std::uint32_t power[kTallyCount][3][2];  // [tally][channel][low, high word]
@@ -169,12 +178,40 @@ struct GpuPhotonStats {
 // GLSL declares every member as a scalar array (uint/float), so std430 packs
 // them with 4-byte alignment, as GLM's unaligned vectors do here.
 static_assert(alignof(glm::uvec4) == 4);
-static_assert(sizeof(GpuPhotonStats) == 272);
-static_assert(offsetof(GpuPhotonStats, photons) == 192);
-static_assert(offsetof(GpuPhotonStats, steps) == 208);
-static_assert(offsetof(GpuPhotonStats, deposits) == 224);
-static_assert(offsetof(GpuPhotonStats, invariant) == 240);
-static_assert(offsetof(GpuPhotonStats, surfaces) == 256);
+static_assert(sizeof(GpuPhotonStats) == 296);
+static_assert(offsetof(GpuPhotonStats, photons) == 216);
+static_assert(offsetof(GpuPhotonStats, steps) == 232);
+static_assert(offsetof(GpuPhotonStats, deposits) == 248);
+static_assert(offsetof(GpuPhotonStats, invariant) == 264);
+static_assert(offsetof(GpuPhotonStats, surfaces) == 280);
+
+// One ray of the wavefront pass (shaders/wavefront_trace.comp), traced from
+// its point of the light's emission square to where it ends.
+struct GpuWavefrontCorner {
+    glm::vec4 ends;      // xy: emission square coordinates in [0, 1]²; zw: receiver map coordinates where received
+    glm::vec4 power;     // rgb: power arriving, per unit of the light's power density there; w: history (uint bits)
+    glm::vec4 absorbed;  // rgb: power absorbed on the way, same unit; w: fate | (receiver + 1) << 4 (uint bits)
+};
+static_assert(sizeof(GpuWavefrontCorner) == 48);
+
+// A triangle of the emission square whose corners are traced rays.
+struct GpuWavefrontPatch {
+    GpuWavefrontCorner corners[3];
+    glm::uvec4 info;  // x: emitter, y: refinement depth; zw unused
+};
+static_assert(sizeof(GpuWavefrontPatch) == 160);
+static_assert(offsetof(GpuWavefrontPatch, info) == 144);
+
+// The wavefront pass's counters (std430, scalar members as in GLSL).
+struct GpuWavefrontCounters {
+    std::uint32_t children;  // patches written to the next level (may pass its capacity: those are not written)
+    std::uint32_t finished;  // patches deposited
+    std::uint32_t splits;    // patches split in four
+    std::uint32_t atLimit;   // patches deposited that wanted to split: at the depth or count limit
+    std::uint32_t rays;      // rays traced
+    std::uint32_t unused[3];
+};
+static_assert(sizeof(GpuWavefrontCounters) == 32);
 
 // A sharp surface (shaders/common/sharp_surfaces.glsl), in scene order: a
 // sphere, a box, or a mesh or water surface given by its triangles.

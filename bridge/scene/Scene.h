@@ -190,6 +190,18 @@ struct TracerDesc {
     long long maxSteps = 0;       // per photon; 0: four grid crossings at the smallest step
     Rgb dispersion{1.0};          // per-channel scale of δn = n − n_ref (Cauchy-style), each > 0
     bool storeFluence = false;    // keep the fluence grid even where nothing scatters
+    // How receivers' irradiance is estimated: photon splatting (Monte Carlo,
+    // the reference; also for scattering media), or adaptive wavefront
+    // tracing by the intensity law ([Ihrke07] §4.2; noise-free).
+    enum class Estimator { Photons, Wavefront } estimator = Estimator::Photons;
+    struct Wavefront {
+        int gridCells = 64;           // cells per edge of a light's emission square at depth 0 (two patches each)
+        int maxDepth = 10;            // times a patch may split in four
+        double splitTexels = 1.0;     // a patch whose footprint has a longer edge (texels) splits
+        double tearTexels = 0.25;     // a patch whose corners disagree splits while larger than this (texels)
+        double minPower = 1e-3;       // a patch carrying less of a texel's unobstructed power does not split
+        long long maxPatches = 1 << 18;  // patches one refinement level holds; beyond, patches stop splitting
+    } wavefront;
 };
 
 // The built-in fluid solver (sim/fluid) and the optics that turn its

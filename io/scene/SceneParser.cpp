@@ -221,8 +221,12 @@ LightDesc readLight(const JsonReader& node) {
     return light;
 }
 
-ReceiverDesc readReceiver(const JsonReader& node) {
+// The wavefront estimator's maps need no filter (and it traces no bounces):
+// its receivers default to "none" and refuse "bounce".
+ReceiverDesc readReceiver(const JsonReader& node, TracerDesc::Estimator estimator) {
+    const bool wavefront = estimator == TracerDesc::Estimator::Wavefront;
     ReceiverDesc receiver;
+    if (wavefront) receiver.filter = ReceiverDesc::Filter::None;
     node.member("type").oneOf({"plane"});
     const auto fields = node.object({"type", "point", "normal", "albedo", "size", "resolution", "bounce", "filter"});
     receiver.point = fields.member("point").vec3();
@@ -232,7 +236,11 @@ ReceiverDesc readReceiver(const JsonReader& node) {
     if (auto resolution = fields.optional("resolution")) {
         receiver.resolution = static_cast<int>(resolution->integer(1, kMaxReceiverResolution));
     }
-    if (auto bounce = fields.optional("bounce")) receiver.bounce = bounce->boolean();
+    if (auto bounce = fields.optional("bounce")) {
+        receiver.bounce = bounce->boolean();
+        if (receiver.bounce && wavefront)
+            bounce->fail("false with tracer.estimator \"wavefront\" (it traces no bounces; \"photons\" does)", "true");
+    }
     if (auto filter = fields.optional("filter"))
         receiver.filter = filter->oneOf({"binomial", "none"}) == "none" ? ReceiverDesc::Filter::None
                                                                        : ReceiverDesc::Filter::Binomial;
@@ -341,7 +349,7 @@ TracerDesc readTracer(const JsonReader& node) {
     TracerDesc tracer;
     const auto fields = node.object({"integrator", "step_policy", "step_voxels", "max_step_voxels", "epsilon",
                                      "epsilon_prime", "renormalize", "power_cutoff", "max_steps", "dispersion",
-                                     "store_fluence"});
+                                     "store_fluence", "estimator", "wavefront"});
     if (auto integrator = fields.optional("integrator")) tracer.integrator = readIntegrator(*integrator);
     if (auto policy = fields.optional("step_policy")) tracer.stepPolicy = readStepPolicy(*policy);
     if (auto step = fields.optional("step_voxels")) tracer.stepVoxels = step->number(kPositive);
@@ -356,6 +364,19 @@ TracerDesc readTracer(const JsonReader& node) {
     if (auto steps = fields.optional("max_steps")) tracer.maxSteps = steps->integer(0, kMaxTracerSteps);
     if (auto dispersion = fields.optional("dispersion")) tracer.dispersion = dispersion->rgb(kPositive);
     if (auto store = fields.optional("store_fluence")) tracer.storeFluence = store->boolean();
+    if (auto estimator = fields.optional("estimator"))
+        tracer.estimator = estimator->oneOf({"photons", "wavefront"}) == "wavefront" ? TracerDesc::Estimator::Wavefront
+                                                                                     : TracerDesc::Estimator::Photons;
+    if (auto wavefront = fields.optional("wavefront")) {
+        const auto keys = wavefront->object({"grid_cells", "max_depth", "split_texels", "tear_texels", "min_power", "max_patches"});
+        TracerDesc::Wavefront& w = tracer.wavefront;
+        if (auto cells = keys.optional("grid_cells")) w.gridCells = static_cast<int>(cells->integer(1, 1024));
+        if (auto depth = keys.optional("max_depth")) w.maxDepth = static_cast<int>(depth->integer(0, 20));
+        if (auto split = keys.optional("split_texels")) w.splitTexels = split->number(NumberRange::closed(0.05, 1e6));
+        if (auto tear = keys.optional("tear_texels")) w.tearTexels = tear->number(NumberRange::closed(0.01, 1e6));
+        if (auto power = keys.optional("min_power")) w.minPower = power->number(NumberRange::closed(0.0, 1.0));
+        if (auto patches = keys.optional("max_patches")) w.maxPatches = patches->integer(1024, 1 << 24);
+    }
     return tracer;
 }
 
@@ -594,10 +615,11 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
     scene.lights = readList<LightDesc>(fields, "lights", readLight);
     if (scene.lights.empty()) fields.member("lights").fail("an array of at least one light");
-    scene.receivers = readList<ReceiverDesc>(fields, "receivers", readReceiver);
+    if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
+    scene.receivers = readList<ReceiverDesc>(
+        fields, "receivers", [&](const JsonReader& node) { return readReceiver(node, scene.tracer.estimator); });
     if (auto camera = fields.optional("camera")) scene.camera = readCamera(*camera);
     if (auto render = fields.optional("render")) scene.render = readRender(*render, sceneFolder);
-    if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
     if (auto sim = fields.optional("sim")) scene.sim = readSim(*sim);
     if (scene.sim && scene.airProfile)
         fields.member("medium").member("air_temperature_profile")

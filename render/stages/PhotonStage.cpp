@@ -6,6 +6,8 @@
 #include "render/gl/ShaderLibrary.h"
 #include "render/stages/PhotonEmission.h"
 
+#include "bridge/core/Error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -42,7 +44,7 @@ int integratorNumber(TracerDesc::Integrator integrator) {
 
 double PhotonStats::balanceError() const {
     const Rgb sources = emitted + reflected + rouletteGain;
-    const Rgb sinks = absorbed + escaped + received + cutOff + blocked;
+    const Rgb sinks = absorbed + escaped + received + cutOff + blocked + unfollowed;
     double worst = 0.0;
     for (int c = 0; c < 3; ++c)
         if (sources[c] > 0.0) worst = std::max(worst, std::abs(sources[c] - sinks[c]) / sources[c]);
@@ -60,23 +62,34 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
     storeFluence_ = scene.tracer.storeFluence ? 2 : (fields.hasScattering() ? 1 : 0);
     if (options.bareMarch) storeFluence_ = 0;
     const TracerDesc& tracer = scene.tracer;
+    const bool byWavefront = tracer.estimator == TracerDesc::Estimator::Wavefront;
+    if (byWavefront && storeFluence_ > 0)
+        throw InputError("tracer.estimator",
+                         "\"photons\" in a scene that scatters light or stores fluence (the wavefront lights "
+                         "receivers only)",
+                         "\"wavefront\"");
+    // The march's options, which both estimators share (common/ray_march.glsl).
     gl::ShaderDefines defines{
         {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
         {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"},
         {"EIKON_INTEGRATOR", std::to_string(integratorNumber(tracer.integrator))},
         {"EIKON_OCTREE_STEPS", tracer.stepPolicy == TracerDesc::StepPolicy::Octree ? "1" : "0"},
-        {"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
-        {"EIKON_DISPERSION", dispersive(tracer.dispersion) ? "1" : "0"},
-        {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
-        {"EIKON_BOUNCE", std::any_of(scene.receivers.begin(), scene.receivers.end(),
-                                     [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
-        {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
         {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
-        {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
-        {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
-        {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))},
         {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())}};
-    program_ = gl::compileComputeProgram("photon_trace.comp", defines);
+    if (byWavefront) {
+        wavefront_ = std::make_unique<WavefrontStage>(tracer, defines);
+    } else {
+        defines.insert({{"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
+                        {"EIKON_DISPERSION", dispersive(tracer.dispersion) ? "1" : "0"},
+                        {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
+                        {"EIKON_BOUNCE", std::any_of(scene.receivers.begin(), scene.receivers.end(),
+                                                     [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
+                        {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
+                        {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
+                        {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
+                        {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))}});
+        program_ = gl::compileComputeProgram("photon_trace.comp", defines);
+    }
     setEmitters(scene);
     if (storeFluence_ > 0) {
         const std::size_t bytes = 3 * fields.grid().cellCount() * sizeof(float);
@@ -97,12 +110,23 @@ void PhotonStage::setEmitters(const Scene& scene) {
     photons_ = scene.render.photons;
     const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), photons_);
     powerUnit_ = glm::vec3(0.0f);
-    for (const auto& emitter : emitters)
-        for (int c = 0; c < 3; ++c) powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c]);
-    // Dispersion gives each photon three times one channel's power.
-    const float headroom = dispersive(scene.tracer.dispersion) ? 3.0f : 1.0f;
-    for (int c = 0; c < 3; ++c)
-        powerUnit_[c] = std::max(headroom * powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);
+    if (wavefront_) {
+        // Units of the brightest light's power over 2^50: a deposit of any
+        // patch fits 64 bits, and a sliver of one still counts many units.
+        for (const auto& emitter : emitters)
+            for (int c = 0; c < 3; ++c)
+                powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c] * static_cast<float>(emitter.photons.y));
+        for (int c = 0; c < 3; ++c)
+            powerUnit_[c] = std::max(powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerWavefront), 1e-38f);
+    } else {
+        for (const auto& emitter : emitters)
+            for (int c = 0; c < 3; ++c) powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c]);
+        // Dispersion gives each photon three times one channel's power.
+        const float headroom = dispersive(scene.tracer.dispersion) ? 3.0f : 1.0f;
+        for (int c = 0; c < 3; ++c)
+            powerUnit_[c] =
+                std::max(headroom * powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);
+    }
     emitterCount_ = static_cast<unsigned>(emitters.size());
     emitters_ = gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
 }
@@ -126,11 +150,58 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
         rawFluence_.bindStorage(layout::kRawFluence);
         rawDirection_.bindStorage(layout::kRawFluenceDirection);
     }
-    program_.use();
-    if (!surfaces_.empty()) {
-        surfaces_.bind();
-        glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
+    if (!surfaces_.empty()) surfaces_.bind();
+    PhotonStats stats;
+    if (wavefront_) {
+        stats.byWavefront = true;
+        stats.wavefront = wavefront_->run({emitterCount_, receivers_.count(), surfaces_.empty() ? 0u : surfaces_.count(),
+                                           settings.maxSteps, settings.stepLength, dispersion_, powerUnit_});
+    } else {
+        tracePhotons(settings);
+        stats.photons = photons_;
     }
+    receivers_.filter(powerUnit_);
+    if (storeFluence_ > 0) {
+        fields.gridBlock().bindUniform(layout::kGridBlock);
+        rawFluence_.bindStorage(layout::kRawFluence);
+        rawDirection_.bindStorage(layout::kRawFluenceDirection);
+        fluence_.bindStorage(layout::kFluence);
+        direction_.bindStorage(layout::kFluenceDirection);
+        const glm::ivec3 r = fields.grid().resolution;
+        fluenceSmoothProgram_.dispatchOverCells(r);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    }
+    gl::checkpoint("photon stage");
+
+    const auto gpu = stats_.downloadAs<layout::GpuPhotonStats>();
+    const Rgb unit(powerUnit_);
+    stats.emitted = tallyOf(gpu, layout::kEmitted, unit);
+    stats.absorbed = tallyOf(gpu, layout::kAbsorbed, unit);
+    stats.escaped = tallyOf(gpu, layout::kEscaped, unit);
+    stats.received = tallyOf(gpu, layout::kReceived, unit);
+    stats.cutOff = tallyOf(gpu, layout::kCutOff, unit);
+    stats.blocked = tallyOf(gpu, layout::kBlocked, unit);
+    stats.reflected = tallyOf(gpu, layout::kReflected, unit);
+    stats.rouletteGain = tallyOf(gpu, layout::kRouletteGain, unit);
+    stats.unfollowed = tallyOf(gpu, layout::kUnfollowed, unit);
+    stats.photonsEscaped = gpu.photons.x;
+    stats.photonsReceived = gpu.photons.y;
+    stats.photonsCutOff = gpu.photons.z;
+    stats.photonsBlocked = gpu.photons.w;
+    stats.steps = wide(gpu.steps.x, gpu.steps.y);
+    stats.voxelDeposits = wide(gpu.deposits.x, gpu.deposits.y);
+    stats.surfaceReflections = gpu.surfaces.x;
+    stats.surfaceTransmissions = gpu.surfaces.y;
+    float maxError = 0.0f;
+    std::memcpy(&maxError, &gpu.steps.z, sizeof maxError);
+    stats.maxInvariantError = maxError;
+    stats.meanInvariantError = stats.steps > 0 ? gpu.invariant.x / static_cast<double>(stats.steps) : 0.0;
+    return stats;
+}
+
+void PhotonStage::tracePhotons(const PhotonSettings& settings) {
+    program_.use();
+    if (!surfaces_.empty()) glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
     glUniform1ui(program_.uniform("emitter_count"), emitterCount_);
     glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
     glUniform1ui(program_.uniform("seed"), settings.seed);
@@ -148,44 +219,6 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
         program_.dispatchCovering(batch, 1, 1, 64, 1, 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    receivers_.filter(powerUnit_);
-    if (storeFluence_ > 0) {
-        fields.gridBlock().bindUniform(layout::kGridBlock);
-        rawFluence_.bindStorage(layout::kRawFluence);
-        rawDirection_.bindStorage(layout::kRawFluenceDirection);
-        fluence_.bindStorage(layout::kFluence);
-        direction_.bindStorage(layout::kFluenceDirection);
-        const glm::ivec3 r = fields.grid().resolution;
-        fluenceSmoothProgram_.dispatchOverCells(r);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    }
-    gl::checkpoint("photon stage");
-
-    const auto gpu = stats_.downloadAs<layout::GpuPhotonStats>();
-    const Rgb unit(powerUnit_);
-    PhotonStats stats;
-    stats.photons = photons_;
-    stats.emitted = tallyOf(gpu, layout::kEmitted, unit);
-    stats.absorbed = tallyOf(gpu, layout::kAbsorbed, unit);
-    stats.escaped = tallyOf(gpu, layout::kEscaped, unit);
-    stats.received = tallyOf(gpu, layout::kReceived, unit);
-    stats.cutOff = tallyOf(gpu, layout::kCutOff, unit);
-    stats.blocked = tallyOf(gpu, layout::kBlocked, unit);
-    stats.reflected = tallyOf(gpu, layout::kReflected, unit);
-    stats.rouletteGain = tallyOf(gpu, layout::kRouletteGain, unit);
-    stats.photonsEscaped = gpu.photons.x;
-    stats.photonsReceived = gpu.photons.y;
-    stats.photonsCutOff = gpu.photons.z;
-    stats.photonsBlocked = gpu.photons.w;
-    stats.steps = wide(gpu.steps.x, gpu.steps.y);
-    stats.voxelDeposits = wide(gpu.deposits.x, gpu.deposits.y);
-    stats.surfaceReflections = gpu.surfaces.x;
-    stats.surfaceTransmissions = gpu.surfaces.y;
-    float maxError = 0.0f;
-    std::memcpy(&maxError, &gpu.steps.z, sizeof maxError);
-    stats.maxInvariantError = maxError;
-    stats.meanInvariantError = stats.steps > 0 ? gpu.invariant.x / static_cast<double>(stats.steps) : 0.0;
-    return stats;
 }
 
 std::vector<float> PhotonStage::downloadFluence() const {

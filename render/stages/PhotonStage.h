@@ -1,7 +1,9 @@
-// The photon pass (shaders/photon_trace.comp): emission, adaptive or uniform
-// marching with the chosen integrator, Beer–Lambert attenuation, fluence and
-// receiver deposits, then the receiver filter and the fluence smoothing; and
-// the frame's energy balance and error figures.
+// The light pass: by photons (shaders/photon_trace.comp: emission, adaptive
+// or uniform marching with the chosen integrator, Beer–Lambert attenuation,
+// fluence and receiver deposits) or, with tracer.estimator "wavefront", by
+// adaptive wavefront tracing (WavefrontStage: receivers only); then the
+// receiver filter and the fluence smoothing; and the frame's energy balance
+// and error figures.
 #pragma once
 
 #include "bridge/scene/Scene.h"
@@ -9,11 +11,13 @@
 #include "render/stages/FieldTextures.h"
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SharpSurfaceBuffer.h"
+#include "render/stages/WavefrontStage.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace eikon::render {
@@ -42,6 +46,8 @@ struct PhotonStats {
     // Added by Russian roulette to the dim photons it lets go on, a source
     // too; on average it equals what it cut off (part of cutOff).
     Rgb rouletteGain{0.0};
+    // Fresnel reflections at sharp surfaces the wavefront does not follow (a sink).
+    Rgb unfollowed{0.0};
     std::uint64_t photonsEscaped = 0, photonsReceived = 0, photonsCutOff = 0, photonsBlocked = 0;
     std::uint64_t steps = 0;
     std::uint64_t voxelDeposits = 0;
@@ -50,9 +56,12 @@ struct PhotonStats {
     std::uint64_t surfaceReflections = 0, surfaceTransmissions = 0;
     double maxInvariantError = 0.0;   // max over photons and steps of | |v| − n | / n
     double meanInvariantError = 0.0;  // mean over steps
+    bool byWavefront = false;         // the wavefront estimator (photons is then 0)
+    WavefrontCounts wavefront;
 
-    // |emitted + reflected − (absorbed + escaped + received + cutOff + blocked)| / (emitted + reflected),
-    // worst channel.
+    // |emitted + reflected + rouletteGain − (absorbed + escaped + received + cutOff + blocked + unfollowed)|
+    // / (emitted + reflected + rouletteGain), worst channel.
+
     double balanceError() const;
 };
 
@@ -80,11 +89,14 @@ public:
     std::vector<glm::vec4> downloadPathPower() const;
 
 private:
+    void tracePhotons(const PhotonSettings& settings);
+
     ReceiverMaps& receivers_;
     SharpSurfaceBuffer surfaces_;
     Rgb dispersion_{1.0};
     int storeFluence_ = 0;  // 0 none, 1 where σs > 0, 2 everywhere
-    gl::Program program_;
+    gl::Program program_;                        // photons
+    std::unique_ptr<WavefrontStage> wavefront_;  // or the wavefront
     gl::Program fluenceSmoothProgram_;
     gl::Buffer emitters_;
     unsigned emitterCount_ = 0;

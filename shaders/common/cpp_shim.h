@@ -43,6 +43,7 @@ namespace {
 #include "shaders/common/fresnel.glsl"
 #include "shaders/common/step_size.glsl"
 #include "shaders/common/sharp_surfaces.glsl"
+#include "shaders/common/footprint_coverage.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 

@@ -200,5 +200,51 @@ TEST(SharpCaustic, SphereMeshMatchesTheExactSphereReference) {
     EXPECT_NEAR(error.peakRatio, 1.0, 0.10);
 }
 
+
+// Relative L1 of `map` against `exact` over the whole receiver.
+double receiverError(const std::vector<double>& map, const std::vector<double>& exact) {
+    double difference = 0.0, total = 0.0;
+    for (std::size_t t = 0; t < exact.size(); ++t) {
+        difference += std::abs(map[t] - exact[t]);
+        total += exact[t];
+    }
+    return difference / total;
+}
+
+// The wavefront estimator on the default scene against the noise-free
+// exact-sphere reference (integrateSphereCaustic): no filter, no noise, so
+// the tolerances are the issue's — relative L1 over the receiver ≤ 1%,
+// inside the caustic disk ≤ 6%, the shadow edge within one texel; and the
+// same bits twice.
+TEST(SharpCaustic, WavefrontMatchesTheNoiseFreeReference) {
+    test::glContext();
+    const Scene scene = defaultScene({"tracer.estimator=\"wavefront\""});
+    reference::SphereCausticSetup setup;
+    setup.light = scene.lights[0].position;
+    setup.power = scene.lights[0].power.g;
+    setup.centre = scene.objects[0].sphere.center;
+    setup.radius = scene.objects[0].sphere.radius;
+    setup.sphereIndex = scene.objects[0].material.index;
+    setup.receiverCentre = scene.receivers[0].point;
+    setup.size = scene.receivers[0].size;
+    setup.resolution = kResolution;
+    const std::vector<double> exact = reference::integrateSphereCaustic(setup).irradiance;
+    const double shadow = reference::shadowRadius(setup), texel = setup.size / kResolution;
+
+    const FieldSet fields = sim::voxelizeScene(scene);
+    const std::vector<double> map = floorIrradianceOf(scene, fields);
+    const double whole = receiverError(map, exact);
+    const DiskError disk = diskError(map, exact, shadow, setup.size);
+    const double edge = shadowEdge(radialProfile(map, setup.size, kResolution), setup);
+    test::reportFigure("wavefront_receiver_relative_l1", whole);
+    test::reportFigure("wavefront_caustic_disk_relative_l1", disk.relativeL1);
+    test::reportFigure("wavefront_caustic_peak_ratio", disk.peakRatio);
+    test::reportFigure("wavefront_shadow_edge_m", edge);
+    EXPECT_LE(whole, 0.01);
+    EXPECT_LE(disk.relativeL1, 0.06);
+    EXPECT_NEAR(edge, shadow, texel);
+    EXPECT_EQ(floorIrradianceOf(scene, fields), map) << "the wavefront is deterministic";
+}
+
 }  // namespace
 }  // namespace eikon

@@ -1,0 +1,103 @@
+#include "render/stages/WavefrontStage.h"
+
+#include "bridge/core/Error.h"
+#include "bridge/layout/GpuLayouts.h"
+#include "render/gl/GlDebug.h"
+
+#include <algorithm>
+#include <string>
+
+namespace eikon::render {
+
+namespace {
+
+constexpr GLuint kLocalSize = 64;
+// A chunk seeds at most capacity / kChunkHeadroom patches, so that its tree
+// may grow that many times over before a level is full.
+constexpr unsigned kChunkHeadroom = 1024;
+
+unsigned levelCapacity(long long maxPatches) {
+    GLint64 largest = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
+    const long long fits = largest / static_cast<long long>(sizeof(layout::GpuWavefrontPatch));
+    if (maxPatches > fits)
+        throw InputError("tracer.wavefront.max_patches",
+                         "at most " + std::to_string(fits) + " (a patch takes " +
+                             std::to_string(sizeof(layout::GpuWavefrontPatch)) +
+                             " bytes; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " + std::to_string(largest) + ")",
+                         std::to_string(maxPatches));
+    return static_cast<unsigned>(maxPatches) / 4u * 4u;
+}
+
+}  // namespace
+
+WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines)
+    : settings_(tracer.wavefront),
+      dispersive_(tracer.dispersion.r != tracer.dispersion.g || tracer.dispersion.g != tracer.dispersion.b) {
+    capacity_ = levelCapacity(settings_.maxPatches);
+    program_ = gl::compileComputeProgram("wavefront_trace.comp", defines);
+    for (gl::Buffer& level : levels_) level = gl::Buffer(std::size_t{capacity_} * sizeof(layout::GpuWavefrontPatch));
+    counters_ = gl::Buffer(sizeof(layout::GpuWavefrontCounters));
+}
+
+void WavefrontStage::dispatch(Mode mode, unsigned invocations) {
+    glUniform1ui(program_.uniform("mode"), static_cast<GLuint>(mode));
+    glUniform1ui(program_.uniform("patch_count"), invocations);
+    program_.dispatchCovering(invocations, 1, 1, kLocalSize, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
+    program_.use();
+    counters_.clearToZero();
+    counters_.bindStorage(layout::kWavefrontCounters);
+    glUniform1ui(program_.uniform("receiver_count"), inputs.receiverCount);
+    if (inputs.sharpSurfaceCount > 0)
+        glUniform1ui(program_.uniform("sharp_surface_count"), inputs.sharpSurfaceCount);
+    glUniform1ui(program_.uniform("max_steps"), inputs.maxSteps);
+    glUniform1f(program_.uniform("step_length"), static_cast<float>(inputs.stepLength));
+    glUniform3f(program_.uniform("dispersion"), static_cast<float>(inputs.dispersion.r),
+                static_cast<float>(inputs.dispersion.g), static_cast<float>(inputs.dispersion.b));
+    glUniform3f(program_.uniform("power_unit"), inputs.powerUnit.r, inputs.powerUnit.g, inputs.powerUnit.b);
+    const auto cellsPerEdge = static_cast<unsigned>(settings_.gridCells);
+    glUniform1ui(program_.uniform("grid_cells"), cellsPerEdge);
+    glUniform1ui(program_.uniform("max_depth"), static_cast<unsigned>(settings_.maxDepth));
+    glUniform1ui(program_.uniform("capacity"), capacity_);
+    glUniform1f(program_.uniform("split_texels"), static_cast<float>(settings_.splitTexels));
+    glUniform1f(program_.uniform("tear_texels"), static_cast<float>(settings_.tearTexels));
+    glUniform1f(program_.uniform("min_power"), static_cast<float>(settings_.minPower));
+
+    const unsigned cells = cellsPerEdge * cellsPerEdge;
+    const unsigned chunkCells = std::max(1u, capacity_ / (2u * kChunkHeadroom));
+    const int channels = dispersive_ ? 3 : 1;
+    for (unsigned emitter = 0; emitter < inputs.emitterCount; ++emitter)
+        for (int channel = 0; channel < channels; ++channel) {
+            glUniform1ui(program_.uniform("seed_emitter"), emitter);
+            glUniform1i(program_.uniform("channel"), dispersive_ ? channel : -1);
+            for (unsigned first = 0; first < cells; first += chunkCells) {
+                unsigned count = 2u * std::min(chunkCells, cells - first);
+                levels_[0].bindStorage(layout::kWavefrontChildren);
+                glUniform1ui(program_.uniform("first_cell"), first);
+                dispatch(kSeed, count);
+                glUniform1ui(program_.uniform("seeded_jobs"), 1u);
+                dispatch(kTrace, 3u * count);
+                glUniform1ui(program_.uniform("seeded_jobs"), 0u);
+                for (int source = 0; count > 0; source = 1 - source) {
+                    levels_[source].bindStorage(layout::kWavefrontPatches);
+                    levels_[1 - source].bindStorage(layout::kWavefrontChildren);
+                    const std::uint32_t none = 0;
+                    counters_.upload(&none, sizeof none, offsetof(layout::GpuWavefrontCounters, children));
+                    dispatch(kRefine, count);
+                    const auto children =
+                        counters_.downloadAs<std::uint32_t>(offsetof(layout::GpuWavefrontCounters, children));
+                    count = std::min(children, capacity_);
+                    if (count > 0) dispatch(kTrace, count / 4u * 3u);
+                }
+            }
+        }
+    gl::checkpoint("wavefront stage");
+    const auto counters = counters_.downloadAs<layout::GpuWavefrontCounters>();
+    return {counters.finished, counters.splits, counters.atLimit, counters.rays};
+}
+
+}  // namespace eikon::render

@@ -1,0 +1,63 @@
+// The wavefront estimator ([Ihrke07] §4.2 and §5.2; shaders/wavefront_trace.comp):
+// each light's emission square is cut into grid_cells² cells of two
+// triangular patches whose corners are traced rays; level by level, patches
+// whose corners disagree or whose footprint is larger than split_texels
+// split in four, the rest deposit their power on the receivers by the
+// intensity law. Seeds go in chunks small enough that a chunk's levels fit
+// the level buffers; a level that would not fit stops splitting (its patches
+// are deposited and counted as at the limit). Deterministic: the same scene
+// gives the same bits. With dispersion each channel is traced on its own.
+#pragma once
+
+#include "bridge/scene/Scene.h"
+#include "render/gl/GlObjects.h"
+#include "render/gl/ShaderLibrary.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+
+namespace eikon::render {
+
+// What one wavefront pass did.
+struct WavefrontCounts {
+    std::uint64_t patches = 0;  // finished and deposited
+    std::uint64_t splits = 0;
+    std::uint64_t atLimit = 0;  // finished though they wanted to split (depth or count limit)
+    std::uint64_t rays = 0;     // rays traced (patch corners)
+};
+
+// The uniforms the wavefront shares with the photon pass.
+struct WavefrontInputs {
+    unsigned emitterCount = 0;
+    unsigned receiverCount = 0;
+    unsigned sharpSurfaceCount = 0;
+    unsigned maxSteps = 0;
+    double stepLength = 0.0;  // m
+    Rgb dispersion{1.0};
+    glm::vec3 powerUnit{0.0f};  // W per fixed-point unit, per channel
+};
+
+class WavefrontStage {
+public:
+    // defines: the march's program options (common/ray_march.glsl).
+    WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines);
+
+    // Traces every emitter's wavefront into the receivers' tallies and the
+    // light pass's statistics; every binding of the light pass (fields,
+    // emitters, receivers, tallies, statistics, sharp surfaces) in place.
+    WavefrontCounts run(const WavefrontInputs& inputs);
+
+private:
+    enum Mode : unsigned { kSeed = 0, kTrace = 1, kRefine = 2 };  // shaders/wavefront_trace.comp
+    void dispatch(Mode mode, unsigned invocations);
+
+    TracerDesc::Wavefront settings_;
+    bool dispersive_ = false;
+    unsigned capacity_ = 0;  // patches a level buffer holds (a multiple of 4)
+    gl::Program program_;
+    gl::Buffer levels_[2];
+    gl::Buffer counters_;
+};
+
+}  // namespace eikon::render
