@@ -76,12 +76,12 @@
 // (in this order: GpuPhotonStats::photons counts them so); absorbed collects
 // what extinction took along the way, so
 //   emitted = absorbed + escaped + received + cutOff + blocked.
-// kReflected is power receivers send back out (bounce): a source, like
+// kReflected is power receivers send back out (bounce), or, in the wavefront
+// pass, power a sharp surface reflects into a followed branch: a source, like
 // kEmitted; so is kRouletteGain, what Russian roulette adds to the photons it
 // lets go on (it takes as much from those it cuts off, on average).
 // kUnfollowed, a sink, is what the wavefront pass does not follow: the
-// Fresnel reflections at sharp surfaces its rays cross (it follows the
-// transmitted light, and total internal reflection).
+// Fresnel reflections at sharp surfaces beyond the branches it traces.
 #define EIKON_LAYOUT_POWER_TALLIES(X) \
     X(kEmitted, 0)                    \
     X(kAbsorbed, 1)                   \
@@ -188,19 +188,21 @@ static_assert(offsetof(GpuPhotonStats, surfaces) == 280);
 // One ray of the wavefront pass (shaders/wavefront_trace.comp), traced from
 // its point of the light's emission square to where it ends.
 struct GpuWavefrontCorner {
-    glm::vec4 ends;      // xy: emission square coordinates in [0, 1]²; zw: receiver map coordinates where received
+    glm::vec4 ends;      // xy: coordinates in its face of the emission domain, [0, 1]²; zw: receiver map coordinates
+                         // where received, or where it crossed the receiver's plane past the square
     glm::vec4 power;     // rgb: power arriving, per unit of the light's power density there; w: history (uint bits)
     glm::vec4 absorbed;  // rgb: power absorbed on the way, same unit; w: fate | (receiver + 1) << 4 (uint bits)
+    glm::vec4 source;    // rgb: power the ray starts its wavefront with: emitted, or reflected into its branch
 };
-static_assert(sizeof(GpuWavefrontCorner) == 48);
+static_assert(sizeof(GpuWavefrontCorner) == 64);
 
-// A triangle of the emission square whose corners are traced rays.
+// A triangle of one face of a light's emission domain whose corners are traced rays.
 struct GpuWavefrontPatch {
     GpuWavefrontCorner corners[3];
-    glm::uvec4 info;  // x: emitter, y: refinement depth; zw unused
+    glm::uvec4 info;  // x: emitter, y: refinement depth, z: face of the emission domain; w unused
 };
-static_assert(sizeof(GpuWavefrontPatch) == 160);
-static_assert(offsetof(GpuWavefrontPatch, info) == 144);
+static_assert(sizeof(GpuWavefrontPatch) == 208);
+static_assert(offsetof(GpuWavefrontPatch, info) == 192);
 
 // The wavefront pass's counters (std430, scalar members as in GLSL).
 struct GpuWavefrontCounters {

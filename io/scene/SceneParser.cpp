@@ -368,13 +368,16 @@ TracerDesc readTracer(const JsonReader& node) {
         tracer.estimator = estimator->oneOf({"photons", "wavefront"}) == "wavefront" ? TracerDesc::Estimator::Wavefront
                                                                                      : TracerDesc::Estimator::Photons;
     if (auto wavefront = fields.optional("wavefront")) {
-        const auto keys = wavefront->object({"grid_cells", "max_depth", "split_texels", "tear_texels", "min_power", "max_patches"});
+        const auto keys = wavefront->object({"grid_cells", "max_depth", "split_texels", "tear_texels", "min_power", "max_patches",
+                                             "reflections"});
         TracerDesc::Wavefront& w = tracer.wavefront;
         if (auto cells = keys.optional("grid_cells")) w.gridCells = static_cast<int>(cells->integer(1, 1024));
         if (auto depth = keys.optional("max_depth")) w.maxDepth = static_cast<int>(depth->integer(0, 20));
         if (auto split = keys.optional("split_texels")) w.splitTexels = split->number(NumberRange::closed(0.05, 1e6));
         if (auto tear = keys.optional("tear_texels")) w.tearTexels = tear->number(NumberRange::closed(0.01, 1e6));
         if (auto power = keys.optional("min_power")) w.minPower = power->number(NumberRange::closed(0.0, 1.0));
+        if (auto reflections = keys.optional("reflections"))
+            w.reflections = static_cast<int>(reflections->integer(0, 16));
         if (auto patches = keys.optional("max_patches")) w.maxPatches = patches->integer(1024, 1 << 24);
     }
     return tracer;

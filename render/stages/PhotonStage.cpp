@@ -128,6 +128,8 @@ void PhotonStage::setEmitters(const Scene& scene) {
                 std::max(headroom * powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);
     }
     emitterCount_ = static_cast<unsigned>(emitters.size());
+    emissionFaces_.clear();
+    for (const auto& emitter : emitters) emissionFaces_.push_back(emissionFaces(emitter));
     emitters_ = gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
 }
 
@@ -154,7 +156,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     PhotonStats stats;
     if (wavefront_) {
         stats.byWavefront = true;
-        stats.wavefront = wavefront_->run({emitterCount_, receivers_.count(), surfaces_.empty() ? 0u : surfaces_.count(),
+        stats.wavefront = wavefront_->run({emissionFaces_, receivers_.count(), surfaces_.empty() ? 0u : surfaces_.count(),
                                            settings.maxSteps, settings.stepLength, dispersion_, powerUnit_});
     } else {
         tracePhotons(settings);

@@ -100,6 +100,7 @@ private:
     gl::Program fluenceSmoothProgram_;
     gl::Buffer emitters_;
     unsigned emitterCount_ = 0;
+    std::vector<unsigned> emissionFaces_;  // per emitter, for the wavefront
     long long photons_ = 0;      // the count the emitters were built for
     glm::vec3 powerUnit_{0.0f};  // W per fixed-point tally unit, per channel
     gl::Buffer rawFluence_, rawDirection_, fluence_, direction_;

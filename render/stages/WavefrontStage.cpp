@@ -31,6 +31,11 @@ unsigned levelCapacity(long long maxPatches) {
 
 }  // namespace
 
+unsigned emissionFaces(const layout::GpuEmitter& emitter) {
+    const bool cone = emitter.origin.w == 0.0f;
+    return cone && emitter.axis.w < 0.5f ? 6u : 1u;
+}
+
 WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines)
     : settings_(tracer.wavefront),
       dispersive_(tracer.dispersion.r != tracer.dispersion.g || tracer.dispersion.g != tracer.dispersion.b) {
@@ -67,13 +72,17 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     glUniform1f(program_.uniform("tear_texels"), static_cast<float>(settings_.tearTexels));
     glUniform1f(program_.uniform("min_power"), static_cast<float>(settings_.minPower));
 
-    const unsigned cells = cellsPerEdge * cellsPerEdge;
     const unsigned chunkCells = std::max(1u, capacity_ / (2u * kChunkHeadroom));
     const int channels = dispersive_ ? 3 : 1;
-    for (unsigned emitter = 0; emitter < inputs.emitterCount; ++emitter)
-        for (int channel = 0; channel < channels; ++channel) {
+    const int branches = inputs.sharpSurfaceCount > 0 ? settings_.reflections : 0;
+    for (unsigned emitter = 0; emitter < inputs.emissionFaces.size(); ++emitter)
+        for (int channel = 0; channel < channels; ++channel)
+            for (int branch = -1; branch < branches; ++branch) {
+            const unsigned cells = inputs.emissionFaces[emitter] * cellsPerEdge * cellsPerEdge;
+            glUniform1ui(program_.uniform("emission_faces"), inputs.emissionFaces[emitter]);
             glUniform1ui(program_.uniform("seed_emitter"), emitter);
             glUniform1i(program_.uniform("channel"), dispersive_ ? channel : -1);
+            glUniform1i(program_.uniform("branch"), branch);
             for (unsigned first = 0; first < cells; first += chunkCells) {
                 unsigned count = 2u * std::min(chunkCells, cells - first);
                 levels_[0].bindStorage(layout::kWavefrontChildren);

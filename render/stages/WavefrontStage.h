@@ -9,6 +9,7 @@
 // gives the same bits. With dispersion each channel is traced on its own.
 #pragma once
 
+#include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
 #include "render/gl/ShaderLibrary.h"
@@ -16,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <vector>
 
 namespace eikon::render {
 
@@ -29,7 +31,7 @@ struct WavefrontCounts {
 
 // The uniforms the wavefront shares with the photon pass.
 struct WavefrontInputs {
-    unsigned emitterCount = 0;
+    std::vector<unsigned> emissionFaces;  // per emitter (emissionFaces)
     unsigned receiverCount = 0;
     unsigned sharpSurfaceCount = 0;
     unsigned maxSteps = 0;
@@ -37,6 +39,12 @@ struct WavefrontInputs {
     Rgb dispersion{1.0};
     glm::vec3 powerUnit{0.0f};  // W per fixed-point unit, per channel
 };
+
+// Faces of an emitter's emission domain (shaders/wavefront_trace.comp,
+// face_direction): one for a directional light's disk and for a cone at most
+// 60° wide, whose gnomonic square stays well shaped; six, the cube about the
+// light, for a wider one.
+unsigned emissionFaces(const layout::GpuEmitter& emitter);
 
 class WavefrontStage {
 public:

@@ -79,7 +79,7 @@ public:
             }
             const double eta = ni / nt;
             const glm::dvec3 refracted = eta * ray.direction + (eta * cosI - cosT) * normal;
-            if (s_.fresnel) trace({hit, mirrored, ray.weight * r, ray.insideSphere}, crossings);
+            if (s_.fresnel && s_.followReflections) trace({hit, mirrored, ray.weight * r, ray.insideSphere}, crossings);
             const double kept = s_.fresnel ? 1.0 - r : 1.0;
             ray = {hit, glm::normalize(refracted), ray.weight * kept, !ray.insideSphere};
         }

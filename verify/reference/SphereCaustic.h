@@ -22,6 +22,9 @@ struct SphereCausticSetup {
     double sphereIndex = 1.5;
     double mediumIndex = 1.0;
     bool fresnel = true;              // false: every crossing transmits (except total internal reflection)
+    // false: the Fresnel-reflected branches are dropped, the transmitted light
+    // keeping its 1 − R (what the wavefront estimator follows).
+    bool followReflections = true;
     // The receiver: the square of edge `size` centred at `receiverCentre` in
     // the plane y = receiverCentre.y, lit from above (+y), texels along x and z.
     glm::dvec3 receiverCentre{0.0, 0.02, 0.0};
