@@ -74,8 +74,12 @@ std::vector<double> floorIrradianceOf(const Scene& scene, const FieldSet& fields
     return green;
 }
 
+// The default scene traced by photons (its own estimator is the
+// wavefront, checked on its own below), with `overrides` after that.
 Scene defaultScene(const std::vector<std::string>& overrides) {
-    return loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json", overrides);
+    std::vector<std::string> all = {"tracer.estimator=\"photons\""};
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    return loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json", all);
 }
 
 // The default scene's floor irradiance, with `overrides` applied.
