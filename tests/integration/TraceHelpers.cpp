@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <numbers>
 
 namespace eikon::test {
 
@@ -28,6 +29,16 @@ LightDesc directionalLight(glm::dvec3 direction, double irradiance) {
     light.direction = glm::normalize(direction);
     light.irradiance = Rgb(irradiance);
     return light;
+}
+
+Scene inverseSquareScene() {
+    Scene scene = emptyScene(glm::dvec3(-0.6, -0.55, -0.6), glm::dvec3(0.6, 0.6, 0.6), 24);
+    LightDesc light;
+    light.position = glm::dvec3(0.0, 0.5, 0.0);
+    light.power = Rgb(4.0 * std::numbers::pi);
+    scene.lights.push_back(light);
+    scene.receivers.push_back(floorReceiver(-0.5, 1.0, 32));
+    return scene;
 }
 
 TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::PhotonProgramOptions options) {

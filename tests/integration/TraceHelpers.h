@@ -17,6 +17,9 @@ namespace eikon::test {
 Scene emptyScene(glm::dvec3 boundsMin, glm::dvec3 boundsMax, int resolution);
 ReceiverDesc floorReceiver(double y, double size, int resolution);
 LightDesc directionalLight(glm::dvec3 direction, double irradiance);
+// A point light of intensity 1 W/sr 1 m above the centre of a 1 m square
+// receiver of 32² texels, in clear air on a 24³ grid.
+Scene inverseSquareScene();
 
 struct TraceResult {
     render::PhotonStats stats;

@@ -10,7 +10,6 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
-#include <numbers>
 #include <numeric>
 
 namespace eikon {
@@ -70,12 +69,7 @@ TEST(PhotonPhysics, PhotonInUniformIndexStaysStraight) {
 // received power equals I times the square's solid angle
 // Ω = 4·asin(s² / (s² + h²)) for half-side s on the axis (≤ 0.5%).
 TEST(PhotonPhysics, InverseSquareLaw) {
-    Scene scene = emptyScene(glm::dvec3(-0.6, -0.55, -0.6), glm::dvec3(0.6, 0.6, 0.6), 24);
-    LightDesc light;
-    light.position = glm::dvec3(0.0, 0.5, 0.0);
-    light.power = Rgb(4.0 * std::numbers::pi);
-    scene.lights.push_back(light);
-    scene.receivers.push_back(floorReceiver(-0.5, 1.0, 32));
+    Scene scene = test::inverseSquareScene();
     scene.render.photons = 1 << 20;
     const TraceResult result = trace(scene);
 

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 namespace eikon {
 namespace {
@@ -40,12 +39,7 @@ double inverseSquareTexelMean(double height, double u, double v, double texel) {
 // (the photon pass's InverseSquareLaw scene): texel RMS ≤ 0.1% of the texel
 // mean (photons, 2^20 of them, reach 0.47%), and the received power I·Ω.
 TEST(WavefrontPhysics, InverseSquareLaw) {
-    Scene scene = emptyScene(glm::dvec3(-0.6, -0.55, -0.6), glm::dvec3(0.6, 0.6, 0.6), 24);
-    LightDesc light;
-    light.position = glm::dvec3(0.0, 0.5, 0.0);
-    light.power = Rgb(4.0 * std::numbers::pi);
-    scene.lights.push_back(light);
-    scene.receivers.push_back(floorReceiver(-0.5, 1.0, 32));
+    Scene scene = test::inverseSquareScene();
     const test::TraceResult result = test::trace(byWavefront(scene));
 
     const double height = 1.0, halfSide = 0.5;

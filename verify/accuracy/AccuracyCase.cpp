@@ -15,6 +15,7 @@ std::vector<std::unique_ptr<AccuracyCase>> allCases() {
     cases.push_back(makeBeerLambertCase());
     cases.push_back(makeLinearSlabCase());
     cases.push_back(makeMirageCase());
+    cases.push_back(makeMirageMapCase());
     cases.push_back(makeLuneburgCase());
     cases.push_back(makeFishEyeCase());
     cases.push_back(makeGlassSphereCase());
@@ -87,6 +88,15 @@ std::vector<RunSettings> standardSweep(bool quick, const SweepKnobs& knobs) {
             runs.push_back(run);
         }
     }
+    if (knobs.wavefront)
+        for (double split : quick ? std::vector<double>{3.0, 1.5, 0.75} : std::vector<double>{4.0, 3.0, 2.0, 1.5, 1.0, 0.75}) {
+            RunSettings run = base;
+            run.stepPolicy = P::Octree;
+            run.estimator = TracerDesc::Estimator::Wavefront;
+            run.splitTexels = split;
+            run.sweep = "wavefront";
+            runs.push_back(run);
+        }
     if (knobs.photons)
         for (int log2 : quick ? std::vector<int>{14, 16, 18, 20} : std::vector<int>{14, 16, 18, 20, 22}) {
             RunSettings run = base;
@@ -104,7 +114,7 @@ RunRecord makeRecord(const Scene& scene, const RunSettings& settings, const GpuT
     record.settings = settings;
     const glm::ivec3 r = scene.grid.resolution;
     record.grid = std::to_string(r.x) + "x" + std::to_string(r.y) + "x" + std::to_string(r.z);
-    record.photons = scene.render.photons;
+    record.photons = settings.estimator == TracerDesc::Estimator::Photons ? scene.render.photons : 0;  // the wavefront has none
     record.runtimeSeconds = trace.runtimeSeconds;
     record.stats = trace.stats;
     record.measurement = std::move(measurement);

@@ -33,6 +33,7 @@ struct SweepKnobs {
     bool smoothing = false;    // interface smoothing width at a fine step
     bool photons = false;      // photon count
     bool tolerances = false;   // octree ε, ε′ and step cap
+    bool wavefront = false;    // the wavefront estimator over its split size (receiver cases)
     double baseSmoothing = 0.0;
 };
 std::vector<RunSettings> standardSweep(bool quick, const SweepKnobs& knobs);

@@ -88,6 +88,7 @@ std::string settingsLabel(const RunRecord& record) {
     std::string label = tracerKey(s) + " " + record.grid;
     if (s.smoothingVoxels > 0.0) label += format(" w=%g", s.smoothingVoxels);
     if (s.sweep == "photons") label += " " + std::to_string(record.photons) + " photons";
+    if (s.estimator == TracerDesc::Estimator::Wavefront) label += format(" wavefront split=%g", s.splitTexels);
     return label;
 }
 
@@ -144,17 +145,18 @@ void writeCsv(const std::filesystem::path& file, const std::vector<RunRecord>& r
     std::ostringstream out;
     out << "case,integrator,step_policy,sweep,step_voxels,max_step_voxels,epsilon,epsilon_prime,smoothing_voxels,"
            "grid,photons,steps,runtime_s,error,error_voxels,error_metric,samples,step_error_voxels,invariant_max,"
-           "invariant_mean,energy_balance\n";
+           "invariant_mean,energy_balance,estimator,split_texels\n";
     for (const RunRecord& r : records) {
         const RunSettings& s = r.settings;
         char line[1024];
-        std::snprintf(line, sizeof line, "%s,%s,%s,%s,%g,%g,%g,%g,%g,%s,%lld,%llu,%.6g,%.6g,%.6g,\"%s\",%d,%.6g,%.6g,%.6g,%.3g\n",
+        std::snprintf(line, sizeof line, "%s,%s,%s,%s,%g,%g,%g,%g,%g,%s,%lld,%llu,%.6g,%.6g,%.6g,\"%s\",%d,%.6g,%.6g,%.6g,%.3g,%s,%g\n",
                       r.measurement.caseName.c_str(), integratorName(s.integrator), stepPolicyName(s.stepPolicy),
                       s.sweep.c_str(), s.stepVoxels, s.maxStepVoxels, s.epsilon, s.epsilonPrime, s.smoothingVoxels,
                       r.grid.c_str(), r.photons, static_cast<unsigned long long>(r.stats.steps), r.runtimeSeconds,
                       r.measurement.error, r.measurement.errorVoxels, r.measurement.metric.c_str(),
                       r.measurement.samples, r.stepErrorVoxels, r.stats.maxInvariantError, r.stats.meanInvariantError,
-                      r.stats.balanceError());
+                      r.stats.balanceError(),
+                      s.estimator == TracerDesc::Estimator::Wavefront ? "wavefront" : "photons", s.splitTexels);
         out << line;
     }
     io::writeFileAtomically(file, out.str());

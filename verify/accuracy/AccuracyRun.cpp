@@ -78,6 +78,10 @@ void applySettings(Scene& scene, const RunSettings& settings, glm::ivec3 baseRes
     scene.tracer.epsilon = settings.epsilon;
     scene.tracer.epsilonPrime = std::max(settings.epsilonPrime, settings.epsilon);
     if (settings.photons > 0) scene.render.photons = settings.photons;
+    scene.tracer.estimator = settings.estimator;
+    scene.tracer.wavefront.splitTexels = settings.splitTexels;
+    if (settings.estimator == TracerDesc::Estimator::Wavefront)
+        for (ReceiverDesc& receiver : scene.receivers) receiver.filter = ReceiverDesc::Filter::None;
 }
 
 glm::dvec3 linePlaneIntersection(const glm::dvec3& p, const glm::dvec3& d, const glm::dvec3& point,

@@ -26,7 +26,11 @@ struct RunSettings {
     double gridScale = 1.0;          // resolution relative to the case's base grid
     double smoothingVoxels = 0.0;    // width of the case's interface smoothing, where it has one
     long long photons = 0;           // 0: the case's default
-    std::string sweep = "step";      // which knob this run varies: step, grid, smoothing, photons, octree
+    // The light pass: photons, or the wavefront with this refinement
+    // (tracer.wavefront.split_texels); receiver cases only.
+    TracerDesc::Estimator estimator = TracerDesc::Estimator::Photons;
+    double splitTexels = 1.5;
+    std::string sweep = "step";      // which knob this run varies: step, grid, smoothing, photons, octree, wavefront
 };
 
 const char* integratorName(TracerDesc::Integrator integrator);

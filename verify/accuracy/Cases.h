@@ -9,6 +9,7 @@ std::unique_ptr<AccuracyCase> makePointLightCase();    // IrradianceCases.cpp
 std::unique_ptr<AccuracyCase> makeBeerLambertCase();   // IrradianceCases.cpp
 std::unique_ptr<AccuracyCase> makeLinearSlabCase();    // LayeredCases.cpp
 std::unique_ptr<AccuracyCase> makeMirageCase();        // LayeredCases.cpp
+std::unique_ptr<AccuracyCase> makeMirageMapCase();     // LayeredCases.cpp
 std::unique_ptr<AccuracyCase> makeLuneburgCase();      // LensCases.cpp
 std::unique_ptr<AccuracyCase> makeFishEyeCase();       // LensCases.cpp
 std::unique_ptr<AccuracyCase> makeGlassSphereCase();   // LensCases.cpp

@@ -16,6 +16,7 @@ constexpr Colour kBlack{20, 20, 20}, kGrid{225, 225, 225}, kAxis{90, 90, 90}, kB
 
 Colour curveColour(const RunSettings& s) {
     using I = TracerDesc::Integrator;
+    if (s.estimator == TracerDesc::Estimator::Wavefront) return {140, 86, 75};
     const bool octree = s.stepPolicy == TracerDesc::StepPolicy::Octree;
     if (s.integrator == I::Euler) return {214, 39, 40};
     if (s.integrator == I::Leapfrog) return octree ? Colour{255, 127, 14} : Colour{31, 119, 180};
@@ -80,7 +81,8 @@ void drawPanel(Canvas& canvas, double x, double y, double w, double h, const std
             curves[curveLabel(r->settings) + "/" + r->settings.sweep].push_back(r);
     for (const auto& [key, points] : curves) {
         const Colour colour = curveColour(points.front()->settings);
-        const bool stepSweep = points.front()->settings.sweep == "step";
+        // The step sweep of each integrator, and the wavefront's split sweep: solid.
+        const bool stepSweep = points.front()->settings.sweep == "step" || points.front()->settings.sweep == "wavefront";
         for (std::size_t i = 1; i < points.size(); ++i)
             canvas.line(px(points[i - 1]->runtimeSeconds), py(points[i - 1]->measurement.error), px(points[i]->runtimeSeconds),
                         py(points[i]->measurement.error), colour, stepSweep ? 2.0 : 1.0, stepSweep ? 0.0 : 3.0);
@@ -116,7 +118,8 @@ void writeErrorPlot(const std::filesystem::path& file, const std::vector<RunReco
         {{.integrator = I::Leapfrog}, "leapfrog uniform"},
         {{.integrator = I::Rk4}, "rk4 uniform"},
         {{.integrator = I::Leapfrog, .stepPolicy = P::Octree}, "leapfrog octree"},
-        {{.integrator = I::Rk4, .stepPolicy = P::Octree}, "rk4 octree"}};
+        {{.integrator = I::Rk4, .stepPolicy = P::Octree}, "rk4 octree"},
+        {{.estimator = TracerDesc::Estimator::Wavefront}, "wavefront"}};
     for (const auto& [settings, label] : colours) {
         canvas.line(x, legendTop + 8, x + 28, legendTop + 8, curveColour(settings), 2.0);
         canvas.text(x + 36, legendTop + 2, label, kBlack);
@@ -136,8 +139,8 @@ void writeErrorPlot(const std::filesystem::path& file, const std::vector<RunReco
     canvas.line(x, legendTop + 38, x + 28, legendTop + 38, kBudget, 1.0, 4.0);
     canvas.text(x + 36, legendTop + 32, "1% and 0.1% error", kBlack);
     canvas.text(20, legendTop + 60,
-                "vertical: error (dimensionless), horizontal: run time of the photon pass (s), log-log; "
-                "dashed lines: sweeps of one knob at a fine step",
+                "error (dimensionless) against run time of the light pass (s), log-log; dashed: one knob "
+                "at a fine step; brown: the wavefront's split",
                 kAxis);
     io::writePng(file, canvas.width(), canvas.height(), canvas.rgba());
 }
