@@ -64,6 +64,9 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"SharpSurfaces", {layout::kSharpSurfaces, 0, sizeof(layout::GpuSharpSurface)}},
         {"SurfaceNodes", {layout::kSurfaceNodes, 0, sizeof(glm::vec4)}},
         {"SurfaceTriangles", {layout::kSurfaceTriangles, 0, sizeof(glm::vec4)}},
+        {"Patches", {layout::kWavefrontPatches, 0, sizeof(layout::GpuWavefrontPatch)}},
+        {"Children", {layout::kWavefrontChildren, 0, sizeof(layout::GpuWavefrontPatch)}},
+        {"Counters", {layout::kWavefrontCounters, sizeof(layout::GpuWavefrontCounters), 0}},
     };
     return rows;
 }
@@ -125,6 +128,9 @@ std::vector<Variant> productionVariants() {
           {"EIKON_SHARP_SURFACES", "1"},
           {"EIKON_RECORD_PATHS", "8"}}},
         {"photon_trace.comp", {{"EIKON_BARE_MARCH", "1"}}},
+        {"wavefront_trace.comp", {}},
+        {"wavefront_trace.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_OCTREE_STEPS", "1"}, {"EIKON_SHARP_SURFACES", "1"}}},
         {"view_rays.comp", {}},
         {"view_rays.comp",
          {{"EIKON_HAS_EXTINCTION", "1"},
