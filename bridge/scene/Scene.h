@@ -131,7 +131,7 @@ struct ReceiverDesc {
     bool bounce = false;         // reflect photons diffusely (power × albedo) instead of stopping them
     // How the map turns photon tallies into irradiance: the 3×3 binomial
     // kernel (less noise, some blur), or each texel's own tally (unbiased).
-    enum class Filter { Binomial, None } filter = Filter::Binomial;
+    enum class Filter { Binomial, None, Adaptive } filter = Filter::Binomial;
 };
 
 struct CameraDesc {

@@ -241,9 +241,12 @@ ReceiverDesc readReceiver(const JsonReader& node, TracerDesc::Estimator estimato
         if (receiver.bounce && wavefront)
             bounce->fail("false with tracer.estimator \"wavefront\" (it traces no bounces; \"photons\" does)", "true");
     }
-    if (auto filter = fields.optional("filter"))
-        receiver.filter = filter->oneOf({"binomial", "none"}) == "none" ? ReceiverDesc::Filter::None
-                                                                       : ReceiverDesc::Filter::Binomial;
+    if (auto filter = fields.optional("filter")) {
+        const std::string name = filter->oneOf({"binomial", "none", "adaptive"});
+        receiver.filter = name == "none"       ? ReceiverDesc::Filter::None
+                          : name == "adaptive" ? ReceiverDesc::Filter::Adaptive
+                                               : ReceiverDesc::Filter::Binomial;
+    }
     return receiver;
 }
 

@@ -33,7 +33,10 @@ std::vector<layout::GpuReceiver> buildReceivers(const std::vector<ReceiverDesc>&
 }
 
 ReceiverMaps::ReceiverMaps(const std::vector<ReceiverDesc>& receivers) : receivers_(buildReceivers(receivers)) {
-    for (const auto& desc : receivers) kernelRadius_.push_back(desc.filter == ReceiverDesc::Filter::Binomial ? 1 : 0);
+    for (const auto& desc : receivers)
+        kernelRadius_.push_back(desc.filter == ReceiverDesc::Filter::Binomial   ? 1
+                                : desc.filter == ReceiverDesc::Filter::Adaptive ? kAdaptiveKernel
+                                                                                : 0);
     std::size_t texels = 0;
     for (const auto& receiver : receivers_) texels += std::size_t{receiver.map.y} * receiver.map.y;
     geometry_ = gl::Buffer(receivers_.size() * sizeof(layout::GpuReceiver), receivers_.data());
@@ -53,6 +56,7 @@ void ReceiverMaps::filter(const glm::vec3& powerUnit) {
     bind();
     filterProgram_.use();
     glUniform3f(filterProgram_.uniform("power_unit"), powerUnit.r, powerUnit.g, powerUnit.b);
+    glUniform1f(filterProgram_.uniform("units_per_photon"), static_cast<float>(layout::kPowerUnitsPerPhoton));
     for (std::size_t r = 0; r < receivers_.size(); ++r) {
         const layout::GpuReceiver& receiver = receivers_[r];
         glUniform1i(filterProgram_.uniform("kernel_radius"), kernelRadius_[r]);

@@ -29,7 +29,10 @@ public:
 
 private:
     std::vector<layout::GpuReceiver> receivers_;
-    std::vector<int> kernelRadius_;  // per receiver: 1 the 3×3 binomial, 0 none
+    // Per receiver: 1 the 3×3 binomial, 0 none, kAdaptiveKernel the
+    // density-adaptive tent (shaders/receiver_filter.comp).
+    static constexpr int kAdaptiveKernel = -1;
+    std::vector<int> kernelRadius_;
     gl::Buffer geometry_;
     gl::Buffer tallies_;
     gl::Buffer maps_;
