@@ -97,20 +97,25 @@ struct Reference {
     double texel = 0.0;            // m
 };
 
-Reference defaultSceneReference() {
-    const Scene scene = defaultScene({});
-    const ReceiverDesc& receiver = scene.receivers[0];
-    EXPECT_EQ(receiver.resolution, kResolution);
-    Reference truth;
-    reference::SphereCausticSetup& setup = truth.setup;
+// The default scene's light, sphere and floor as the references see them.
+reference::SphereCausticSetup sphereCausticSetupOf(const Scene& scene) {
+    EXPECT_EQ(scene.receivers[0].resolution, kResolution);
+    reference::SphereCausticSetup setup;
     setup.light = scene.lights[0].position;
     setup.power = scene.lights[0].power.g;
     setup.centre = scene.objects[0].sphere.center;
     setup.radius = scene.objects[0].sphere.radius;
     setup.sphereIndex = scene.objects[0].material.index;
-    setup.receiverCentre = receiver.point;
-    setup.size = receiver.size;
+    setup.receiverCentre = scene.receivers[0].point;
+    setup.size = scene.receivers[0].size;
     setup.resolution = kResolution;
+    return setup;
+}
+
+Reference defaultSceneReference() {
+    Reference truth;
+    reference::SphereCausticSetup& setup = truth.setup;
+    setup = sphereCausticSetupOf(defaultScene({}));
     setup.rays = 8'000'000;
     truth.unfiltered = reference::traceSphereCaustic(setup).irradiance;
     truth.filtered = reference::binomialFilter(truth.unfiltered, kResolution);
@@ -224,15 +229,7 @@ double receiverError(const std::vector<double>& map, const std::vector<double>& 
 TEST(SharpCaustic, AdaptiveFilterBeatsBinomialInTheCausticAndNoneOnTheFloor) {
     test::glContext();
     const Scene scene = defaultScene({});
-    reference::SphereCausticSetup setup;
-    setup.light = scene.lights[0].position;
-    setup.power = scene.lights[0].power.g;
-    setup.centre = scene.objects[0].sphere.center;
-    setup.radius = scene.objects[0].sphere.radius;
-    setup.sphereIndex = scene.objects[0].material.index;
-    setup.receiverCentre = scene.receivers[0].point;
-    setup.size = scene.receivers[0].size;
-    setup.resolution = kResolution;
+    const reference::SphereCausticSetup setup = sphereCausticSetupOf(scene);
     const std::vector<double> exact = reference::integrateSphereCaustic(setup).irradiance;
     const double shadow = reference::shadowRadius(setup);
     const std::vector<double> binomial = floorIrradiance({});
@@ -259,15 +256,7 @@ TEST(SharpCaustic, AdaptiveFilterBeatsBinomialInTheCausticAndNoneOnTheFloor) {
 TEST(SharpCaustic, WavefrontMatchesTheNoiseFreeReference) {
     test::glContext();
     const Scene scene = defaultScene({"tracer.estimator=\"wavefront\""});
-    reference::SphereCausticSetup setup;
-    setup.light = scene.lights[0].position;
-    setup.power = scene.lights[0].power.g;
-    setup.centre = scene.objects[0].sphere.center;
-    setup.radius = scene.objects[0].sphere.radius;
-    setup.sphereIndex = scene.objects[0].material.index;
-    setup.receiverCentre = scene.receivers[0].point;
-    setup.size = scene.receivers[0].size;
-    setup.resolution = kResolution;
+    const reference::SphereCausticSetup setup = sphereCausticSetupOf(scene);
     const std::vector<double> exact = reference::integrateSphereCaustic(setup).irradiance;
     const double shadow = reference::shadowRadius(setup), texel = setup.size / kResolution;
 
