@@ -189,6 +189,7 @@ struct TracerDesc {
     double powerCutoff = 1e-4;    // stop a photon below this fraction of its emitted power, in [0, 1)
     long long maxSteps = 0;       // per photon; 0: four grid crossings at the smallest step
     Rgb dispersion{1.0};          // per-channel scale of δn = n − n_ref (Cauchy-style), each > 0
+    bool dispersive() const { return dispersion.r != dispersion.g || dispersion.g != dispersion.b; }
     bool storeFluence = false;    // keep the fluence grid even where nothing scatters
     // How receivers' irradiance is estimated: photon splatting (Monte Carlo,
     // the reference; also for scattering media), or adaptive wavefront

@@ -29,8 +29,6 @@ Rgb tallyOf(const layout::GpuPhotonStats& gpu, layout::PowerTally tally, const R
 
 std::uint64_t wide(std::uint32_t low, std::uint32_t high) { return (std::uint64_t{high} << 32) | low; }
 
-bool dispersive(const Rgb& scale) { return scale.r != scale.g || scale.g != scale.b; }
-
 int integratorNumber(TracerDesc::Integrator integrator) {
     switch (integrator) {
         case TracerDesc::Integrator::Euler: return 0;
@@ -80,7 +78,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         wavefront_ = std::make_unique<WavefrontStage>(tracer, defines);
     } else {
         defines.insert({{"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
-                        {"EIKON_DISPERSION", dispersive(tracer.dispersion) ? "1" : "0"},
+                        {"EIKON_DISPERSION", tracer.dispersive() ? "1" : "0"},
                         {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
                         {"EIKON_BOUNCE", std::any_of(scene.receivers.begin(), scene.receivers.end(),
                                                      [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
@@ -122,7 +120,7 @@ void PhotonStage::setEmitters(const Scene& scene) {
         for (const auto& emitter : emitters)
             for (int c = 0; c < 3; ++c) powerUnit_[c] = std::max(powerUnit_[c], emitter.photonPower[c]);
         // Dispersion gives each photon three times one channel's power.
-        const float headroom = dispersive(scene.tracer.dispersion) ? 3.0f : 1.0f;
+        const float headroom = scene.tracer.dispersive() ? 3.0f : 1.0f;
         for (int c = 0; c < 3; ++c)
             powerUnit_[c] =
                 std::max(headroom * powerUnit_[c] / static_cast<float>(layout::kPowerUnitsPerPhoton), 1e-38f);

@@ -37,8 +37,7 @@ unsigned emissionFaces(const layout::GpuEmitter& emitter) {
 }
 
 WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines)
-    : settings_(tracer.wavefront),
-      dispersive_(tracer.dispersion.r != tracer.dispersion.g || tracer.dispersion.g != tracer.dispersion.b) {
+    : settings_(tracer.wavefront), dispersive_(tracer.dispersive()) {
     capacity_ = levelCapacity(settings_.maxPatches);
     program_ = gl::compileComputeProgram("wavefront_trace.comp", defines);
     for (gl::Buffer& level : levels_) level = gl::Buffer(std::size_t{capacity_} * sizeof(layout::GpuWavefrontPatch));
@@ -50,6 +49,35 @@ void WavefrontStage::dispatch(Mode mode, unsigned invocations) {
     glUniform1ui(program_.uniform("patch_count"), invocations);
     program_.dispatchCovering(invocations, 1, 1, kLocalSize, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void WavefrontStage::traceWavefront(unsigned emitter, unsigned faces, int channel, int branch) {
+    glUniform1ui(program_.uniform("emission_faces"), faces);
+    glUniform1ui(program_.uniform("seed_emitter"), emitter);
+    glUniform1i(program_.uniform("channel"), channel);
+    glUniform1i(program_.uniform("branch"), branch);
+    const auto cellsPerEdge = static_cast<unsigned>(settings_.gridCells);
+    const unsigned cells = faces * cellsPerEdge * cellsPerEdge;
+    const unsigned chunkCells = std::max(1u, capacity_ / (2u * kChunkHeadroom));
+    for (unsigned first = 0; first < cells; first += chunkCells) {
+        unsigned count = 2u * std::min(chunkCells, cells - first);
+        levels_[0].bindStorage(layout::kWavefrontChildren);
+        glUniform1ui(program_.uniform("first_cell"), first);
+        dispatch(kSeed, count);
+        glUniform1ui(program_.uniform("seeded_jobs"), 1u);
+        dispatch(kTrace, 3u * count);
+        glUniform1ui(program_.uniform("seeded_jobs"), 0u);
+        for (int source = 0; count > 0; source = 1 - source) {
+            levels_[source].bindStorage(layout::kWavefrontPatches);
+            levels_[1 - source].bindStorage(layout::kWavefrontChildren);
+            const std::uint32_t none = 0;
+            counters_.upload(&none, sizeof none, offsetof(layout::GpuWavefrontCounters, children));
+            dispatch(kRefine, count);
+            const auto children = counters_.downloadAs<std::uint32_t>(offsetof(layout::GpuWavefrontCounters, children));
+            count = std::min(children, capacity_);
+            if (count > 0) dispatch(kTrace, count / 4u * 3u);
+        }
+    }
 }
 
 WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
@@ -64,46 +92,19 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     glUniform3f(program_.uniform("dispersion"), static_cast<float>(inputs.dispersion.r),
                 static_cast<float>(inputs.dispersion.g), static_cast<float>(inputs.dispersion.b));
     glUniform3f(program_.uniform("power_unit"), inputs.powerUnit.r, inputs.powerUnit.g, inputs.powerUnit.b);
-    const auto cellsPerEdge = static_cast<unsigned>(settings_.gridCells);
-    glUniform1ui(program_.uniform("grid_cells"), cellsPerEdge);
+    glUniform1ui(program_.uniform("grid_cells"), static_cast<unsigned>(settings_.gridCells));
     glUniform1ui(program_.uniform("max_depth"), static_cast<unsigned>(settings_.maxDepth));
     glUniform1ui(program_.uniform("capacity"), capacity_);
     glUniform1f(program_.uniform("split_texels"), static_cast<float>(settings_.splitTexels));
     glUniform1f(program_.uniform("tear_texels"), static_cast<float>(settings_.tearTexels));
     glUniform1f(program_.uniform("min_power"), static_cast<float>(settings_.minPower));
 
-    const unsigned chunkCells = std::max(1u, capacity_ / (2u * kChunkHeadroom));
     const int channels = dispersive_ ? 3 : 1;
     const int branches = inputs.sharpSurfaceCount > 0 ? settings_.reflections : 0;
     for (unsigned emitter = 0; emitter < inputs.emissionFaces.size(); ++emitter)
         for (int channel = 0; channel < channels; ++channel)
-            for (int branch = -1; branch < branches; ++branch) {
-            const unsigned cells = inputs.emissionFaces[emitter] * cellsPerEdge * cellsPerEdge;
-            glUniform1ui(program_.uniform("emission_faces"), inputs.emissionFaces[emitter]);
-            glUniform1ui(program_.uniform("seed_emitter"), emitter);
-            glUniform1i(program_.uniform("channel"), dispersive_ ? channel : -1);
-            glUniform1i(program_.uniform("branch"), branch);
-            for (unsigned first = 0; first < cells; first += chunkCells) {
-                unsigned count = 2u * std::min(chunkCells, cells - first);
-                levels_[0].bindStorage(layout::kWavefrontChildren);
-                glUniform1ui(program_.uniform("first_cell"), first);
-                dispatch(kSeed, count);
-                glUniform1ui(program_.uniform("seeded_jobs"), 1u);
-                dispatch(kTrace, 3u * count);
-                glUniform1ui(program_.uniform("seeded_jobs"), 0u);
-                for (int source = 0; count > 0; source = 1 - source) {
-                    levels_[source].bindStorage(layout::kWavefrontPatches);
-                    levels_[1 - source].bindStorage(layout::kWavefrontChildren);
-                    const std::uint32_t none = 0;
-                    counters_.upload(&none, sizeof none, offsetof(layout::GpuWavefrontCounters, children));
-                    dispatch(kRefine, count);
-                    const auto children =
-                        counters_.downloadAs<std::uint32_t>(offsetof(layout::GpuWavefrontCounters, children));
-                    count = std::min(children, capacity_);
-                    if (count > 0) dispatch(kTrace, count / 4u * 3u);
-                }
-            }
-        }
+            for (int branch = -1; branch < branches; ++branch)
+                traceWavefront(emitter, inputs.emissionFaces[emitter], dispersive_ ? channel : -1, branch);
     gl::checkpoint("wavefront stage");
     const auto counters = counters_.downloadAs<layout::GpuWavefrontCounters>();
     return {counters.finished, counters.splits, counters.atLimit, counters.rays};

@@ -59,6 +59,9 @@ public:
 private:
     enum Mode : unsigned { kSeed = 0, kTrace = 1, kRefine = 2 };  // shaders/wavefront_trace.comp
     void dispatch(Mode mode, unsigned invocations);
+    // One wavefront: the emitter's faces in chunks of seeds, each refined
+    // level by level until no patch splits.
+    void traceWavefront(unsigned emitter, unsigned faces, int channel, int branch);
 
     TracerDesc::Wavefront settings_;
     bool dispersive_ = false;
