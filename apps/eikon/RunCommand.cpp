@@ -6,6 +6,7 @@
 #include "io/scene/ExportParser.h"
 #include "io/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
+#include "render/stages/PhotonStage.h"
 #include "sim/SceneFields.h"
 
 #include <filesystem>
@@ -39,6 +40,7 @@ int runCommand(const RunOptions& options) {
     }
     if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
     sim::SceneFields fields(scene);
+    render::requireEstimatorFits(scene, fields.fields().hasScattering() || fields.scatteringChangesOverTime());
     const std::filesystem::path outDir =
         options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
                                : std::filesystem::path(options.outDir);

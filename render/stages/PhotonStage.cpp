@@ -49,6 +49,14 @@ double PhotonStats::balanceError() const {
     return worst;
 }
 
+void requireEstimatorFits(const Scene& scene, bool scatters) {
+    if (scene.tracer.estimator == TracerDesc::Estimator::Wavefront && (scatters || scene.tracer.storeFluence))
+        throw InputError(scene.sourcePath + ": tracer.estimator",
+                         "\"photons\" in a scene that scatters light or stores fluence (the wavefront lights "
+                         "receivers only)",
+                         "\"wavefront\"");
+}
+
 unsigned defaultMaxSteps(const GridSpec& grid, double stepLength) {
     const glm::dvec3 extent = grid.extent();
     return static_cast<unsigned>(std::min(4.0 * (extent.x + extent.y + extent.z) / stepLength, 2147483647.0));
@@ -61,11 +69,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
     if (options.bareMarch) storeFluence_ = 0;
     const TracerDesc& tracer = scene.tracer;
     const bool byWavefront = tracer.estimator == TracerDesc::Estimator::Wavefront;
-    if (byWavefront && storeFluence_ > 0)
-        throw InputError("tracer.estimator",
-                         "\"photons\" in a scene that scatters light or stores fluence (the wavefront lights "
-                         "receivers only)",
-                         "\"wavefront\"");
+    if (!options.bareMarch) requireEstimatorFits(scene, fields.hasScattering());
     // The march's options, which both estimators share (common/ray_march.glsl).
     gl::ShaderDefines defines{
         {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},

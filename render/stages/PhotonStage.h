@@ -109,6 +109,13 @@ private:
     gl::Buffer pathPower_;
 };
 
+// Refuses a scene whose light pass its estimator cannot carry (InputError
+// naming the scene file and tracer.estimator): the wavefront lights
+// receivers only, not a medium that scatters (`scatters`) or a stored
+// fluence grid. The stage checks it; a caller checks it first where it must
+// refuse before writing anything.
+void requireEstimatorFits(const Scene& scene, bool scatters);
+
 // Default trapped-ray cap: four crossings of the grid along all three axes
 // at the smallest step.
 unsigned defaultMaxSteps(const GridSpec& grid, double stepLength);

@@ -181,6 +181,23 @@ TEST_F(Cli, VolumeSequenceRunsAndExportsOpenVdb) {
 }
 
 // A deforming mesh goes to ParaView too: each frame's deformed mesh as .vtp.
+// The wavefront lights receivers only: a scene whose medium scatters is
+// refused naming the file and tracer.estimator, before the output folder is
+// made (the fields are known then, the renderer not yet).
+TEST_F(Cli, WavefrontInAScatteringSceneIsRefusedBeforeAnythingIsWritten) {
+    const std::string scene = writeScene(
+        "smoky.json", replaced(R"("medium": {"index": 1.0})",
+                               R"("medium": {"index": 1.0, "extinction": 0.5, "scattering": 0.4})"));
+    const fs::path out = dir_ / "out";
+    const Outcome outcome =
+        runEikon("run " + scene + " --out " + out.string() + " --quiet --set 'tracer.estimator=\"wavefront\"'");
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("smoky.json: tracer.estimator: expected \"photons\" in a scene that scatters"),
+              std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(Cli, VtkExportWritesEachFramesDeformedMesh) {
     const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/twisting_glass.json";
     const fs::path out = dir_ / "out";
