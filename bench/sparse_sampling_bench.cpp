@@ -241,7 +241,7 @@ private:
         scene->occupancy = double(grid->activeVoxelCount()) / std::pow(double(n), 3);
         scene->denseBytes = dense.size() * sizeof(float);
         scene->nanoBytes = handle.size();
-        scene->texture = Texture3D(GL_R32F, n, n, n);
+        scene->texture = Texture3D(GL_R32F, n, n, n, eikon::gl::gridResource("the benchmark field", n, n, n));
         scene->texture.upload(GL_RED, GL_FLOAT, dense.data());
         scene->nanoGrid = Buffer(handle.size(), handle.data(), 0);
         return scene;

@@ -115,10 +115,11 @@ private:
 // next (FrameSource.h). The host fields' frame time includes the advance
 // that produced the frame, as the ring's includes nothing of the next one's
 // production but what the render did not hide.
-void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, FrameOutputs& outputs,
+void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, const OpenOutput& openOutput,
                   ProgressBar& progress, bool pipelined) {
     FrameSource source(scene, fields, rendererOptionsFor(scene), pipelined,
                        scene.exports.vtk.enabled || scene.exports.vdb.enabled);
+    std::optional<FrameOutputs> outputs;  // opened once frame 0 is rendered: its GPU resources all fit
     const bool simulated = fields.changesOverTime();
     PowerWarning warning;
     for (int frame = 0; frame < frames; ++frame) {
@@ -134,7 +135,8 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, Fram
         const ProducedFrame& current = source.current();
         warning.check(frame, result);
         timing.frameMs = millisecondsSince(start) + (source.throughRing() ? 0.0 : current.simulateMs);
-        outputs.write(frame, result,
+        if (!outputs) outputs.emplace(scene, openOutput());
+        outputs->write(frame, result,
                       frameReportJson(frame, current, simulated, result, timing, pipelined && source.throughRing()),
                       source.renderer(), {current.time, source.currentViews(), current.exportArrays, current.meshes});
         if (more) source.publishNext();  // frame k's fields stay current until its outputs are written
@@ -178,10 +180,9 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
     return report.dump();
 }
 
-void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
+void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, const OpenOutput& openOutput,
                ProgressBar& progress, const LoopOptions& options) {
-    FrameOutputs outputs(scene, output);
-    renderFrames(scene, fields, frames, outputs, progress, options.pipelined);
+    renderFrames(scene, fields, frames, openOutput, progress, options.pipelined);
     progress.finish();
 }
 

@@ -12,6 +12,7 @@
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
 
+#include <functional>
 #include <string>
 
 namespace eikon::app {
@@ -34,9 +35,13 @@ struct LoopTiming {
 std::string frameReportJson(int frame, const ProducedFrame& produced, bool simulated,
                             const render::FrameResult& result, const LoopTiming& timing, bool pipelined);
 
+// Opens the output folder; called once frame 0 is rendered, so that a scene
+// whose GPU resources do not fit is refused before anything is written.
+using OpenOutput = std::function<io::OutputFolder&()>;
+
 // Renders `frames` frames, advancing the simulation (if any) between them;
 // frames the scene's `export` section selects also go to DIR/vtk/ and DIR/vdb/.
-void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, io::OutputFolder& output,
+void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, const OpenOutput& openOutput,
                ProgressBar& progress, const LoopOptions& options = {});
 
 }  // namespace eikon::app

@@ -1,15 +1,18 @@
 #include "apps/eikon/RunCommand.h"
 
 #include "apps/eikon/FrameLoop.h"
+#include "bridge/core/Error.h"
 #include "apps/eikon/ProgressBar.h"
 #include "io/files/OutputFolder.h"
 #include "io/scene/ExportParser.h"
 #include "io/scene/SceneParser.h"
 #include "render/gl/GlContext.h"
+#include "render/gl/GpuMemory.h"
 #include "render/stages/PhotonStage.h"
 #include "sim/SceneFields.h"
 
 #include <filesystem>
+#include <optional>
 
 namespace eikon::app {
 
@@ -44,12 +47,18 @@ int runCommand(const RunOptions& options) {
     const std::filesystem::path outDir =
         options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
                                : std::filesystem::path(options.outDir);
+    io::OutputFolder::requireUsable(outDir, options.force);
     auto context = gl::createHeadlessContext();  // before the folder: a machine without GL leaves nothing behind
-    io::OutputFolder output(outDir, options.force);
     ProgressBar progress(options.frames, options.quiet);
     const bool pipelined =
         options.pipelining == "on" || (options.pipelining == "auto" && !context->info().rendersOnCpu());
-    runFrames(scene, fields, options.frames, output, progress, {pipelined});
+    std::optional<io::OutputFolder> output;
+    try {
+        runFrames(scene, fields, options.frames, [&]() -> io::OutputFolder& { return output.emplace(outDir, options.force); },
+                  progress, {pipelined});
+    } catch (const gl::GpuMemoryError& error) {  // a size the scene asked for, too large for this machine
+        throw InputError(scene.sourcePath + ": " + error.what());
+    }
     return 0;
 }
 

@@ -81,18 +81,22 @@ void clearEarlierRun(const fs::path& root, const std::vector<fs::path>& files) {
 
 }  // namespace
 
+void OutputFolder::requireUsable(const fs::path& root, bool force) {
+    if (fs::exists(root) && !fs::is_directory(root)) throw InputError(root.string(), "an output folder", "a file");
+    if (!fs::exists(root) || fs::is_empty(root)) return;
+    if (!fs::is_regular_file(root / kManifestName) && !holdsOnlyUnlistedEikonOutput(root))
+        throw InputError(root.string() +
+                         ": the folder holds files eikon did not write; choose another --out (--force only clears "
+                         "a folder an earlier eikon run wrote)");
+    if (!force)
+        throw InputError(root.string() +
+                         ": the output folder holds an earlier run; choose another --out or pass --force to clear it");
+}
+
 OutputFolder::OutputFolder(fs::path root, bool force) : root_(std::move(root)) {
-    if (fs::exists(root_) && !fs::is_directory(root_))
-        throw InputError(root_.string(), "an output folder", "a file");
+    requireUsable(root_, force);
     if (fs::exists(root_) && !fs::is_empty(root_)) {
         const bool listed = fs::is_regular_file(root_ / kManifestName);
-        if (!listed && !holdsOnlyUnlistedEikonOutput(root_))
-            throw InputError(root_.string() +
-                             ": the folder holds files eikon did not write; choose another --out (--force only clears "
-                             "a folder an earlier eikon run wrote)");
-        if (!force)
-            throw InputError(root_.string() +
-                             ": the output folder holds an earlier run; choose another --out or pass --force to clear it");
         const std::set<fs::path> all = filesBelow(root_);
         std::vector<fs::path> earlier = listed ? listedFiles(root_) : std::vector<fs::path>(all.begin(), all.end());
         for (const fs::path& file : all)  // what a killed run was writing

@@ -19,6 +19,9 @@ public:
     // Throws InputError (exit code 2) when `root` is a file, holds files eikon
     // did not write, or holds an earlier run and !force.
     OutputFolder(std::filesystem::path root, bool force);
+    // The same refusals, without touching the folder: for a run that
+    // checks everything before it writes anything.
+    static void requireUsable(const std::filesystem::path& root, bool force);
     ~OutputFolder();
 
     const std::filesystem::path& root() const { return root_; }

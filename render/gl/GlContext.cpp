@@ -1,6 +1,7 @@
 #include "render/gl/GlContext.h"
 
 #include "render/gl/GlDebug.h"
+#include "render/gl/GpuMemory.h"
 
 #include <epoxy/gl.h>
 
@@ -43,6 +44,7 @@ void GlContext::initialiseCurrent(const std::string& platform) {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info_.maxTextureSize);
     glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &info_.max3dTextureSize);
     info_.loopBudget = loopBudgetForRenderer(info_.renderer);
+    setGpuMemoryLimit(queryGpuMemoryLimit(info_.renderer, info_.rendersOnCpu()));
     if (epoxy_gl_version() < 45)
         throw std::runtime_error(platform + " gave OpenGL " + info_.version + " on " + info_.renderer +
                                  "; eikon needs OpenGL 4.5 core");

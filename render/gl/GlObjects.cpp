@@ -2,6 +2,7 @@
 
 #include "bridge/core/Error.h"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -11,12 +12,14 @@ void deleteBuffer(GLuint id) { glDeleteBuffers(1, &id); }
 void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void deleteProgram(GLuint id) { glDeleteProgram(id); }
 
-Buffer::Buffer(std::size_t bytes, const void* data, GLbitfield flags) : bytes_(bytes) {
+Buffer::Buffer(std::size_t bytes, const void* data, GLbitfield flags, const GpuResource& resource)
+    : reservation_(resource, bytes), bytes_(bytes) {
     GLuint id = 0;
     glCreateBuffers(1, &id);
     name_ = GlName<deleteBuffer>(id);
     // Zero-sized storage is invalid; keep one word so bindings stay legal.
     glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes > 0 ? bytes : 4), data, flags);
+    expectCreated(resource, bytes);
 }
 
 void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
@@ -34,12 +37,46 @@ void Buffer::clearToZero() {
     glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
-Texture3D::Texture3D(GLenum internalFormat, int width, int height, int depth, int levels)
+std::uint64_t Texture3D::bytesFor(GLenum internalFormat, int width, int height, int depth, int levels) {
+    EIKON_CHECK(internalFormat == GL_R32F || internalFormat == GL_RGBA32F);
+    const std::uint64_t texel = internalFormat == GL_R32F ? 4 : 16;
+    std::uint64_t bytes = 0;
+    for (int level = 0; level < levels; ++level)
+        bytes += texel * std::uint64_t(std::max(1, width >> level)) * std::uint64_t(std::max(1, height >> level)) *
+                 std::uint64_t(std::max(1, depth >> level));
+    return bytes;
+}
+
+namespace {
+
+// Whether the driver can make such a texture at all (OpenGL's proxy
+// textures: the driver's own size and resource checks, nothing allocated).
+void requireDriverAccepts(GLenum internalFormat, int width, int height, int depth, int levels,
+                          const GpuResource& resource, std::uint64_t bytes) {
+    GLint largest = 0;
+    glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &largest);
+    glTexStorage3D(GL_PROXY_TEXTURE_3D, levels, internalFormat, width, height, depth);
+    GLint accepted = 0;
+    glGetTexLevelParameteriv(GL_PROXY_TEXTURE_3D, 0, GL_TEXTURE_WIDTH, &accepted);
+    expectCreated(resource, bytes);
+    if (accepted == 0)
+        throw GpuMemoryError(resource.keyPath, resource.description, bytes,
+                             "the driver cannot create a 3D texture that large (proxy texture test; "
+                             "GL_MAX_3D_TEXTURE_SIZE is " + std::to_string(largest) + ")");
+}
+
+}  // namespace
+
+Texture3D::Texture3D(GLenum internalFormat, int width, int height, int depth, int levels, const GpuResource& resource)
     : internalFormat_(internalFormat), width_(width), height_(height), depth_(depth) {
+    const std::uint64_t bytes = bytesFor(internalFormat, width, height, depth, levels);
+    requireDriverAccepts(internalFormat, width, height, depth, levels, resource, bytes);
+    reservation_ = GpuReservation(resource, bytes);
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_3D, 1, &id);
     name_ = GlName<deleteTexture>(id);
     glTextureStorage3D(id, levels, internalFormat, width, height, depth);
+    expectCreated(resource, bytes);
     // texelFetch reaches levels > 0 only with a mipmapped minification filter.
     glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_NEAREST_MIPMAP_NEAREST : GL_LINEAR);
     glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -56,11 +93,13 @@ void Texture3D::bindImage(GLuint unit, GLenum access) const {
     glBindImageTexture(unit, id(), 0, GL_TRUE, 0, access, internalFormat_);
 }
 
-Texture2D::Texture2D(int width, int height, const float* rgba) {
+Texture2D::Texture2D(int width, int height, const float* rgba, const GpuResource& resource)
+    : reservation_(resource, 16 * std::uint64_t(width) * std::uint64_t(height)) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
     name_ = GlName<deleteTexture>(id);
     glTextureStorage2D(id, 1, GL_RGBA32F, width, height);
+    expectCreated(resource, 16 * std::uint64_t(width) * std::uint64_t(height));
     glTextureSubImage2D(id, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, rgba);
     glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

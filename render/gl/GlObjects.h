@@ -2,11 +2,14 @@
 // moves but never copies. Uses direct state access (OpenGL 4.5) throughout.
 #pragma once
 
+#include "render/gl/GpuMemory.h"
+
 #include <epoxy/gl.h>
 
 #include <glm/vec3.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 
@@ -45,11 +48,14 @@ void deleteBuffer(GLuint id);
 void deleteTexture(GLuint id);
 void deleteProgram(GLuint id);
 
-// An immutable-storage buffer (glNamedBufferStorage).
+// An immutable-storage buffer (glNamedBufferStorage). Its bytes are
+// reserved as `resource` (GpuMemory.h): GpuMemoryError where they do not fit.
 class Buffer {
 public:
     Buffer() = default;
-    Buffer(std::size_t bytes, const void* data = nullptr, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+    Buffer(std::size_t bytes, const void* data = nullptr, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT,
+           const GpuResource& resource = {});
+    Buffer(std::size_t bytes, const GpuResource& resource) : Buffer(bytes, nullptr, GL_DYNAMIC_STORAGE_BIT, resource) {}
 
     GLuint id() const { return name_.id(); }
     std::size_t bytes() const { return bytes_; }
@@ -67,16 +73,23 @@ public:
     }
 
 private:
+    GpuReservation reservation_;
     GlName<deleteBuffer> name_;
     std::size_t bytes_ = 0;
 };
 
 // A 3D texture with trilinear filtering and clamp-to-edge addressing, and
 // optionally a mip chain of `levels` (read with texelFetch per level).
+// internalFormat: GL_R32F or GL_RGBA32F. Asked of the driver by a proxy
+// texture and reserved as `resource` first (GpuMemory.h).
 class Texture3D {
 public:
     Texture3D() = default;
-    Texture3D(GLenum internalFormat, int width, int height, int depth, int levels = 1);
+    Texture3D(GLenum internalFormat, int width, int height, int depth, int levels, const GpuResource& resource);
+    Texture3D(GLenum internalFormat, int width, int height, int depth, const GpuResource& resource)
+        : Texture3D(internalFormat, width, height, depth, 1, resource) {}
+    // The bytes of such a texture, its mip chain included.
+    static std::uint64_t bytesFor(GLenum internalFormat, int width, int height, int depth, int levels = 1);
 
     GLuint id() const { return name_.id(); }
     void upload(GLenum format, GLenum type, const void* data);
@@ -84,6 +97,7 @@ public:
     void bindImage(GLuint unit, GLenum access) const;
 
 private:
+    GpuReservation reservation_;
     GlName<deleteTexture> name_;
     GLenum internalFormat_ = 0;
     int width_ = 0, height_ = 0, depth_ = 0;
@@ -94,12 +108,13 @@ private:
 class Texture2D {
 public:
     Texture2D() = default;
-    Texture2D(int width, int height, const float* rgba);
+    Texture2D(int width, int height, const float* rgba, const GpuResource& resource);
 
     GLuint id() const { return name_.id(); }
     void bindSampler(GLuint unit) const { glBindTextureUnit(unit, id()); }
 
 private:
+    GpuReservation reservation_;
     GlName<deleteTexture> name_;
 };
 

@@ -5,12 +5,13 @@
 
 namespace eikon::gl {
 
-MappedBuffer::MappedBuffer(std::size_t bytes) : bytes_(bytes) {
+MappedBuffer::MappedBuffer(std::size_t bytes, const GpuResource& resource) : reservation_(resource, bytes), bytes_(bytes) {
     constexpr GLbitfield kAccess = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     GLuint id = 0;
     glCreateBuffers(1, &id);
     name_ = GlName<deleteBuffer>(id);
     glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes), nullptr, kAccess | GL_CLIENT_STORAGE_BIT);
+    expectCreated(resource, bytes);
     data_ = glMapNamedBufferRange(id, 0, static_cast<GLsizeiptr>(bytes), kAccess);
     if (!data_) throw std::runtime_error("OpenGL could not map a persistent buffer of " + std::to_string(bytes) + " bytes");
 }

@@ -18,13 +18,14 @@ namespace eikon::gl {
 class MappedBuffer {
 public:
     MappedBuffer() = default;
-    explicit MappedBuffer(std::size_t bytes);
+    MappedBuffer(std::size_t bytes, const GpuResource& resource);
 
     GLuint id() const { return name_.id(); }
     std::size_t bytes() const { return bytes_; }
     float* floats() const { return static_cast<float*>(data_); }
 
 private:
+    GpuReservation reservation_;
     GlName<deleteBuffer> name_;
     std::size_t bytes_ = 0;
     void* data_ = nullptr;

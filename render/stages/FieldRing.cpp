@@ -29,7 +29,10 @@ FieldRing::FieldRing(const FieldSet& layout, int slots)
     EIKON_CHECK_MSG(slots >= 2, "a field ring needs two slots or more");
     for (Slot& slot : slots_)
         for (std::size_t field = 0; field < floats_.size(); ++field)
-            if (floats_[field]) slot.buffers[field] = gl::MappedBuffer(floats_[field] * sizeof(float));
+            if (floats_[field])
+                slot.buffers[field] = gl::MappedBuffer(
+                    floats_[field] * sizeof(float),
+                    {field < 4 ? "grid.resolution" : "objects", "a slot of the live field ring"});
     stats_.slots = slots;
 }
 

@@ -17,9 +17,10 @@ FieldSource hostSource(const std::vector<float>& values) { return {values.data()
 
 // Copies `source` into `texture` (created on demand with `internalFormat`):
 // from a buffer bound as the pixel unpack buffer the copy stays on the GPU.
-void uploadField(gl::Texture3D& texture, GLenum internalFormat, GLenum format, const GridSpec& grid,
+void uploadField(gl::Texture3D& texture, const char* what, GLenum internalFormat, GLenum format, const GridSpec& grid,
                  const FieldSource& source, UploadBytes& bytes) {
-    if (!texture.id()) texture = gl::Texture3D(internalFormat, grid.resolution.x, grid.resolution.y, grid.resolution.z);
+    const glm::ivec3 r = grid.resolution;
+    if (!texture.id()) texture = gl::Texture3D(internalFormat, r.x, r.y, r.z, gl::gridResource(what, r.x, r.y, r.z));
     const std::size_t size = source.floats * sizeof(float);
     if (source.buffer) {
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, source.buffer);
@@ -43,7 +44,7 @@ void uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& by
                          "at most " + std::to_string(largest) + " bytes of triangles or tree nodes "
                          "(GL_MAX_SHADER_STORAGE_BLOCK_SIZE; set \"surface\": \"smooth\" on some)",
                          std::to_string(size) + " bytes");
-    if (buffer.bytes() != size) buffer = gl::Buffer(size);
+    if (buffer.bytes() != size) buffer = gl::Buffer(size, {"objects", "the sharp surfaces' triangles and tree"});
     if (source.buffer) {
         glCopyNamedBufferSubData(source.buffer, buffer.id(), 0, 0, static_cast<GLsizeiptr>(size));
         bytes.gpu += size;
@@ -82,24 +83,24 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
         block.resolution = glm::ivec4(r, 0);
         gridBlock_ = gl::Buffer(sizeof block, &block);
         index_ = {};
-        gradient_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z);
+        gradient_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z, gl::gridResource("the index gradient", r.x, r.y, r.z));
         extinction_ = {};
         scattering_ = {};
         anisotropy_ = {};
         indexVersion_ = extinctionVersion_ = scatteringVersion_ = surfaceVersion_ = ~0ull;
         bytes.host += sizeof block;
     }
-    if (fields.indexVersion != indexVersion_) uploadField(index_, GL_R32F, GL_RED, grid_, fields.deltaIndex, bytes);
+    if (fields.indexVersion != indexVersion_) uploadField(index_, "the refractive index", GL_R32F, GL_RED, grid_, fields.deltaIndex, bytes);
     indexVersion_ = fields.indexVersion;
     if (!fields.extinction.floats) extinction_ = {};
     else if (fields.extinctionVersion != extinctionVersion_)
-        uploadField(extinction_, GL_RGBA32F, GL_RGB, grid_, fields.extinction, bytes);
+        uploadField(extinction_, "the extinction", GL_RGBA32F, GL_RGB, grid_, fields.extinction, bytes);
     extinctionVersion_ = fields.extinctionVersion;
     const bool scatteringChanged = fields.scatteringVersion != scatteringVersion_;
     if (!fields.scattering.floats) scattering_ = {};
-    else if (scatteringChanged) uploadField(scattering_, GL_RGBA32F, GL_RGB, grid_, fields.scattering, bytes);
+    else if (scatteringChanged) uploadField(scattering_, "the scattering", GL_RGBA32F, GL_RGB, grid_, fields.scattering, bytes);
     if (!fields.anisotropy.floats) anisotropy_ = {};
-    else if (scatteringChanged) uploadField(anisotropy_, GL_R32F, GL_RED, grid_, fields.anisotropy, bytes);
+    else if (scatteringChanged) uploadField(anisotropy_, "the anisotropy", GL_R32F, GL_RED, grid_, fields.anisotropy, bytes);
     scatteringVersion_ = fields.scatteringVersion;
     if (!fields.surfaceTriangles.floats) {
         surfaceNodes_ = {};

@@ -95,10 +95,11 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
     setEmitters(scene);
     if (storeFluence_ > 0) {
         const std::size_t bytes = 3 * fields.grid().cellCount() * sizeof(float);
-        rawFluence_ = gl::Buffer(bytes);
-        rawDirection_ = gl::Buffer(bytes);
-        fluence_ = gl::Buffer(bytes);
-        direction_ = gl::Buffer(bytes);
+        const glm::ivec3 r = fields.grid().resolution;
+        rawFluence_ = gl::Buffer(bytes, gl::gridResource("the photons' raw fluence", r.x, r.y, r.z));
+        rawDirection_ = gl::Buffer(bytes, gl::gridResource("the photons' raw fluence direction", r.x, r.y, r.z));
+        fluence_ = gl::Buffer(bytes, gl::gridResource("the fluence", r.x, r.y, r.z));
+        direction_ = gl::Buffer(bytes, gl::gridResource("the fluence direction", r.x, r.y, r.z));
         fluenceSmoothProgram_ = gl::compileComputeProgram("fluence_smooth.comp");
     }
     stats_ = gl::Buffer(sizeof(layout::GpuPhotonStats));

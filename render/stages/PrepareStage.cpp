@@ -13,7 +13,8 @@ PrepareStage::PrepareStage(const GridDesc& grid, const FieldTextures& fields)
     if (kernel_.size() > 1) {
         smoothProgram_ = gl::compileComputeProgram("smooth_index.comp");
         const glm::ivec3 r = fields.grid().resolution;
-        for (auto& texture : scratch_) texture = gl::Texture3D(GL_R32F, r.x, r.y, r.z);
+        for (auto& texture : scratch_)
+            texture = gl::Texture3D(GL_R32F, r.x, r.y, r.z, gl::gridResource("the index smoothing's scratch", r.x, r.y, r.z));
     }
 }
 

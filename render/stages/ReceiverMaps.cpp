@@ -40,8 +40,8 @@ ReceiverMaps::ReceiverMaps(const std::vector<ReceiverDesc>& receivers) : receive
     std::size_t texels = 0;
     for (const auto& receiver : receivers_) texels += std::size_t{receiver.map.y} * receiver.map.y;
     geometry_ = gl::Buffer(receivers_.size() * sizeof(layout::GpuReceiver), receivers_.data());
-    tallies_ = gl::Buffer(6 * texels * sizeof(std::uint32_t));
-    maps_ = gl::Buffer(3 * texels * sizeof(float));
+    tallies_ = gl::Buffer(6 * texels * sizeof(std::uint32_t), {"receivers[].resolution", "the receivers' tallies"});
+    maps_ = gl::Buffer(3 * texels * sizeof(float), {"receivers[].resolution", "the receivers' maps"});
     if (!receivers_.empty()) filterProgram_ = gl::compileComputeProgram("receiver_filter.comp");
 }
 

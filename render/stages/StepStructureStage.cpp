@@ -22,8 +22,12 @@ StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& t
     while ((1 << (levels_ - 1)) < largest) ++levels_;
     const int coarsest = 1 << (levels_ - 1);
     paddedSize_ = (grid.resolution + coarsest - 1) / coarsest * coarsest;
-    pyramid_ = gl::Texture3D(GL_RGBA32F, paddedSize_.x, paddedSize_.y, paddedSize_.z, levels_);
-    step_ = gl::Texture3D(GL_RGBA32F, grid.resolution.x, grid.resolution.y, grid.resolution.z);
+    const glm::ivec3 r = grid.resolution;
+    pyramid_ = gl::Texture3D(GL_RGBA32F, paddedSize_.x, paddedSize_.y, paddedSize_.z, levels_,
+                             gl::gridResource("the octree step pyramid (padded to " + std::to_string(paddedSize_.x) +
+                                                  "³, " + std::to_string(levels_) + " levels)",
+                                              r.x, r.y, r.z));
+    step_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z, gl::gridResource("the octree step sizes", r.x, r.y, r.z));
 }
 
 void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields) {

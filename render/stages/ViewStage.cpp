@@ -81,7 +81,8 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
             throw InputError(scene.sourcePath + ": render.environment.path",
                              "an image at most " + std::to_string(largest) + " pixels a side (GL_MAX_TEXTURE_SIZE)",
                              std::to_string(image->width) + " × " + std::to_string(image->height));
-        environment_ = gl::Texture2D(image->width, image->height, image->rgba.data());
+        environment_ = gl::Texture2D(image->width, image->height, image->rgba.data(),
+                                     {"render.environment.path", "the environment map"});
     }
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
@@ -94,8 +95,9 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                              " pixels (the linear image takes 16 bytes a pixel; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " +
                              std::to_string(largestBlock) + " bytes)",
                          std::to_string(width_) + " × " + std::to_string(height_) + " = " + std::to_string(pixels));
-    hdr_ = gl::Buffer(pixels * sizeof(glm::vec4));
-    if (recordExit) exits_ = gl::Buffer(pixels * sizeof(glm::vec4));
+    const gl::GpuResource image{"render.width × render.height", "the linear image"};
+    hdr_ = gl::Buffer(pixels * sizeof(glm::vec4), image);
+    if (recordExit) exits_ = gl::Buffer(pixels * sizeof(glm::vec4), {image.keyPath, "the camera rays' exits"});
 }
 
 void ViewStage::setCamera(const CameraDesc& camera) {

@@ -40,7 +40,9 @@ WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defin
     : settings_(tracer.wavefront), dispersive_(tracer.dispersive()) {
     capacity_ = levelCapacity(settings_.maxPatches);
     program_ = gl::compileComputeProgram("wavefront_trace.comp", defines);
-    for (gl::Buffer& level : levels_) level = gl::Buffer(std::size_t{capacity_} * sizeof(layout::GpuWavefrontPatch));
+    for (gl::Buffer& level : levels_)
+        level = gl::Buffer(std::size_t{capacity_} * sizeof(layout::GpuWavefrontPatch),
+                           {"tracer.wavefront.max_patches", "a level of wavefront patches"});
     counters_ = gl::Buffer(sizeof(layout::GpuWavefrontCounters));
 }
 
