@@ -80,7 +80,8 @@ void removeTemporariesOnSignals() {
     for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, removeTemporariesAndDie);
 }
 
-void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written) {
+void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written,
+                     const std::string& reason) {
     const InFlight inFlight{temporary};
     written = written && syncFile(temporary);
     std::error_code error;
@@ -89,7 +90,8 @@ void commitTemporary(const std::filesystem::path& temporary, const std::filesyst
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
         throw std::runtime_error(path.string() + (written ? ": cannot rename into place (" + error.message() + ")"
-                                                         : ": could not be written"));
+                                                         : ": could not be written" +
+                                                               (reason.empty() ? "" : " (" + reason + ")")));
     }
 }
 

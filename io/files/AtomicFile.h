@@ -16,7 +16,9 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
 // renames it over `path` once `written` (removing it otherwise or on
 // failure; std::runtime_error naming `path` then).
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
-void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written);
+// `reason`: why the writer failed, when it says (for the message).
+void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written,
+                     const std::string& reason = "");
 
 // Makes SIGINT, SIGTERM and SIGHUP remove the temporaries being written
 // (temporaryPathFor to commitTemporary, and writeFileAtomically's own)

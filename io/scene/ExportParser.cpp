@@ -168,7 +168,7 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     if (auto time = fields.optional("frame_time")) volume.frameTime = time->number(kPositive);
     if (auto grids = fields.optional("grids")) readGridNames(*grids, volume);
     if (auto offset = fields.optional("offset")) volume.offset = offset->vec3();
-    if (auto v = fields.optional("density_extinction")) volume.densityExtinction = v->rgb(kNonNegative);
+    if (auto v = fields.optional("density_extinction")) volume.densityExtinction = v->rgb(kAttenuationRange);
     if (auto v = fields.optional("density_scattering")) {
         volume.densityScattering = v->rgb(kNonNegative);
         for (int channel = 0; channel < 3; ++channel) {

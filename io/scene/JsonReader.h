@@ -43,6 +43,14 @@ std::string clipped(const std::string& text);
 // to 1, where the phase function is a delta.
 inline const NumberRange kAnisotropyRange = NumberRange::closed(-0.99999, 0.99999);
 
+// Positions (m): an extent max − min stays finite and float32 holds every
+// coordinate the GPU is given (a million kilometres).
+inline const NumberRange kCoordinateRange = NumberRange::closed(-1e9, 1e9);
+// Lengths (m), for the same reason.
+inline const NumberRange kLengthRange = {0.0, 1e9, false, true};
+// Extinction and scattering coefficients (1/m), which the fields hold in float32.
+inline const NumberRange kAttenuationRange = NumberRange::closed(0.0, 1e30);
+
 class JsonObjectReader;
 
 // One node of the document (possibly absent), with its file and JSON path.

@@ -29,9 +29,9 @@ glm::dvec3 readUnit(const JsonReader& node) {
 
 Placement readPlacement(const JsonObjectReader& fields) {
     Placement placement;
-    if (auto v = fields.optional("translate")) placement.translate = v->vec3();
+    if (auto v = fields.optional("translate")) placement.translate = v->vec3(kCoordinateRange);
     if (auto v = fields.optional("rotate_deg")) placement.rotateDeg = v->vec3();
-    if (auto v = fields.optional("scale")) placement.scale = v->number(kPositive);
+    if (auto v = fields.optional("scale")) placement.scale = v->number(kLengthRange);
     return placement;
 }
 

@@ -36,9 +36,6 @@ const NumberRange kLightPower = NumberRange::closed(0.0, 1e30);
 // Refractive indices: the fields hold n − n_ref in float32, which must leave
 // n > 0 (an index of 1e-300 became 0 at some cell).
 const NumberRange kRefractiveIndex = NumberRange::closed(1e-3, 1e3);
-// Grid corners, m: the extent max − min must stay finite and its cells
-// representable (a million kilometres).
-const NumberRange kCoordinate = NumberRange::closed(-1e9, 1e9);
 
 std::string formatVector(const glm::dvec3& v) {
     return "[" + formatNumber(v.x) + ", " + formatNumber(v.y) + ", " + formatNumber(v.z) + "]";
@@ -71,10 +68,10 @@ void requireNonEmpty(const JsonReader& minNode, const glm::dvec3& min, const Jso
 
 // Optional extinction and scattering (default 0), with scattering <= extinction.
 void readAttenuation(const JsonObjectReader& fields, Material& material) {
-    if (auto node = fields.optional("extinction")) material.extinction = node->rgb(kNonNegative);
+    if (auto node = fields.optional("extinction")) material.extinction = node->rgb(kAttenuationRange);
     if (auto node = fields.optional("anisotropy")) material.anisotropy = node->number(kAnisotropyRange);
     if (auto node = fields.optional("scattering")) {
-        material.scattering = node->rgb(kNonNegative);
+        material.scattering = node->rgb(kAttenuationRange);
         for (int channel = 0; channel < 3; ++channel) {
             if (material.scattering[channel] <= material.extinction[channel]) continue;
             node->fail("scattering <= extinction " + formatVector(material.extinction) + " in every channel",
@@ -109,8 +106,8 @@ GridDesc readGrid(const JsonReader& node) {
     }
     if (auto bounds = fields.optional("bounds")) {
         const auto corners = bounds->object({"min", "max"});
-        grid.boundsMin = corners.member("min").vec3(kCoordinate);
-        grid.boundsMax = corners.member("max").vec3(kCoordinate);
+        grid.boundsMin = corners.member("min").vec3(kCoordinateRange);
+        grid.boundsMax = corners.member("max").vec3(kCoordinateRange);
         requireNonEmpty(corners.member("min"), grid.boundsMin, corners.member("max"), grid.boundsMax);
     }
     if (auto sigma = fields.optional("smoothing_sigma_voxels")) grid.smoothingSigmaVoxels = sigma->number(kNonNegative);
@@ -162,8 +159,8 @@ ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
         const auto fields = node.object(
             {"type", "center", "radius", "index", "extinction", "scattering", "anisotropy", "surface", "fresnel"});
         object.kind = ObjectDesc::Kind::Sphere;
-        object.sphere.center = fields.member("center").vec3();
-        object.sphere.radius = fields.member("radius").number(kPositive);
+        object.sphere.center = fields.member("center").vec3(kCoordinateRange);
+        object.sphere.radius = fields.member("radius").number(kLengthRange);
         object.material.index = fields.member("index").number(kRefractiveIndex);
         readAttenuation(fields, object.material);
         readSurface(fields, object);
@@ -171,8 +168,8 @@ ObjectDesc readObject(const JsonReader& node, const std::string& sceneFolder) {
         const auto fields = node.object(
             {"type", "min", "max", "index", "extinction", "scattering", "anisotropy", "surface", "fresnel"});
         object.kind = ObjectDesc::Kind::Box;
-        object.box.min = fields.member("min").vec3();
-        object.box.max = fields.member("max").vec3();
+        object.box.min = fields.member("min").vec3(kCoordinateRange);
+        object.box.max = fields.member("max").vec3(kCoordinateRange);
         requireNonEmpty(fields.member("min"), object.box.min, fields.member("max"), object.box.max);
         object.material.index = fields.member("index").number(kRefractiveIndex);
         readAttenuation(fields, object.material);
@@ -202,13 +199,13 @@ LightDesc readLight(const JsonReader& node) {
     if (type == "point") {
         const auto fields = node.object({"type", "position", "power"});
         light.kind = LightDesc::Kind::Point;
-        light.position = fields.member("position").vec3();
+        light.position = fields.member("position").vec3(kCoordinateRange);
         light.power = fields.member("power").rgb(kLightPower);
     } else if (type == "spot") {
         const auto fields =
             node.object({"type", "position", "direction", "power", "cone_angle_deg", "falloff_deg"});
         light.kind = LightDesc::Kind::Spot;
-        light.position = fields.member("position").vec3();
+        light.position = fields.member("position").vec3(kCoordinateRange);
         light.direction = readDirection(fields.member("direction"));
         light.power = fields.member("power").rgb(kLightPower);
         readSpotCone(fields, light);
@@ -229,10 +226,10 @@ ReceiverDesc readReceiver(const JsonReader& node, TracerDesc::Estimator estimato
     if (wavefront) receiver.filter = ReceiverDesc::Filter::None;
     node.member("type").oneOf({"plane"});
     const auto fields = node.object({"type", "point", "normal", "albedo", "size", "resolution", "bounce", "filter"});
-    receiver.point = fields.member("point").vec3();
+    receiver.point = fields.member("point").vec3(kCoordinateRange);
     receiver.normal = readDirection(fields.member("normal"));
     if (auto albedo = fields.optional("albedo")) receiver.albedo = albedo->rgb(NumberRange::closed(0.0, 1.0));
-    if (auto size = fields.optional("size")) receiver.size = size->number(kPositive);
+    if (auto size = fields.optional("size")) receiver.size = size->number(kLengthRange);
     if (auto resolution = fields.optional("resolution")) {
         receiver.resolution = static_cast<int>(resolution->integer(1, kMaxReceiverResolution));
     }
@@ -253,8 +250,8 @@ ReceiverDesc readReceiver(const JsonReader& node, TracerDesc::Estimator estimato
 CameraDesc readCamera(const JsonReader& node) {
     CameraDesc camera;
     const auto fields = node.object({"position", "target", "up", "fov_deg"});
-    if (auto position = fields.optional("position")) camera.position = position->vec3();
-    if (auto target = fields.optional("target")) camera.target = target->vec3();
+    if (auto position = fields.optional("position")) camera.position = position->vec3(kCoordinateRange);
+    if (auto target = fields.optional("target")) camera.target = target->vec3(kCoordinateRange);
     if (auto up = fields.optional("up")) camera.up = up->vec3();
     if (auto fov = fields.optional("fov_deg")) camera.fovDeg = fov->number(NumberRange::open(0.0, 180.0));
 
@@ -409,8 +406,8 @@ SimDesc::Obstacle readSimObstacle(const JsonReader& node) {
     } else {
         const auto fields = node.object({"type", "center", "radius"});
         obstacle.kind = SimDesc::Obstacle::Kind::Sphere;
-        obstacle.sphere.center = fields.member("center").vec3();
-        obstacle.sphere.radius = fields.member("radius").number(kPositive);
+        obstacle.sphere.center = fields.member("center").vec3(kCoordinateRange);
+        obstacle.sphere.radius = fields.member("radius").number(kLengthRange);
     }
     return obstacle;
 }
@@ -457,9 +454,9 @@ void readSimOptics(const JsonReader& node, SimDesc& sim) {
                                                                         : SimDesc::Mixing::LorentzLorenz;
     }
     Material dye;  // dye coefficients obey the same rule as a material's: σs <= κ per channel
-    if (auto v = fields.optional("dye_extinction")) dye.extinction = v->rgb(kNonNegative);
+    if (auto v = fields.optional("dye_extinction")) dye.extinction = v->rgb(kAttenuationRange);
     if (auto v = fields.optional("dye_scattering")) {
-        dye.scattering = v->rgb(kNonNegative);
+        dye.scattering = v->rgb(kAttenuationRange);
         for (int channel = 0; channel < 3; ++channel) {
             if (dye.scattering[channel] <= dye.extinction[channel]) continue;
             v->fail("dye_scattering <= dye_extinction " + formatVector(dye.extinction) + " in every channel",

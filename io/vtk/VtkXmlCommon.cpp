@@ -2,7 +2,10 @@
 
 #include "io/files/AtomicFile.h"
 
+#include <vtkCallbackCommand.h>
 #include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
+#include <vtkExecutive.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 
@@ -55,7 +58,17 @@ void writeVtkXmlAtomically(vtkXMLWriter& writer, VtkExportDesc::Compression comp
     // instead took ~745 ms instead of ~100 ms for an uncompressed 128³ frame.)
     const std::filesystem::path temporary = temporaryPathFor(path);
     writer.SetFileName(temporary.c_str());
-    commitTemporary(temporary, path, writer.Write() == 1 && writer.GetErrorCode() == 0);
+    // A failed write (a full disk, say) is eikon's to report, in one line:
+    // VTK's own error reports, the writer's and its pipeline's, are taken
+    // by an observer instead of going to stderr.
+    vtkNew<vtkCallbackCommand> swallow;
+    const unsigned long onWriter = writer.AddObserver(vtkCommand::ErrorEvent, swallow);
+    const unsigned long onPipeline = writer.GetExecutive()->AddObserver(vtkCommand::ErrorEvent, swallow);
+    const bool written = writer.Write() == 1 && writer.GetErrorCode() == 0;
+    writer.GetExecutive()->RemoveObserver(onPipeline);
+    writer.RemoveObserver(onWriter);
+    commitTemporary(temporary, path, written,
+                    written ? "" : vtkErrorCode::GetStringFromErrorCode(static_cast<int>(writer.GetErrorCode())));
 }
 
 }  // namespace eikon::io

@@ -128,7 +128,7 @@ TEST(SceneParserSim, BadValuesNameTheirJsonPath) {
         {"boundaries", json::object({{"y_max", "leaky"}}), "sim.boundaries.y_max", "one of"},
         {"boundaries", json::object({{"top", "open"}}), "sim.boundaries.top", "one of the keys"},
         {"obstacles", json::array({json::object({{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 0}})}),
-         "sim.obstacles[0].radius", "a number > 0"},
+         "sim.obstacles[0].radius", "a number in (0, 1000000000]"},
         {"sources", json::array({json::object({{"type", "jet"}, {"min", {0, 0, 0}}, {"max", {1, 0, 1}}, {"velocity", {0, 1, 0}}})}),
          "sim.sources[0].max[1]", "the bounds must not be empty"},
         {"sources", json::array({json::object({{"type", "hot_plate"}, {"min", {0, 0, 0}}, {"max", {1, 1, 1}}})}),

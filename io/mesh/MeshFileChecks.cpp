@@ -1,0 +1,318 @@
+#include "io/mesh/MeshFileChecks.h"
+
+#include "bridge/core/Error.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <iterator>
+#include <set>
+#include <vector>
+#include <sstream>
+
+namespace eikon::io {
+namespace {
+
+// OpenMesh's text readers parse numbers with iostreams, which fail on "nan"
+// and "inf" and then read zeros: such literals are found here, by line.
+void rejectNonFiniteLiterals(const std::string& path, const std::string& bytes) {
+    if (bytes.find('\0') != std::string::npos) return;  // binary: checked after reading
+    std::istringstream lines(bytes);
+    std::string line;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        std::istringstream tokens(line);
+        std::string token;
+        while (tokens >> token) {
+            std::string word = token;
+            std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return std::tolower(c); });
+            if (!word.empty() && (word[0] == '+' || word[0] == '-')) word.erase(0, 1);
+            if (word.rfind("nan", 0) == 0 || word.rfind("inf", 0) == 0)
+                throw InputError(path + ": line " + std::to_string(number), "finite vertex coordinates",
+                                 "\"" + token + "\"");
+        }
+    }
+}
+
+}  // namespace
+
+std::optional<std::size_t> dataLines(const std::string& extension, const std::string& bytes) {
+    const bool isText = bytes.find('\0') == std::string::npos;
+    if (!isText || (extension != ".off" && extension != ".ply")) return std::nullopt;
+    if (extension == ".ply" && bytes.find("format ascii") == std::string::npos) return std::nullopt;
+    std::istringstream lines(bytes);
+    std::string line;
+    std::size_t headerLines = extension == ".off" ? 2 : 0;  // "OFF" and the counts
+    bool inHeader = extension == ".ply";
+    std::size_t count = 0;
+    while (std::getline(lines, line)) {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        if (inHeader) {
+            inHeader = line.compare(first, 10, "end_header") != 0;
+        } else if (headerLines > 0) {
+            --headerLines;
+        } else {
+            ++count;
+        }
+    }
+    return count;
+}
+
+namespace {
+
+// The least room a declared vertex and face take after the header: as text
+// "0 0 0\n" and "3 0 1 2\n"; in binary PLY three 1-byte coordinates and a
+// 1-byte count with three 1-byte indices.
+struct ElementBytes {
+    std::size_t vertex, face;
+};
+constexpr ElementBytes kTextElement{6, 8}, kBinaryElement{3, 4};
+// A binary OFF vertex: three 32-bit floats; a face: a count and three indices.
+constexpr ElementBytes kBinaryOffElement{12, 16};
+
+// Where the data of a text OFF file start and the counts its header
+// declares ("OFF" and its variants, then V F E; '#' comments anywhere);
+// nullopt for a binary OFF or a header that does not parse.
+std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string& bytes, std::size_t& dataStart) {
+    std::size_t at = 0;
+    auto nextToken = [&]() -> std::string {
+        for (;;) {
+            while (at < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
+            if (at < bytes.size() && bytes[at] == '#') {
+                while (at < bytes.size() && bytes[at] != '\n') ++at;
+                continue;
+            }
+            break;
+        }
+        const std::size_t start = at;
+        while (at < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
+        return bytes.substr(start, at - start);
+    };
+    const std::string keyword = nextToken();
+    if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return std::nullopt;
+    std::array<unsigned long long, 3> counts{};
+    for (auto& count : counts) {
+        const std::string token = nextToken();
+        if (token == "BINARY" || token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
+            return std::nullopt;
+        count = std::stoull(token.substr(0, 19));
+    }
+    dataStart = at;
+    return counts;
+}
+
+// The counts of a binary OFF ("OFF BINARY", then V F E as 32-bit integers),
+// in the byte order OpenMesh 9 reads them: the machine's own, little-endian
+// on every machine eikon builds for (a big-endian file reads as nonsense
+// counts there, and is refused by them).
+std::optional<std::array<unsigned long long, 2>> binaryOffCounts(const std::string& bytes, std::size_t& dataStart) {
+    const std::size_t newline = bytes.find('\n');
+    if (newline == std::string::npos || bytes.compare(0, newline, "OFF BINARY") != 0 ||
+        bytes.size() < newline + 1 + 12)
+        return std::nullopt;
+    std::uint32_t counts[2] = {};
+    std::memcpy(counts, bytes.data() + newline + 1, sizeof counts);
+    dataStart = newline + 1 + 12;
+    return std::array<unsigned long long, 2>{counts[0], counts[1]};
+}
+
+// The same for a PLY header: its vertex and face element counts, and whether
+// its data are text.
+std::optional<std::array<unsigned long long, 2>> plyCounts(const std::string& bytes, std::size_t& dataStart,
+                                                           bool& text) {
+    const std::size_t end = bytes.find("end_header");
+    if (end == std::string::npos) return std::nullopt;
+    std::istringstream header(bytes.substr(0, end));
+    std::array<unsigned long long, 2> counts{};
+    std::string line;
+    text = false;
+    while (std::getline(header, line)) {
+        std::istringstream words(line);
+        std::string first, second;
+        unsigned long long count = 0;
+        words >> first >> second;
+        if (first == "format") text = second == "ascii";
+        if (first == "element" && (second == "vertex" || second == "face") && words >> count)
+            counts[second == "vertex" ? 0 : 1] = count;
+    }
+    const std::size_t newline = bytes.find('\n', end);
+    dataStart = newline == std::string::npos ? bytes.size() : newline + 1;
+    return counts;
+}
+
+// Counts an OFF or PLY header declares must fit in the file before any
+// reader allocates for them (a header declaring 2e9 faces would have
+// OpenMesh add faces past the end of the file for gigabytes).
+void checkDeclaredCountsFit(const std::string& path, const std::string& extension, const std::string& bytes) {
+    std::size_t dataStart = 0;
+    unsigned long long vertices = 0, faces = 0;
+    ElementBytes least = kTextElement;
+    if (extension == ".off") {
+        if (const auto counts = textOffCounts(bytes, dataStart)) {
+            vertices = (*counts)[0];
+            faces = (*counts)[1];
+        } else if (const auto binary = binaryOffCounts(bytes, dataStart)) {
+            vertices = (*binary)[0];
+            faces = (*binary)[1];
+            least = kBinaryOffElement;
+        } else {
+            return;
+        }
+    } else if (extension == ".ply") {
+        bool text = false;
+        const auto counts = plyCounts(bytes, dataStart, text);
+        if (!counts) return;
+        vertices = (*counts)[0];
+        faces = (*counts)[1];
+        if (!text) least = kBinaryElement;
+    } else {
+        return;
+    }
+    const unsigned long long room = bytes.size() - std::min(dataStart, bytes.size()) + 1;  // the last line may lack its newline
+    const long double needed = static_cast<long double>(vertices) * least.vertex + static_cast<long double>(faces) * least.face;
+    if (needed > static_cast<long double>(room))
+        throw InputError(path,
+                         "vertex and face counts its " + std::to_string(room - 1) + " bytes of data can hold (" +
+                             std::to_string(least.vertex) + " bytes a vertex, " + std::to_string(least.face) +
+                             " a face at least)",
+                         "a header declaring " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
+                             " faces (truncated, or wrong counts)");
+}
+
+// OpenMesh's OBJ reader drops a face whose vertex index does not parse as
+// an int (99999999999999999999, say) or points nowhere, without a word:
+// every face's vertex references are checked here first, by line. OBJ
+// indices count from 1, negative ones back from the latest vertex.
+void checkObjFaceIndices(const std::string& path, const std::string& bytes) {
+    std::istringstream lines(bytes);
+    std::string line;
+    long long vertices = 0;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        std::istringstream tokens(line);
+        std::string keyword;
+        tokens >> keyword;
+        if (keyword == "v") ++vertices;
+        if (keyword != "f") continue;
+        std::string corner;
+        while (tokens >> corner) {
+            const std::string index = corner.substr(0, corner.find('/'));
+            const bool digits = !index.empty() && index.size() <= 18 &&
+                                index.find_first_not_of("0123456789", index[0] == '-' ? 1 : 0) == std::string::npos &&
+                                index != "-";
+            const long long value = digits ? std::stoll(index) : 0;
+            if (!digits || value == 0 || value > vertices || value < -vertices)
+                throw InputError(path + ": line " + std::to_string(number),
+                                 "vertex indices from 1 to " + std::to_string(vertices) + " (or -1 to -" +
+                                     std::to_string(vertices) + "), the vertices defined so far",
+                                 "\"" + (index.size() > 40 ? index.substr(0, 40) + "…" : index) + "\"");
+        }
+    }
+}
+
+// OpenMesh 9's PLY header parser trusts its input: it reads lines until
+// "end_header" without stopping at the end of the file (a header cut short
+// loops forever), and a property before any element writes through a null
+// element (a crash). The header is checked here, line by line, against the
+// PLY grammar: "ply", one format line, then comments, obj_info, elements
+// (name and count) and their properties (a type and name, or "list" with
+// two types and a name), up to "end_header".
+void checkPlyHeader(const std::string& path, const std::string& bytes) {
+    static const std::set<std::string> types{"char",  "uchar",  "short",   "ushort",  "int",   "uint",
+                                             "float", "double", "int8",    "uint8",   "int16", "uint16",
+                                             "int32", "uint32", "float32", "float64"};
+    std::istringstream lines(bytes);
+    std::string line;
+    bool elements = false;
+    for (int number = 1; std::getline(lines, line); ++number) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line);
+        std::vector<std::string> word{std::istream_iterator<std::string>(words), {}};
+        const std::string where = path + ": line " + std::to_string(number);
+        const auto refuse = [&](const std::string& expected) {
+            throw InputError(where, expected, "\"" + (line.size() > 60 ? line.substr(0, 60) + "…" : line) + "\"");
+        };
+        if (number == 1) {
+            if (line != "ply") refuse("\"ply\", the magic line of a PLY file");
+            continue;
+        }
+        if (number == 2) {
+            if (word.size() != 3 || word[0] != "format" ||
+                (word[1] != "ascii" && word[1] != "binary_little_endian" && word[1] != "binary_big_endian"))
+                refuse("a format line (\"format ascii 1.0\", binary_little_endian or binary_big_endian)");
+            continue;
+        }
+        if (word.empty()) refuse("a PLY header line, not an empty one");
+        if (word[0] == "comment" || word[0] == "obj_info") continue;
+        if (word[0] == "end_header") {
+            if (word.size() != 1) refuse("end_header alone on its line");
+            return;
+        }
+        if (word[0] == "element") {
+            if (word.size() != 3 || word[2].find_first_not_of("0123456789") != std::string::npos || word[2].size() > 10)
+                refuse("\"element NAME COUNT\" with a count below 10^10");
+            elements = true;
+            continue;
+        }
+        if (word[0] == "property") {
+            if (!elements) refuse("an element line before the first property");
+            const bool list = word.size() == 5 && word[1] == "list" && types.count(word[2]) && types.count(word[3]);
+            if (!list && !(word.size() == 3 && types.count(word[1])))
+                refuse("\"property TYPE NAME\" or \"property list TYPE TYPE NAME\" with PLY's types");
+            continue;
+        }
+        refuse("a PLY header line (comment, obj_info, element, property or end_header)");
+    }
+    throw InputError(path, "a PLY header ending in an end_header line", "none (truncated, or not a PLY file)");
+}
+
+// A binary STL: an 80-byte header, a 32-bit triangle count, then 50 bytes a
+// triangle (normal, three corners as 32-bit floats, 2 attribute bytes) —
+// the size OpenMesh tells it from ASCII by.
+bool isBinaryStl(const std::string& bytes) {
+    if (bytes.size() < 84) return false;
+    std::uint32_t triangles = 0;
+    std::memcpy(&triangles, bytes.data() + 80, sizeof triangles);
+    return bytes.size() == 84 + 50ull * triangles;
+}
+
+// OpenMesh merges STL corners by position, and a NaN corner compares equal
+// to some other: it vanishes instead of being refused. Every corner
+// coordinate is checked here, by triangle.
+void rejectNonFiniteStlCorners(const std::string& path, const std::string& bytes) {
+    const std::size_t triangles = (bytes.size() - 84) / 50;
+    for (std::size_t t = 0; t < triangles; ++t)
+        for (int c = 3; c < 12; ++c) {  // floats 0–2 are the normal, which is not read
+            float value = 0.0f;
+            std::memcpy(&value, bytes.data() + 84 + 50 * t + 4 * c, sizeof value);
+            if (!std::isfinite(value))
+                throw InputError(path + ": triangle " + std::to_string(t), "finite corner coordinates",
+                                 std::to_string(value));
+        }
+}
+
+// An ASCII STL ends with "endsolid": without it the file was cut short,
+// though OpenMesh reads the facets before the cut as a whole mesh.
+void requireStlEnd(const std::string& path, const std::string& bytes) {
+    const std::size_t last = bytes.rfind("endsolid");
+    if (last == std::string::npos || bytes.find_first_not_of(" \t\r\n", bytes.find('\n', last)) != std::string::npos)
+        throw InputError(path, "an ASCII STL file ending in an endsolid line", "none (truncated)");
+}
+
+}  // namespace
+
+void checkMeshFileBytes(const std::string& path, const std::string& extension, const std::string& bytes) {
+    if (extension == ".ply") checkPlyHeader(path, bytes);
+    checkDeclaredCountsFit(path, extension, bytes);
+    if (extension == ".obj") checkObjFaceIndices(path, bytes);
+    if (extension == ".stl" && isBinaryStl(bytes)) {
+        rejectNonFiniteStlCorners(path, bytes);
+        return;
+    }
+    if (extension == ".stl") requireStlEnd(path, bytes);
+    rejectNonFiniteLiterals(path, bytes);
+}
+
+}  // namespace eikon::io
