@@ -5,6 +5,8 @@
 #                   then build the tests labelled "sanitize" (robustness and
 #                   stability suites) under AddressSanitizer + UBSan and run them
 #   ./dev.sh debug-test   every test under AddressSanitizer + UBSan
+#   ./dev.sh fuzz [SECONDS]   build the libFuzzer targets (clang, ASan + UBSan) and
+#                   run each for SECONDS (default 20); fails on any crash, leak or timeout
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -34,6 +36,37 @@ build() {
 # llvmpipe uses every core unless told otherwise; keep it to what we have.
 export LP_NUM_THREADS="${LP_NUM_THREADS:-$(nproc)}"
 
+# Each fuzzer's seeds: the project's own scenes and meshes, and the hostile
+# corpus's files of its kind. What a run finds worth keeping goes to
+# build/fuzz/corpus/<target>; a crashing input to build/fuzz/findings/.
+fuzz_seeds() {
+    case "$1" in
+        fuzz_scene) echo scenes tests/hostile/scenes ;;
+        fuzz_mesh_*) echo scenes/meshes tests/hostile/files/meshes ;;
+        fuzz_vdb) echo tests/hostile/files/vdb ;;
+        fuzz_image) echo tests/hostile/files/images tests/data ;;
+    esac
+}
+
+run_fuzzers() {
+    local seconds=$1
+    [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "dev.sh: fuzz takes a whole number of seconds, not '$seconds'" >&2; exit 2; }
+    build fuzz
+    local target corpus
+    for target in fuzz_scene fuzz_mesh_obj fuzz_mesh_ply fuzz_mesh_off fuzz_mesh_stl fuzz_vdb fuzz_image; do
+        corpus=build/fuzz/corpus/$target
+        mkdir -p "$corpus" build/fuzz/findings
+        echo "dev.sh: $target for ${seconds} s" >&2
+        # shellcheck disable=SC2046  # the seed folders are separate arguments
+        ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+            "build/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+            -print_final_stats=1 -artifact_prefix="build/fuzz/findings/$target-" "$corpus" $(fuzz_seeds "$target") \
+            2> "build/fuzz/$target.log" || { tail -n 60 "build/fuzz/$target.log" >&2; exit 1; }
+        grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|cov: " \
+            "build/fuzz/$target.log" | tail -n 5 >&2
+    done
+}
+
 case "${1:-}" in
     run)
         install_packages
@@ -50,13 +83,17 @@ case "${1:-}" in
         cmake --build --preset debug --target eikon_sanitize_tests
         ctest --preset debug -L sanitize -j "$(nproc)"
         ;;
+    fuzz)
+        install_packages
+        run_fuzzers "${2:-20}"
+        ;;
     debug-test)
         install_packages
         build debug
         ctest --preset debug -j "$(nproc)"
         ;;
     *)
-        echo "usage: ./dev.sh run | test | debug-test" >&2
+        echo "usage: ./dev.sh run | test | debug-test | fuzz [SECONDS]" >&2
         exit 2
         ;;
 esac
