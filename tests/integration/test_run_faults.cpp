@@ -1,0 +1,246 @@
+// Faults of the environment during a run that exports every frame (VTK
+// ImageData and PolyData, OpenVDB, PNG): `kill -9` at 20 random moments, a
+// file system that fills up, a read-only one. Whatever happens, every file
+// left under a final name loads completely and the .pvd and .series indexes
+// list only such files; a fault eikon sees is exit code 1 with a message.
+#include "bridge/core/Error.h"
+#include "io/image/ImageIo.h"
+#include "io/vdb/VdbVolumeFile.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include <sched.h>
+#include <signal.h>
+#include <sys/mount.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <regex>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+bool isTemporary(const fs::path& path) { return path.filename().string().find(".tmp") != std::string::npos; }
+
+// A VTK XML file read back whole: no error event, and every array as long as
+// the points or cells it belongs to.
+template <typename Reader>
+void expectWholeVtk(const fs::path& path) {
+    vtkNew<Reader> reader;
+    bool failed = false;
+    vtkNew<vtkCallbackCommand> onError;
+    onError->SetClientData(&failed);
+    onError->SetCallback([](vtkObject*, unsigned long, void* failedFlag, void*) { *static_cast<bool*>(failedFlag) = true; });
+    reader->AddObserver(vtkCommand::ErrorEvent, onError);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    ASSERT_FALSE(failed) << path << " does not read back";
+    vtkDataSet* data = reader->GetOutputAsDataSet();
+    ASSERT_NE(data, nullptr) << path;
+    for (int a = 0; a < data->GetPointData()->GetNumberOfArrays(); ++a)
+        EXPECT_EQ(data->GetPointData()->GetArray(a)->GetNumberOfTuples(), data->GetNumberOfPoints()) << path;
+    for (int a = 0; a < data->GetCellData()->GetNumberOfArrays(); ++a)
+        EXPECT_EQ(data->GetCellData()->GetArray(a)->GetNumberOfTuples(), data->GetNumberOfCells()) << path;
+}
+
+void expectIndexListsWholeFiles(const fs::path& index, const std::vector<std::string>& listed) {
+    for (const std::string& name : listed) {
+        const fs::path file = index.parent_path() / name;
+        EXPECT_TRUE(fs::is_regular_file(file)) << index << " lists " << name << ", which is not there";
+        EXPECT_FALSE(isTemporary(file)) << index << " lists a temporary";
+    }
+}
+
+// Every file of a run's output folder under a final name, checked by reading
+// it as its kind; returns how many there were.
+int expectWholeOutput(const fs::path& out) {
+    int files = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(out)) {
+        const fs::path& path = entry.path();
+        if (!entry.is_regular_file() || isTemporary(path)) continue;
+        ++files;
+        const std::string extension = path.extension().string();
+        SCOPED_TRACE(path.string());
+        if (extension == ".vti") {
+            expectWholeVtk<vtkXMLImageDataReader>(path);
+        } else if (extension == ".vtp") {
+            expectWholeVtk<vtkXMLPolyDataReader>(path);
+        } else if (extension == ".vdb") {
+            EXPECT_NO_THROW({
+                const eikon::io::VdbVolumeFile file(path);
+                EXPECT_FALSE(file.gridNames().empty());
+            });
+        } else if (extension == ".png") {
+            EXPECT_NO_THROW(eikon::io::readImage(path));
+        } else if (extension == ".pvd") {
+            const std::string text = readText(path);
+            std::vector<std::string> listed;
+            const std::regex fileAttribute("file=\"([^\"]+)\"");
+            for (auto match = std::sregex_iterator(text.begin(), text.end(), fileAttribute); match != std::sregex_iterator();
+                 ++match)
+                listed.push_back((*match)[1]);
+            EXPECT_NE(text.find("</VTKFile>"), std::string::npos) << "a cut-off collection";
+            expectIndexListsWholeFiles(path, listed);
+        } else if (extension == ".series") {
+            std::vector<std::string> listed;
+            const nlohmann::json series = nlohmann::json::parse(readText(path));
+            for (const auto& file : series.at("files")) listed.push_back(file.at("name"));
+            expectIndexListsWholeFiles(path, listed);
+        } else if (path.filename() == "report.jsonl") {
+            std::ifstream lines(path);
+            for (std::string line; std::getline(lines, line);) EXPECT_NO_THROW(nlohmann::json::parse(line)) << line;
+        }
+    }
+    return files;
+}
+
+struct RunResult {
+    int status = 0;
+    std::string output;
+};
+
+// `eikon run` of the heat-shimmer scene exporting VTK and OpenVDB every
+// frame, its stderr to `log`.
+pid_t startExportingRun(const fs::path& out, int frames, const fs::path& log) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string framesArgument = std::to_string(frames);
+    const pid_t child = fork();
+    if (child == 0) {
+        FILE* redirected = std::freopen(log.c_str(), "w", stderr);
+        (void)redirected;
+        execl(EIKON_EXECUTABLE, EIKON_EXECUTABLE, "run", scene.c_str(), "--out", out.c_str(), "--frames",
+              framesArgument.c_str(), "--quiet", "--vtk", "--set", "export.vdb.enabled=true", "--set",
+              "render.width=64", "--set", "render.height=48", "--set", "render.photons=4096",
+              static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    return child;
+}
+
+RunResult finish(pid_t child, const fs::path& log) {
+    RunResult result;
+    waitpid(child, &result.status, 0);
+    result.output = readText(log);
+    return result;
+}
+
+class RunFaults : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        dir_ = fs::temp_directory_path() / ("eikon_faults_" + name);
+        log_ = fs::temp_directory_path() / ("eikon_faults_" + name + ".log");  // outside any small file system
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        umount2(dir_.c_str(), MNT_DETACH);
+        fs::remove_all(dir_);
+        fs::remove(log_);
+    }
+    // A private tmpfs of `bytes` over the test's folder, gone with the test
+    // process (its own mount namespace). False where the test may not mount.
+    bool mountSmallFileSystem(const std::string& bytes, bool readOnly) {
+        if (unshare(CLONE_NEWNS) != 0) return false;
+        if (mount("none", "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0) return false;
+        const std::string options = "size=" + bytes;
+        if (mount("tmpfs", dir_.c_str(), "tmpfs", readOnly ? MS_RDONLY : 0, options.c_str()) != 0) return false;
+        return true;
+    }
+    fs::path dir_, log_;
+};
+
+// SIGKILL cannot be caught: what it leaves must still be whole wherever a
+// file has its final name, since every file is written to a temporary and
+// renamed. 20 moments drawn uniformly over an uninterrupted run's duration.
+TEST_F(RunFaults, KillNineAtTwentyRandomMomentsLeavesOnlyWholeFiles) {
+    constexpr int kFrames = 10;
+    const fs::path reference = dir_ / "whole";
+    const auto started = std::chrono::steady_clock::now();
+    const RunResult whole = finish(startExportingRun(reference, kFrames, log_), log_);
+    const double duration = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    ASSERT_TRUE(WIFEXITED(whole.status) && WEXITSTATUS(whole.status) == 0) << whole.output;
+    const int wholeFiles = expectWholeOutput(reference);
+    EXPECT_GT(wholeFiles, 4 * kFrames);
+
+    std::mt19937 random(20261202u);
+    std::uniform_real_distribution<double> moment(0.0, duration);
+    int killedMidway = 0;
+    for (int trial = 0; trial < 20; ++trial) {
+        const fs::path out = dir_ / ("killed_" + std::to_string(trial));
+        const pid_t child = startExportingRun(out, kFrames, log_);
+        std::this_thread::sleep_for(std::chrono::duration<double>(moment(random)));
+        kill(child, SIGKILL);
+        const RunResult killed = finish(child, log_);
+        killedMidway += WIFSIGNALED(killed.status) ? 1 : 0;
+        SCOPED_TRACE("trial " + std::to_string(trial));
+        if (fs::exists(out)) expectWholeOutput(out);
+    }
+    EXPECT_GE(killedMidway, 15) << "most kills should land before the run ends";
+
+    // A later run clears what the kill left, temporaries included.
+    const fs::path last = dir_ / "killed_19";
+    if (fs::exists(last)) {
+        const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+        const std::string command = std::string(EIKON_EXECUTABLE) + " run " + scene + " --out " + last.string() +
+                                    " --frames 1 --quiet --force --set render.width=64 --set render.height=48"
+                                    " --set render.photons=4096 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0);
+        for (const auto& entry : fs::recursive_directory_iterator(last)) EXPECT_FALSE(isTemporary(entry.path()));
+    }
+}
+
+// The file system fills up partway: eikon stops with exit code 1 (the
+// environment, not the input), names what it could not write, removes its
+// temporary, and what it wrote before stays whole and indexed.
+TEST_F(RunFaults, FullFileSystemStopsTheRunAndKeepsWhatIsWhole) {
+    if (!mountSmallFileSystem("1500k", false)) GTEST_SKIP() << "no permission to mount a tmpfs here";
+    const fs::path out = dir_ / "run";
+    const RunResult full = finish(startExportingRun(out, 60, log_), log_);
+    ASSERT_TRUE(WIFEXITED(full.status)) << full.output;
+    EXPECT_EQ(WEXITSTATUS(full.status), 1) << full.output;
+    EXPECT_EQ(full.output.rfind("eikon: error: ", 0), 0u) << full.output;
+    EXPECT_NE(full.output.find(out.string()), std::string::npos) << "names the file: " << full.output;
+    EXPECT_GT(expectWholeOutput(out), 4);
+    for (const auto& entry : fs::recursive_directory_iterator(out)) EXPECT_FALSE(isTemporary(entry.path()));
+}
+
+// A read-only file system: exit code 1 with a message naming the folder,
+// and nothing written.
+TEST_F(RunFaults, ReadOnlyFileSystemIsRefusedBeforeAnyFrame) {
+    if (!mountSmallFileSystem("1m", true)) GTEST_SKIP() << "no permission to mount a tmpfs here";
+    const fs::path out = dir_ / "run";
+    const RunResult refused = finish(startExportingRun(out, 2, log_), log_);
+    ASSERT_TRUE(WIFEXITED(refused.status)) << refused.output;
+    EXPECT_EQ(WEXITSTATUS(refused.status), 1) << refused.output;
+    EXPECT_EQ(refused.output.rfind("eikon: error: ", 0), 0u) << refused.output;
+    EXPECT_NE(refused.output.find(out.string()), std::string::npos) << refused.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
