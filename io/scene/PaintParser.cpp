@@ -26,13 +26,13 @@ PaintStroke readPaintStroke(const JsonReader& node) {
     if (auto brush = fields.optional("brush")) stroke.brush = readBrush(*brush);
     if (auto where = fields.optional("where")) stroke.where = readWhere(*where);
     const JsonReader path = fields.member("path");
-    for (const JsonReader& point : path.array()) stroke.path.push_back(point.vec3());
+    for (const JsonReader& point : path.array()) stroke.path.push_back(point.vec3(kCoordinateRange));
     if (stroke.path.empty()) path.fail("an array of at least one point [x, y, z]", "an empty array");
-    stroke.radius = fields.member("radius").number(NumberRange::above(0.0));
+    stroke.radius = fields.member("radius").number(kLengthRange);
     if (auto index = fields.optional("index")) stroke.index = index->number();
-    if (auto extinction = fields.optional("extinction")) stroke.extinction = extinction->rgb(NumberRange::atLeast(0.0));
+    if (auto extinction = fields.optional("extinction")) stroke.extinction = extinction->rgb(kAttenuationRange);
     if (auto scattering = fields.optional("scattering")) {
-        stroke.scattering = scattering->rgb(NumberRange::atLeast(0.0));
+        stroke.scattering = scattering->rgb(kAttenuationRange);
         for (int channel = 0; channel < 3; ++channel)
             if (stroke.scattering[channel] > stroke.extinction[channel])
                 scattering->fail("scattering <= the stroke's extinction in every channel",
