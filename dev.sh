@@ -37,14 +37,15 @@ build() {
 export LP_NUM_THREADS="${LP_NUM_THREADS:-$(nproc)}"
 
 # Each fuzzer's seeds: the project's own scenes and meshes, and the hostile
-# corpus's files of its kind. What a run finds worth keeping goes to
+# corpus's files of its kind, and what the fuzzers found before
+# (tests/hostile/found, each a regression). What a run finds worth keeping goes to
 # build/fuzz/corpus/<target>; a crashing input to build/fuzz/findings/.
 fuzz_seeds() {
     case "$1" in
         fuzz_scene) echo scenes tests/hostile/scenes ;;
-        fuzz_mesh_*) echo scenes/meshes tests/hostile/files/meshes ;;
-        fuzz_vdb) echo tests/hostile/files/vdb ;;
-        fuzz_image) echo tests/hostile/files/images tests/data ;;
+        fuzz_mesh_*) echo scenes/meshes tests/hostile/files/meshes tests/hostile/found ;;
+        fuzz_vdb) echo tests/hostile/files/vdb tests/hostile/found ;;
+        fuzz_image) echo tests/hostile/files/images tests/data tests/hostile/found ;;
     esac
 }
 

@@ -8,7 +8,8 @@ format, environment maps, OpenVDB volumes). tests/hostile/cases.jsonl gives
 per case the exit code it must end in and, for a refusal (exit 2), text its
 one-line message must contain: the file and the JSON path or line at fault.
 test_hostile_corpus runs them all and checks, besides, that a refused case
-writes nothing. The same files seed the fuzzers (./dev.sh fuzz).
+writes nothing. The same files seed the fuzzers (./dev.sh fuzz), and what
+the fuzzers find goes into tests/hostile/found, one case each.
 
 The expectations are this script's, stated from the file formats and
 docs/scene-format.md, never read back from eikon.
@@ -529,6 +530,30 @@ def vdb_cases(eikon, kept):
     add_case("vdb_missing_sequence", scene_text(scene), 2, "smoke_")
 
 
+# --- what the fuzzers found ---------------------------------------------------
+
+FOUND = HOSTILE / "found"  # committed as found (tests/fuzz), never rewritten here
+
+
+def found_cases():
+    """Each file the fuzzers found a crash, hang or leak with: refused, naming it."""
+    for path in sorted(FOUND.iterdir()):
+        relative = "../found/" + path.name
+        if path.suffix in (".obj", ".ply", ".off", ".stl"):
+            scene = mesh_scene(path.name)
+            scene["objects"][0]["mesh"]["path"] = relative
+        elif path.suffix in (".hdr", ".png"):
+            scene = environment_scene(path.name)
+            scene["render"]["environment"]["path"] = relative
+        elif path.suffix == ".vdb":
+            scene = volume_scene(path.name)
+            scene["volume"]["path"] = relative
+            scene["volume"]["grids"] = {"density": "index", "temperature": "delta_index"}  # both grids read
+        else:
+            raise ValueError(path.name + ": a found file of a kind no scene reads")
+        add_case("found_" + path.stem, scene_text(scene), 2, path.name)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--eikon", help="the eikon executable, to write the OpenVDB seed")
@@ -549,6 +574,7 @@ def main():
     mesh_cases()
     image_cases()
     vdb_cases(arguments.eikon, kept_vdb)
+    found_cases()
     with open(HOSTILE / "cases.jsonl", "w") as out:
         for case in cases:
             out.write(json.dumps(case) + "\n")

@@ -20,12 +20,35 @@ void appendToString(void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 
-// Loads with stb_image as 4 channels of T (stbi_uc or float) and copies them out.
+// An image file's bytes, checked before stb_image decodes them: at most
+// 2 GiB; a Radiance file walked through to its last scanline (stb loops
+// forever on some truncated ones: RadianceCheck.h); and a size stb can
+// decode without allocating gigabytes for a header that lies (every image
+// kind declares its size first).
+std::string checkedImageBytes(const std::filesystem::path& path, const char* expected) {
+    std::string bytes = readFileBytes(path, expected);
+    if (bytes.size() > 0x7fffffff)
+        throw InputError(path.string(), "an image file below 2 GiB", std::to_string(bytes.size()) + " bytes");
+    if (isRadiance(bytes)) checkRadiance(bytes, path.string());
+    int width = 0, height = 0, channels = 0;
+    if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width,
+                              &height, &channels) &&
+        (width > kMaxImageSide || height > kMaxImageSide ||
+         static_cast<long long>(width) * height > kMaxImagePixels))
+        throw InputError(path.string(),
+                         "an image of at most " + std::to_string(kMaxImageSide) + " pixels a side and " +
+                             std::to_string(kMaxImagePixels) + " pixels",
+                         std::to_string(width) + " × " + std::to_string(height) + " pixels");
+    return bytes;
+}
+
+// Decodes with stb_image as 4 channels of T (stbi_uc or float) and copies them out.
 template <typename T, typename Loader>
-std::vector<T> loadRgba(const std::filesystem::path& path, int& width, int& height, const char* expected,
-                        Loader load) {
+std::vector<T> loadRgba(const std::filesystem::path& path, const std::string& bytes, int& width, int& height,
+                        const char* expected, Loader load) {
     int channels = 0;
-    T* pixels = load(path.c_str(), &width, &height, &channels, 4);
+    T* pixels = load(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width, &height,
+                     &channels, 4);
     if (!pixels) throw InputError(path.string(), expected, stbi_failure_reason());
     std::vector<T> rgba(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     stbi_image_free(pixels);
@@ -51,22 +74,18 @@ void writeHdr(const std::filesystem::path& path, int width, int height, const st
 }
 
 FloatImage readFloatImage(const std::filesystem::path& path) {
-    const std::string bytes = readFileBytes(path, "a readable Radiance .hdr (or PNG/JPEG) image");
-    if (bytes.size() > 0x7fffffff) throw InputError(path.string(), "an image file below 2 GiB", std::to_string(bytes.size()) + " bytes");
-    if (isRadiance(bytes)) checkRadiance(bytes, path.string());
+    constexpr const char* kExpected = "a readable Radiance .hdr (or PNG/JPEG) image";
+    const std::string bytes = checkedImageBytes(path, kExpected);
     FloatImage image;
-    image.rgba = loadRgba<float>(path, image.width, image.height, "a readable Radiance .hdr (or PNG/JPEG) image",
-                                 [&](const char*, int* w, int* h, int* channels, int wanted) {
-                                     return stbi_loadf_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
-                                                                   static_cast<int>(bytes.size()), w, h, channels,
-                                                                   wanted);
-                                 });
+    image.rgba = loadRgba<float>(path, bytes, image.width, image.height, kExpected, stbi_loadf_from_memory);
     return image;
 }
 
 Rgba8Image readImage(const std::filesystem::path& path) {
+    constexpr const char* kExpected = "a readable PNG, JPEG or HDR image";
+    const std::string bytes = checkedImageBytes(path, kExpected);
     Rgba8Image image;
-    image.rgba = loadRgba<stbi_uc>(path, image.width, image.height, "a readable PNG, JPEG or HDR image", stbi_load);
+    image.rgba = loadRgba<stbi_uc>(path, bytes, image.width, image.height, kExpected, stbi_load_from_memory);
     return image;
 }
 

@@ -12,12 +12,18 @@ namespace eikon::io {
 // rgba: width·height·4 bytes, row 0 at the top.
 void writePng(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba);
 
+// The largest image the readers decode: a float RGBA copy of 2^27 pixels
+// takes 2 GiB, and the GPU's textures are smaller still.
+inline constexpr int kMaxImageSide = 32768;
+inline constexpr long long kMaxImagePixels = 1ll << 27;
+
 struct Rgba8Image {
     int width = 0, height = 0;
     std::vector<std::uint8_t> rgba;
 };
 
-// Throws InputError naming the path when the file cannot be read as an image.
+// Throws InputError naming the path when the file cannot be read as an
+// image (checked as readFloatImage's are).
 Rgba8Image readImage(const std::filesystem::path& path);
 
 // Linear radiance as Radiance .hdr (RGBE), written atomically; rgba has

@@ -119,6 +119,25 @@ std::optional<std::array<unsigned long long, 2>> binaryOffCounts(const std::stri
     return std::array<unsigned long long, 2>{counts[0], counts[1]};
 }
 
+// Walks a binary OFF's faces (a 32-bit corner count, then the corners'
+// indices) as OpenMesh will read them: it loops over a count read from a
+// float or past the end of the file (a billion corners) without checking.
+// Each count must be 3 or more and fit in the bytes left.
+void checkBinaryOffFaces(const std::string& path, const std::string& bytes, std::size_t dataStart,
+                         unsigned long long vertices, unsigned long long faces) {
+    std::size_t at = dataStart + static_cast<std::size_t>(std::min<unsigned long long>(vertices * 12, bytes.size()));
+    for (unsigned long long face = 0; face < faces; ++face) {
+        std::uint32_t corners = 0;
+        if (at + 4 <= bytes.size()) std::memcpy(&corners, bytes.data() + at, sizeof corners);
+        if (at + 4 > bytes.size() || corners < 3 || corners > (bytes.size() - at - 4) / 4)
+            throw InputError(path + ": face " + std::to_string(face),
+                             "a corner count of 3 or more whose indices the file holds",
+                             at + 4 > bytes.size() ? std::string("the end of the file (truncated)")
+                                                   : std::to_string(corners) + " corners");
+        at += 4 + 4 * static_cast<std::size_t>(corners);
+    }
+}
+
 // The same for a PLY header: its vertex and face element counts, and whether
 // its data are text.
 std::optional<std::array<unsigned long long, 2>> plyCounts(const std::string& bytes, std::size_t& dataStart,
@@ -150,6 +169,7 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
     std::size_t dataStart = 0;
     unsigned long long vertices = 0, faces = 0;
     ElementBytes least = kTextElement;
+    bool binaryOff = false;
     if (extension == ".off") {
         if (const auto counts = textOffCounts(bytes, dataStart)) {
             vertices = (*counts)[0];
@@ -158,6 +178,7 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
             vertices = (*binary)[0];
             faces = (*binary)[1];
             least = kBinaryOffElement;
+            binaryOff = true;
         } else {
             return;
         }
@@ -180,6 +201,7 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
                              " a face at least)",
                          "a header declaring " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
                              " faces (truncated, or wrong counts)");
+    if (binaryOff) checkBinaryOffFaces(path, bytes, dataStart, vertices, faces);
 }
 
 // OpenMesh's OBJ reader drops a face whose vertex index does not parse as
@@ -239,9 +261,9 @@ void checkPlyHeader(const std::string& path, const std::string& bytes) {
             continue;
         }
         if (number == 2) {
-            if (word.size() != 3 || word[0] != "format" ||
+            if (word.size() != 3 || word[0] != "format" || word[2] != "1.0" ||
                 (word[1] != "ascii" && word[1] != "binary_little_endian" && word[1] != "binary_big_endian"))
-                refuse("a format line (\"format ascii 1.0\", binary_little_endian or binary_big_endian)");
+                refuse("a format line (\"format ascii 1.0\", binary_little_endian or binary_big_endian, version 1.0)");
             continue;
         }
         if (word.empty()) refuse("a PLY header line, not an empty one");
@@ -251,8 +273,9 @@ void checkPlyHeader(const std::string& path, const std::string& bytes) {
             return;
         }
         if (word[0] == "element") {
-            if (word.size() != 3 || word[2].find_first_not_of("0123456789") != std::string::npos || word[2].size() > 10)
-                refuse("\"element NAME COUNT\" with a count below 10^10");
+            // OpenMesh reads the count as a 32-bit int: a longer one fails its stream, and it loops.
+            if (word.size() != 3 || word[2].find_first_not_of("0123456789") != std::string::npos || word[2].size() > 9)
+                refuse("\"element NAME COUNT\" with a count below 10^9");
             elements = true;
             continue;
         }

@@ -14,6 +14,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -73,12 +74,19 @@ public:
 
 // Silences OpenMesh's complaints on std::cerr while it reads: every defect
 // it would print is reported through InputError instead.
+// (Its PLY reader writes some to std::cerr directly, which is silenced too.)
 class QuietOpenMesh {
 public:
-    QuietOpenMesh() { omerr().disable(); }
-    ~QuietOpenMesh() { omerr().enable(); }
+    QuietOpenMesh() : cerr_(std::cerr.rdbuf(nullptr)) { omerr().disable(); }
+    ~QuietOpenMesh() {
+        omerr().enable();
+        std::cerr.rdbuf(cerr_);
+    }
     QuietOpenMesh(const QuietOpenMesh&) = delete;
     QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
+
+private:
+    std::streambuf* cerr_;
 };
 
 TriangleMesh triangulate(const std::string& path, const RecordingImporter& importer) {

@@ -4,6 +4,9 @@
 
 #include <openvdb/Metadata.h>
 
+#include <blosc.h>
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -11,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <vector>
 
 namespace eikon::io {
 namespace {
@@ -206,6 +210,39 @@ bool bitOn(Mask mask, std::size_t index) {
     return (static_cast<unsigned char>(mask[index / 8]) >> (index % 8)) & 1u;
 }
 
+// A blosc chunk whose header fits (checkBloscHeader) decompresses to the
+// bytes it claims, as io::bloscFromStream requires: OpenVDB throws from
+// inside a grid's read otherwise, and leaks the nodes it had made (found by
+// fuzz_vdb).
+void checkBloscChunk(Cursor& cursor, std::string_view chunk, std::size_t rawBytes) {
+    checkBloscHeader(cursor, chunk.size(), rawBytes);
+    std::uint32_t claimed = 0;
+    std::memcpy(&claimed, chunk.data() + 4, 4);
+    // A node without stored values is a chunk of no bytes: OpenVDB has no
+    // room to decompress more into.
+    if (rawBytes == 0 && claimed != 0)
+        cursor.fail("a blosc chunk of no bytes for a node without stored values", std::to_string(claimed) + " bytes");
+    std::vector<char> decompressed(std::max<std::size_t>(claimed, 1));
+    const int result = blosc_decompress_ctx(chunk.data(), decompressed.data(), claimed, 1);
+    if (result < 0 || static_cast<std::uint32_t>(result) != claimed)
+        cursor.fail("a blosc chunk decompressing to the " + std::to_string(claimed) + " bytes its header claims",
+                    result < 0 ? "blosc error " + std::to_string(result) : std::to_string(result) + " bytes");
+}
+
+// A zip chunk inflates to exactly the node's bytes, as io::unzipFromStream
+// requires (zlib's uncompress, as it calls it): OpenVDB throws from inside
+// a grid's read otherwise, and leaks the nodes it had made (found by fuzz_vdb).
+void checkZipChunk(Cursor& cursor, std::string_view chunk, std::size_t rawBytes) {
+    std::vector<Bytef> inflated(std::max<std::size_t>(rawBytes, 1));
+    uLongf inflatedBytes = static_cast<uLongf>(rawBytes);
+    const int result = uncompress(inflated.data(), &inflatedBytes, reinterpret_cast<const Bytef*>(chunk.data()),
+                                  static_cast<uLong>(chunk.size()));
+    if (result != Z_OK || inflatedBytes != rawBytes)
+        cursor.fail("a zip chunk of " + std::to_string(chunk.size()) + " bytes inflating to exactly " +
+                        std::to_string(rawBytes) + " bytes",
+                    result == Z_OK ? std::to_string(inflatedBytes) + " bytes" : std::string("zlib error ") + zError(result));
+}
+
 // One compressed chunk (readZipData/readBloscData): an int64 size, negative
 // (or zero) for raw bytes, which must then be exactly the buffer's size.
 void checkChunk(Cursor& cursor, std::size_t rawBytes, bool blosc) {
@@ -218,7 +255,8 @@ void checkChunk(Cursor& cursor, std::size_t rawBytes, bool blosc) {
     } else {
         if (static_cast<std::uint64_t>(size) > cursor.remaining())
             cursor.fail("a compressed chunk within the grid", std::to_string(size) + " bytes");
-        if (blosc) checkBloscHeader(cursor, static_cast<std::size_t>(size), rawBytes);
+        if (blosc) checkBloscChunk(cursor, cursor.peek(static_cast<std::size_t>(size), "a blosc chunk"), rawBytes);
+        else checkZipChunk(cursor, cursor.peek(static_cast<std::size_t>(size), "a zip chunk"), rawBytes);
         cursor.skip(static_cast<std::size_t>(size), "a compressed chunk");
     }
 }

