@@ -18,7 +18,9 @@
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
 //   EIKON_LOOP_BUDGET      loop iterations a photon may run where the driver caps them
-//                          (common/loop_budget.glsl); 0: no cap
+//                          (common/loop_budget.glsl); 0: no cap. Where set, a photon that runs
+//                          out is suspended and resumed by the next dispatch
+//                          (common/suspended_photons.glsl)
 layout(local_size_x = 64) in;
 
 #include "common/grid_sampling.glsl"
@@ -61,6 +63,7 @@ layout(local_size_x = 64) in;
 
 #include "common/ray_march.glsl"
 #include "common/emitters.glsl"
+#include "common/suspended_photons.glsl"
 
 
 #if EIKON_STORE_FLUENCE > 0
@@ -293,12 +296,21 @@ void cross_sharp_surface(SurfaceCrossing crossing, uint photon, INOUT(vec3) x, I
 
 #include "common/pass_loops.glsl"
 
-void trace_photon(uint photon) {
+// The RGB channel a dispersive photon carries, and its scale of δn.
+void take_channel(uint photon) {
+#if EIKON_DISPERSION
+    channel_scale = dispersion[photon % 3u];
+#else
+    channel_scale = dispersion.x;
+#endif
+}
+
+// Where photon `photon` starts, its direction and the power it carries,
+// sampled from its emitter (stratified; a dispersive photon carries one
+// channel, at three times its power, so each channel keeps its total).
+void emit_photon(uint photon, out vec3 x, out vec3 direction, out vec3 emitted) {
     Emitter emitter = emitters[emitter_of(photon)];
     vec2 u = emission_sample(emitter, photon);
-
-    vec3 x;
-    vec3 direction;
     if (emitter.origin.w == 0.0f) {
         x = emitter.origin.xyz;
         direction = sample_cone(emitter.axis.xyz, emitter.tangent.xyz, emitter.bitangent.xyz, emitter.axis.w, u.x, u.y);
@@ -307,42 +319,77 @@ void trace_photon(uint photon) {
         x = emitter.origin.xyz + disk.x * emitter.tangent.xyz + disk.y * emitter.bitangent.xyz;
         direction = emitter.axis.xyz;
     }
-    vec3 emitted = emitter.photon_power.rgb * spot_profile(emitter, direction);
+    emitted = emitter.photon_power.rgb * spot_profile(emitter, direction);
+    take_channel(photon);
 #if EIKON_DISPERSION
-    // One channel per photon, three times the power: each channel keeps its total.
     int channel = int(photon % 3u);
-    channel_scale = dispersion[channel];
     vec3 only = vec3(0.0f);
     only[channel] = 3.0f * emitted[channel];
     emitted = only;
-#else
-    channel_scale = dispersion.x;
 #endif
+}
 
-    vec3 power = emitted;
+// Traces photon `photon_offset + id`, or resumes suspended photon `id`.
+void trace_photon(uint id) {
+    uint photon;
+    vec3 x;
+    vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
+    vec3 v;
+    vec4 field;
+    vec3 power;
+    vec3 emitted = vec3(0.0f);
+    float cutoff;
+    uint bounces = 0u;
+    uint roulettes = 0u;
+    uint steps = 0u;
+    uint vertex = 0u;
+#if EIKON_RESUMABLE
+    if (resuming != 0u) {
+        SuspendedPhoton suspended = suspended_in[id];
+        photon = suspended.counters.x;
+        take_channel(photon);
+        x = suspended.x.xyz;
+        cutoff = suspended.x.w;
+        x_lost = suspended.x_lost.xyz;
+        v = suspended.v.xyz;
+        power = suspended.power.rgb;
+        bounces = suspended.counters.y;
+        roulettes = suspended.counters.z;
+        steps = suspended.counters.w;
+        vertex = suspended.surfaces.x;
+#if EIKON_SHARP_SURFACES
+        surface_events = suspended.surfaces.y;
+        inside_mask = suspended.surfaces.z;
+        sharp_offset = uintBitsToFloat(suspended.surfaces.w);
+#endif
+        field = grid_contains(x) ? field_at(x) : vec4(0.0f, 0.0f, 0.0f, reference_index());
+    } else
+#endif
+    {
+        photon = photon_offset + id;
+        vec3 direction;
+        emit_photon(photon, x, direction, emitted);
+        power = emitted;
+        cutoff = power_cutoff * max(power.r, max(power.g, power.b));
+#if EIKON_SHARP_SURFACES
+        if (grid_contains(x)) enter_sharp_region(x);
+#endif
+        field = grid_contains(x) ? field_at(x) : vec4(0.0f, 0.0f, 0.0f, reference_index());
+        v = field.w * direction;  // |v| = n where the photon starts, inside the grid or out
+        record_vertex(photon, vertex++, x, power);
+    }
     vec3 absorbed = vec3(0.0f);
     vec3 reflected = vec3(0.0f);
     vec3 roulette_gain = vec3(0.0f);
-    uint bounces = 0u;
-    uint roulettes = 0u;
-    float cutoff = power_cutoff * max(power.r, max(power.g, power.b));
-    vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
-#if EIKON_SHARP_SURFACES
-    if (grid_contains(x)) enter_sharp_region(x);
-#endif
-    vec4 field = grid_contains(x) ? field_at(x) : vec4(0.0f, 0.0f, 0.0f, reference_index());
-    vec3 v = field.w * direction;  // |v| = n where the photon starts, inside the grid or out
-    uint steps = 0u;
-    uint vertex = 0u;
+    const uint first_step = steps;
     float max_invariant_error = 0.0f;
     float invariant_error_sum = 0.0f;
     int fate = kEscaped;
-    record_vertex(photon, vertex++, x, power);
 
-    for (;;) {
+    for (uint passes = 1u;; ++passes) {
         spend_loops(loops_per_pass());
-        if (!loops_left()) {  // only where the driver caps loops: cut off, and counted
-            fate = kCutOff;
+        if (!loops_left()) {  // only where the driver caps loops: suspended or cut off, and counted
+            fate = out_of_loops(passes);
             break;
         }
         if (!grid_contains(x)) {
@@ -383,8 +430,8 @@ void trace_photon(uint photon) {
         // crossing is resolved before the next one.
         SurfaceCrossing crossing = nearest_surface_crossing(x, normalize(v), inside_mask, ds, 1e-4f * grid.voxel_size.x);
         ds = crossing.distance;
-        if (!loops_left()) {  // the search stopped short
-            fate = kCutOff;
+        if (!loops_left()) {  // the search stopped short; the photon is still where the step began
+            fate = out_of_loops(passes);
             break;
         }
 #endif
@@ -435,13 +482,36 @@ void trace_photon(uint photon) {
         if (!grid_contains(x)) v = reference_index() * normalize(v);
     }
 
+    // What this dispatch did with the photon is tallied now; a suspended
+    // photon's power and fate wait for the dispatch that ends it.
     add_power(kEmitted, emitted);
     add_power(kReflected, reflected);
     add_power(kRouletteGain, roulette_gain);
     add_power(kAbsorbed, absorbed);
+#if EIKON_RESUMABLE
+    if (fate == kSuspended) {
+        uint slot = atomicAdd(suspended_count, 1u);
+        if (slot < suspended_capacity) {
+            uint sharp_state[3] = uint[3](0u, 0u, 0u);
+#if EIKON_SHARP_SURFACES
+            sharp_state = uint[3](surface_events, inside_mask, floatBitsToUint(sharp_offset));
+#endif
+            suspended_out[slot] = SuspendedPhoton(vec4(x, cutoff), vec4(x_lost, 0.0f), vec4(v, 0.0f), vec4(power, 0.0f),
+                                                  uvec4(photon, bounces, roulettes, steps),
+                                                  uvec4(vertex, sharp_state[0], sharp_state[1], sharp_state[2]));
+        } else {
+            fate = kCutOff;  // no room left to suspend it in
+        }
+    }
+    if (fate != kSuspended) {
+        add_power(fate, power);
+        atomicAdd(group_photons[fate - kEscaped], 1u);
+    }
+#else
     add_power(fate, power);
     atomicAdd(group_photons[fate - kEscaped], 1u);
-    atomicAdd(group_steps, steps);
+#endif
+    atomicAdd(group_steps, steps - first_step);
     atomicMax(group_max_invariant_bits, floatBitsToUint(max_invariant_error));
     atomicAdd(group_deposits, deposits);
     atomicAdd(group_invariant_sum, invariant_error_sum);
@@ -474,7 +544,7 @@ void main() {
     }
     barrier();
     uint id = gl_GlobalInvocationID.x;
-    if (id < batch_size) trace_photon(photon_offset + id);
+    if (id < batch_size) trace_photon(id);
     barrier();
     if (gl_LocalInvocationIndex == 0u) flush_group_tallies();
 }

@@ -44,7 +44,8 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
              p.photons > 0 ? static_cast<double>(p.steps) / static_cast<double>(p.photons) : 0.0},
             {"voxel_deposits", p.voxelDeposits},
             {"max_invariant_error", p.maxInvariantError},
-            {"mean_invariant_error", p.meanInvariantError}};
+            {"mean_invariant_error", p.meanInvariantError},
+            {"resumed", {{"photons", p.photonsResumed}, {"dispatches", p.resumeDispatches}}}};
     if (p.byWavefront)
         json["wavefront"] = {{"patches", p.wavefront.patches},
                              {"splits", p.wavefront.splits},
@@ -84,7 +85,7 @@ private:
 // Says on stderr, once a run, when a frame's photons do not account for
 // their power (balance error above 1e-3), or when photons stopped before
 // their light was spent lose more than 0.1% of it net of the roulette's
-// gain (tracer.max_steps, or llvmpipe's loop cap): the figures are then
+// gain (tracer.max_steps, or a single step past llvmpipe's loop cap): the figures are then
 // not what the scene would give.
 class PowerWarning {
 public:
@@ -102,7 +103,8 @@ public:
         } else if (lostShare > 1e-3) {
             std::cerr << "eikon: warning: frame " << frame << ": " << 100.0 * lostShare
                       << "% of the emitted power was cut off with photons still in flight (tracer.max_steps, or "
-                         "the loop cap of OpenGL on the CPU); later frames are not reported here\n";
+                         "one step longer than the loop cap of OpenGL on the CPU); later frames are not reported "
+                         "here\n";
             warned_ = true;
         }
     }

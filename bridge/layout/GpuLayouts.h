@@ -48,7 +48,10 @@
     X(kSurfaceTriangles, 19)    /* buffer SurfaceTriangles { vec4 triangles[]; }: their corners and normals (FieldSet.h) */ \
     X(kWavefrontPatches, 20)    /* buffer Patches { GpuWavefrontPatch patches[]; }: one level of the wavefront, read */    \
     X(kWavefrontChildren, 21)   /* buffer Children { GpuWavefrontPatch children[]; }: the next level, written */           \
-    X(kWavefrontCounters, 22)   /* buffer Counters (GpuWavefrontCounters) */
+    X(kWavefrontCounters, 22)   /* buffer Counters (GpuWavefrontCounters) */                                   \
+    X(kSuspendedIn, 23)         /* buffer SuspendedIn { GpuSuspendedPhoton[] }: photons a dispatch resumes */      \
+    X(kSuspendedOut, 24)        /* buffer SuspendedOut { GpuSuspendedPhoton[] }: photons it suspends */           \
+    X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into
@@ -214,6 +217,26 @@ struct GpuWavefrontCounters {
     std::uint32_t unused[3];
 };
 static_assert(sizeof(GpuWavefrontCounters) == 32);
+
+// A photon suspended at the driver's loop cap, to be resumed by the next
+// dispatch (shaders/common/suspended_photons.glsl).
+struct GpuSuspendedPhoton {
+    glm::vec4 x;              // xyz: position; w: the roulette's cutoff
+    glm::vec4 xLost;          // xyz: Kahan compensation of x
+    glm::vec4 v;              // xyz: v, |v| = n
+    glm::vec4 power;          // rgb: power carried
+    glm::uvec4 counters;      // photon, receiver bounces, roulette draws, steps
+    glm::uvec4 surfaces;      // recorded vertices, sharp-surface events, inside mask, sharp δn offset (float bits)
+};
+static_assert(sizeof(GpuSuspendedPhoton) == 96);
+
+// How many photons a dispatch suspended (may pass the buffer's capacity:
+// those past it are cut off instead).
+struct GpuSuspendedCount {
+    std::uint32_t count;
+    std::uint32_t unused[3];
+};
+static_assert(sizeof(GpuSuspendedCount) == 16);
 
 // A sharp surface (shaders/common/sharp_surfaces.glsl), in scene order: a
 // sphere, a box, or a mesh or water surface given by its triangles.

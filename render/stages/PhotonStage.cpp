@@ -17,6 +17,9 @@ namespace eikon::render {
 namespace {
 
 constexpr std::size_t kBatchPhotons = std::size_t{1} << 20;
+// Where photons may be suspended, a batch is no larger than the buffer that
+// holds its suspended photons (96 bytes each: 24 MiB), so none is lost.
+constexpr std::size_t kResumableBatchPhotons = std::size_t{1} << 18;
 
 Rgb tallyOf(const layout::GpuPhotonStats& gpu, layout::PowerTally tally, const Rgb& unit) {
     Rgb watts;
@@ -69,6 +72,10 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
     if (options.bareMarch) storeFluence_ = 0;
     const TracerDesc& tracer = scene.tracer;
     const bool byWavefront = tracer.estimator == TracerDesc::Estimator::Wavefront;
+    const unsigned driverBudget = gl::currentLoopBudget();
+    const unsigned loopBudget = options.loopBudget.value_or(driverBudget);
+    EIKON_CHECK_MSG(driverBudget == 0 || (loopBudget > 0 && loopBudget <= driverBudget),
+                    "a loop budget within the driver's cap");
     if (!options.bareMarch) requireEstimatorFits(scene, fields.hasScattering());
     // The march's options, which both estimators share (common/ray_march.glsl).
     gl::ShaderDefines defines{
@@ -77,7 +84,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_INTEGRATOR", std::to_string(integratorNumber(tracer.integrator))},
         {"EIKON_OCTREE_STEPS", tracer.stepPolicy == TracerDesc::StepPolicy::Octree ? "1" : "0"},
         {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
-        {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())}};
+        {"EIKON_LOOP_BUDGET", std::to_string(loopBudget)}};
     if (byWavefront) {
         wavefront_ = std::make_unique<WavefrontStage>(tracer, defines);
     } else {
@@ -91,6 +98,13 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
                         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
                         {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))}});
         program_ = gl::compileComputeProgram("photon_trace.comp", defines);
+        resumable_ = loopBudget > 0;
+    }
+    if (resumable_) {
+        const gl::GpuResource resource{"render.photons", "the photons suspended at the driver's loop cap"};
+        for (gl::Buffer& buffer : suspended_)
+            buffer = gl::Buffer(kResumableBatchPhotons * sizeof(layout::GpuSuspendedPhoton), resource);
+        suspendedCount_ = gl::Buffer(sizeof(layout::GpuSuspendedCount));
     }
     setEmitters(scene);
     if (storeFluence_ > 0) {
@@ -164,6 +178,8 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     } else {
         tracePhotons(settings);
         stats.photons = photons_;
+        stats.photonsResumed = resumed_;
+        stats.resumeDispatches = resumeDispatches_;
     }
     receivers_.filter(powerUnit_);
     if (storeFluence_ > 0) {
@@ -216,14 +232,45 @@ void PhotonStage::tracePhotons(const PhotonSettings& settings) {
     glUniform3f(program_.uniform("power_unit"), powerUnit_.r, powerUnit_.g, powerUnit_.b);
     glUniform3f(program_.uniform("dispersion"), static_cast<float>(dispersion_.r), static_cast<float>(dispersion_.g),
                 static_cast<float>(dispersion_.b));
+    resumed_ = 0;
+    resumeDispatches_ = 0;
     const auto total = static_cast<std::size_t>(photons_);
-    for (std::size_t offset = 0; offset < total; offset += kBatchPhotons) {
-        const std::size_t batch = std::min(kBatchPhotons, total - offset);
+    const std::size_t batchPhotons = resumable_ ? kResumableBatchPhotons : kBatchPhotons;
+    for (std::size_t offset = 0; offset < total; offset += batchPhotons) {
+        const std::size_t batch = std::min(batchPhotons, total - offset);
         glUniform1ui(program_.uniform("photon_offset"), static_cast<GLuint>(offset));
         glUniform1ui(program_.uniform("batch_size"), static_cast<GLuint>(batch));
+        if (resumable_) {
+            glUniform1ui(program_.uniform("resuming"), 0u);
+            glUniform1ui(program_.uniform("suspended_capacity"), static_cast<GLuint>(kResumableBatchPhotons));
+            suspendedCount_.clearToZero();
+            suspendedCount_.bindStorage(layout::kSuspendedCount);
+            suspended_[1].bindStorage(layout::kSuspendedIn);  // unread when emitting, but bound
+            suspended_[0].bindStorage(layout::kSuspendedOut);
+        }
         program_.dispatchCovering(batch, 1, 1, 64, 1, 1);
+        if (resumable_) resumeSuspended(batch);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void PhotonStage::resumeSuspended(std::size_t batch) {
+    int written = 0;  // the buffer the last dispatch suspended its photons into
+    for (;;) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        const std::size_t suspended =
+            std::min<std::size_t>(suspendedCount_.downloadAs<layout::GpuSuspendedCount>().count, batch);
+        if (suspended == 0) return;
+        resumed_ += suspended;
+        ++resumeDispatches_;
+        suspended_[written].bindStorage(layout::kSuspendedIn);
+        suspended_[1 - written].bindStorage(layout::kSuspendedOut);
+        suspendedCount_.clearToZero();
+        glUniform1ui(program_.uniform("resuming"), 1u);
+        glUniform1ui(program_.uniform("batch_size"), static_cast<GLuint>(suspended));
+        program_.dispatchCovering(suspended, 1, 1, 64, 1, 1);
+        written = 1 - written;
+    }
 }
 
 std::vector<float> PhotonStage::downloadFluence() const {

@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace eikon::render {
@@ -36,6 +37,10 @@ struct PhotonProgramOptions {
     int recordedPhotons = 64;
     int recordStride = 1;        // record photons 0, k, 2k, … (a sample spread over all emitters and strata)
     bool bareMarch = false;      // benchmark limit: no attenuation, deposits or receivers
+    // The loop budget a photon may spend in one dispatch; unset: the
+    // driver's (gl::currentLoopBudget). Tests shrink it to suspend photons
+    // often; it may not exceed the driver's where the driver has one.
+    std::optional<unsigned> loopBudget{};
 };
 
 // Where the emitted power went, in W per channel, and the step figures.
@@ -56,6 +61,11 @@ struct PhotonStats {
     std::uint64_t surfaceReflections = 0, surfaceTransmissions = 0;
     double maxInvariantError = 0.0;   // max over photons and steps of | |v| − n | / n
     double meanInvariantError = 0.0;  // mean over steps
+    // Where the driver caps loops (llvmpipe): photons suspended at the cap
+    // and resumed by a later dispatch (each suspension counted), and those
+    // dispatches (common/suspended_photons.glsl).
+    std::uint64_t photonsResumed = 0;
+    int resumeDispatches = 0;
     bool byWavefront = false;         // the wavefront estimator (photons is then 0)
     WavefrontCounts wavefront;
 
@@ -90,6 +100,9 @@ public:
 
 private:
     void tracePhotons(const PhotonSettings& settings);
+    // Dispatches the photons the last dispatch suspended, and again, until
+    // none is suspended; counts them into resumed_.
+    void resumeSuspended(std::size_t batch);
 
     ReceiverMaps& receivers_;
     SharpSurfaceBuffer surfaces_;
@@ -107,6 +120,11 @@ private:
     gl::Buffer stats_;
     gl::Buffer paths_;
     gl::Buffer pathPower_;
+    bool resumable_ = false;           // the driver caps loops: photons are suspended and resumed
+    gl::Buffer suspended_[2];          // ping-pong: the photons one dispatch suspends, the next resumes
+    gl::Buffer suspendedCount_;        // layout::GpuSuspendedCount
+    std::uint64_t resumed_ = 0;        // this trace's resumed photons
+    int resumeDispatches_ = 0;         // and the dispatches that resumed them
 };
 
 // Refuses a scene whose light pass its estimator cannot carry (InputError
