@@ -8,6 +8,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -20,6 +21,25 @@ void appendToString(void* context, void* data, int size) {
     static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 
+// A PNG's chunks (a 32-bit big-endian length, a type, the data, a CRC) up
+// to IEND must lie within the file: stb allocates what a chunk's length
+// claims before it reads (a 95-byte file claiming an IDAT of 1.8 GB; found
+// by fuzz_image).
+void checkPngChunks(const std::string& bytes, const std::string& path) {
+    static const std::string signature("\x89PNG\r\n\x1a\n", 8);
+    if (bytes.compare(0, signature.size(), signature) != 0) return;
+    for (std::size_t at = signature.size(); at + 12 <= bytes.size();) {
+        const auto byte = [&](std::size_t i) { return static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])); };
+        const std::uint32_t length = byte(0) << 24 | byte(1) << 16 | byte(2) << 8 | byte(3);
+        if (length > bytes.size() - at - 12)
+            throw InputError(path + ": byte " + std::to_string(at), "a PNG chunk within the file",
+                             "a chunk \"" + bytes.substr(at + 4, 4) + "\" claiming " + std::to_string(length) +
+                                 " bytes of the " + std::to_string(bytes.size() - at - 12) + " left");
+        if (bytes.compare(at + 4, 4, "IEND") == 0) return;
+        at += 12 + length;
+    }
+}
+
 // An image file's bytes, checked before stb_image decodes them: at most
 // 2 GiB; a Radiance file walked through to its last scanline (stb loops
 // forever on some truncated ones: RadianceCheck.h); and a size stb can
@@ -30,6 +50,7 @@ std::string checkedImageBytes(const std::filesystem::path& path, const char* exp
     if (bytes.size() > 0x7fffffff)
         throw InputError(path.string(), "an image file below 2 GiB", std::to_string(bytes.size()) + " bytes");
     if (isRadiance(bytes)) checkRadiance(bytes, path.string());
+    checkPngChunks(bytes, path.string());
     int width = 0, height = 0, channels = 0;
     if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width,
                               &height, &channels) &&

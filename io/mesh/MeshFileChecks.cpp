@@ -110,13 +110,35 @@ std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string
 // counts there, and is refused by them).
 std::optional<std::array<unsigned long long, 2>> binaryOffCounts(const std::string& bytes, std::size_t& dataStart) {
     const std::size_t newline = bytes.find('\n');
-    if (newline == std::string::npos || bytes.compare(0, newline, "OFF BINARY") != 0 ||
+    if (newline == std::string::npos || bytes.compare(0, 10, "OFF BINARY") != 0 ||
         bytes.size() < newline + 1 + 12)
         return std::nullopt;
     std::uint32_t counts[2] = {};
     std::memcpy(counts, bytes.data() + newline + 1, sizeof counts);
     dataStart = newline + 1 + 12;
     return std::array<unsigned long long, 2>{counts[0], counts[1]};
+}
+
+// A line quoted in a message, cut to a readable length, unprintable bytes as '?'.
+std::string clippedLine(std::string line) {
+    if (line.size() > 60) line = line.substr(0, 60) + "…";
+    for (char& c : line)
+        if (static_cast<unsigned char>(c) < 32) c = '?';
+    return line;
+}
+
+// OpenMesh reads an OFF file as binary when its first line holds "BINARY"
+// anywhere; the checks here know the plain layout only (no colours, normals
+// or texture coordinates), so any other binary header is refused (an
+// "OFF BINARY\b" line had OpenMesh allocate for 200 million vertices;
+// found by fuzz_mesh_off).
+void requirePlainBinaryOffHeader(const std::string& path, const std::string& bytes) {
+    std::string line = bytes.substr(0, std::min(bytes.find('\n'), bytes.size()));
+    if (line.find("BINARY") == std::string::npos) return;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    if (line != "OFF BINARY")
+        throw InputError(path + ": line 1", "\"OFF BINARY\" (binary OFF without colours, normals or texture coordinates)",
+                         "\"" + clippedLine(line) + "\"");
 }
 
 // Walks a binary OFF's faces (a 32-bit corner count, then the corners'
@@ -171,6 +193,7 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
     ElementBytes least = kTextElement;
     bool binaryOff = false;
     if (extension == ".off") {
+        requirePlainBinaryOffHeader(path, bytes);
         if (const auto counts = textOffCounts(bytes, dataStart)) {
             vertices = (*counts)[0];
             faces = (*counts)[1];

@@ -68,6 +68,8 @@ void sampleGrid(const GridT& grid, const GridSpec& spec, const glm::dvec3& offse
     });
 }
 
+constexpr double kMaxIndexCoordinate = 1073741824.0;  // 2^30, half of OpenVDB's int32 Coord range
+
 }  // namespace
 
 VdbVolumeFile::VdbVolumeFile(const fs::path& path) : path_(path), grids_(std::make_unique<Grids>()) {
@@ -117,6 +119,22 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
         !(std::abs(transform.baseMap()->determinant()) > 0.0) || !std::isfinite(transform.baseMap()->determinant()))
         throw InputError(where, "an affine, invertible transform",
                          transform.isLinear() ? "a singular or non-finite one" : "a non-linear (frustum) one");
+
+    // OpenVDB's index coordinates are 32-bit: the render grid, mapped into
+    // the file's index space, must lie well within them (a voxel of 1e-220 m
+    // put cells at index 1e222; found by fuzz_vdb). The map is affine, so its
+    // corners bound it.
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 world = glm::dvec3(corner & 1 ? spec.boundsMax.x : spec.boundsMin.x,
+                                            corner & 2 ? spec.boundsMax.y : spec.boundsMin.y,
+                                            corner & 4 ? spec.boundsMax.z : spec.boundsMin.z) - offset;
+        const openvdb::Vec3d index = transform.worldToIndex(openvdb::Vec3d(world.x, world.y, world.z));
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(std::abs(index[axis]) < kMaxIndexCoordinate))
+                throw InputError(where,
+                                 "a transform that maps the render grid within OpenVDB's index range (|index| < 2^30)",
+                                 "index " + std::to_string(index[axis]) + " at a corner of grid.bounds");
+    }
 
     std::vector<float> values(static_cast<std::size_t>(components) * spec.cellCount());
     if (components == 1) {
