@@ -76,7 +76,19 @@ constexpr ElementBytes kBinaryOffElement{12, 16};
 // Where the data of a text OFF file start and the counts its header
 // declares ("OFF" and its variants, then V F E; '#' comments anywhere);
 // nullopt for a binary OFF or a header that does not parse.
-std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string& bytes, std::size_t& dataStart) {
+// A line quoted in a message, cut to a readable length, unprintable bytes as '?'.
+std::string clippedLine(std::string line) {
+    if (line.size() > 60) line = line.substr(0, 60) + "…";
+    for (char& c : line)
+        if (static_cast<unsigned char>(c) < 32) c = '?';
+    return line;
+}
+
+// OpenMesh reads the counts as 32-bit ints and, past one, loops or
+// allocates without bound: a header of another shape, or a count of 10^9 or
+// more, is refused (found by fuzz_mesh_off).
+std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string& path, const std::string& bytes,
+                                                               std::size_t& dataStart) {
     std::size_t at = 0;
     auto nextToken = [&]() -> std::string {
         for (;;) {
@@ -96,9 +108,11 @@ std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string
     std::array<unsigned long long, 3> counts{};
     for (auto& count : counts) {
         const std::string token = nextToken();
-        if (token == "BINARY" || token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
-            return std::nullopt;
-        count = std::stoull(token.substr(0, 19));
+        if (token == "BINARY" && &count == &counts[0]) return std::nullopt;
+        if (token.empty() || token.size() > 9 || token.find_first_not_of("0123456789") != std::string::npos)
+            throw InputError(path, "an OFF header: OFF, then vertex, face and edge counts below 10^9",
+                             "\"" + clippedLine(token) + "\"");
+        count = std::stoull(token);
     }
     dataStart = at;
     return counts;
@@ -117,14 +131,6 @@ std::optional<std::array<unsigned long long, 2>> binaryOffCounts(const std::stri
     std::memcpy(counts, bytes.data() + newline + 1, sizeof counts);
     dataStart = newline + 1 + 12;
     return std::array<unsigned long long, 2>{counts[0], counts[1]};
-}
-
-// A line quoted in a message, cut to a readable length, unprintable bytes as '?'.
-std::string clippedLine(std::string line) {
-    if (line.size() > 60) line = line.substr(0, 60) + "…";
-    for (char& c : line)
-        if (static_cast<unsigned char>(c) < 32) c = '?';
-    return line;
 }
 
 // OpenMesh reads an OFF file as binary when its first line holds "BINARY"
@@ -194,7 +200,7 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
     bool binaryOff = false;
     if (extension == ".off") {
         requirePlainBinaryOffHeader(path, bytes);
-        if (const auto counts = textOffCounts(bytes, dataStart)) {
+        if (const auto counts = textOffCounts(path, bytes, dataStart)) {
             vertices = (*counts)[0];
             faces = (*counts)[1];
         } else if (const auto binary = binaryOffCounts(bytes, dataStart)) {
@@ -314,6 +320,73 @@ void checkPlyHeader(const std::string& path, const std::string& bytes) {
     throw InputError(path, "a PLY header ending in an end_header line", "none (truncated, or not a PLY file)");
 }
 
+// The data of an ASCII PLY file, walked as OpenMesh reads them: a stream
+// of whitespace-separated numbers, element by element, property by
+// property. OpenMesh reads a list's count as an int with iostreams and loops
+// on when that fails (a count of 10^62 hung it; found by fuzz_mesh_ply): each
+// count must be an integer within its declared type, and the file must hold
+// every number it announces. The header has passed checkPlyHeader.
+void checkAsciiPlyData(const std::string& path, const std::string& bytes) {
+    struct Property {
+        bool list = false;
+        unsigned long long countMax = 0;
+    };
+    struct Element {
+        std::string name;
+        unsigned long long count = 0;
+        std::vector<Property> properties;
+    };
+    std::vector<Element> elements;
+    std::istringstream lines(bytes);
+    std::string line;
+    bool ascii = false;
+    int number = 0;
+    while (std::getline(lines, line)) {
+        ++number;
+        std::istringstream words(line);
+        std::vector<std::string> word{std::istream_iterator<std::string>(words), {}};
+        if (word.empty()) continue;
+        if (word[0] == "format") ascii = word.size() > 1 && word[1] == "ascii";
+        if (word[0] == "element") elements.push_back({word[1], std::stoull(word[2]), {}});
+        if (word[0] == "property" && !elements.empty()) {
+            Property property;
+            if (word[1] == "list") {
+                property.list = true;
+                const std::string& type = word[2];
+                property.countMax = (type == "uchar" || type == "uint8")   ? 255
+                                    : (type == "char" || type == "int8")   ? 127
+                                    : (type == "ushort" || type == "uint16") ? 65535
+                                    : (type == "short" || type == "int16") ? 32767
+                                                                           : 2147483647;
+            }
+            elements.back().properties.push_back(property);
+        }
+        if (word[0] == "end_header") break;
+    }
+    if (!ascii) return;
+    std::string token;
+    const auto next = [&](const std::string& what, const Element& element, unsigned long long index) -> std::string {
+        if (!(lines >> token)) {
+            throw InputError(path, "the numbers its header announces",
+                             "the end of the file in " + what + " of " + element.name + " " + std::to_string(index) +
+                                 " (truncated)");
+        }
+        return token;
+    };
+    for (const Element& element : elements)
+        for (unsigned long long index = 0; index < element.count; ++index)
+            for (const Property& property : element.properties) {
+                const std::string value = next("a value", element, index);
+                if (!property.list) continue;
+                if (value.empty() || value.size() > 10 || value.find_first_not_of("0123456789") != std::string::npos ||
+                    std::stoull(value) > property.countMax)
+                    throw InputError(path + ": " + element.name + " " + std::to_string(index),
+                                     "a list count from 0 to " + std::to_string(property.countMax),
+                                     "\"" + clippedLine(value) + "\"");
+                for (unsigned long long entry = std::stoull(value); entry > 0; --entry) next("a list", element, index);
+            }
+}
+
 // A binary STL: an 80-byte header, a 32-bit triangle count, then 50 bytes a
 // triangle (normal, three corners as 32-bit floats, 2 attribute bytes) —
 // the size OpenMesh tells it from ASCII by.
@@ -352,6 +425,7 @@ void requireStlEnd(const std::string& path, const std::string& bytes) {
 void checkMeshFileBytes(const std::string& path, const std::string& extension, const std::string& bytes) {
     if (extension == ".ply") checkPlyHeader(path, bytes);
     checkDeclaredCountsFit(path, extension, bytes);
+    if (extension == ".ply") checkAsciiPlyData(path, bytes);
     if (extension == ".obj") checkObjFaceIndices(path, bytes);
     if (extension == ".stl" && isBinaryStl(bytes)) {
         rejectNonFiniteStlCorners(path, bytes);
