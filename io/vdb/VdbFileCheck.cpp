@@ -218,10 +218,12 @@ void checkBloscChunk(Cursor& cursor, std::string_view chunk, std::size_t rawByte
     checkBloscHeader(cursor, chunk.size(), rawBytes);
     std::uint32_t claimed = 0;
     std::memcpy(&claimed, chunk.data() + 4, 4);
-    // A node without stored values is a chunk of no bytes: OpenVDB has no
-    // room to decompress more into.
-    if (rawBytes == 0 && claimed != 0)
-        cursor.fail("a blosc chunk of no bytes for a node without stored values", std::to_string(claimed) + " bytes");
+    // OpenVDB decompresses into the node's own buffer: a chunk claiming more
+    // bytes than the node stores fails there (32 for a node of 8; found by
+    // fuzz_vdb), one claiming fewer leaves values unread.
+    if (claimed != rawBytes)
+        cursor.fail("a blosc chunk of exactly the " + std::to_string(rawBytes) + " bytes the node stores",
+                    std::to_string(claimed) + " bytes");
     std::vector<char> decompressed(std::max<std::size_t>(claimed, 1));
     const int result = blosc_decompress_ctx(chunk.data(), decompressed.data(), claimed, 1);
     if (result < 0 || static_cast<std::uint32_t>(result) != claimed)
