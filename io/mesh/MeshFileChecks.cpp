@@ -122,11 +122,13 @@ std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string
 // in the byte order OpenMesh 9 reads them: the machine's own, little-endian
 // on every machine eikon builds for (a big-endian file reads as nonsense
 // counts there, and is refused by them).
-std::optional<std::array<unsigned long long, 2>> binaryOffCounts(const std::string& bytes, std::size_t& dataStart) {
+std::optional<std::array<unsigned long long, 2>> binaryOffCounts(const std::string& path, const std::string& bytes,
+                                                                 std::size_t& dataStart) {
     const std::size_t newline = bytes.find('\n');
-    if (newline == std::string::npos || bytes.compare(0, 10, "OFF BINARY") != 0 ||
-        bytes.size() < newline + 1 + 12)
-        return std::nullopt;
+    if (newline == std::string::npos || bytes.compare(0, 10, "OFF BINARY") != 0) return std::nullopt;
+    // Cut inside its counts, OpenMesh reads them from what is there (found by fuzz_mesh_off).
+    if (bytes.size() < newline + 1 + 12)
+        throw InputError(path, "a binary OFF header of three 32-bit counts", "the end of the file (truncated)");
     std::uint32_t counts[2] = {};
     std::memcpy(counts, bytes.data() + newline + 1, sizeof counts);
     dataStart = newline + 1 + 12;
@@ -203,13 +205,16 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
         if (const auto counts = textOffCounts(path, bytes, dataStart)) {
             vertices = (*counts)[0];
             faces = (*counts)[1];
-        } else if (const auto binary = binaryOffCounts(bytes, dataStart)) {
+        } else if (const auto binary = binaryOffCounts(path, bytes, dataStart)) {
             vertices = (*binary)[0];
             faces = (*binary)[1];
             least = kBinaryOffElement;
             binaryOff = true;
         } else {
-            return;
+            // Neither a text nor the plain binary header: OpenMesh reads such
+            // a file anyway, from unchecked counts ("OFF0B…" hung it; found by fuzz_mesh_off).
+            throw InputError(path, "an OFF header (OFF and three counts, or OFF BINARY)",
+                             "\"" + clippedLine(bytes.substr(0, std::min<std::size_t>(bytes.find('\n'), 60))) + "\"");
         }
     } else if (extension == ".ply") {
         bool text = false;
