@@ -73,9 +73,6 @@ constexpr ElementBytes kTextElement{6, 8}, kBinaryElement{3, 4};
 // A binary OFF vertex: three 32-bit floats; a face: a count and three indices.
 constexpr ElementBytes kBinaryOffElement{12, 16};
 
-// Where the data of a text OFF file start and the counts its header
-// declares ("OFF" and its variants, then V F E; '#' comments anywhere);
-// nullopt for a binary OFF or a header that does not parse.
 // A line quoted in a message, cut to a readable length, unprintable bytes as '?'.
 std::string clippedLine(std::string line) {
     if (line.size() > 60) line = line.substr(0, 60) + "…";
@@ -84,38 +81,118 @@ std::string clippedLine(std::string line) {
     return line;
 }
 
-// OpenMesh reads the counts as 32-bit ints and, past one, loops or
-// allocates without bound: a header of another shape, or a count of 10^9 or
-// more, is refused (found by fuzz_mesh_off).
+// The first line of a text OFF file as OpenMesh 9's reader takes it apart:
+// [ST][C][N]OFF, each prefix adding per-vertex (and, for C, per-face) values.
+struct TextOffKeyword {
+    bool normals = false;  // N: three more numbers a vertex
+    bool colours = false;  // C: a face's line ends with its colour
+};
+
+std::optional<TextOffKeyword> textOffKeyword(const std::string& bytes) {
+    std::string line = bytes.substr(0, std::min(bytes.find('\n'), bytes.size()));
+    while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
+    TextOffKeyword keyword;
+    std::size_t at = 0;
+    if (line.compare(at, 2, "ST") == 0) at += 2;
+    keyword.colours = line.compare(at, 1, "C") == 0;
+    at += keyword.colours;
+    keyword.normals = line.compare(at, 1, "N") == 0;
+    at += keyword.normals;
+    if (line.compare(at, std::string::npos, "OFF") != 0) return std::nullopt;
+    return keyword;
+}
+
+// Whitespace-separated tokens of a text file, with the line each is on.
+class TextTokens {
+public:
+    explicit TextTokens(const std::string& bytes, std::size_t start) : bytes_(bytes), at_(start) {
+        line_ += static_cast<int>(std::count(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(start), '\n'));
+    }
+    // The next token, or nullopt at the end of the file.
+    std::optional<std::string> next() {
+        while (at_ < bytes_.size() && std::isspace(static_cast<unsigned char>(bytes_[at_]))) line_ += bytes_[at_++] == '\n';
+        if (at_ == bytes_.size()) return std::nullopt;
+        const std::size_t start = at_;
+        while (at_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[at_]))) ++at_;
+        return bytes_.substr(start, at_ - start);
+    }
+    void skipRestOfLine() {
+        while (at_ < bytes_.size() && bytes_[at_] != '\n') ++at_;
+        if (at_ < bytes_.size()) ++at_, ++line_;
+    }
+    std::size_t at() const { return at_; }
+    int line() const { return line_; }
+
+private:
+    const std::string& bytes_;
+    std::size_t at_;
+    int line_ = 1;
+};
+
+bool isCount(const std::string& token) {
+    return !token.empty() && token.size() <= 9 && token.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// OpenMesh reads the counts after the first line as 32-bit unsigned ints
+// with iostreams ('#' comments are not skipped) and, past one, loops or
+// allocates without bound: anything but a count below 10^9 is refused
+// (found by fuzz_mesh_off).
 std::optional<std::array<unsigned long long, 3>> textOffCounts(const std::string& path, const std::string& bytes,
                                                                std::size_t& dataStart) {
-    std::size_t at = 0;
-    auto nextToken = [&]() -> std::string {
-        for (;;) {
-            while (at < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
-            if (at < bytes.size() && bytes[at] == '#') {
-                while (at < bytes.size() && bytes[at] != '\n') ++at;
-                continue;
-            }
-            break;
-        }
-        const std::size_t start = at;
-        while (at < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[at]))) ++at;
-        return bytes.substr(start, at - start);
-    };
-    const std::string keyword = nextToken();
-    if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0) return std::nullopt;
+    if (!textOffKeyword(bytes)) return std::nullopt;
+    TextTokens tokens(bytes, 0);
+    tokens.skipRestOfLine();
     std::array<unsigned long long, 3> counts{};
     for (auto& count : counts) {
-        const std::string token = nextToken();
-        if (token == "BINARY" && &count == &counts[0]) return std::nullopt;
-        if (token.empty() || token.size() > 9 || token.find_first_not_of("0123456789") != std::string::npos)
-            throw InputError(path, "an OFF header: OFF, then vertex, face and edge counts below 10^9",
-                             "\"" + clippedLine(token) + "\"");
-        count = std::stoull(token);
+        const std::optional<std::string> token = tokens.next();
+        if (!token || !isCount(*token))
+            throw InputError(path + ": line " + std::to_string(tokens.line()),
+                             "an OFF header: OFF, then vertex, face and edge counts below 10^9",
+                             token ? "\"" + clippedLine(*token) + "\"" : std::string("the end of the file"));
+        count = std::stoull(*token);
     }
-    dataStart = at;
+    dataStart = tokens.at();
     return counts;
+}
+
+// Walks a text OFF's data token by token as OpenMesh 9's read_ascii does:
+// per vertex three numbers (six with N), then the rest of its line; per
+// face a corner count and that many indices, wherever the line breaks fall
+// (with C the rest of the line is the face's colour). OpenMesh reads a
+// count of "-9" as 4294967287 and pushes corners for it from a failed
+// stream until 3 GiB are gone (found by fuzz_mesh_off): every count must be
+// an unsigned integer of 3 or more, every corner an index below the vertex
+// count, and every number the header announces present.
+void checkTextOffData(const std::string& path, const std::string& bytes, std::size_t dataStart,
+                      unsigned long long vertices, unsigned long long faces) {
+    const TextOffKeyword keyword = *textOffKeyword(bytes);
+    TextTokens tokens(bytes, dataStart);
+    const auto refuse = [&](const std::string& expected, const std::optional<std::string>& found) {
+        throw InputError(path + ": line " + std::to_string(tokens.line()), expected,
+                         found ? "\"" + clippedLine(*found) + "\"" : std::string("the end of the file (truncated)"));
+    };
+    for (unsigned long long vertex = 0; vertex < vertices; ++vertex) {
+        for (int value = 0; value < (keyword.normals ? 6 : 3); ++value) {
+            const std::optional<std::string> token = tokens.next();
+            char* end = nullptr;
+            if (token) std::strtod(token->c_str(), &end);
+            if (!token || end != token->c_str() + token->size())
+                refuse("a number (vertex " + std::to_string(vertex) + " of " + std::to_string(vertices) + ")", token);
+        }
+        tokens.skipRestOfLine();
+    }
+    for (unsigned long long face = 0; face < faces; ++face) {
+        const std::optional<std::string> count = tokens.next();
+        if (!count || !isCount(*count) || std::stoull(*count) < 3)
+            refuse("a corner count of 3 or more (face " + std::to_string(face) + " of " + std::to_string(faces) + ")",
+                   count);
+        for (unsigned long long corner = std::stoull(*count); corner > 0; --corner) {
+            const std::optional<std::string> index = tokens.next();
+            if (!index || !isCount(*index) || std::stoull(*index) >= vertices)
+                refuse("a vertex index below " + std::to_string(vertices) + " (face " + std::to_string(face) + ")", index);
+        }
+        if (keyword.colours) tokens.skipRestOfLine();
+    }
 }
 
 // The counts of a binary OFF ("OFF BINARY", then V F E as 32-bit integers),
@@ -199,12 +276,13 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
     std::size_t dataStart = 0;
     unsigned long long vertices = 0, faces = 0;
     ElementBytes least = kTextElement;
-    bool binaryOff = false;
+    bool binaryOff = false, textOff = false;
     if (extension == ".off") {
         requirePlainBinaryOffHeader(path, bytes);
         if (const auto counts = textOffCounts(path, bytes, dataStart)) {
             vertices = (*counts)[0];
             faces = (*counts)[1];
+            textOff = true;
         } else if (const auto binary = binaryOffCounts(path, bytes, dataStart)) {
             vertices = (*binary)[0];
             faces = (*binary)[1];
@@ -236,6 +314,7 @@ void checkDeclaredCountsFit(const std::string& path, const std::string& extensio
                          "a header declaring " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
                              " faces (truncated, or wrong counts)");
     if (binaryOff) checkBinaryOffFaces(path, bytes, dataStart, vertices, faces);
+    if (textOff) checkTextOffData(path, bytes, dataStart, vertices, faces);
 }
 
 // OpenMesh's OBJ reader drops a face whose vertex index does not parse as

@@ -225,7 +225,40 @@ TEST_F(MeshReaderTest, NonManifoldEdgesAreCounted) {
 TEST_F(MeshReaderTest, BadPathsAndExtensionsAreRefused) {
     EXPECT_NE(messageOf((dir_ / "missing.obj").string()).find("no such file"), std::string::npos);
     EXPECT_NE(messageOf(write("cube.txt", cubeOff())).find(".obj, .ply, .off or .stl"), std::string::npos);
-    EXPECT_NE(messageOf(write("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")).find("index 7"),
+    EXPECT_NE(messageOf(write("bad.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n")).find("index below 3"),
+              std::string::npos);
+}
+
+// OpenMesh reads a text OFF's face counts as unsigned ints wherever the
+// lines break: "-9" became 4294967287 corners and 3 GiB of pushes from a
+// failed stream (found by fuzz_mesh_off). The data are walked as it reads
+// them, and each bad token is refused with its line.
+TEST_F(MeshReaderTest, TextOffDataAreWalkedAsOpenMeshReadsThem) {
+    const std::string cube = cubeOff();
+    const auto faceLine = [&](const std::string& replacement) {
+        std::string off = cube;
+        off.replace(off.find("\n4 ") + 1, off.find('\n', off.find("\n4 ") + 1) - off.find("\n4 ") - 1, replacement);
+        return messageOf(write("face.off", off));
+    };
+    for (const char* face : {"0 -9 5 7", "-9 0 1 2", "2 0 1", "3.5 0 1 2", "4 0 1 2 x"}) {
+        const std::string message = faceLine(face);
+        EXPECT_NE(message.find("face.off: line "), std::string::npos) << face << ": " << message;
+        EXPECT_TRUE(message.find("expected a corner count of 3 or more") != std::string::npos ||
+                    message.find("expected a vertex index below 8") != std::string::npos)
+            << face << ": " << message;
+    }
+    // A face may run over several lines, as OpenMesh reads it; the cube stays whole.
+    EXPECT_EQ(readMesh(write("split.off", std::string(cube).replace(cube.find("\n4 ") + 2, 1, "\n"))).triangles.size(),
+              12u);
+    std::string shortVertex = cube;
+    shortVertex.replace(shortVertex.find("1 1 0"), 5, "1 1 zero");
+    const std::string vertexMessage = messageOf(write("vertex.off", shortVertex));
+    EXPECT_NE(vertexMessage.find("vertex.off: line 5: expected a number (vertex 2 of 8)"), std::string::npos)
+        << vertexMessage;
+    // '#' comments are not read by OpenMesh: counts after one are refused, not read as garbage.
+    std::string comment = cube;
+    comment.insert(comment.find('\n') + 1, "# a comment\n");
+    EXPECT_NE(messageOf(write("comment.off", comment)).find("comment.off: line 2: expected an OFF header"),
               std::string::npos);
 }
 
