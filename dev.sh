@@ -7,6 +7,8 @@
 #   ./dev.sh debug-test   every test under AddressSanitizer + UBSan
 #   ./dev.sh fuzz [SECONDS]   build the libFuzzer targets (clang, ASan + UBSan) and
 #                   run each for SECONDS (default 20); fails on any crash, leak or timeout
+#   ./dev.sh fuzz-check   the same targets, reproducibly: committed seeds, then a
+#                   fixed number of mutations from a fixed random seed (CI runs it)
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -49,25 +51,49 @@ fuzz_seeds() {
     esac
 }
 
+readonly FUZZ_TARGETS="fuzz_scene fuzz_mesh_obj fuzz_mesh_ply fuzz_mesh_off fuzz_mesh_stl fuzz_vdb fuzz_image"
+readonly FUZZ_CHECK_RUNS=2000  # mutations a target, in fuzz-check
+
+# run_fuzzer TARGET CORPUS LIBFUZZER-LIMITS...: one target from its seeds,
+# new inputs kept in CORPUS; fails on any crash, leak or timeout.
+run_fuzzer() {
+    local target=$1 corpus=$2
+    shift 2
+    mkdir -p "$corpus" build/fuzz/findings
+    # shellcheck disable=SC2046  # the seed folders are separate arguments
+    ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+        "build/fuzz/$target" "$@" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+        -print_final_stats=1 -artifact_prefix="build/fuzz/findings/$target-" "$corpus" $(fuzz_seeds "$target") \
+        2> "build/fuzz/$target.log" || { tail -n 60 "build/fuzz/$target.log" >&2; exit 1; }
+    grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|cov: " \
+        "build/fuzz/$target.log" | tail -n 5 >&2
+}
+
+# A search: each target for SECONDS, growing build/fuzz/corpus.
 run_fuzzers() {
     local seconds=$1
     [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || { echo "dev.sh: fuzz takes a whole number of seconds, not '$seconds'" >&2; exit 2; }
     build fuzz
-    local target corpus
-    for target in fuzz_scene fuzz_mesh_obj fuzz_mesh_ply fuzz_mesh_off fuzz_mesh_stl fuzz_vdb fuzz_image; do
-        corpus=build/fuzz/corpus/$target
-        mkdir -p "$corpus" build/fuzz/findings
+    local target
+    for target in $FUZZ_TARGETS; do
         echo "dev.sh: $target for ${seconds} s" >&2
-        # shellcheck disable=SC2046  # the seed folders are separate arguments
-        ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-            "build/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-            -print_final_stats=1 -artifact_prefix="build/fuzz/findings/$target-" "$corpus" $(fuzz_seeds "$target") \
-            2> "build/fuzz/$target.log" || { tail -n 60 "build/fuzz/$target.log" >&2; exit 1; }
-        grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)|cov: " \
-            "build/fuzz/$target.log" | tail -n 5 >&2
+        run_fuzzer "$target" "build/fuzz/corpus/$target" -max_total_time="$seconds"
     done
 }
 
+# A check that gives the same answer every time: each target replays its
+# committed seeds (every earlier finding among them) and then tries a fixed
+# number of mutations from a fixed random seed, starting from no corpus of
+# its own. CI runs it; a failure here is a regression, never luck.
+check_fuzzers() {
+    build fuzz
+    local target
+    for target in $FUZZ_TARGETS; do
+        echo "dev.sh: $target, seeds and ${FUZZ_CHECK_RUNS} mutations" >&2
+        rm -rf "build/fuzz/check/$target"
+        run_fuzzer "$target" "build/fuzz/check/$target" -seed=1 -runs="$FUZZ_CHECK_RUNS"
+    done
+}
 case "${1:-}" in
     run)
         install_packages
@@ -88,13 +114,17 @@ case "${1:-}" in
         install_packages
         run_fuzzers "${2:-20}"
         ;;
+    fuzz-check)
+        install_packages
+        check_fuzzers
+        ;;
     debug-test)
         install_packages
         build debug
         ctest --preset debug -j "$(nproc)"
         ;;
     *)
-        echo "usage: ./dev.sh run | test | debug-test | fuzz [SECONDS]" >&2
+        echo "usage: ./dev.sh run | test | debug-test | fuzz [SECONDS] | fuzz-check" >&2
         exit 2
         ;;
 esac
