@@ -4,6 +4,7 @@
 #include "io/files/FileBytes.h"
 #include "io/image/ImageIo.h"
 #include "io/scene/DuplicateKeyCheck.h"
+#include "io/scene/JsonErrorPosition.h"
 #include "io/scene/ExportParser.h"
 #include "io/scene/JsonReader.h"
 #include "io/scene/MeshObjectParser.h"
@@ -550,7 +551,9 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& sourceN
         const std::string reason = textAfter(error.what(), ": ");
         throw InputError(sourceName + ": " + lineAndColumn(text, error.byte), "valid JSON", reason);
     } catch (const nlohmann::json::exception& error) {  // a number too large for a double, say
-        throw InputError(sourceName, "valid JSON", textAfter(error.what(), "] "));
+        const std::optional<std::size_t> byte = jsonErrorByte(text);
+        throw InputError(byte ? sourceName + ": " + lineAndColumn(text, *byte) : sourceName, "valid JSON",
+                         textAfter(error.what(), "] "));
     }
 }
 

@@ -299,7 +299,7 @@ const BadInput kBadInputs[] = {
     {"empty bounds", "\"max\": [0.5, 1, 0.5]", "\"max\": [0.5, 0, 0.5]", "grid.bounds"},
     {"vector too short", "\"center\": [0, 0.5, 0]", "\"center\": [0, 0.5]", "objects[0].center"},
     {"unknown object type", "\"type\": \"sphere\"", "\"type\": \"cone\"", "objects[0].type"},
-    {"number overflow", "\"radius\": 0.2", "\"radius\": 1e999", "ok.json"},
+    {"number overflow", "\"radius\": 0.2", "\"radius\": 1e999", "ok.json: line "},
     {"camera looks at itself", "\"target\": [0, 0.3, 0]", "\"target\": [0, 1, 2]", "camera.target"},
     {"photons zero", "\"photons\": 4096", "\"photons\": 0", "render.photons"},
     {"fov out of range", "\"fov_deg\": 45", "\"fov_deg\": 200", "camera.fov_deg"},
