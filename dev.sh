@@ -81,10 +81,11 @@ run_fuzzers() {
     done
 }
 
-# A check that gives the same answer every time: each target replays its
-# committed seeds (every earlier finding among them) and then tries a fixed
-# number of mutations from a fixed random seed, starting from no corpus of
-# its own. CI runs it; a failure here is a regression, never luck.
+# A check, not a search: each target replays its committed seeds (every
+# earlier finding among them) exactly, then tries a fixed number of
+# mutations from a fixed random seed, starting from no corpus of its own
+# (close to, not bit-for-bit, the same inputs each run: coverage feedback
+# varies slightly). CI runs it.
 check_fuzzers() {
     build fuzz
     local target

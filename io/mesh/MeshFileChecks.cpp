@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <iterator>
+#include <optional>
 #include <set>
 #include <vector>
 #include <sstream>
@@ -35,33 +36,6 @@ void rejectNonFiniteLiterals(const std::string& path, const std::string& bytes) 
         }
     }
 }
-
-}  // namespace
-
-std::optional<std::size_t> dataLines(const std::string& extension, const std::string& bytes) {
-    const bool isText = bytes.find('\0') == std::string::npos;
-    if (!isText || (extension != ".off" && extension != ".ply")) return std::nullopt;
-    if (extension == ".ply" && bytes.find("format ascii") == std::string::npos) return std::nullopt;
-    std::istringstream lines(bytes);
-    std::string line;
-    std::size_t headerLines = extension == ".off" ? 2 : 0;  // "OFF" and the counts
-    bool inHeader = extension == ".ply";
-    std::size_t count = 0;
-    while (std::getline(lines, line)) {
-        const std::size_t first = line.find_first_not_of(" \t\r");
-        if (first == std::string::npos || line[first] == '#') continue;
-        if (inHeader) {
-            inHeader = line.compare(first, 10, "end_header") != 0;
-        } else if (headerLines > 0) {
-            --headerLines;
-        } else {
-            ++count;
-        }
-    }
-    return count;
-}
-
-namespace {
 
 // The least room a declared vertex and face take after the header: as text
 // "0 0 0\n" and "3 0 1 2\n"; in binary PLY three 1-byte coordinates and a

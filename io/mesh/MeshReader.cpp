@@ -132,16 +132,12 @@ TriangleMesh readMesh(const std::string& path, MeshClosure closure) {
     }
     if (!read) throw InputError(path, "a readable " + extension.substr(1) + " mesh", "a file OpenMesh cannot parse");
     if (importer.declaredVertices && importer.declaredFaces) {
-        const std::size_t declared = std::size_t{*importer.declaredVertices} + *importer.declaredFaces;
-        const std::optional<std::size_t> lines = dataLines(extension, bytes);
-        if (importer.vertices.size() != *importer.declaredVertices || importer.faces.size() != *importer.declaredFaces ||
-            (lines && *lines < declared))
+        if (importer.vertices.size() != *importer.declaredVertices || importer.faces.size() != *importer.declaredFaces)
             throw InputError(path,
                              std::to_string(*importer.declaredVertices) + " vertices and " +
                                  std::to_string(*importer.declaredFaces) + " faces (as its header declares)",
-                             lines ? std::to_string(*lines) + " vertex and face lines (truncated)"
-                                   : std::to_string(importer.vertices.size()) + " vertices and " +
-                                         std::to_string(importer.faces.size()) + " faces (truncated)");
+                             std::to_string(importer.vertices.size()) + " vertices and " +
+                                 std::to_string(importer.faces.size()) + " faces (truncated)");
     }
     for (std::size_t v = 0; v < importer.vertices.size(); ++v) {
         const glm::dvec3& p = importer.vertices[v];
