@@ -97,7 +97,7 @@ shared uint group_photons[4];
 shared uint group_steps;
 shared uint group_max_invariant_bits;
 shared uint group_deposits;
-shared float group_invariant_sum;
+shared uint group_invariant[2];  // fixed point, low and high word (invariant_units)
 shared uint group_surface_events[2];  // reflected, transmitted
 
 // Adds to a 64-bit counter held as two words, carrying into the high word.
@@ -514,7 +514,9 @@ void trace_photon(uint id) {
     atomicAdd(group_steps, steps - first_step);
     atomicMax(group_max_invariant_bits, floatBitsToUint(max_invariant_error));
     atomicAdd(group_deposits, deposits);
-    atomicAdd(group_invariant_sum, invariant_error_sum);
+    uvec2 error_units = invariant_units(invariant_error_sum);
+    uint invariant_before = atomicAdd(group_invariant[0], error_units.x);
+    atomicAdd(group_invariant[1], error_units.y + (invariant_before + error_units.x < invariant_before ? 1u : 0u));
 }
 
 void flush_group_tallies() {
@@ -526,7 +528,8 @@ void flush_group_tallies() {
     atomicMax(step_tallies[2], group_max_invariant_bits);
     uint deposits_before = atomicAdd(deposit_tallies[0], group_deposits);
     if (deposits_before + group_deposits < deposits_before) atomicAdd(deposit_tallies[1], 1u);
-    atomicAdd(invariant_sum[0], group_invariant_sum);
+    uint invariant_before = atomicAdd(invariant_tallies[0], group_invariant[0]);
+    atomicAdd(invariant_tallies[1], group_invariant[1] + (invariant_before + group_invariant[0] < invariant_before ? 1u : 0u));
     atomicAdd(surface_tallies[0], group_surface_events[0]);
     atomicAdd(surface_tallies[1], group_surface_events[1]);
 }
@@ -538,7 +541,8 @@ void main() {
         group_steps = 0u;
         group_max_invariant_bits = 0u;
         group_deposits = 0u;
-        group_invariant_sum = 0.0f;
+        group_invariant[0] = 0u;
+        group_invariant[1] = 0u;
         group_surface_events[0] = 0u;
         group_surface_events[1] = 0u;
     }

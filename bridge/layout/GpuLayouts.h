@@ -175,7 +175,7 @@ struct GpuPhotonStats {
     glm::uvec4 photons;   // photon counts: x escaped, y received, z cut off, w blocked
     glm::uvec4 steps;     // x: low 32 bits of the step count, y: high bits; z: max |v|−n invariant error (float bits)
     glm::uvec4 deposits;  // x: low 32 bits of the voxel deposits, y: high bits
-    glm::vec4 invariant;  // x: sum over steps of the relative invariant error (float atomics; for the mean only)
+    glm::uvec4 invariant; // x low, y high word: Σ over steps of the relative invariant error in 2^-32 units
     glm::uvec4 surfaces;  // events at sharp surfaces: x reflected (Fresnel or total internal reflection), y transmitted
 };
 // GLSL declares every member as a scalar array (uint/float), so std430 packs

@@ -216,7 +216,8 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     float maxError = 0.0f;
     std::memcpy(&maxError, &gpu.steps.z, sizeof maxError);
     stats.maxInvariantError = maxError;
-    stats.meanInvariantError = stats.steps > 0 ? gpu.invariant.x / static_cast<double>(stats.steps) : 0.0;
+    const double invariantSum = static_cast<double>(wide(gpu.invariant.x, gpu.invariant.y)) * 0x1p-32;
+    stats.meanInvariantError = stats.steps > 0 ? invariantSum / static_cast<double>(stats.steps) : 0.0;
     return stats;
 }
 

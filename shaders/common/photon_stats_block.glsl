@@ -6,6 +6,16 @@ layout(std430, binding = kPhotonStats) buffer PhotonStats {
     uint photon_tallies[4];   // escaped, received, cut off, blocked
     uint step_tallies[4];     // low word, high word, max invariant error bits
     uint deposit_tallies[4];  // low word, high word
-    float invariant_sum[4];   // x: sum over steps of the relative invariant error; yzw unused, as in C++
+    uint invariant_tallies[4];  // low word, high word: Σ over steps of the relative invariant error, fixed point
     uint surface_tallies[4];  // events at sharp surfaces: reflected, transmitted
 };
+
+// A ray's summed invariant error as a 64-bit fixed-point number of 2^-32
+// units (high word: the whole part): integer sums do not depend on the order
+// rays finish in, so a pass gives the same bits however it is dispatched or
+// shared among processes.
+uvec2 invariant_units(float error_sum) {
+    if (!(error_sum < 4.0e9f)) error_sum = 4.0e9f;  // a diverged ray (or NaN) saturates, past any meaningful mean
+    float whole = floor(error_sum);
+    return uvec2(uint((error_sum - whole) * 4294967296.0f), uint(whole));
+}

@@ -55,7 +55,9 @@ void add_steps(uint steps, float max_invariant_error, float invariant_error_sum)
     uint before = atomicAdd(step_tallies[0], steps);
     if (before + steps < before) atomicAdd(step_tallies[1], 1u);
     atomicMax(step_tallies[2], floatBitsToUint(max_invariant_error));
-    atomicAdd(invariant_sum[0], invariant_error_sum);
+    uvec2 units = invariant_units(invariant_error_sum);
+    uint low_before = atomicAdd(invariant_tallies[0], units.x);
+    atomicAdd(invariant_tallies[1], units.y + (low_before + units.x < low_before ? 1u : 0u));
 }
 
 // Where a ray first crossed a receiver's plane outside its square: a

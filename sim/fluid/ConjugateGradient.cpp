@@ -84,7 +84,7 @@ Preconditioner jacobiPreconditioner(const SevenPointOperator& a) {
     return [&a](const std::vector<double>& r, std::vector<double>& z) {
         z.resize(r.size());
         using Range = tbb::blocked_range<std::size_t>;
-        return tbb::parallel_reduce(
+        return tbb::parallel_deterministic_reduce(  // the same bits run after run
             Range(0, r.size(), 4096), 0.0,
             [&](const Range& range, double partial) {
                 for (std::size_t i = range.begin(); i < range.end(); ++i) {

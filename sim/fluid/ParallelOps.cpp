@@ -15,9 +15,11 @@ namespace {
 using Range = tbb::blocked_range<std::size_t>;
 constexpr std::size_t kGrain = 4096;
 
+// Deterministic: the range splits the same way whatever the threads do, so a
+// sum (and the solver built on it) gives the same bits run after run.
 template <class Body>
 double reduceSum(std::size_t n, Body body) {
-    return tbb::parallel_reduce(
+    return tbb::parallel_deterministic_reduce(
         Range(0, n, kGrain), 0.0,
         [&](const Range& r, double partial) {
             for (std::size_t i = r.begin(); i < r.end(); ++i) partial += body(i);

@@ -42,7 +42,7 @@ void SevenPointOperator::removeMeanOverUnknowns(std::vector<double>& values) con
     struct CountAndSum {
         double count = 0.0, sum = 0.0;
     };
-    const CountAndSum total = tbb::parallel_reduce(
+    const CountAndSum total = tbb::parallel_deterministic_reduce(  // the same bits run after run
         Range(0, values.size(), kGrain), CountAndSum{},
         [&](const Range& r, CountAndSum partial) {
             for (std::size_t c = r.begin(); c < r.end(); ++c)

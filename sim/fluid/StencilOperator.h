@@ -140,7 +140,8 @@ void forEachSlice(const SevenPointOperator& op, const Body& body) {
     }
 }
 
-// Σ over slices k of body(k), reduced like forEachSlice runs.
+// Σ over slices k of body(k), reduced like forEachSlice runs; in parallel, by
+// a deterministic reduction, so the bits do not depend on the threads' timing.
 template <class Body>
 double sumOverSlices(const SevenPointOperator& op, const Body& body) {
     if (!op.passesInParallel()) {
@@ -148,7 +149,7 @@ double sumOverSlices(const SevenPointOperator& op, const Body& body) {
         for (int k = 0; k < op.size.z; ++k) total += body(k);
         return total;
     }
-    return tbb::parallel_reduce(
+    return tbb::parallel_deterministic_reduce(
         tbb::blocked_range<int>(0, op.size.z), 0.0,
         [&](const tbb::blocked_range<int>& slices, double partial) {
             for (int k = slices.begin(); k < slices.end(); ++k) partial += body(k);
