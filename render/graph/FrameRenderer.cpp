@@ -42,13 +42,17 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
         !scene.receivers.empty() || fields_.hasScattering() || scene.tracer.storeFluence || options.tracePhotons;
     if (photonsWanted)
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
-    view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr, options.recordViewExits);
+    if (options.drawsImage)
+        view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr,
+                                            options.recordViewExits);
     const double voxel = fields.grid.smallestVoxelEdge();
     photonSettings_.seed = scene.render.seed;
     photonSettings_.stepLength = scene.tracer.stepVoxels * voxel;
     photonSettings_.maxSteps = scene.tracer.maxSteps > 0 ? static_cast<unsigned>(scene.tracer.maxSteps)
                                                           : defaultMaxSteps(fields.grid, photonSettings_.stepLength);
     photonSettings_.powerCutoff = scene.tracer.powerCutoff;
+    photonSettings_.share = options.share;
+    photonSettings_.exchange = options.exchange;
 }
 
 const gl::Texture3D* FrameRenderer::stepTexture() const {
@@ -62,7 +66,7 @@ StageReport FrameRenderer::relight(PhotonStats& stats) {
 
 void FrameRenderer::setCamera(const CameraDesc& camera) {
     scene_.camera = camera;
-    view_->setCamera(camera);
+    if (view_) view_->setCamera(camera);
     cameraChanged_ = true;
 }
 
@@ -112,12 +116,12 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         result.stages.push_back(runStage("photons", photonsNeeded, [&] {
             last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
         }));
-    const bool viewNeeded = fieldsChanged || photonsNeeded || cameraChanged_;
-    result.stages.push_back(runStage("view", viewNeeded, [&] {
+    const bool viewNeeded = view_ && (fieldsChanged || photonsNeeded || cameraChanged_);
+    if (view_) result.stages.push_back(runStage("view", viewNeeded, [&] {
         view_->run(fields_, {photons_ ? &photons_->fluence() : nullptr,
                              photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture()});
     }));
-    result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
+    if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
     }));
     tracedIndexVersion_ = fields.indexVersion;

@@ -41,6 +41,13 @@ struct RendererOptions {
     PhotonProgramOptions photons;
     bool recordViewExits = false;  // keep each pixel's exit direction (tests)
     bool tracePhotons = false;     // a photon stage even with nothing to light (tallies, paths, benchmarks)
+    // A light pass shared among processes (LightPassShare.h): this one's
+    // share and the exchange that combines the shares' tallies.
+    PassShare share{};
+    LightPassExchange* exchange = nullptr;
+    // False for a share that only traces light: no view and post stages,
+    // and the frame's image stays empty (another process draws it).
+    bool drawsImage = true;
 };
 
 class FrameRenderer {
@@ -69,7 +76,7 @@ public:
     const ReceiverMaps& receivers() const { return receivers_; }
     // Null when the scene has nothing for photons to light (no receivers, no scattering).
     const PhotonStage* photonStage() const { return photons_.get(); }
-    const ViewStage& viewStage() const { return *view_; }
+    const ViewStage& viewStage() const { return *view_; }  // only where the renderer draws images
 
 private:
     const gl::Texture3D* stepTexture() const;  // null for uniform steps

@@ -32,6 +32,51 @@ Rgb tallyOf(const layout::GpuPhotonStats& gpu, layout::PowerTally tally, const R
 
 std::uint64_t wide(std::uint32_t low, std::uint32_t high) { return (std::uint64_t{high} << 32) | low; }
 
+// Visits every counter of a pass that sums over shares, in one fixed order:
+// the GPU's 64-bit counters as their two words, its 32-bit ones, and the
+// host's (resumed photons, wavefront counts).
+template <typename Visit>
+void visitSummedCounters(layout::GpuPhotonStats& gpu, PhotonStats& host, Visit&& visit) {
+    for (auto& tally : gpu.power)
+        for (auto& channel : tally) visit.wide(channel[0], channel[1]);
+    for (int i = 0; i < 4; ++i) visit.narrow(gpu.photons[i]);
+    visit.wide(gpu.steps.x, gpu.steps.y);
+    visit.wide(gpu.deposits.x, gpu.deposits.y);
+    visit.wide(gpu.invariant.x, gpu.invariant.y);
+    visit.narrow(gpu.surfaces.x);
+    visit.narrow(gpu.surfaces.y);
+    visit.host(host.photonsResumed);
+    visit.host(host.resumeDispatches);
+    visit.host(host.wavefront.patches);
+    visit.host(host.wavefront.splits);
+    visit.host(host.wavefront.atLimit);
+    visit.host(host.wavefront.rays);
+}
+
+struct PackCounters {
+    std::vector<std::uint64_t>& sums;
+    void wide(std::uint32_t low, std::uint32_t high) { sums.push_back((std::uint64_t{high} << 32) | low); }
+    void narrow(std::uint32_t value) { sums.push_back(value); }
+    template <typename T> void host(T value) { sums.push_back(static_cast<std::uint64_t>(value)); }
+};
+
+struct UnpackCounters {
+    const std::vector<std::uint64_t>& sums;
+    std::size_t next = 0;
+    void wide(std::uint32_t& low, std::uint32_t& high) {
+        low = static_cast<std::uint32_t>(sums[next]);
+        high = static_cast<std::uint32_t>(sums[next++] >> 32);
+    }
+    void narrow(std::uint32_t& value) { value = static_cast<std::uint32_t>(sums[next++]); }  // wraps as the GPU's word
+    template <typename T> void host(T& value) { value = static_cast<T>(sums[next++]); }
+};
+
+std::vector<float> downloadFloats(const gl::Buffer& buffer) {
+    std::vector<float> values(buffer.bytes() / sizeof(float));
+    if (!values.empty()) buffer.download(values.data(), values.size() * sizeof(float));
+    return values;
+}
+
 int integratorNumber(TracerDesc::Integrator integrator) {
     switch (integrator) {
         case TracerDesc::Integrator::Euler: return 0;
@@ -174,13 +219,15 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     if (wavefront_) {
         stats.byWavefront = true;
         stats.wavefront = wavefront_->run({emissionFaces_, receivers_.count(), surfaces_.empty() ? 0u : surfaces_.count(),
-                                           settings.maxSteps, settings.stepLength, dispersion_, powerUnit_});
+                                           settings.maxSteps, settings.stepLength, dispersion_, powerUnit_,
+                                           settings.share});
     } else {
         tracePhotons(settings);
         stats.photons = photons_;
         stats.photonsResumed = resumed_;
         stats.resumeDispatches = resumeDispatches_;
     }
+    if (settings.exchange) combineShares(*settings.exchange, stats);
     receivers_.filter(powerUnit_);
     if (storeFluence_ > 0) {
         fields.gridBlock().bindUniform(layout::kGridBlock);
@@ -235,10 +282,11 @@ void PhotonStage::tracePhotons(const PhotonSettings& settings) {
                 static_cast<float>(dispersion_.b));
     resumed_ = 0;
     resumeDispatches_ = 0;
-    const auto total = static_cast<std::size_t>(photons_);
+    const PhotonRange range = shareRange(static_cast<std::size_t>(photons_), settings.share);
+    const std::size_t end = range.first + range.count;
     const std::size_t batchPhotons = resumable_ ? kResumableBatchPhotons : kBatchPhotons;
-    for (std::size_t offset = 0; offset < total; offset += batchPhotons) {
-        const std::size_t batch = std::min(batchPhotons, total - offset);
+    for (std::size_t offset = range.first; offset < end; offset += batchPhotons) {
+        const std::size_t batch = std::min(batchPhotons, end - offset);
         glUniform1ui(program_.uniform("photon_offset"), static_cast<GLuint>(offset));
         glUniform1ui(program_.uniform("batch_size"), static_cast<GLuint>(batch));
         if (resumable_) {
@@ -253,6 +301,35 @@ void PhotonStage::tracePhotons(const PhotonSettings& settings) {
         if (resumable_) resumeSuspended(batch);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void PhotonStage::combineShares(LightPassExchange& exchange, PhotonStats& stats) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    auto gpu = stats_.downloadAs<layout::GpuPhotonStats>();
+    LightPassTallies tallies;
+    visitSummedCounters(gpu, stats, PackCounters{tallies.sums});
+    const std::size_t counters = tallies.sums.size();
+    const std::vector<std::uint64_t> receiverTallies = receivers_.downloadTallies();
+    tallies.sums.insert(tallies.sums.end(), receiverTallies.begin(), receiverTallies.end());
+    tallies.maxima = {gpu.steps.z};
+    gl::Buffer* floatBuffers[] = {&rawFluence_, &rawDirection_, &paths_, &pathPower_};
+    for (const gl::Buffer* buffer : floatBuffers) {
+        const std::vector<float> values = downloadFloats(*buffer);
+        tallies.floatSums.insert(tallies.floatSums.end(), values.begin(), values.end());
+    }
+
+    exchange.combine(tallies);
+
+    visitSummedCounters(gpu, stats, UnpackCounters{tallies.sums});
+    gpu.steps.z = tallies.maxima.at(0);
+    stats_.upload(&gpu, sizeof gpu);
+    receivers_.uploadTallies({tallies.sums.begin() + static_cast<std::ptrdiff_t>(counters), tallies.sums.end()});
+    std::size_t offset = 0;
+    for (gl::Buffer* buffer : floatBuffers) {
+        const std::size_t bytes = buffer->bytes();
+        if (bytes > 0) buffer->upload(tallies.floatSums.data() + offset, bytes);
+        offset += bytes / sizeof(float);
+    }
 }
 
 void PhotonStage::resumeSuspended(std::size_t batch) {

@@ -9,6 +9,7 @@
 #include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
+#include "render/stages/LightPassShare.h"
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SharpSurfaceBuffer.h"
 #include "render/stages/WavefrontStage.h"
@@ -29,6 +30,8 @@ struct PhotonSettings {
     double stepLength = 0.0;      // uniform Δs, or the octree's Δs_min, in metres
     unsigned maxSteps = 0;        // trapped-ray cap
     double powerCutoff = 1e-4;    // relative to a photon's emitted power
+    PassShare share{};            // this process's share of the pass (LightPassShare.h)
+    LightPassExchange* exchange = nullptr;  // combines the shares' tallies; null for a whole pass
 };
 
 // Options that change the photon program itself (compile-time #defines).
@@ -100,6 +103,9 @@ public:
 
 private:
     void tracePhotons(const PhotonSettings& settings);
+    // Sums the raw tallies of every share of the pass into this one's
+    // (statistics, receivers, fluence, recorded paths), before the filters.
+    void combineShares(LightPassExchange& exchange, PhotonStats& stats);
     // Dispatches the photons the last dispatch suspended, and again, until
     // none is suspended; counts them into resumed_.
     void resumeSuspended(std::size_t batch);

@@ -1,5 +1,6 @@
 #include "render/stages/ReceiverMaps.h"
 
+#include "bridge/core/Error.h"
 #include "render/gl/GlDebug.h"
 #include "render/gl/ShaderLibrary.h"
 
@@ -67,6 +68,19 @@ void ReceiverMaps::filter(const glm::vec3& powerUnit) {
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     gl::checkpoint("receiver filter");
+}
+
+std::vector<std::uint64_t> ReceiverMaps::downloadTallies() const {
+    static_assert(sizeof(std::uint64_t) == 2 * sizeof(std::uint32_t));  // low word first, as on every GL host
+    std::vector<std::uint64_t> tallies(tallies_.bytes() / sizeof(std::uint64_t));
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (!tallies.empty()) tallies_.download(tallies.data(), tallies.size() * sizeof(std::uint64_t));
+    return tallies;
+}
+
+void ReceiverMaps::uploadTallies(const std::vector<std::uint64_t>& tallies) {
+    EIKON_CHECK_MSG(tallies.size() * sizeof(std::uint64_t) == tallies_.bytes(), "receiver tallies of another size");
+    if (!tallies.empty()) tallies_.upload(tallies.data(), tallies.size() * sizeof(std::uint64_t));
 }
 
 std::vector<float> ReceiverMaps::download(unsigned receiver) const {

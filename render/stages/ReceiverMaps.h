@@ -8,6 +8,7 @@
 #include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace eikon::render {
@@ -21,6 +22,11 @@ public:
     unsigned count() const { return static_cast<unsigned>(receivers_.size()); }
     const layout::GpuReceiver& receiver(unsigned i) const { return receivers_[i]; }
     void clearTallies() { tallies_.clearToZero(); }
+    // The raw tallies, one 64-bit fixed-point number per texel and channel
+    // (the shaders' low and high words), for a light pass shared among
+    // processes (LightPassShare.h).
+    std::vector<std::uint64_t> downloadTallies() const;
+    void uploadTallies(const std::vector<std::uint64_t>& tallies);
     void bind() const;
     // Turns the tallies into irradiance maps; powerUnit is W per tally unit.
     void filter(const glm::vec3& powerUnit);

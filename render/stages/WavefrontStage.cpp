@@ -53,7 +53,8 @@ void WavefrontStage::dispatch(Mode mode, unsigned invocations) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void WavefrontStage::traceWavefront(unsigned emitter, unsigned faces, int channel, int branch) {
+void WavefrontStage::traceWavefront(unsigned emitter, unsigned faces, int channel, int branch,
+                                    const PassShare& share) {
     glUniform1ui(program_.uniform("emission_faces"), faces);
     glUniform1ui(program_.uniform("seed_emitter"), emitter);
     glUniform1i(program_.uniform("channel"), channel);
@@ -62,6 +63,7 @@ void WavefrontStage::traceWavefront(unsigned emitter, unsigned faces, int channe
     const unsigned cells = faces * cellsPerEdge * cellsPerEdge;
     const unsigned chunkCells = std::max(1u, capacity_ / (2u * kChunkHeadroom));
     for (unsigned first = 0; first < cells; first += chunkCells) {
+        if (!share.ownsChunk(chunk_++)) continue;
         unsigned count = 2u * std::min(chunkCells, cells - first);
         levels_[0].bindStorage(layout::kWavefrontChildren);
         glUniform1ui(program_.uniform("first_cell"), first);
@@ -84,6 +86,7 @@ void WavefrontStage::traceWavefront(unsigned emitter, unsigned faces, int channe
 
 WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     program_.use();
+    chunk_ = 0;
     counters_.clearToZero();
     counters_.bindStorage(layout::kWavefrontCounters);
     glUniform1ui(program_.uniform("receiver_count"), inputs.receiverCount);
@@ -106,7 +109,7 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     for (unsigned emitter = 0; emitter < inputs.emissionFaces.size(); ++emitter)
         for (int channel = 0; channel < channels; ++channel)
             for (int branch = -1; branch < branches; ++branch)
-                traceWavefront(emitter, inputs.emissionFaces[emitter], dispersive_ ? channel : -1, branch);
+                traceWavefront(emitter, inputs.emissionFaces[emitter], dispersive_ ? channel : -1, branch, inputs.share);
     gl::checkpoint("wavefront stage");
     const auto counters = counters_.downloadAs<layout::GpuWavefrontCounters>();
     return {counters.finished, counters.splits, counters.atLimit, counters.rays};

@@ -13,6 +13,7 @@
 #include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
 #include "render/gl/ShaderLibrary.h"
+#include "render/stages/LightPassShare.h"
 
 #include <glm/vec3.hpp>
 
@@ -38,6 +39,7 @@ struct WavefrontInputs {
     double stepLength = 0.0;  // m
     Rgb dispersion{1.0};
     glm::vec3 powerUnit{0.0f};  // W per fixed-point unit, per channel
+    PassShare share{};          // the seed chunks this process traces
 };
 
 // Faces of an emitter's emission domain (shaders/wavefront_trace.comp,
@@ -61,7 +63,7 @@ private:
     void dispatch(Mode mode, unsigned invocations);
     // One wavefront: the emitter's faces in chunks of seeds, each refined
     // level by level until no patch splits.
-    void traceWavefront(unsigned emitter, unsigned faces, int channel, int branch);
+    void traceWavefront(unsigned emitter, unsigned faces, int channel, int branch, const PassShare& share);
 
     TracerDesc::Wavefront settings_;
     bool dispersive_ = false;
@@ -69,6 +71,7 @@ private:
     gl::Program program_;
     gl::Buffer levels_[2];
     gl::Buffer counters_;
+    std::size_t chunk_ = 0;  // the pass's seed chunks so far, over all its wavefronts
 };
 
 }  // namespace eikon::render
