@@ -91,6 +91,20 @@ bool SceneFields::changesOverTime() const {
     return false;
 }
 
+bool SceneFields::framesAreIndependent() const {
+    if (fluid_) return false;
+    for (const auto& mesh : meshes_)
+        if (mesh->shape.changesOverTime()) return false;
+    return true;
+}
+
+void SceneFields::seekFrame(int frame) {
+    EIKON_CHECK_MSG(framesAreIndependent(), "seekFrame in a scene whose frames depend on each other");
+    if (!volume_ || !volume_->isSequence()) return;  // a static scene: every frame is the same
+    volume_->seekFrame(frame);
+    refreshFromSimulation();
+}
+
 std::vector<const TriangleMesh*> SceneFields::deformedMeshes() const {
     std::vector<const TriangleMesh*> meshes;
     for (const auto& mesh : meshes_) meshes.push_back(&mesh->shape.mesh());

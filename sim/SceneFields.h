@@ -37,6 +37,14 @@ public:
     // refreshes fields() (only the cells moving objects touched, without a
     // fluid solver); a static scene stays as it is.
     void advanceFrame();
+    // Whether frame k's fields can be made without frames 0 … k−1: no fluid
+    // solver and no moving mesh or water object (a static scene, or a volume
+    // sequence with still objects over it).
+    bool framesAreIndependent() const;
+    // The fields of frame `frame` straight away, for such a scene: a volume
+    // sequence loads that frame's file (as `frame` calls of advanceFrame
+    // would, bit for bit).
+    void seekFrame(int frame);
 
     // The live loop's two halves of advanceFrame for a scene with a fluid
     // solver, whose fields go straight into GPU memory

@@ -15,6 +15,14 @@
 
 namespace eikon::app {
 
+// A failure another process of the same job has reported (apps/eikon/Ranks.h):
+// this one exits with its code and says nothing more.
+struct ReportedElsewhere : std::exception {
+    explicit ReportedElsewhere(int exitCode) : code(exitCode) {}
+    const char* what() const noexcept override { return "reported by another rank"; }
+    int code;
+};
+
 template <typename Body>
 int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program, Body&& body) {
     try {
@@ -30,6 +38,8 @@ int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program
     io::removeTemporariesOnSignals();  // an interrupted run leaves no half-written files
     try {
         return body();
+    } catch (const ReportedElsewhere& reported) {
+        return reported.code;
     } catch (const InputError& error) {
         std::cerr << program << ": error: " << error.what() << "\n";
         return 2;

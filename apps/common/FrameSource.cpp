@@ -1,5 +1,7 @@
 #include "apps/common/FrameSource.h"
 
+#include "bridge/core/Error.h"
+
 namespace eikon::app {
 
 FrameSource::FrameSource(const Scene& scene, sim::SceneFields& fields, const render::RendererOptions& options,
@@ -41,6 +43,17 @@ void FrameSource::publishNext() {
     const auto start = std::chrono::steady_clock::now();
     fields_.advanceFrame();
     host_.simulated = true;
+    host_.simulateMs = millisecondsSince(start);
+    host_.time = fields_.time();
+    host_.phases = fields_.lastTimings();
+    if (captureExportArrays_) captureForExport(fields_, host_);
+}
+
+void FrameSource::seekFrame(int frame) {
+    EIKON_CHECK_MSG(!live_ && fields_.framesAreIndependent(), "seekFrame on a scene whose frames depend on each other");
+    const auto start = std::chrono::steady_clock::now();
+    fields_.seekFrame(frame);
+    host_.simulated = frame > 0 && fields_.changesOverTime();
     host_.simulateMs = millisecondsSince(start);
     host_.time = fields_.time();
     host_.phases = fields_.lastTimings();

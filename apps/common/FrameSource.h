@@ -47,6 +47,11 @@ public:
     // host fields by one frame.
     void publishNext();
 
+    // Host fields whose frames are independent (SceneFields::framesAreIndependent):
+    // makes frame `frame` current directly, for a process that renders every
+    // K-th frame of a run.
+    void seekFrame(int frame);
+
     // What produced the current frame, and its fields (ring slot or host memory).
     const ProducedFrame& current() const;
     ConstFieldViews currentViews() const;

@@ -62,7 +62,7 @@ render::RendererOptions rendererOptionsFor(const Scene& scene) {
     return options;
 }
 
-FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder)
+FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder, bool deferIndexes)
     : exports_(scene.exports) {
     if (exports_.vtk.enabled) {
         vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
@@ -75,6 +75,23 @@ FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& ou
         if (exports_.vtk.photonPaths > 0) paths_.emplace(outputFolder, "photon_paths", exports_.vtk.compression);
     }
     if (exports_.vdb.enabled) vdb_.emplace(outputFolder, "fields");
+    for (io::VtkSeriesIndex* index : seriesIndexes()) index->setDeferred(deferIndexes);
+}
+
+std::vector<io::VtkSeriesIndex*> FrameExporter::seriesIndexes() {
+    std::vector<io::VtkSeriesIndex*> indexes;
+    if (vtk_) indexes.push_back(&vtk_->index());
+    for (auto* series : {&receivers_, &meshes_, &paths_})
+        if (*series) indexes.push_back(&(*series)->index());
+    return indexes;
+}
+
+void FrameExporter::writeIndexes(const std::map<int, double>& frameTimes) {
+    for (io::VtkSeriesIndex* index : seriesIndexes()) {
+        for (const auto& [frame, time] : frameTimes)
+            if (exports_.vtk.exportsFrame(frame)) index->record(frame, time);
+        if (!index->empty()) index->write();
+    }
 }
 
 bool FrameExporter::wantsFrame(int frame) const {

@@ -14,6 +14,7 @@
 #include "render/graph/FrameRenderer.h"
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -41,13 +42,20 @@ render::RendererOptions rendererOptionsFor(const Scene& scene);
 
 class FrameExporter {
 public:
-    FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder);
+    // `deferIndexes`: the .pvd and .series files wait for writeIndexes
+    // (the processes of a run that share its frames).
+    FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder, bool deferIndexes = false);
 
     bool wantsFrame(int frame) const;
     // Writes what frame `frame` exports; call only when wantsFrame(frame).
     void write(int frame, const ExportInputs& inputs, const render::FrameRenderer& renderer);
+    // Writes every series index with these frames (number, time), of which
+    // it lists those the scene exports: the whole run's, once all exist.
+    void writeIndexes(const std::map<int, double>& frameTimes);
 
 private:
+    std::vector<io::VtkSeriesIndex*> seriesIndexes();  // of the .vti and .vtp series written
+
     ExportDesc exports_;
     std::optional<io::VtkSeriesWriter> vtk_;
     std::optional<io::VdbFrameWriter> vdb_;

@@ -1,9 +1,11 @@
 #include "apps/eikon/FrameLoop.h"
 
 #include "apps/common/FrameSource.h"
-#include "apps/eikon/FrameExport.h"
+#include "apps/eikon/FrameOutputs.h"
+#include "apps/eikon/FrameShareLoop.h"
+#include "apps/eikon/PowerWarning.h"
+#include "apps/eikon/Ranks.h"
 #include "bridge/grid/FieldViews.h"
-#include "io/image/ImageIo.h"
 
 #include <nlohmann/json.hpp>
 
@@ -54,73 +56,25 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
     return json;
 }
 
-double renderMilliseconds(const render::FrameResult& result) {
-    double ms = 0.0;
-    for (const auto& stage : result.stages) ms += stage.milliseconds;
-    return ms;
-}
-
-// Writes frame `frame`'s image, HDR and report line, and what the scene's
-// `export` section asks of it.
-class FrameOutputs {
-public:
-    FrameOutputs(const Scene& scene, io::OutputFolder& output) : output_(output), exporter_(scene, output.root()) {}
-
-    // `exported` is read only when the scene exports this frame.
-    void write(int frame, const render::FrameResult& result, const std::string& reportLine,
-               const render::FrameRenderer& renderer, const ExportInputs& exported) {
-        io::writePng(output_.framePath(frame), result.image.width, result.image.height, result.image.rgba);
-        if (!result.hdr.empty())
-            io::writeHdr(output_.framePath(frame).replace_extension(".hdr"), result.image.width, result.image.height,
-                         result.hdr);
-        if (exporter_.wantsFrame(frame)) exporter_.write(frame, exported, renderer);
-        output_.appendReport(reportLine);  // last: a frame's line means all its files are in place
-    }
-
-private:
-    io::OutputFolder& output_;
-    FrameExporter exporter_;
-};
-
-// Says on stderr, once a run, when a frame's photons do not account for
-// their power (balance error above 1e-3), or when photons stopped before
-// their light was spent lose more than 0.1% of it net of the roulette's
-// gain (tracer.max_steps, or a single step past llvmpipe's loop cap): the figures are then
-// not what the scene would give.
-class PowerWarning {
-public:
-    void check(int frame, const render::FrameResult& result) {
-        if (warned_) return;
-        const render::PhotonStats& p = result.photons;
-        const double emitted = p.emitted.r + p.emitted.g + p.emitted.b;
-        if (emitted <= 0.0) return;
-        const Rgb lost = p.cutOff - p.rouletteGain;
-        const double lostShare = (lost.r + lost.g + lost.b) / emitted;
-        if (p.balanceError() > 1e-3) {
-            std::cerr << "eikon: warning: frame " << frame << ": the photons' energy balance is off by "
-                      << p.balanceError() << " (report.jsonl, photons); later frames are not reported here\n";
-            warned_ = true;
-        } else if (lostShare > 1e-3) {
-            std::cerr << "eikon: warning: frame " << frame << ": " << 100.0 * lostShare
-                      << "% of the emitted power was cut off with photons still in flight (tracer.max_steps, or "
-                         "one step longer than the loop cap of OpenGL on the CPU); later frames are not reported "
-                         "here\n";
-            warned_ = true;
-        }
-    }
-
-private:
-    bool warned_ = false;
-};
-
 // Each turn renders the current frame and, while more follow, produces the
 // next (FrameSource.h). The host fields' frame time includes the advance
 // that produced the frame, as the ring's includes nothing of the next one's
 // production but what the render did not hide.
 void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, const OpenOutput& openOutput,
-                  ProgressBar& progress, bool pipelined) {
-    FrameSource source(scene, fields, rendererOptionsFor(scene), pipelined,
-                       scene.exports.vtk.enabled || scene.exports.vdb.enabled);
+                  ProgressBar& progress, const LoopOptions& options) {
+    render::RendererOptions rendererOptions = rendererOptionsFor(scene);
+    Ranks& ranks = Ranks::world();
+    // Sharing the light pass: every rank simulates the same fields, traces
+    // its share of the photons, and rank 0 draws and writes the frame.
+    const bool writes = options.distribution != Distribution::Photons || ranks.first();
+    if (options.distribution == Distribution::Photons) {
+        rendererOptions.share = {static_cast<unsigned>(ranks.rank()), static_cast<unsigned>(ranks.size())};
+        rendererOptions.exchange = &ranks.lightPassExchange();
+        rendererOptions.drawsImage = ranks.first();
+    }
+    const bool pipelined = options.pipelined;
+    FrameSource source(scene, fields, rendererOptions, pipelined,
+                       writes && (scene.exports.vtk.enabled || scene.exports.vdb.enabled));
     std::optional<FrameOutputs> outputs;  // opened once frame 0 is rendered: its GPU resources all fit
     const bool simulated = fields.changesOverTime();
     PowerWarning warning;
@@ -135,12 +89,16 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
             timing.produceNextMs = next.simulateMs + next.writeFieldsMs;
         }
         const ProducedFrame& current = source.current();
-        warning.check(frame, result);
         timing.frameMs = millisecondsSince(start) + (source.throughRing() ? 0.0 : current.simulateMs);
-        if (!outputs) outputs.emplace(scene, openOutput());
-        outputs->write(frame, result,
-                      frameReportJson(frame, current, simulated, result, timing, pipelined && source.throughRing()),
-                      source.renderer(), {current.time, source.currentViews(), current.exportArrays, current.meshes});
+        if (writes) {
+            warning.check(frame, result);
+            if (!outputs) outputs.emplace(scene, openOutput());
+            outputs->write(frame, result,
+                           frameReportJson(frame, current, simulated, result, timing,
+                                           pipelined && source.throughRing(), options.distribution),
+                           source.renderer(),
+                           {current.time, source.currentViews(), current.exportArrays, current.meshes});
+        }
         if (more) source.publishNext();  // frame k's fields stay current until its outputs are written
         progress.advance();
     }
@@ -148,8 +106,24 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
 
 }  // namespace
 
+double renderMilliseconds(const render::FrameResult& result) {
+    double ms = 0.0;
+    for (const auto& stage : result.stages) ms += stage.milliseconds;
+    return ms;
+}
+
+const char* distributionName(Distribution distribution) {
+    switch (distribution) {
+        case Distribution::None: return "none";
+        case Distribution::Photons: return "photons";
+        case Distribution::Frames: return "frames";
+    }
+    return "none";
+}
+
 std::string frameReportJson(int frame, const ProducedFrame& produced, bool simulated,
-                            const render::FrameResult& result, const LoopTiming& timing, bool pipelined) {
+                            const render::FrameResult& result, const LoopTiming& timing, bool pipelined,
+                            Distribution distribution) {
     nlohmann::json stages = nlohmann::json::array();
     if (simulated) {
         stages.push_back({{"name", "simulate"}, {"ran", produced.simulated}, {"ms", produced.simulateMs}});
@@ -170,6 +144,8 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
     const bool tracesPhotons = std::any_of(result.stages.begin(), result.stages.end(),
                                            [](const render::StageReport& stage) { return stage.name == "photons"; });
     if (tracesPhotons) report["photons"] = photonsJson(result.photons);
+    if (distribution != Distribution::None)
+        report["distribution"] = {{"mode", distributionName(distribution)}, {"ranks", Ranks::world().size()}};
     if (simulated) {
         nlohmann::json phases = nlohmann::json::array();
         for (const auto& phase : produced.phases)
@@ -184,7 +160,10 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
 
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, const OpenOutput& openOutput,
                ProgressBar& progress, const LoopOptions& options) {
-    renderFrames(scene, fields, frames, openOutput, progress, options.pipelined);
+    if (options.distribution == Distribution::Frames)
+        renderFrameShare(scene, fields, frames, openOutput, progress, options.outputRoot);
+    else
+        renderFrames(scene, fields, frames, openOutput, progress, options);
     progress.finish();
 }
 

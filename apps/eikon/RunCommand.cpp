@@ -1,6 +1,7 @@
 #include "apps/eikon/RunCommand.h"
 
 #include "apps/eikon/FrameLoop.h"
+#include "apps/eikon/Ranks.h"
 #include "bridge/core/Error.h"
 #include "apps/eikon/ProgressBar.h"
 #include "io/files/OutputFolder.h"
@@ -12,6 +13,7 @@
 #include "sim/SceneFields.h"
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 namespace eikon::app {
@@ -29,33 +31,74 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
                     "Simulate frame k+1 while frame k renders: on, off, or auto (on unless OpenGL renders on the CPU "
                     "cores the simulation uses, as llvmpipe does)")
         ->check(CLI::IsMember({"auto", "on", "off"}));
+    run->add_option("--distribute", options.distribute,
+                    "Under mpirun: how the ranks share the run. photons: each traces its share of every frame's "
+                    "photons and rank 0 writes the frame (bit-identical to one process); frames: rank r renders "
+                    "frames r, r+K, ... of a scene whose frames are independent (no fluid solver, no moving "
+                    "objects); auto: frames where they are independent and there are several, else photons")
+        ->check(CLI::IsMember({"auto", "photons", "frames"}));
     run->add_flag("--vtk", options.vtk,
                   "Export every frame's fields as DIR/vtk/fields_NNNNN.vti with a .pvd and .series for ParaView, "
                   "with the default field set, whatever the scene's export.vtk says");
 }
 
+namespace {
+
+// What --distribute asks for, on the ranks there are: InputError where
+// `frames` is asked of a scene whose frames depend on each other.
+Distribution chooseDistribution(const RunOptions& options, const Scene& scene, const sim::SceneFields& fields,
+                                const Ranks& ranks) {
+    if (!ranks.distributed()) return Distribution::None;
+    const bool independent = fields.framesAreIndependent();
+    if (options.distribute == "frames" && !independent)
+        throw InputError(scene.sourcePath + ": --distribute",
+                         "photons for a scene whose frames depend on each other (a fluid solver, moving meshes or "
+                         "water)",
+                         "frames");
+    if (options.distribute == "photons") return Distribution::Photons;
+    if (options.distribute == "frames") return Distribution::Frames;
+    return independent && options.frames > 1 ? Distribution::Frames : Distribution::Photons;
+}
+
+}  // namespace
+
 int runCommand(const RunOptions& options) {
-    // Everything the user supplied is checked before anything is written.
-    Scene scene = loadSceneFile(options.scenePath, options.overrides);
-    if (options.vtk) {  // the default field set, whatever the scene says
-        scene.exports.vtk = VtkExportDesc{};
-        scene.exports.vtk.enabled = true;
-    }
-    if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
-    sim::SceneFields fields(scene);
-    render::requireEstimatorFits(scene, fields.fields().hasScattering() || fields.scatteringChangesOverTime());
-    const std::filesystem::path outDir =
-        options.outDir.empty() ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
-                               : std::filesystem::path(options.outDir);
-    io::OutputFolder::requireUsable(outDir, options.force);
-    auto context = gl::createHeadlessContext();  // before the folder: a machine without GL leaves nothing behind
-    ProgressBar progress(options.frames, options.quiet);
+    Ranks& ranks = Ranks::world();
+    Scene scene;
+    std::unique_ptr<sim::SceneFields> fields;
+    std::filesystem::path outDir;
+    Distribution distribution = Distribution::None;
+    std::unique_ptr<gl::GlContext> context;
+    // Everything the user supplied is checked before anything is written,
+    // by every rank alike (Ranks::checkInputsTogether).
+    ranks.checkInputsTogether([&] {
+        scene = loadSceneFile(options.scenePath, options.overrides);
+        if (options.vtk) {  // the default field set, whatever the scene says
+            scene.exports.vtk = VtkExportDesc{};
+            scene.exports.vtk.enabled = true;
+        }
+        if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
+        fields = std::make_unique<sim::SceneFields>(scene);
+        render::requireEstimatorFits(scene, fields->fields().hasScattering() || fields->scatteringChangesOverTime());
+        distribution = chooseDistribution(options, scene, *fields, ranks);
+        outDir = options.outDir.empty()
+                     ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
+                     : std::filesystem::path(options.outDir);
+        if (ranks.first()) io::OutputFolder::requireUsable(outDir, options.force);
+        // Before the folder: a machine without GL leaves nothing behind. A
+        // rank takes the GPU of its local rank where a machine has several.
+        context = gl::createHeadlessContext(static_cast<unsigned>(ranks.localRank()));
+    });
+    const int ownFrames =
+        distribution == Distribution::Frames ? (options.frames + ranks.size() - 1) / ranks.size() : options.frames;
+    ProgressBar progress(ownFrames, options.quiet || !ranks.first());
     const bool pipelined =
         options.pipelining == "on" || (options.pipelining == "auto" && !context->info().rendersOnCpu());
     std::optional<io::OutputFolder> output;
     try {
-        runFrames(scene, fields, options.frames, [&]() -> io::OutputFolder& { return output.emplace(outDir, options.force); },
-                  progress, {pipelined});
+        runFrames(scene, *fields, options.frames,
+                  [&]() -> io::OutputFolder& { return output.emplace(outDir, options.force); }, progress,
+                  {pipelined, distribution, outDir});
     } catch (const gl::GpuMemoryError& error) {  // a size the scene asked for, too large for this machine
         throw InputError(scene.sourcePath + ": " + error.what());
     }

@@ -15,8 +15,9 @@ struct RunOptions {
     std::vector<std::string> overrides;
     bool quiet = false;
     bool force = false;
-    bool vtk = false;
-    std::string pipelining = "auto";  // on, off, or auto: on unless OpenGL renders on the CPU  // also export every frame's fields as a ParaView time series
+    bool vtk = false;                  // also export every frame's fields as a ParaView time series
+    std::string pipelining = "auto";  // on, off, or auto: on unless OpenGL renders on the CPU
+    std::string distribute = "auto";  // under mpirun: photons, frames, or auto (FrameLoop.h, Distribution)
 };
 
 void addRunCommand(CLI::App& app, RunOptions& options);

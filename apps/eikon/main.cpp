@@ -1,15 +1,32 @@
 // eikon: the command-line front end. Composition only: parse the command
 // line, hand over to a command, map failures to exit codes
-// (0 success, 2 bad input, 1 anything else).
+// (0 success, 2 bad input, 1 anything else). Under mpirun every rank runs
+// this; apps/eikon/Ranks.h says how they share a run and fail together.
 #include "apps/common/ExitCodes.h"
 #include "apps/eikon/AccuracyCommand.h"
 #include "apps/eikon/BenchCommand.h"
 #include "apps/eikon/InfoCommand.h"
+#include "apps/eikon/Ranks.h"
 #include "apps/eikon/RunCommand.h"
 
 #include <CLI/CLI.hpp>
 
+namespace {
+
+// bench and accuracy measure one process; under mpirun every rank would
+// measure the same thing at once.
+void requireOneProcess(eikon::app::Ranks& ranks, const char* command) {
+    ranks.checkInputsTogether([&] {
+        if (ranks.distributed())
+            throw eikon::InputError(std::string("eikon ") + command, "one process (start it without mpirun)",
+                                    std::to_string(ranks.size()) + " ranks");
+    });
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+    eikon::app::Ranks& ranks = eikon::app::Ranks::start(argc, argv);
     CLI::App app{"eikon: eikonal photon tracing through refractive media that change while you watch"};
     app.require_subcommand(1);
     eikon::app::RunOptions runOptions;
@@ -20,9 +37,17 @@ int main(int argc, char** argv) {
     eikon::app::AccuracyOptions accuracyOptions;
     eikon::app::addAccuracyCommand(app, accuracyOptions);
     return eikon::app::parseAndRun(app, argc, argv, "eikon", [&] {
-        if (app.got_subcommand("run")) return eikon::app::runCommand(runOptions);
-        if (app.got_subcommand("bench")) return eikon::app::benchCommand(benchOptions);
-        if (app.got_subcommand("accuracy")) return eikon::app::accuracyCommand(accuracyOptions);
-        return eikon::app::infoCommand();
+        return ranks.runGuarded([&] {
+            if (app.got_subcommand("run")) return eikon::app::runCommand(runOptions);
+            if (app.got_subcommand("bench")) {
+                requireOneProcess(ranks, "bench");
+                return eikon::app::benchCommand(benchOptions);
+            }
+            if (app.got_subcommand("accuracy")) {
+                requireOneProcess(ranks, "accuracy");
+                return eikon::app::accuracyCommand(accuracyOptions);
+            }
+            return eikon::app::infoCommand();
+        });
     });
 }

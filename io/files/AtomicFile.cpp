@@ -1,5 +1,6 @@
 #include "io/files/AtomicFile.h"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -53,9 +54,20 @@ struct InFlight {
     ~InFlight() { unregisterTemporary(temporary); }
 };
 
+// What a signal ends the process with after the temporaries (exitOnSignalsWith):
+// set before the handlers may run, then only read.
+std::atomic<int> signalExitCode{-1};
+std::array<char, 512> signalMessage{};
+std::atomic<std::size_t> signalMessageLength{0};
+
 extern "C" void removeTemporariesAndDie(int signal) {
     for (std::size_t slot = 0; slot < kSlots; ++slot)
         if (inFlightUsed[slot].load(std::memory_order_acquire)) ::unlink(inFlightPaths[slot].data());
+    if (const int code = signalExitCode.load(); code >= 0) {
+        const ssize_t ignored = ::write(STDERR_FILENO, signalMessage.data(), signalMessageLength.load());
+        (void)ignored;
+        ::_exit(code);
+    }
     std::signal(signal, SIG_DFL);
     std::raise(signal);
 }
@@ -78,6 +90,13 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
 
 void removeTemporariesOnSignals() {
     for (const int signal : {SIGINT, SIGTERM, SIGHUP}) std::signal(signal, removeTemporariesAndDie);
+}
+
+void exitOnSignalsWith(int code, const std::string& message) {
+    const std::size_t length = std::min(message.size(), signalMessage.size());
+    std::copy_n(message.begin(), length, signalMessage.begin());
+    signalMessageLength.store(length);
+    signalExitCode.store(code);
 }
 
 void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace eikon::io {
@@ -26,5 +27,10 @@ void commitTemporary(const std::filesystem::path& temporary, const std::filesyst
 // run leaves only whole files under their final names and no temporaries.
 // (kill -9 cannot be caught: OutputFolder clears what it leaves.)
 void removeTemporariesOnSignals();
+// From now on such a signal, once the temporaries are removed, writes
+// `message` to stderr and ends the process with exit code `code` instead:
+// for a rank of an MPI job, whose launcher passes an exit code on but
+// reports a death by signal as a crash of its own.
+void exitOnSignalsWith(int code, const std::string& message);
 
 }  // namespace eikon::io

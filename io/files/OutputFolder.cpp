@@ -117,14 +117,16 @@ OutputFolder::~OutputFolder() {
     }
 }
 
-fs::path OutputFolder::framePath(int frame) const {
+fs::path OutputFolder::framePathIn(const fs::path& root, int frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05d.png", frame);
-    return root_ / "frames" / name;
+    return root / "frames" / name;
 }
 
-void OutputFolder::appendReport(const std::string& jsonLine) {
-    report_ += jsonLine + "\n";
+void OutputFolder::appendReport(const std::string& jsonLine) { appendReports({jsonLine}); }
+
+void OutputFolder::appendReports(const std::vector<std::string>& jsonLines) {
+    for (const std::string& line : jsonLines) report_ += line + "\n";
     writeFileAtomically(root_ / "report.jsonl", report_);
     recordWrittenFiles();
 }

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace eikon::io {
 
@@ -25,12 +26,17 @@ public:
     ~OutputFolder();
 
     const std::filesystem::path& root() const { return root_; }
-    std::filesystem::path framePath(int frame) const;
+    std::filesystem::path framePath(int frame) const { return framePathIn(root_, frame); }
+    // DIR/frames/frame_NNNNN.png of the folder `root` (for the processes of a
+    // run that write frames into a folder another one opened).
+    static std::filesystem::path framePathIn(const std::filesystem::path& root, int frame);
 
     // Appends one JSON line to report.jsonl, rewriting the file atomically so
     // a reader never sees half a line, and brings the list of written files
     // up to date.
     void appendReport(const std::string& jsonLine);
+    // The same for several lines at once, in order (one rewrite).
+    void appendReports(const std::vector<std::string>& jsonLines);
     // Rewrites DIR/.eikon-run with every file now in the folder that was not
     // there when the run began.
     void recordWrittenFiles() const;

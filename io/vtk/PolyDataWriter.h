@@ -50,6 +50,7 @@ public:
                    VtkExportDesc::Compression compression = VtkExportDesc::Compression::Zlib);
     void writeFrame(int frame, double time, const PolyData& data);
     const VtkSeriesIndex& index() const { return index_; }
+    VtkSeriesIndex& index() { return index_; }
 
 private:
     VtkExportDesc::Compression compression_;

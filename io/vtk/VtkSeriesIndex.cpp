@@ -50,8 +50,16 @@ std::filesystem::path VtkSeriesIndex::seriesPath() const {
 }
 
 void VtkSeriesIndex::add(int frame, double time) {
+    record(frame, time);
+    if (!deferred_) write();
+}
+
+void VtkSeriesIndex::record(int frame, double time) {
     EIKON_CHECK_MSG(frame >= 0 && std::isfinite(time), "frame " + std::to_string(frame));
     frameTimes_[frame] = time;
+}
+
+void VtkSeriesIndex::write() const {
     std::string pvd =
         "<?xml version=\"1.0\"?>\n"
         "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"

@@ -23,14 +23,22 @@ public:
     std::filesystem::path collectionPath() const;  // NAME.pvd
     std::filesystem::path seriesPath() const;      // NAME.EXT.series
 
-    // Records (or replaces) a frame's time and rewrites both index files.
+    // Records (or replaces) a frame's time and rewrites both index files —
+    // unless deferred, when the files wait for write(): the processes of a
+    // run that share its frames (`--distribute frames`) leave the index to
+    // the first, once every frame exists.
     void add(int frame, double time);
+    void setDeferred(bool deferred) { deferred_ = deferred; }
+    void record(int frame, double time);
+    void write() const;
+    bool empty() const { return frameTimes_.empty(); }
 
 private:
     std::filesystem::path directory_;
     std::string baseName_;
     std::string extension_;
     std::map<int, double> frameTimes_;  // ordered by frame
+    bool deferred_ = false;
 };
 
 }  // namespace eikon::io

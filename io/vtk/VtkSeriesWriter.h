@@ -42,6 +42,7 @@ public:
     std::filesystem::path framePath(int frame) const { return index_.framePath(frame); }
     std::filesystem::path collectionPath() const { return index_.collectionPath(); }  // NAME.pvd
     std::filesystem::path seriesPath() const { return index_.seriesPath(); }          // NAME.vti.series
+    VtkSeriesIndex& index() { return index_; }
 
 private:
     std::filesystem::path directory_;

@@ -93,7 +93,7 @@ std::unique_ptr<GlContext> contextOn(EGLDisplay display, const std::string& plat
 
 bool clientHas(const char* extension) { return epoxy_has_egl_extension(EGL_NO_DISPLAY, extension); }
 
-std::unique_ptr<GlContext> tryDevicePlatform(std::vector<std::string>& attempts) {
+std::unique_ptr<GlContext> tryDevicePlatform(unsigned firstDevice, std::vector<std::string>& attempts) {
     if (!clientHas("EGL_EXT_platform_device") || !clientHas("EGL_EXT_device_enumeration")) {
         attempts.push_back("EGL device platform: not offered by this EGL");
         return nullptr;
@@ -102,11 +102,15 @@ std::unique_ptr<GlContext> tryDevicePlatform(std::vector<std::string>& attempts)
     eglQueryDevicesEXT(0, nullptr, &count);
     std::vector<EGLDeviceEXT> devices(static_cast<size_t>(count));
     eglQueryDevicesEXT(count, devices.data(), &count);
+    std::vector<EGLint> hardware;
     for (EGLint i = 0; i < count; ++i) {
         const char* deviceExtensions = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
         // Software devices are reached through the surfaceless platform instead.
-        if (deviceExtensions && std::string(deviceExtensions).find("EGL_MESA_device_software") != std::string::npos)
-            continue;
+        if (!deviceExtensions || std::string(deviceExtensions).find("EGL_MESA_device_software") == std::string::npos)
+            hardware.push_back(i);
+    }
+    for (std::size_t k = 0; k < hardware.size(); ++k) {
+        const EGLint i = hardware[(firstDevice + k) % hardware.size()];
         const std::string name = "EGL device platform, device " + std::to_string(i);
         EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
         if (auto context = contextOn(display, name, attempts)) return context;
@@ -127,14 +131,14 @@ std::unique_ptr<GlContext> trySurfacelessPlatform(std::vector<std::string>& atte
 
 }  // namespace
 
-std::unique_ptr<GlContext> createHeadlessContext() {
+std::unique_ptr<GlContext> createHeadlessContext(unsigned hardwareDevice) {
     std::vector<std::string> attempts;
     const char* forced = std::getenv("EIKON_EGL_PLATFORM");
     const std::string choice = forced ? forced : "";
     if (!choice.empty() && choice != "device" && choice != "surfaceless")
         throw std::runtime_error("EIKON_EGL_PLATFORM: expected device or surfaceless, found '" + choice + "'");
     if (choice != "surfaceless")
-        if (auto context = tryDevicePlatform(attempts)) return context;
+        if (auto context = tryDevicePlatform(hardwareDevice, attempts)) return context;
     if (choice != "device")
         if (auto context = trySurfacelessPlatform(attempts)) return context;
     std::string message = "no headless OpenGL 4.5 core context could be made; tried:";

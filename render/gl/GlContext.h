@@ -62,8 +62,10 @@ private:
 // hardware device (NVIDIA and other GPU drivers), then Mesa's surfaceless
 // platform (llvmpipe without a GPU). EIKON_EGL_PLATFORM=device|surfaceless
 // forces one. Throws std::runtime_error naming every attempt when none gives
-// an OpenGL 4.5 core context.
-std::unique_ptr<GlContext> createHeadlessContext();
+// an OpenGL 4.5 core context. `hardwareDevice`: the hardware devices are
+// tried from this one on (modulo their count), so that the ranks of an MPI
+// job on one machine take one GPU each (by local rank) where it has several.
+std::unique_ptr<GlContext> createHeadlessContext(unsigned hardwareDevice = 0);
 
 class WindowContext : public GlContext {
 public:

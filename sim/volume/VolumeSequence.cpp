@@ -15,6 +15,11 @@ void VolumeSequence::advanceFrame() {
     else ++frame_;
 }
 
+void VolumeSequence::seekFrame(int frame) {
+    if (desc_.sequence) load(frame);
+    else frame_ = frame;
+}
+
 void VolumeSequence::load(int frame) {
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
     const io::VdbVolumeFile file(path);

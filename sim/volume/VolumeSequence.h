@@ -28,6 +28,9 @@ public:
 
     // Loads the next file of the sequence (a single file stays loaded).
     void advanceFrame();
+    // Loads the file of rendered frame `frame` directly (frames of a volume
+    // do not depend on each other).
+    void seekFrame(int frame);
 
     // Writes δn, κ, σs, g of the current file into `fields` (on its grid),
     // bumping the versions of what changed.
