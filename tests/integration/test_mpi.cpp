@@ -2,8 +2,8 @@
 // mpirun): sharing the photons gives the default scene's frame and report
 // figures bit for bit; sharing the frames of a volume sequence gives the
 // same files, with series indexes that list every frame once; a bad scene
-// is reported once; a rank that is killed ends the run with a message and
-// leaves neither processes nor temporaries behind.
+// is reported once; a rank that fails on its own, or is killed, ends the
+// run with a message and leaves neither processes nor temporaries behind.
 #include "io/vdb/VdbVolumeFile.h"
 #include "tests/unit/VdbTestFiles.h"
 
@@ -152,20 +152,19 @@ TEST_F(Mpi, TwoRanksSharingPhotonsGiveTheDefaultFrameBitForBit) {
     }
 }
 
-// Six frames of a Blender-style sequence whose temperature rises frame by
-// frame, exported to ParaView and OpenVDB.
-TEST_F(Mpi, TwoRanksSharingFramesWriteTheFilesOfOneProcess) {
-    constexpr int kFrames = 6;
-    for (int f = 1; f <= kFrames; ++f) {
+// `frames` files of a Blender-style sequence whose temperature rises frame
+// by frame, and a scene that imports it, exported to ParaView and OpenVDB.
+std::string writeVolumeScene(const fs::path& dir, int frames) {
+    for (int f = 1; f <= frames; ++f) {
         char name[64];
         std::snprintf(name, sizeof name, "fluid_data_%04d.vdb", f);
         eikon::test::writeVdbFile(
-            dir_ / name,
+            dir / name,
             {{"density", 1, [](double, double, double, int) { return 0.5f; }},
              {"temperature", 1, [f](double x, double y, double, int) { return float(f) * float(1.0 + x + y); }}},
             0.05, -0.6, 0.6);
     }
-    std::ofstream(dir_ / "volume.json") << R"({
+    std::ofstream(dir / "volume.json") << R"({
   "grid": {"resolution": [24, 24, 24], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
   "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5}],
   "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
@@ -176,9 +175,14 @@ TEST_F(Mpi, TwoRanksSharingFramesWriteTheFilesOfOneProcess) {
   "volume": {"path": "fluid_data_####.vdb", "temperature_scale": 30, "density_extinction": 0.5},
   "export": {"vtk": {"fields": ["index", "extinction", "temperature"]}, "vdb": {"fields": ["temperature", "index"]}}
 })";
+    return (dir / "volume.json").string();
+}
+
+TEST_F(Mpi, TwoRanksSharingFramesWriteTheFilesOfOneProcess) {
+    constexpr int kFrames = 6;
+    const std::string scene = writeVolumeScene(dir_, kFrames);
     const fs::path alone = dir_ / "alone", shared = dir_ / "shared";
-    runBoth("run " + (dir_ / "volume.json").string() + " --frames " + std::to_string(kFrames), "frames", alone,
-            shared);
+    runBoth("run " + scene + " --frames " + std::to_string(kFrames), "frames", alone, shared);
     ASSERT_EQ(filesBelow(alone), filesBelow(shared));
     for (const std::string& file : filesBelow(alone)) {
         if (fs::path(file).extension() == ".vdb") continue;  // OpenVDB writes a new UUID into each file
@@ -218,6 +222,22 @@ TEST_F(Mpi, TwoRanksSharingFramesWriteTheFilesOfOneProcess) {
         EXPECT_EQ(pvd.find(name), pvd.rfind(name)) << name << " once";
         EXPECT_NE(pvd.find(name), std::string::npos) << name;
     }
+}
+
+// Frame 3's file is cut short: rank 1 meets it alone, after the inputs were
+// agreed on, and ends the job with its rank, the file and exit 2 — no rank
+// is left waiting.
+TEST_F(Mpi, AFailureOfOneRankEndsTheJobWithItsRankAndMessage) {
+    const std::string scene = writeVolumeScene(dir_, 4);
+    const fs::path damaged = dir_ / "fluid_data_0004.vdb";
+    fs::resize_file(damaged, fs::file_size(damaged) / 2);
+    const fs::path out = dir_ / "out";
+    const Outcome outcome = runCommand(mpirun(2) + eikon() + "run " + scene +
+                                       " --frames 4 --quiet --distribute frames --out " + out.string());
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("eikon: error (rank 1 of 2): " + damaged.string()), std::string::npos)
+        << outcome.output;
+    EXPECT_TRUE(processesMentioning(out.string()).empty());
 }
 
 TEST_F(Mpi, ABadSceneIsReportedOnceWithExitTwoAndNothingWritten) {
