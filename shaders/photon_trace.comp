@@ -385,6 +385,7 @@ void trace_photon(uint id) {
     float max_invariant_error = 0.0f;
     float invariant_error_sum = 0.0f;
     int fate = kEscaped;
+    bool marched = false;  // the last move was a step of the march (not a flight, bounce or emission)
 
     for (uint passes = 1u;; ++passes) {
         spend_loops(loops_per_pass());
@@ -394,6 +395,8 @@ void trace_photon(uint id) {
         }
         if (!grid_contains(x)) {
             vec3 d = normalize(v);
+            bool stepped_out = marched;
+            marched = false;
             StraightFlight flight = fly_straight(x, d);
 #if !EIKON_BARE_MARCH
             if (flight.hit.receiver >= 0) {
@@ -404,7 +407,11 @@ void trace_photon(uint id) {
             }
 #endif
             if (!flight.enters_grid) {
-                record_vertex(photon, vertex++, x + flight.distance * d, power);
+                // A recorded path ends where the photon left the grid — its
+                // last vertex, one step past the boundary, moved back onto
+                // it — or where it last was (a light or receiver outside
+                // the grid); never far away.
+                if (stepped_out && vertex > 0u) record_vertex(photon, vertex - 1u, grid_exit_point(x, d), power);
                 fate = kEscaped;
                 break;
             }
@@ -437,6 +444,7 @@ void trace_photon(uint id) {
 #endif
         vec3 start = x;
         integrate(x, x_lost, v, field, ds);
+        marched = true;
         ++steps;
         float invariant_error = eikonal_invariant_error(v, field.w);
         max_invariant_error = max(max_invariant_error, invariant_error);
@@ -448,6 +456,15 @@ void trace_photon(uint id) {
 #if !EIKON_BARE_MARCH
         ReceiverHit hit = first_receiver_crossing(start, x);
         float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
+        if (!grid_contains(x)) {
+            // A step that leaves the grid overshoots its boundary, and
+            // outside the grid nothing absorbs: only the part inside counts.
+            vec3 chord = x - start;
+            float chord_length = length(chord);
+            if (chord_length > 0.0f)
+                travelled = min(travelled, max(grid_ray_interval(start, chord / chord_length).y, 0.0f) /
+                                               chord_length * ds);
+        }
         vec3 kappa = sample_extinction(start);
         deposit_segment(start, hit.receiver >= 0 ? mix(start, x, hit.fraction) : x, power, kappa);
         vec3 transmitted = power * beer_lambert_transmittance(kappa, travelled);
@@ -455,6 +472,7 @@ void trace_photon(uint id) {
         power = transmitted;
         if (hit.receiver >= 0) {
             x = mix(start, x, hit.fraction);
+            marched = false;  // it is on the receiver, not past the grid's boundary
             record_vertex(photon, vertex++, x, power);
             if (land_on_receiver(hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
             break;

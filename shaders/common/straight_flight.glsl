@@ -25,3 +25,11 @@ StraightFlight fly_straight(vec3 x, vec3 d) {
 vec3 grid_entry_point(vec3 x, vec3 d, StraightFlight flight) {
     return x + (flight.distance + 1e-4f * grid.voxel_size.x) * d;
 }
+
+// Where a photon that stepped out of the grid at x, going d, crossed the
+// grid's boundary: its straight flight outside traced back onto the box
+// (a step overshoots the boundary by up to its length).
+vec3 grid_exit_point(vec3 x, vec3 d) {
+    vec2 behind = grid_ray_interval(x, -d);
+    return behind.x <= behind.y && behind.x >= 0.0f ? x - behind.x * d : x;
+}

@@ -73,5 +73,39 @@ TEST(PhotonPaths, PowerAlongRecordedPathsFollowsBeerLambert) {
     EXPECT_GT(spreadX, 0.25);
 }
 
+// Photons that miss a small receiver leave the grid: each path ends where
+// its photon crossed the grid's boundary (the last step's overshoot moved
+// back onto the box), so an exported path never reaches far from the scene.
+TEST(PhotonPaths, EscapingPathsEndOnTheGridsBoundary) {
+    const glm::dvec3 lo(-0.5), hi(0.5);
+    Scene scene = emptyScene(lo, hi, 16);
+    scene.lights.push_back(directionalLight({0.2, -1.0, 0.1}, 1.0));
+    scene.receivers.push_back(floorReceiver(-0.45, 0.3, 16));
+    scene.render.photons = 4096;
+    scene.tracer.stepPolicy = TracerDesc::StepPolicy::Uniform;
+    const int recorded = 64, perPhoton = 128;
+    const TraceResult result = trace(scene, {.recordPathVertices = perPhoton, .recordedPhotons = recorded,
+                                             .recordStride = 61});
+    const double tolerance = 1e-4;
+    int escaped = 0;
+    for (int photon = 0; photon < recorded; ++photon) {
+        const std::size_t first = static_cast<std::size_t>(photon * perPhoton);
+        int last = -1;
+        for (int v = 0; v < perPhoton && result.paths[first + static_cast<std::size_t>(v)].w == 1.0f; ++v) last = v;
+        ASSERT_GE(last, 1) << "photon " << photon << " was recorded entering the grid";
+        for (int v = 1; v <= last; ++v) {  // vertex 0 is on the light's beam, above the grid
+            const glm::dvec3 x(result.paths[first + static_cast<std::size_t>(v)]);
+            EXPECT_TRUE(insideBox(x, lo - tolerance, hi + tolerance)) << "photon " << photon << " vertex " << v;
+        }
+        const glm::dvec3 end(result.paths[first + static_cast<std::size_t>(last)]);
+        const bool onReceiver = std::abs(end.y + 0.45) < tolerance;
+        if (onReceiver) continue;
+        const glm::dvec3 toFace = glm::min(end - lo, hi - end);
+        EXPECT_LT(std::min(toFace.x, std::min(toFace.y, toFace.z)), tolerance) << "photon " << photon << " ends on a face";
+        ++escaped;
+    }
+    EXPECT_GT(escaped, recorded / 4) << "many photons miss the small receiver";
+}
+
 }  // namespace
 }  // namespace eikon::test
