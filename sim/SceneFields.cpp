@@ -145,7 +145,7 @@ void SceneFields::advanceFrame() {
     } else if (volume_ && volume_->isSequence()) {
         volume_->advanceFrame();
     } else {
-        time_ += scene_.frameTime;
+        time_ = static_cast<double>(++frame_) * scene_.frameTime;  // one rounding: no drift over frames
     }
     updateMeshes();
     if (fluid_ || volume_) {

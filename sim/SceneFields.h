@@ -84,6 +84,7 @@ private:
     std::unique_ptr<VolumeSequence> volume_;
     std::vector<std::unique_ptr<MeshObject>> meshes_;
     double time_ = 0.0;  // without a fluid solver
+    long long frame_ = 0;  // frames advanced, without a fluid solver
     double deformMs_ = 0.0;
     double voxelizeMs_ = 0.0;
     long long recomputedCells_ = 0;

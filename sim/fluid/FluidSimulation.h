@@ -94,7 +94,10 @@ private:
     std::array<ImplicitDiffusion, 3> velocityDiffusion_;
     ImplicitDiffusion temperatureDiffusion_, concentrationDiffusion_, dyeDiffusion_;
     std::vector<PhaseTiming> timings_;
-    double time_ = 0.0;
+    void updateTime();
+    double time_ = 0.0;         // simulated time: frames_ · frame time + steppedTime_
+    long long frames_ = 0;      // advanceFrame calls
+    double steppedTime_ = 0.0;  // Σ dt of step() calls
     int lastSubsteps_ = 0;
 };
 
