@@ -9,8 +9,8 @@ namespace eikon::app {
 ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer) {
     ExportFrame frame{inputs.fields.grid, io::fieldArrays(inputs.fields)};
     if (const render::PhotonStage* photons = renderer.photonStage(); photons && photons->storesFluence()) {
-        frame.arrays.push_back({"fluence", 3, photons->downloadFluence()});
-        frame.arrays.push_back({"photon_direction", 3, photons->downloadFluenceDirection()});
+        frame.arrays.push_back({"fluence", 3, photons->downloadFluence(), {"W/m^2", ArrayRole::Density}});
+        frame.arrays.push_back({"photon_direction", 3, photons->downloadFluenceDirection(), {"1", ArrayRole::Direction}});
     }
     for (const NamedArray& array : inputs.simulation) frame.arrays.push_back(array);
     return frame;
@@ -74,7 +74,9 @@ FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& ou
         if (exports_.vtk.meshes && hasMeshes) meshes_.emplace(outputFolder, "meshes", exports_.vtk.compression);
         if (exports_.vtk.photonPaths > 0) paths_.emplace(outputFolder, "photon_paths", exports_.vtk.compression);
     }
-    if (exports_.vdb.enabled) vdb_.emplace(outputFolder, "fields");
+    if (exports_.vdb.enabled)
+        vdb_.emplace(outputFolder, "fields", std::filesystem::path(scene.sourcePath).stem().string(),
+                     exports_.vdb.upAxis == VdbExportDesc::UpAxis::Z);
     for (io::VtkSeriesIndex* index : seriesIndexes()) index->setDeferred(deferIndexes);
 }
 

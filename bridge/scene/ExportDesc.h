@@ -51,7 +51,11 @@ struct VtkExportDesc : ExportSelection {
     int pathVertices = 256;  // most vertices recorded per path, >= 2
 };
 
-using VdbExportDesc = ExportSelection;
+struct VdbExportDesc : ExportSelection {
+    // "z": files in a Z-up world (Blender's), eikon's (x, y, z) written as
+    // (x, −z, y), velocities and directions turned with it; "y": as eikon's.
+    enum class UpAxis { Y, Z } upAxis = UpAxis::Y;
+};
 
 struct ExportDesc {
     VtkExportDesc vtk;

@@ -16,15 +16,15 @@ std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields) {
     // n = n_ref + δn for viewing; float32 spacing near 1.0003 is ~1.2e-7, too
     // coarse for a mirage's Δn ≈ 1e-5 gradients (and for δn's own float32
     // precision), so δn itself goes out too, exactly as the FieldSet holds it.
-    NamedArray index{"index", 1, std::vector<float>(cells)};
+    NamedArray index{"index", 1, std::vector<float>(cells), {"1", ArrayRole::Scalar, static_cast<float>(fields.referenceIndex)}};
     for (std::size_t c = 0; c < cells; ++c)
         index.values[c] = static_cast<float>(fields.referenceIndex + static_cast<double>(fields.deltaIndex[c]));
     arrays.push_back(std::move(index));
     auto copy = [](std::span<const float> values) { return std::vector<float>(values.begin(), values.end()); };
-    arrays.push_back({"delta_index", 1, copy(fields.deltaIndex)});
-    if (fields.hasExtinction()) arrays.push_back({"extinction", 3, copy(fields.extinction)});
-    if (fields.hasScattering()) arrays.push_back({"scattering", 3, copy(fields.scattering)});
-    if (fields.hasAnisotropy()) arrays.push_back({"anisotropy", 1, copy(fields.anisotropy)});
+    arrays.push_back({"delta_index", 1, copy(fields.deltaIndex), {"1", ArrayRole::Scalar}});
+    if (fields.hasExtinction()) arrays.push_back({"extinction", 3, copy(fields.extinction), {"1/m", ArrayRole::Density}});
+    if (fields.hasScattering()) arrays.push_back({"scattering", 3, copy(fields.scattering), {"1/m", ArrayRole::Density}});
+    if (fields.hasAnisotropy()) arrays.push_back({"anisotropy", 1, copy(fields.anisotropy), {"1", ArrayRole::Scalar}});
     return arrays;
 }
 
@@ -66,7 +66,8 @@ ExportFrame selectCells(const ExportFrame& frame, const ExportSelection& selecti
         EIKON_CHECK_MSG(array.components >= 1 && array.values.size() == c * grid.cellCount(),
                         "export array \"" + array.name + "\" size");
         if (!selection.wants(array.name)) continue;
-        NamedArray selected{array.name, array.components, std::vector<float>(c * result.grid.cellCount())};
+        NamedArray selected{array.name, array.components, std::vector<float>(c * result.grid.cellCount()),
+                            array.meaning};
         std::vector<double> sum(c);
         for (int k = 0; k < out.z; ++k)
             for (int j = 0; j < out.y; ++j)

@@ -33,22 +33,54 @@ openvdb::math::Transform::Ptr cellTransform(const GridSpec& grid) {
         std::make_shared<openvdb::math::ScaleTranslateMap>(openvdb::Vec3d(h.x, h.y, h.z), translation));
 }
 
-// A sparse grid from x-fastest values: OpenVDB's Dense with LayoutXYZ has
-// x as its fastest index too.
+// Values closer to the background than this share of the array's largest
+// distance from it are background too (inactive): float noise around the
+// value outside the grid does not keep a region dense.
+constexpr float kBackgroundTolerance = 1e-6f;
+
+// A sparse grid from x-fastest values, inactive where they are the
+// background (within `tolerance`): OpenVDB's Dense with LayoutXYZ has x as
+// its fastest index too.
 template <class GridT>
-typename GridT::Ptr sparseGrid(std::vector<typename GridT::ValueType>& values, const GridSpec& spec) {
+typename GridT::Ptr sparseGrid(std::vector<typename GridT::ValueType>& values, const GridSpec& spec,
+                               const typename GridT::ValueType& background, const typename GridT::ValueType& tolerance) {
     const glm::ivec3 r = spec.resolution;
     const openvdb::CoordBBox box(openvdb::Coord(0, 0, 0), openvdb::Coord(r.x - 1, r.y - 1, r.z - 1));
     openvdb::tools::Dense<typename GridT::ValueType, openvdb::tools::LayoutXYZ> dense(box, values.data());
-    auto grid = GridT::create(openvdb::zeroVal<typename GridT::ValueType>());
-    openvdb::tools::copyFromDense(dense, *grid, openvdb::zeroVal<typename GridT::ValueType>());
+    auto grid = GridT::create(background);
+    openvdb::tools::copyFromDense(dense, *grid, tolerance);
     return grid;
+}
+
+// The largest |value − background| of an array, times kBackgroundTolerance.
+float toleranceOf(const NamedArray& array) {
+    float largest = 0.0f;
+    for (std::size_t i = 0; i < array.values.size(); ++i) {
+        const float background = array.components == 1 ? array.meaning.background : 0.0f;
+        largest = std::max(largest, std::abs(array.values[i] - background));
+    }
+    return kBackgroundTolerance * largest;
+}
+
+// How Blender and Houdini should treat a grid: density-like scalars are fog
+// volumes; velocities and directions turn with the grid (contravariant,
+// relative); other vectors (RGB extinction, fluence) are per-channel values.
+void describeGrid(openvdb::GridBase& grid, const NamedArray& array) {
+    const ArrayRole role = array.meaning.role;
+    if (array.components == 1) {
+        grid.setGridClass(role == ArrayRole::Density ? openvdb::GRID_FOG_VOLUME : openvdb::GRID_UNKNOWN);
+    } else {
+        grid.setVectorType(role == ArrayRole::Velocity || role == ArrayRole::Direction
+                               ? openvdb::VEC_CONTRAVARIANT_RELATIVE
+                               : openvdb::VEC_INVARIANT);
+    }
+    if (!array.meaning.unit.empty()) grid.insertMeta("units", openvdb::StringMetadata(array.meaning.unit));
 }
 
 }  // namespace
 
-VdbFrameWriter::VdbFrameWriter(const fs::path& outputFolder, std::string baseName)
-    : directory_(outputFolder / "vdb"), baseName_(std::move(baseName)) {
+VdbFrameWriter::VdbFrameWriter(const fs::path& outputFolder, std::string baseName, std::string sceneName, bool zUp)
+    : directory_(outputFolder / "vdb"), baseName_(std::move(baseName)), sceneName_(std::move(sceneName)), zUp_(zUp) {
     const bool safe = !baseName_.empty() && baseName_ != "." && baseName_ != ".." &&
                       std::all_of(baseName_.begin(), baseName_.end(), [](char c) {
                           return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
@@ -73,21 +105,31 @@ void VdbFrameWriter::writeFrame(int frame, double time, const ExportFrame& array
     EIKON_CHECK_MSG(std::isfinite(time), "time of frame " + std::to_string(frame));
     const std::size_t cells = arrays.grid.cellCount();
     const auto transform = cellTransform(arrays.grid);
+    // Z-up: a quarter turn about x after the placement, (x, y, z) → (x, −z, y).
+    if (zUp_) transform->postRotate(0.5 * openvdb::math::pi<double>(), openvdb::math::X_AXIS);
     openvdb::GridPtrVec grids;
     for (const NamedArray& array : arrays.arrays) {
         EIKON_CHECK_MSG((array.components == 1 || array.components == 3) &&
                             array.values.size() == static_cast<std::size_t>(array.components) * cells,
                         "OpenVDB array \"" + array.name + "\" size");
         openvdb::GridBase::Ptr grid;
+        const float tolerance = toleranceOf(array);
         if (array.components == 1) {
             std::vector<float> values = array.values;
-            grid = sparseGrid<openvdb::FloatGrid>(values, arrays.grid);
+            grid = sparseGrid<openvdb::FloatGrid>(values, arrays.grid, array.meaning.background, tolerance);
         } else {
             std::vector<openvdb::Vec3s> values(cells);
-            for (std::size_t c = 0; c < cells; ++c)
-                values[c] = openvdb::Vec3s(array.values[3 * c], array.values[3 * c + 1], array.values[3 * c + 2]);
-            grid = sparseGrid<openvdb::Vec3SGrid>(values, arrays.grid);
+            const ArrayRole role = array.meaning.role;
+            const bool turns = zUp_ && (role == ArrayRole::Velocity || role == ArrayRole::Direction);
+            for (std::size_t c = 0; c < cells; ++c) {
+                const float x = array.values[3 * c], y = array.values[3 * c + 1], z = array.values[3 * c + 2];
+                values[c] = turns ? openvdb::Vec3s(x, -z, y) : openvdb::Vec3s(x, y, z);
+            }
+            grid = sparseGrid<openvdb::Vec3SGrid>(values, arrays.grid, openvdb::Vec3s(0.0f),
+                                                  openvdb::Vec3s(tolerance));
         }
+        if (grid->activeVoxelCount() == 0) continue;  // all background: nothing a reader would not assume
+        describeGrid(*grid, array);
         grid->setName(array.name);
         grid->setTransform(transform->copy());
         grids.push_back(grid);
@@ -95,6 +137,7 @@ void VdbFrameWriter::writeFrame(int frame, double time, const ExportFrame& array
     openvdb::MetaMap meta;
     meta.insertMeta("frame", openvdb::Int32Metadata(frame));
     meta.insertMeta("time", openvdb::DoubleMetadata(time));
+    if (!sceneName_.empty()) meta.insertMeta("scene", openvdb::StringMetadata(sceneName_));
 
     const fs::path path = framePath(frame);
     const fs::path temporary = temporaryPathFor(path);

@@ -3,9 +3,15 @@
 // a Vec3SGrid — in DIR/vdb/NAME_NNNNN.vdb. Index (i, j, k) of a grid is
 // render cell (i, j, k): the transform scales by the voxel size and
 // translates to the centre of cell (0, 0, 0), OpenVDB's cell-centred
-// convention. Values equal to 0 stay inactive background, so empty regions
-// stay sparse (tools::copyFromDense). The file metadata holds "frame" and
-// "time" (s). Files are written to a temporary name and renamed.
+// convention. Each grid's background is the array's value outside the grid
+// (NamedArray::meaning: n_ref for index, the ambient temperature, else 0);
+// values within 1e-6 of the array's largest distance from it stay inactive
+// background, so empty regions stay sparse (tools::copyFromDense), and a grid
+// that is background everywhere is not written at all. Density-like scalars
+// are fog volumes, velocities and directions contravariant-relative vectors,
+// other vectors invariant; each grid's metadata holds its "units". The file
+// metadata holds "frame", "time" (s) and "scene". Files are written to a
+// temporary name and renamed.
 //
 // The header keeps OpenVDB out of its includes; only the .cpp sees it.
 #pragma once
@@ -20,7 +26,10 @@ namespace eikon::io {
 class VdbFrameWriter {
 public:
     // Creates DIR/vdb/. `baseName`: letters, digits, '_', '-', '.'.
-    VdbFrameWriter(const std::filesystem::path& outputFolder, std::string baseName);
+    // `sceneName` goes into each file's metadata ("scene"); `zUp` writes a
+    // Z-up world (VdbExportDesc::upAxis).
+    VdbFrameWriter(const std::filesystem::path& outputFolder, std::string baseName, std::string sceneName = "",
+                   bool zUp = false);
 
     // std::runtime_error naming the path when the file cannot be written;
     // InternalError for a negative frame or arrays that do not fit the grid.
@@ -31,6 +40,8 @@ public:
 private:
     std::filesystem::path directory_;
     std::string baseName_;
+    std::string sceneName_;
+    bool zUp_ = false;
 };
 
 }  // namespace eikon::io

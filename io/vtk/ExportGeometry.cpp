@@ -8,7 +8,7 @@ PolyData receiverQuads(const std::vector<layout::GpuReceiver>& receivers,
                        const std::vector<std::vector<float>>& irradiance) {
     EIKON_CHECK(receivers.size() == irradiance.size());
     PolyData data;
-    NamedArray power{"irradiance", 3, {}}, index{"receiver", 1, {}};
+    NamedArray power{"irradiance", 3, {}, {"W/m^2", ArrayRole::Density}}, index{"receiver", 1, {}, {"1"}};
     for (std::size_t r = 0; r < receivers.size(); ++r) {
         const layout::GpuReceiver& receiver = receivers[r];
         const auto res = static_cast<std::uint32_t>(receiver.map.y);
@@ -38,7 +38,7 @@ PolyData photonPolylines(const std::vector<glm::vec4>& vertices, const std::vect
     EIKON_CHECK(verticesPerPhoton > 0 && vertices.size() == power.size() &&
                 vertices.size() % static_cast<std::size_t>(verticesPerPhoton) == 0);
     PolyData data;
-    NamedArray watts{"power", 3, {}};
+    NamedArray watts{"power", 3, {}, {"W", ArrayRole::Density}};
     const auto per = static_cast<std::size_t>(verticesPerPhoton);
     for (std::size_t photon = 0; photon < vertices.size() / per; ++photon) {
         std::vector<std::uint32_t> line;

@@ -69,6 +69,8 @@ void writePolyData(const std::filesystem::path& path, const PolyData& data, doub
         poly->GetCellData()->AddArray(makeFloatArray(array.name, array.components, ordered));
     }
     addTimeValue(*poly, time);
+    addUnits(*poly, data.pointArrays);
+    addUnits(*poly, data.cellArrays);
     vtkNew<vtkXMLPolyDataWriter> writer;
     writer->SetInputData(poly);
     writeVtkXmlAtomically(*writer, compression, path);

@@ -70,6 +70,7 @@ void VtkSeriesWriter::writeFrame(int frame, double time, const ExportFrame& arra
     }
 
     addTimeValue(*image, time);
+    addUnits(*image, arrays.arrays);
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetInputData(image);
     writeVtkXmlAtomically(*writer, compression_, framePath(frame));

@@ -8,6 +8,7 @@
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
+#include <vtkStringArray.h>
 
 #include <algorithm>
 
@@ -32,6 +33,16 @@ void addTimeValue(vtkDataObject& data, double time) {
     timeValue->SetNumberOfTuples(1);
     timeValue->SetValue(0, time);
     data.GetFieldData()->AddArray(timeValue);
+}
+
+void addUnits(vtkDataObject& data, const std::vector<NamedArray>& arrays) {
+    for (const NamedArray& array : arrays) {
+        if (array.meaning.unit.empty()) continue;
+        vtkNew<vtkStringArray> unit;
+        unit->SetName((array.name + "_unit").c_str());
+        unit->InsertNextValue(array.meaning.unit);
+        data.GetFieldData()->AddArray(unit);
+    }
 }
 
 void writeVtkXmlAtomically(vtkXMLWriter& writer, VtkExportDesc::Compression compression,

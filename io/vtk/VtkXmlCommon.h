@@ -5,6 +5,7 @@
 // writers' .cpp files.
 #pragma once
 
+#include "bridge/grid/NamedArrays.h"
 #include "bridge/scene/ExportDesc.h"
 
 #include <vtkDataObject.h>
@@ -21,6 +22,9 @@ namespace eikon::io {
 vtkSmartPointer<vtkFloatArray> makeFloatArray(const std::string& name, int components, const std::vector<float>& values);
 
 void addTimeValue(vtkDataObject& data, double time);
+// Field data NAME_unit (one string) for every array that states its unit:
+// ParaView lists it beside the arrays.
+void addUnits(vtkDataObject& data, const std::vector<NamedArray>& arrays);
 
 // Appended raw binary, compressed as asked, written to a temporary beside
 // `path` and renamed over it; std::runtime_error naming `path` on failure.

@@ -7,10 +7,11 @@ namespace eikon::sim {
 std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid,
                                          double ambientTemperature) {
     const std::size_t cells = renderGrid.cellCount();
-    NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f)};
-    NamedArray temperature{"temperature", 1, std::vector<float>(cells, static_cast<float>(ambientTemperature))};
-    NamedArray concentration{"concentration", 1, std::vector<float>(cells, 0.0f)};
-    NamedArray dye{"dye", 1, std::vector<float>(cells, 0.0f)};
+    const auto ambient = static_cast<float>(ambientTemperature);
+    NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f), {"m/s", ArrayRole::Velocity}};
+    NamedArray temperature{"temperature", 1, std::vector<float>(cells, ambient), {"K", ArrayRole::Scalar, ambient}};
+    NamedArray concentration{"concentration", 1, std::vector<float>(cells, 0.0f), {"1", ArrayRole::Density}};
+    NamedArray dye{"dye", 1, std::vector<float>(cells, 0.0f), {"1", ArrayRole::Density}};
     const MacGrid& flow = state.flow;
     const glm::ivec3 r = renderGrid.resolution;
     tbb::parallel_for(0, r.z, [&](int k) {

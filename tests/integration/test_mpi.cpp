@@ -45,9 +45,10 @@ Outcome runCommand(const std::string& command) {
     return outcome;
 }
 
-// mpirun as the tests' user may start it (CI runs as root).
+// mpirun as the tests' user may start it (CI runs as root), on a machine
+// with fewer cores than ranks too.
 std::string mpirun(int ranks) {
-    return std::string(EIKON_MPIEXEC) + (geteuid() == 0 ? " --allow-run-as-root" : "") + " -n " +
+    return std::string(EIKON_MPIEXEC) + (geteuid() == 0 ? " --allow-run-as-root" : "") + " --oversubscribe -n " +
            std::to_string(ranks) + " ";
 }
 

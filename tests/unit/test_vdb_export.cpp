@@ -1,5 +1,8 @@
 // OpenVDB export: named float and vec3 grids whose voxel (i, j, k) is the
-// render cell (i, j, k), bit-exact, sparse where the values are 0.
+// render cell (i, j, k), bit-exact, sparse where the values are the
+// background (the value outside the grid, within 1e-6 of the array's
+// range), with the grid classes, vector types and units Blender and
+// Houdini read; a grid that is background everywhere is not written.
 #include "io/vdb/VdbFrameWriter.h"
 #include "io/vdb/VdbVolumeFile.h"
 
@@ -16,17 +19,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A 5×3×2 grid with non-cubic voxels; "density" is zero in half the cells.
+// A 5×3×2 grid with non-cubic voxels; "density" is zero in half the cells
+// and 1e-7 in cell 0, within the tolerance of 1e-6 × its largest value 2.8;
+// "index" is its background 1.0 in cell 0; "dye" is 0 everywhere.
 ExportFrame makeFrame(const glm::dvec3& max) {
     ExportFrame frame;
     frame.grid = GridSpec{{5, 3, 2}, {-0.5, 0.25, 1.0}, max};
-    NamedArray density{"density", 1, {}}, index{"index", 1, {}}, velocity{"velocity", 3, {}};
+    NamedArray density{"density", 1, {}, {"1/m", ArrayRole::Density}}, index{"index", 1, {}, {"1", ArrayRole::Scalar, 1.0f}},
+        velocity{"velocity", 3, {}, {"m/s", ArrayRole::Velocity}},
+        dye{"dye", 1, std::vector<float>(frame.grid.cellCount(), 0.0f), {"1", ArrayRole::Density}};
     for (std::size_t c = 0; c < frame.grid.cellCount(); ++c) {
         density.values.push_back(c % 2 ? 0.0f : 0.1f * static_cast<float>(c) + 1e-7f);
         index.values.push_back(1.0f + 1.234567e-5f * static_cast<float>(c));
         velocity.values.insert(velocity.values.end(), {float(c), -0.5f * float(c), 1e-3f});
     }
-    frame.arrays = {density, index, velocity};
+    frame.arrays = {density, index, velocity, dye};
     return frame;
 }
 
@@ -36,11 +43,20 @@ void expectRoundTrip(const ExportFrame& frame, const fs::path& path) {
     const auto meta = file.getMetadata();
     EXPECT_EQ(meta->metaValue<int32_t>("frame"), 4);
     EXPECT_EQ(meta->metaValue<double>("time"), 0.125);
+    EXPECT_EQ(meta->metaValue<std::string>("scene"), "lens");
+    EXPECT_FALSE(file.hasGrid("dye")) << "all background: not written";
     const auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("density"));
     const auto index = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("index"));
     const auto velocity = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid("velocity"));
     ASSERT_TRUE(density && index && velocity);
     file.close();
+    EXPECT_EQ(density->getGridClass(), openvdb::GRID_FOG_VOLUME);
+    EXPECT_EQ(index->getGridClass(), openvdb::GRID_UNKNOWN);
+    EXPECT_EQ(velocity->getVectorType(), openvdb::VEC_CONTRAVARIANT_RELATIVE);
+    EXPECT_EQ(density->background(), 0.0f);
+    EXPECT_EQ(index->background(), 1.0f) << "n outside the grid";
+    EXPECT_EQ(density->metaValue<std::string>("units"), "1/m");
+    EXPECT_EQ(velocity->metaValue<std::string>("units"), "m/s");
     const GridSpec& spec = frame.grid;
     std::size_t nonzero = 0;
     for (int k = 0; k < 2; ++k)
@@ -48,10 +64,13 @@ void expectRoundTrip(const ExportFrame& frame, const fs::path& path) {
             for (int i = 0; i < 5; ++i) {
                 const openvdb::Coord ijk(i, j, k);
                 const std::size_t c = spec.linearIndex(i, j, k);
-                EXPECT_EQ(density->tree().getValue(ijk), frame.arrays[0].values[c]);
-                EXPECT_EQ(density->tree().isValueOn(ijk), frame.arrays[0].values[c] != 0.0f);
-                nonzero += frame.arrays[0].values[c] != 0.0f;
+                const float d = frame.arrays[0].values[c];
+                const bool active = d > 1e-6f * 2.8f;
+                EXPECT_EQ(density->tree().getValue(ijk), active ? d : 0.0f);
+                EXPECT_EQ(density->tree().isValueOn(ijk), active);
+                nonzero += active;
                 EXPECT_EQ(index->tree().getValue(ijk), frame.arrays[1].values[c]);
+                EXPECT_EQ(index->tree().isValueOn(ijk), c != 0);
                 const openvdb::Vec3s v = velocity->tree().getValue(ijk);
                 for (int a = 0; a < 3; ++a) EXPECT_EQ(v[a], frame.arrays[2].values[3 * c + static_cast<std::size_t>(a)]);
                 const openvdb::Vec3d world = density->transform().indexToWorld(ijk);
@@ -59,13 +78,14 @@ void expectRoundTrip(const ExportFrame& frame, const fs::path& path) {
                 for (int a = 0; a < 3; ++a) EXPECT_NEAR(world[a], centre[a], 1e-12);
             }
     EXPECT_EQ(density->activeVoxelCount(), nonzero);
-    EXPECT_EQ(index->activeVoxelCount(), spec.cellCount());
+    EXPECT_EQ(nonzero, spec.cellCount() / 2 - 1) << "cell 0's 1e-7 is background";
+    EXPECT_EQ(index->activeVoxelCount(), spec.cellCount() - 1);
 }
 
 TEST(VdbExport, CubicAndBoxVoxelsRoundTripBitExact) {
     const fs::path root = fs::path(::testing::TempDir()) / "eikon_vdb_export";
     fs::remove_all(root);
-    const VdbFrameWriter writer(root, "fields");
+    const VdbFrameWriter writer(root, "fields", "lens");
     for (const glm::dvec3 max : {glm::dvec3(2.0, 1.75, 2.0), glm::dvec3(1.5, 1.75, 2.0)}) {  // h = 0.5; then 0.4 × 0.5 × 0.5
         const ExportFrame frame = makeFrame(max);
         writer.writeFrame(4, 0.125, frame);
@@ -79,6 +99,37 @@ TEST(VdbExport, CubicAndBoxVoxelsRoundTripBitExact) {
     int files = 0;
     for (const auto& entry : fs::directory_iterator(root / "vdb")) files += entry.path().extension() == ".vdb";
     EXPECT_EQ(files, 1);  // no temporaries left
+    fs::remove_all(root);
+}
+
+// For Blender, Z up: eikon's (x, y, z) lands at (x, −z, y), and a velocity
+// turns with it.
+TEST(VdbExport, ZUpFilesTurnPositionsAndVelocities) {
+    const fs::path root = fs::path(::testing::TempDir()) / "eikon_vdb_zup";
+    fs::remove_all(root);
+    const VdbFrameWriter writer(root, "fields", "lens", /*zUp=*/true);
+    const ExportFrame frame = makeFrame(glm::dvec3(1.5, 1.75, 2.0));
+    writer.writeFrame(0, 0.0, frame);
+    openvdb::io::File file(writer.framePath(0).string());
+    file.open(false);
+    const auto velocity = openvdb::gridPtrCast<openvdb::Vec3SGrid>(file.readGrid("velocity"));
+    file.close();
+    ASSERT_TRUE(velocity);
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 5; ++i) {
+                const openvdb::Coord ijk(i, j, k);
+                const glm::dvec3 centre = frame.grid.cellCentre(i, j, k);
+                const openvdb::Vec3d world = velocity->transform().indexToWorld(ijk);
+                EXPECT_NEAR(world[0], centre.x, 1e-12);
+                EXPECT_NEAR(world[1], -centre.z, 1e-12);
+                EXPECT_NEAR(world[2], centre.y, 1e-12);
+                const std::size_t c = frame.grid.linearIndex(i, j, k);
+                const openvdb::Vec3s v = velocity->tree().getValue(ijk);
+                EXPECT_EQ(v[0], frame.arrays[2].values[3 * c]);
+                EXPECT_EQ(v[1], -frame.arrays[2].values[3 * c + 2]);
+                EXPECT_EQ(v[2], frame.arrays[2].values[3 * c + 1]);
+            }
     fs::remove_all(root);
 }
 

@@ -11,6 +11,7 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkStringArray.h>
 #include <vtkXMLImageDataReader.h>
 
 #include <cstring>
@@ -117,6 +118,13 @@ void expectRoundTrip(const fs::path& path, const FieldSet& fields, double time, 
     ASSERT_NE(timeValue, nullptr) << "TimeValue missing or not Float64";
     ASSERT_EQ(timeValue->GetNumberOfTuples(), 1);
     EXPECT_EQ(timeValue->GetValue(0), time);
+    // Each array's unit beside it, as field data NAME_unit.
+    for (const auto& [name, unit] : {std::pair{"index", "1"}, {"delta_index", "1"}, {"extinction", "1/m"},
+                                     {"scattering", "1/m"}}) {
+        auto* units = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray((std::string(name) + "_unit").c_str()));
+        ASSERT_NE(units, nullptr) << name << "_unit";
+        EXPECT_EQ(units->GetValue(0), unit) << name;
+    }
 }
 
 void expectIndexFiles(const VtkSeriesWriter& writer) {
