@@ -1,7 +1,8 @@
 // An OpenVDB volume imported into the scene (docs/scene-format.md, `volume`):
 // one .vdb file, or a numbered sequence stepped one file per frame, whose
 // grids are sampled onto the render grid and mapped to optics (sim/optics):
-// density → κ, σs; temperature (and flame) → index by Gladstone–Dale.
+// density → κ, σs; temperature (and flame) → index by Gladstone–Dale; and
+// optical grids (index, κ, σs, g) taken as they are.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -26,6 +27,14 @@ struct VolumeDesc {
     std::string temperatureGrid = "temperature";
     std::string flameGrid;      // Blender: "flame"
     std::string velocityGrid;   // Blender: "velocity", Houdini: "vel"
+    // Optical grids designed in other tools (lenses, media), added to the
+    // physical mapping: n (absolute) or δn = n − n_ref, not both; κ and σs
+    // in 1/m (a float grid: grey; vec3s: RGB); Henyey–Greenstein g.
+    std::string indexGrid;
+    std::string deltaIndexGrid;
+    std::string extinctionGrid;
+    std::string scatteringGrid;
+    std::string anisotropyGrid;
 
     glm::dvec3 offset{0.0};     // m, added to the file's world positions
 

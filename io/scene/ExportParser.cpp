@@ -88,7 +88,10 @@ VtkExportDesc readVtk(const JsonReader& node) {
 
 VdbExportDesc readVdb(const JsonReader& node) {
     VdbExportDesc vdb;
-    readSelection(node.object({"enabled", "fields", "every", "region", "downsample"}), vdb);
+    const auto fields = node.object({"enabled", "fields", "every", "region", "downsample", "up_axis"});
+    readSelection(fields, vdb);
+    if (auto up = fields.optional("up_axis"))
+        vdb.upAxis = up->oneOf({"y", "z"}) == "z" ? VdbExportDesc::UpAxis::Z : VdbExportDesc::UpAxis::Y;
     return vdb;
 }
 
@@ -96,11 +99,17 @@ VdbExportDesc readVdb(const JsonReader& node) {
 std::string readGridName(const JsonReader& node) { return node.string(); }
 
 void readGridNames(const JsonReader& node, VolumeDesc& volume) {
-    const auto fields = node.object({"density", "temperature", "flame", "velocity"});
-    if (auto name = fields.optional("density")) volume.densityGrid = readGridName(*name);
-    if (auto name = fields.optional("temperature")) volume.temperatureGrid = readGridName(*name);
-    if (auto name = fields.optional("flame")) volume.flameGrid = readGridName(*name);
-    if (auto name = fields.optional("velocity")) volume.velocityGrid = readGridName(*name);
+    const auto fields = node.object({"density", "temperature", "flame", "velocity", "index", "delta_index",
+                                     "extinction", "scattering", "anisotropy"});
+    for (const auto& [key, name] : {std::pair{"density", &volume.densityGrid}, {"temperature", &volume.temperatureGrid},
+                                    {"flame", &volume.flameGrid}, {"velocity", &volume.velocityGrid},
+                                    {"index", &volume.indexGrid}, {"delta_index", &volume.deltaIndexGrid},
+                                    {"extinction", &volume.extinctionGrid}, {"scattering", &volume.scatteringGrid},
+                                    {"anisotropy", &volume.anisotropyGrid}})
+        if (auto grid = fields.optional(key)) *name = readGridName(*grid);
+    if (!volume.indexGrid.empty() && !volume.deltaIndexGrid.empty())
+        fields.member("delta_index").fail("\"\" when `index` names a grid (both would set the index)",
+                                          "\"" + volume.deltaIndexGrid + "\"");
 }
 
 // Exported fields that only some scenes have, and what provides them.
@@ -177,16 +186,22 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
                     formatNumber(volume.densityScattering[channel]) + " in channel " + std::to_string(channel));
         }
     }
-    if (auto v = fields.optional("anisotropy")) volume.anisotropy = v->number(kAnisotropyRange);
+    if (auto v = fields.optional("anisotropy")) {
+        volume.anisotropy = v->number(kAnisotropyRange);
+        if (!volume.anisotropyGrid.empty())
+            v->fail("no value when grids.anisotropy names a grid (both would set g)", formatNumber(volume.anisotropy));
+    }
     if (auto v = fields.optional("ambient_temperature")) volume.ambientTemperature = v->number(kPositive);
     if (auto v = fields.optional("temperature_scale")) volume.temperatureScale = v->number(kNonNegative);
     if (auto v = fields.optional("flame_temperature")) volume.flameTemperature = v->number(kNonNegative);
     if (auto v = fields.optional("refractivity")) volume.refractivity = v->number(kPositive);
     if (auto v = fields.optional("reference_temperature")) volume.referenceTemperature = v->number(kPositive);
     if (auto v = fields.optional("pressure")) volume.pressure = v->number(kPositive);
-    if (volume.densityGrid.empty() && volume.temperatureGrid.empty() && volume.flameGrid.empty())
-        fields.member("grids").fail("at least one of the density, temperature and flame grids named",
-                                    "all three left empty");
+    if (volume.densityGrid.empty() && volume.temperatureGrid.empty() && volume.flameGrid.empty() &&
+        volume.indexGrid.empty() && volume.deltaIndexGrid.empty() && volume.extinctionGrid.empty() &&
+        volume.scatteringGrid.empty())
+        fields.member("grids").fail("at least one grid named (density, temperature, flame, or an optical grid)",
+                                    "every grid left empty");
 
     const std::string firstFile = volumeFramePath(volume, volume.frameStart);
     if (!std::filesystem::is_regular_file(firstFile))

@@ -94,6 +94,12 @@ std::vector<std::string> VdbVolumeFile::gridNames() const {
     return names;
 }
 
+int VdbVolumeFile::componentsOf(const std::string& name) const {
+    for (const VdbGridEntry& grid : grids_->layout.grids)
+        if (grid.name == name) return grid.valueType == "vec3s" ? 3 : 1;
+    return 1;
+}
+
 std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
                                          const glm::dvec3& offset) const {
     EIKON_CHECK(components == 1 || components == 3);

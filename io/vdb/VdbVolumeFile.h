@@ -51,6 +51,9 @@ public:
     // sample that is not finite.
     std::vector<float> sample(const std::string& name, int components, const GridSpec& grid,
                               const glm::dvec3& offset) const;
+    // 3 when the file's grid `name` is a vec3s grid, else 1 (sample then
+    // says what it found, or that there is no such grid).
+    int componentsOf(const std::string& name) const;
 
 private:
     struct Grids;

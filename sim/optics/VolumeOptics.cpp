@@ -1,9 +1,11 @@
 #include "sim/optics/VolumeOptics.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/core/NumberFormat.h"
 #include "sim/optics/AirOptics.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace eikon::sim {
 
@@ -28,9 +30,15 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     const double ambient = air.refractivityAt(volume.ambientTemperature, volume.pressure);
     const double mediumDelta = medium.index - fields.referenceIndex;
     const bool dense = !samples.density.empty();
-    const bool absorbs = positive(medium.extinction) || (dense && positive(volume.densityExtinction));
-    const bool scatters = positive(medium.scattering) || (dense && positive(volume.densityScattering));
-    const bool anisotropic = scatters && (medium.anisotropy != 0.0 || volume.anisotropy != 0.0);
+    const bool scatteringGrid = !samples.scattering.empty();
+    const bool absorbs = positive(medium.extinction) || (dense && positive(volume.densityExtinction)) ||
+                         !samples.extinction.empty() || scatteringGrid;
+    const bool scatters = positive(medium.scattering) || (dense && positive(volume.densityScattering)) || scatteringGrid;
+    const bool anisotropic =
+        scatters && (medium.anisotropy != 0.0 || volume.anisotropy != 0.0 || !samples.anisotropy.empty());
+    const auto refuse = [&](std::size_t cell, const std::string& expected, double found) {
+        throw InputError(source + ": cell " + std::to_string(cell), expected, formatNumber(found));
+    };
 
     std::vector<float> deltaIndex(cells);
     std::vector<float> extinction(absorbs ? 3 * cells : 0), scattering(scatters ? 3 * cells : 0);
@@ -41,20 +49,42 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
             throw InputError(source + ": cell " + std::to_string(c), "a temperature > 0 K (ambient_temperature + "
                                                                      "temperature_scale·t + flame_temperature·f)",
                              std::to_string(t) + " K");
-        deltaIndex[c] = static_cast<float>(mediumDelta + air.refractivityAt(t, volume.pressure) - ambient);
+        // The index where the volume is: the medium's, or the file's own.
+        double baseDelta = mediumDelta;
+        if (!samples.index.empty()) {
+            if (!(samples.index[c] > 0.0f))
+                refuse(c, "an index > 0 in the index grid (outside its active voxels a grid reads its background)",
+                       samples.index[c]);
+            baseDelta = static_cast<double>(samples.index[c]) - fields.referenceIndex;
+        } else if (!samples.deltaIndex.empty()) {
+            baseDelta = samples.deltaIndex[c];
+        }
+        deltaIndex[c] = static_cast<float>(baseDelta + air.refractivityAt(t, volume.pressure) - ambient);
         const double rho = dense ? std::max(0.0, static_cast<double>(samples.density[c])) : 0.0;
         double sigmaSum = 0.0, volumeSigmaSum = 0.0;
         for (int ch = 0; ch < 3; ++ch) {
-            if (absorbs) extinction[3 * c + ch] = static_cast<float>(medium.extinction[ch] + volume.densityExtinction[ch] * rho);
+            const std::size_t k = 3 * c + static_cast<std::size_t>(ch);
+            const double kappaGrid = samples.extinction.empty() ? 0.0 : samples.extinction[k];
+            const double sigmaGrid = scatteringGrid ? samples.scattering[k] : 0.0;
+            if (kappaGrid < 0.0) refuse(c, "an extinction >= 0 in the extinction grid", kappaGrid);
+            if (sigmaGrid < 0.0) refuse(c, "a scattering >= 0 in the scattering grid", sigmaGrid);
+            const double kappa = medium.extinction[ch] + volume.densityExtinction[ch] * rho + kappaGrid;
+            const double volumeSigma = volume.densityScattering[ch] * rho + sigmaGrid;
+            if (absorbs) extinction[k] = static_cast<float>(kappa);
             if (scatters) {
-                scattering[3 * c + ch] = static_cast<float>(medium.scattering[ch] + volume.densityScattering[ch] * rho);
-                sigmaSum += medium.scattering[ch] + volume.densityScattering[ch] * rho;
-                volumeSigmaSum += volume.densityScattering[ch] * rho;
+                if (medium.scattering[ch] + volumeSigma > kappa)
+                    refuse(c, "scattering <= extinction (the scattering grid's σs within the extinction it adds to)",
+                           medium.scattering[ch] + volumeSigma);
+                scattering[k] = static_cast<float>(medium.scattering[ch] + volumeSigma);
+                sigmaSum += medium.scattering[ch] + volumeSigma;
+                volumeSigmaSum += volumeSigma;
             }
         }
+        const double volumeG = samples.anisotropy.empty() ? volume.anisotropy : samples.anisotropy[c];
+        if (!(std::abs(volumeG) < 1.0)) refuse(c, "an anisotropy g in (−1, 1) in the anisotropy grid", volumeG);
         if (anisotropic && sigmaSum > 0.0)
             anisotropy[c] = static_cast<float>(
-                (medium.anisotropy * (sigmaSum - volumeSigmaSum) + volume.anisotropy * volumeSigmaSum) / sigmaSum);
+                (medium.anisotropy * (sigmaSum - volumeSigmaSum) + volumeG * volumeSigmaSum) / sigmaSum);
     }
     publishField(fields.deltaIndex, std::move(deltaIndex), fields.indexVersion);
     publishField(fields.extinction, std::move(extinction), fields.extinctionVersion);

@@ -8,6 +8,10 @@
 //   with n_air by Gladstone–Dale (AirOptics.h): the volume perturbs the
 //   medium by the index change its temperature causes, so cold, empty
 //   regions keep the medium's index.
+// Optical grids made in other tools are taken as they are: an `index` grid
+// (n) or a `delta_index` grid (n − n_ref) replaces the medium's index in
+// the first term; `extinction` and `scattering` (1/m, grey or RGB) add to κ
+// and σs; an `anisotropy` grid is the volume's g per cell.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -23,6 +27,11 @@ struct VolumeSamples {
     std::vector<float> density;
     std::vector<float> temperature;
     std::vector<float> flame;
+    std::vector<float> index;       // n
+    std::vector<float> deltaIndex;  // n − n_ref
+    std::vector<float> extinction;  // RGB per cell (a grey grid's value in each channel)
+    std::vector<float> scattering;  // RGB per cell
+    std::vector<float> anisotropy;
 };
 
 // Temperature in K of a cell from the samples (ambient where absent).
@@ -30,7 +39,8 @@ double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples,
 
 // Fills fields.deltaIndex, .extinction, .scattering, .anisotropy (left empty
 // where zero everywhere) on fields.grid, bumping the versions of what
-// changed. InputError naming `source` and the cell where T <= 0.
+// changed. InputError naming `source` and the cell where T <= 0, n <= 0,
+// κ < 0, σs > κ or |g| >= 1.
 void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
                        const std::string& source, FieldSet& fields);
 

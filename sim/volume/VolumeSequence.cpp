@@ -28,6 +28,19 @@ void VolumeSequence::load(int frame) {
     if (!desc_.temperatureGrid.empty())
         samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, desc_.offset);
     if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, desc_.offset);
+    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, desc_.offset);
+    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, desc_.offset);
+    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, desc_.offset);
+    // κ and σs grids: RGB as a vec3s grid, or grey as a float grid.
+    const auto rgb = [&](const std::string& name) {
+        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, desc_.offset);
+        const std::vector<float> grey = file.sample(name, 1, grid_, desc_.offset);
+        std::vector<float> channels(3 * grey.size());
+        for (std::size_t c = 0; c < grey.size(); ++c) channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = grey[c];
+        return channels;
+    };
+    if (!desc_.extinctionGrid.empty()) samples.extinction = rgb(desc_.extinctionGrid);
+    if (!desc_.scatteringGrid.empty()) samples.scattering = rgb(desc_.scatteringGrid);
     std::vector<float> velocity;
     if (!desc_.velocityGrid.empty()) velocity = file.sample(desc_.velocityGrid, 3, grid_, desc_.offset);
     samples_ = std::move(samples);
@@ -42,15 +55,18 @@ void VolumeSequence::writeFields(FieldSet& fields) const {
 
 std::vector<NamedArray> VolumeSequence::exportArrays() const {
     std::vector<NamedArray> arrays;
-    if (!samples_.density.empty()) arrays.push_back({"density", 1, samples_.density});
+    // The cache's density, flame and velocity keep its own units (Blender's
+    // velocity is in domain cells per frame unless the cache says otherwise).
+    if (!samples_.density.empty()) arrays.push_back({"density", 1, samples_.density, {"cache units", ArrayRole::Density}});
     if (!samples_.temperature.empty() || !samples_.flame.empty()) {
-        NamedArray temperature{"temperature", 1, std::vector<float>(grid_.cellCount())};
+        const auto ambient = static_cast<float>(desc_.ambientTemperature);
+        NamedArray temperature{"temperature", 1, std::vector<float>(grid_.cellCount()), {"K", ArrayRole::Scalar, ambient}};
         for (std::size_t c = 0; c < temperature.values.size(); ++c)
             temperature.values[c] = static_cast<float>(volumeTemperature(desc_, samples_, c));
         arrays.push_back(std::move(temperature));
     }
-    if (!samples_.flame.empty()) arrays.push_back({"flame", 1, samples_.flame});
-    if (!velocity_.empty()) arrays.push_back({"velocity", 3, velocity_});
+    if (!samples_.flame.empty()) arrays.push_back({"flame", 1, samples_.flame, {"cache units", ArrayRole::Density}});
+    if (!velocity_.empty()) arrays.push_back({"velocity", 3, velocity_, {"cache units", ArrayRole::Velocity}});
     return arrays;
 }
 

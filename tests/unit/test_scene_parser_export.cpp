@@ -58,6 +58,9 @@ TEST(SceneParserExport, EmptySectionExportsEveryField) {
     EXPECT_EQ(scene.exports.vtk.compression, VtkExportDesc::Compression::Zlib);
     EXPECT_TRUE(scene.exports.vdb.enabled);
     EXPECT_EQ(scene.exports.vdb.every, 2);
+    EXPECT_EQ(scene.exports.vdb.upAxis, VdbExportDesc::UpAxis::Y);
+    EXPECT_EQ(parseScene(sceneWithExport(json::parse(R"({"vdb": {"up_axis": "z"}})")), "test.json").exports.vdb.upAxis,
+              VdbExportDesc::UpAxis::Z);
     EXPECT_FALSE(scene.tracer.storeFluence);
     EXPECT_FALSE(parseScene(sceneWithExport(json::parse(R"({"vtk": {"enabled": false}})")), "test.json")
                      .exports.vtk.enabled);
@@ -76,6 +79,8 @@ TEST(SceneParserExport, BadValuesAreReportedAtTheirPath) {
                   "one of \"zlib\", \"lz4\", \"none\"");
     expectErrorAt(sceneWithExport(json::parse(R"({"vdb": {"compression": "zlib"}})")), "export.vdb.compression",
                   "unknown key");
+    expectErrorAt(sceneWithExport(json::parse(R"({"vdb": {"up_axis": "x"}})")), "export.vdb.up_axis",
+                  "one of \"y\", \"z\"");
     expectErrorAt(sceneWithExport(json::parse(R"({"vtk": {"region": {"min": [0, 0, 0], "max": [1, 0, 1]}}})")),
                   "export.vtk.region.max[1]", "must not be empty");
     // The grid spans [-1, 1] × [-0.5, 0.5] × [-2, 2].
@@ -173,7 +178,13 @@ TEST_F(SceneParserVolume, BadValuesAreReportedAtTheirPath) {
                   .find("volume.density_scattering: expected density_scattering <= density_extinction"),
               std::string::npos);
     EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "grids": {"density": "", "temperature": ""}})"))
-                  .find("volume.grids: expected at least one of the density"),
+                  .find("volume.grids: expected at least one grid named"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "grids": {"index": "n", "delta_index": "dn"}})"))
+                  .find("volume.grids.delta_index: expected \"\" when `index` names a grid"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "anisotropy": 0.5, "grids": {"anisotropy": "g"}})"))
+                  .find("volume.anisotropy: expected no value when grids.anisotropy names a grid"),
               std::string::npos);
     EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "grids": {"vel": "v"}})")).find("volume.grids.vel"),
               std::string::npos);
