@@ -5,6 +5,7 @@
 // optical grids (index, κ, σs, g) taken as they are.
 #pragma once
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include <string>
@@ -36,7 +37,11 @@ struct VolumeDesc {
     std::string scatteringGrid;
     std::string anisotropyGrid;
 
-    glm::dvec3 offset{0.0};     // m, added to the file's world positions
+    // The file's world into the scene's, affine: translate(offset) · up axis
+    // (Z-up files turned to eikon's Y-up) · transform (translate · rotate ·
+    // scale, or a matrix); built by the scene parser (volume.offset,
+    // up_axis, transform). Velocities turn and scale with its linear part.
+    glm::dmat4 placement{1.0};
 
     // Optics: κ = densityExtinction·ρ, σs = densityScattering·ρ per channel;
     // T = ambientTemperature + temperatureScale·t + flameTemperature·f, and

@@ -4,7 +4,11 @@
 #include "io/export/ExportArrays.h"
 #include "io/vdb/VolumeFramePath.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace eikon {
@@ -95,6 +99,49 @@ VdbExportDesc readVdb(const JsonReader& node) {
     return vdb;
 }
 
+// volume.transform: {"translate", "rotate_deg", "scale"} in Blender's order
+// (scale, then turns about x, y and z in that order, then the translation:
+// its object transform with the XYZ Euler rotation) or {"matrix"}: 16
+// numbers row by row, affine (last row 0 0 0 1) and invertible.
+glm::dmat4 readVolumeTransform(const JsonReader& node) {
+    const auto fields = node.object({"translate", "rotate_deg", "scale", "matrix"});
+    if (auto matrix = fields.optional("matrix")) {
+        for (const char* key : {"translate", "rotate_deg", "scale"})
+            if (fields.optional(key)) fields.member(key).fail("nothing but the matrix beside a matrix", "\"" + std::string(key) + "\"");
+        const std::vector<JsonReader> entries = matrix->array();
+        if (entries.size() != 16) matrix->fail("16 numbers, row by row", std::to_string(entries.size()) + " elements");
+        glm::dmat4 m(1.0);
+        for (int row = 0; row < 4; ++row)
+            for (int column = 0; column < 4; ++column)
+                m[column][row] = entries[static_cast<std::size_t>(4 * row + column)].number(kCoordinateRange);
+        if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0)
+            matrix->fail("an affine matrix (last row 0, 0, 0, 1)", "a last row of " + formatNumber(m[0][3]) + ", " +
+                                                                       formatNumber(m[1][3]) + ", " +
+                                                                       formatNumber(m[2][3]) + ", " + formatNumber(m[3][3]));
+        const double determinant = glm::determinant(glm::dmat3(m));
+        if (!(std::abs(determinant) > 1e-30))
+            matrix->fail("an invertible matrix", "determinant " + formatNumber(determinant));
+        return m;
+    }
+    glm::dvec3 translate(0.0), turns(0.0), scale(1.0);
+    if (auto t = fields.optional("translate")) translate = t->vec3(kCoordinateRange);
+    if (auto r = fields.optional("rotate_deg")) turns = r->vec3(NumberRange::closed(-3600.0, 3600.0));
+    if (auto s = fields.optional("scale")) scale = glm::dvec3(s->rgb(kLengthRange));
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), translate);
+    m = glm::rotate(m, glm::radians(turns.z), glm::dvec3(0.0, 0.0, 1.0));
+    m = glm::rotate(m, glm::radians(turns.y), glm::dvec3(0.0, 1.0, 0.0));
+    m = glm::rotate(m, glm::radians(turns.x), glm::dvec3(1.0, 0.0, 0.0));
+    return glm::scale(m, scale);
+}
+
+// A Z-up file's world (Blender's) in eikon's Y-up one: (x, y, z) → (x, z, −y).
+glm::dmat4 zUpToYUp() {
+    glm::dmat4 m(1.0);
+    m[1] = glm::dvec4(0.0, 0.0, -1.0, 0.0);
+    m[2] = glm::dvec4(0.0, 1.0, 0.0, 0.0);
+    return m;
+}
+
 // A grid name: any non-empty string (spaces allowed), "" to skip the grid.
 std::string readGridName(const JsonReader& node) { return node.string(); }
 
@@ -157,7 +204,8 @@ void readExport(const JsonReader& node, Scene& scene) {
 
 VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     VolumeDesc volume;
-    const auto fields = node.object({"path", "frame_start", "frame_time", "grids", "offset", "density_extinction",
+    const auto fields = node.object({"path", "frame_start", "frame_time", "grids", "offset", "up_axis", "transform",
+                                     "density_extinction",
                                      "density_scattering", "anisotropy", "ambient_temperature", "temperature_scale",
                                      "flame_temperature", "refractivity", "reference_temperature", "pressure"});
     const JsonReader pathNode = fields.member("path");
@@ -176,7 +224,11 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     if (auto start = fields.optional("frame_start")) volume.frameStart = static_cast<int>(start->integer(0, kMaxFrameNumber));
     if (auto time = fields.optional("frame_time")) volume.frameTime = time->number(kPositive);
     if (auto grids = fields.optional("grids")) readGridNames(*grids, volume);
-    if (auto offset = fields.optional("offset")) volume.offset = offset->vec3();
+    glm::dvec3 offset(0.0);
+    if (auto v = fields.optional("offset")) offset = v->vec3(kCoordinateRange);
+    const bool zUp = fields.optional("up_axis") && fields.member("up_axis").oneOf({"y", "z"}) == "z";
+    const glm::dmat4 transform = fields.optional("transform") ? readVolumeTransform(fields.member("transform")) : glm::dmat4(1.0);
+    volume.placement = glm::translate(glm::dmat4(1.0), offset) * (zUp ? zUpToYUp() : glm::dmat4(1.0)) * transform;
     if (auto v = fields.optional("density_extinction")) volume.densityExtinction = v->rgb(kAttenuationRange);
     if (auto v = fields.optional("density_scattering")) {
         volume.densityScattering = v->rgb(kNonNegative);

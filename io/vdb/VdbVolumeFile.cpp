@@ -3,6 +3,8 @@
 #include "bridge/core/Error.h"
 #include "io/vdb/VdbFileCheck.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
@@ -55,13 +57,13 @@ std::string quotedNames(const std::vector<std::string>& names) {
 // Samples `grid` trilinearly at each render cell centre (x fastest),
 // through one accessor per z slice (accessors are not thread-safe).
 template <class GridT, class Sampler, class Store>
-void sampleGrid(const GridT& grid, const GridSpec& spec, const glm::dvec3& offset, Store store) {
+void sampleGrid(const GridT& grid, const GridSpec& spec, const glm::dmat4& sceneToFile, Store store) {
     const openvdb::math::Transform& transform = grid.transform();
     tbb::parallel_for(0, spec.resolution.z, [&](int k) {
         auto accessor = grid.getConstAccessor();
         for (int j = 0; j < spec.resolution.y; ++j)
             for (int i = 0; i < spec.resolution.x; ++i) {
-                const glm::dvec3 x = spec.cellCentre(i, j, k) - offset;
+                const glm::dvec3 x = glm::dvec3(sceneToFile * glm::dvec4(spec.cellCentre(i, j, k), 1.0));
                 const openvdb::Vec3d index = transform.worldToIndex(openvdb::Vec3d(x.x, x.y, x.z));
                 store(spec.linearIndex(i, j, k), Sampler::sample(accessor, index));
             }
@@ -102,7 +104,13 @@ int VdbVolumeFile::componentsOf(const std::string& name) const {
 
 std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
                                          const glm::dvec3& offset) const {
+    return sample(name, components, spec, glm::translate(glm::dmat4(1.0), offset));
+}
+
+std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
+                                         const glm::dmat4& placement) const {
     EIKON_CHECK(components == 1 || components == 3);
+    const glm::dmat4 sceneToFile = glm::inverse(placement);
     const std::string where = path_.string() + ": grid \"" + name + "\"";
     const VdbGridEntry* entry = nullptr;
     for (const VdbGridEntry& grid : grids_->layout.grids)
@@ -131,9 +139,10 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     // put cells at index 1e222; found by fuzz_vdb). The map is affine, so its
     // corners bound it.
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 world = glm::dvec3(corner & 1 ? spec.boundsMax.x : spec.boundsMin.x,
-                                            corner & 2 ? spec.boundsMax.y : spec.boundsMin.y,
-                                            corner & 4 ? spec.boundsMax.z : spec.boundsMin.z) - offset;
+        const glm::dvec3 world = glm::dvec3(
+            sceneToFile * glm::dvec4(corner & 1 ? spec.boundsMax.x : spec.boundsMin.x,
+                                     corner & 2 ? spec.boundsMax.y : spec.boundsMin.y,
+                                     corner & 4 ? spec.boundsMax.z : spec.boundsMin.z, 1.0));
         const openvdb::Vec3d index = transform.worldToIndex(openvdb::Vec3d(world.x, world.y, world.z));
         for (int axis = 0; axis < 3; ++axis)
             if (!(std::abs(index[axis]) < kMaxIndexCoordinate))
@@ -147,7 +156,7 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
         const auto grid = openvdb::gridConstPtrCast<openvdb::FloatGrid>(base);
         EIKON_CHECK(grid != nullptr);
         sampleGrid<openvdb::FloatGrid, openvdb::tools::BoxSampler>(
-            *grid, spec, offset, [&](std::size_t cell, float v) { values[cell] = v; });
+            *grid, spec, sceneToFile, [&](std::size_t cell, float v) { values[cell] = v; });
     } else {
         const auto grid = openvdb::gridConstPtrCast<openvdb::Vec3SGrid>(base);
         EIKON_CHECK(grid != nullptr);
@@ -155,9 +164,9 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
             for (int a = 0; a < 3; ++a) values[3 * cell + static_cast<std::size_t>(a)] = v[a];
         };
         if (grid->getGridClass() == openvdb::GRID_STAGGERED)
-            sampleGrid<openvdb::Vec3SGrid, openvdb::tools::StaggeredBoxSampler>(*grid, spec, offset, store);
+            sampleGrid<openvdb::Vec3SGrid, openvdb::tools::StaggeredBoxSampler>(*grid, spec, sceneToFile, store);
         else
-            sampleGrid<openvdb::Vec3SGrid, openvdb::tools::BoxSampler>(*grid, spec, offset, store);
+            sampleGrid<openvdb::Vec3SGrid, openvdb::tools::BoxSampler>(*grid, spec, sceneToFile, store);
     }
     const auto bad = std::find_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
     if (bad != values.end()) {

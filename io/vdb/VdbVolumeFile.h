@@ -15,6 +15,8 @@
 // The header keeps OpenVDB out of its includes; only the .cpp sees it.
 #pragma once
 
+#include <glm/mat4x4.hpp>
+
 #include "bridge/grid/GridSpec.h"
 
 #include <glm/vec3.hpp>
@@ -51,6 +53,11 @@ public:
     // sample that is not finite.
     std::vector<float> sample(const std::string& name, int components, const GridSpec& grid,
                               const glm::dvec3& offset) const;
+    // The same through `placement`, an affine map of the file's world into
+    // the render grid's: each cell centre x is looked up at placement⁻¹·x.
+    // Vector values come as stored, in the file's frame.
+    std::vector<float> sample(const std::string& name, int components, const GridSpec& grid,
+                              const glm::dmat4& placement) const;
     // 3 when the file's grid `name` is a vec3s grid, else 1 (sample then
     // says what it found, or that there is no such grid).
     int componentsOf(const std::string& name) const;

@@ -3,6 +3,8 @@
 #include "io/vdb/VdbVolumeFile.h"
 #include "io/vdb/VolumeFramePath.h"
 
+#include <glm/mat3x3.hpp>
+
 namespace eikon::sim {
 
 VolumeSequence::VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid)
@@ -24,17 +26,17 @@ void VolumeSequence::load(int frame) {
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
     const io::VdbVolumeFile file(path);
     VolumeSamples samples;
-    if (!desc_.densityGrid.empty()) samples.density = file.sample(desc_.densityGrid, 1, grid_, desc_.offset);
+    if (!desc_.densityGrid.empty()) samples.density = file.sample(desc_.densityGrid, 1, grid_, desc_.placement);
     if (!desc_.temperatureGrid.empty())
-        samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, desc_.offset);
-    if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, desc_.offset);
-    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, desc_.offset);
-    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, desc_.offset);
-    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, desc_.offset);
+        samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, desc_.placement);
+    if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, desc_.placement);
+    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, desc_.placement);
+    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, desc_.placement);
+    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, desc_.placement);
     // κ and σs grids: RGB as a vec3s grid, or grey as a float grid.
     const auto rgb = [&](const std::string& name) {
-        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, desc_.offset);
-        const std::vector<float> grey = file.sample(name, 1, grid_, desc_.offset);
+        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, desc_.placement);
+        const std::vector<float> grey = file.sample(name, 1, grid_, desc_.placement);
         std::vector<float> channels(3 * grey.size());
         for (std::size_t c = 0; c < grey.size(); ++c) channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = grey[c];
         return channels;
@@ -42,7 +44,14 @@ void VolumeSequence::load(int frame) {
     if (!desc_.extinctionGrid.empty()) samples.extinction = rgb(desc_.extinctionGrid);
     if (!desc_.scatteringGrid.empty()) samples.scattering = rgb(desc_.scatteringGrid);
     std::vector<float> velocity;
-    if (!desc_.velocityGrid.empty()) velocity = file.sample(desc_.velocityGrid, 3, grid_, desc_.offset);
+    if (!desc_.velocityGrid.empty()) {
+        velocity = file.sample(desc_.velocityGrid, 3, grid_, desc_.placement);
+        const glm::dmat3 turn(desc_.placement);  // a velocity turns and scales with the volume
+        for (std::size_t c = 0; c < velocity.size(); c += 3) {
+            const glm::dvec3 v = turn * glm::dvec3(velocity[c], velocity[c + 1], velocity[c + 2]);
+            for (int a = 0; a < 3; ++a) velocity[c + static_cast<std::size_t>(a)] = static_cast<float>(v[a]);
+        }
+    }
     samples_ = std::move(samples);
     velocity_ = std::move(velocity);
     file_ = path;

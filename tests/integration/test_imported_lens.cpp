@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -55,7 +56,8 @@ TEST(ImportedLens, ALuneburgIndexGridFocusesAtTheFarPole) {
     const double h = grid.voxelSize().x;
 
     // The designer's file: voxel (i, j, k) at (i, j, k)·h; placed half a
-    // voxel on (volume.offset) its voxels sit on the render cells' centres.
+    // voxel on (volume.offset, here the placement) its voxels sit on the
+    // render cells' centres.
     const fs::path folder = fs::path(::testing::TempDir()) / "eikon_imported_lens";
     fs::create_directories(folder);
     const glm::dvec3 offset(0.5 * h);
@@ -71,7 +73,7 @@ TEST(ImportedLens, ALuneburgIndexGridFocusesAtTheFarPole) {
     volume.path = (folder / "luneburg.vdb").string();
     volume.densityGrid = volume.temperatureGrid = "";
     volume.indexGrid = "n";
-    volume.offset = offset;
+    volume.placement = glm::translate(glm::dmat4(1.0), offset);
     imported.volume = volume;
     imported.sourcePath = (folder / "lens.json").string();
     const sim::SceneFields importedFields(imported);
