@@ -50,14 +50,6 @@ run_frames() {  # label, extra run options, command...
     t=$(elapsed "$start")
     printf '| %s | %.1f | %.1f |\n' "$label" "$t" "$(ratio 1440 "$t")"
 }
-echo
-echo "| volume sequence, 24 frames | wall (s) | frames per minute |"
-echo "| --- | --- | --- |"
-LP_NUM_THREADS=2 run_frames "1 process, 2 llvmpipe threads" "" "$EIKON"
-LP_NUM_THREADS=1 run_frames "1 process, 1 llvmpipe thread" "" "$EIKON"
-LP_NUM_THREADS=1 run_frames "1 rank (mpirun -n 1)" "" "${MPIRUN[@]}" -n 1 -x LP_NUM_THREADS "$EIKON"
-LP_NUM_THREADS=1 run_frames "2 ranks, --distribute frames" "--distribute frames" \
-    "${MPIRUN[@]}" -n 2 -x LP_NUM_THREADS "$EIKON"
 
 run_photons() {  # label, extra run options, command...
     local label=$1 extra=$2
@@ -71,11 +63,21 @@ run_photons() {  # label, extra run options, command...
     ms=$(photon_ms "$WORK/photons/report.jsonl")
     printf '| %s | %.0f | %.2f | %.1f |\n' "$label" "$ms" "$(ratio 4194.304 "$ms")" "$t"
 }
+
+# One measurement four ways: one process with two and with one llvmpipe
+# thread, one rank, and two ranks sharing the run by `distribution`.
+each_configuration() {  # distribution, measurement
+    LP_NUM_THREADS=2 "$2" "1 process, 2 llvmpipe threads" "" "$EIKON"
+    LP_NUM_THREADS=1 "$2" "1 process, 1 llvmpipe thread" "" "$EIKON"
+    LP_NUM_THREADS=1 "$2" "1 rank (mpirun -n 1)" "" "${MPIRUN[@]}" -n 1 -x LP_NUM_THREADS "$EIKON"
+    LP_NUM_THREADS=1 "$2" "2 ranks, --distribute $1" "--distribute $1" "${MPIRUN[@]}" -n 2 -x LP_NUM_THREADS "$EIKON"
+}
+
+echo
+echo "| volume sequence, 24 frames | wall (s) | frames per minute |"
+echo "| --- | --- | --- |"
+each_configuration frames run_frames
 echo
 echo "| default scene, 2^22 photons | photon stage (ms) | M photons/s | whole run (s) |"
 echo "| --- | --- | --- | --- |"
-LP_NUM_THREADS=2 run_photons "1 process, 2 llvmpipe threads" "" "$EIKON"
-LP_NUM_THREADS=1 run_photons "1 process, 1 llvmpipe thread" "" "$EIKON"
-LP_NUM_THREADS=1 run_photons "1 rank (mpirun -n 1)" "" "${MPIRUN[@]}" -n 1 -x LP_NUM_THREADS "$EIKON"
-LP_NUM_THREADS=1 run_photons "2 ranks, --distribute photons" "--distribute photons" \
-    "${MPIRUN[@]}" -n 2 -x LP_NUM_THREADS "$EIKON"
+each_configuration photons run_photons
