@@ -38,6 +38,7 @@ public:
         reduce(tallies.maxima, MPI_UINT32_T, MPI_MAX);
         reduce(tallies.floatSums, MPI_FLOAT, MPI_SUM);
     }
+    bool receivesTotals() const override { return first_; }
 
 private:
     template <typename T>

@@ -47,6 +47,9 @@ public:
     // that writes the frame; the others' may be left as they were. Every
     // share calls it once per pass, in the same order.
     virtual void combine(LightPassTallies& tallies) = 0;
+    // Whether combine leaves this share the whole pass's tallies (the share
+    // that writes the frame); the others need not hand them back to the GPU.
+    virtual bool receivesTotals() const = 0;
 };
 
 }  // namespace eikon::render

@@ -319,6 +319,7 @@ void PhotonStage::combineShares(LightPassExchange& exchange, PhotonStats& stats)
     }
 
     exchange.combine(tallies);
+    if (!exchange.receivesTotals()) return;  // this share's own tallies stay as they are
 
     visitSummedCounters(gpu, stats, UnpackCounters{tallies.sums});
     gpu.steps.z = tallies.maxima.at(0);

@@ -42,8 +42,13 @@ Scene inverseSquareScene() {
 }
 
 TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::PhotonProgramOptions options) {
+    return traceFields(scene, fields, render::RendererOptions{.photons = options});
+}
+
+TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::RendererOptions options) {
     glContext();
-    render::FrameRenderer renderer(scene, fields, {.photons = options, .tracePhotons = true});
+    options.tracePhotons = true;
+    render::FrameRenderer renderer(scene, fields, options);
     TraceResult result;
     result.stats = renderer.render(fields).photons;
     if (!scene.receivers.empty()) result.map = renderer.receivers().download(0);

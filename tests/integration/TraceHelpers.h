@@ -4,6 +4,7 @@
 #include "bridge/grid/FieldSet.h"
 #include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
+#include "render/graph/FrameRenderer.h"
 #include "render/stages/PhotonStage.h"
 
 #include <glm/vec4.hpp>
@@ -36,6 +37,8 @@ inline const char* const kIntegratorNames[] = {"euler", "leapfrog", "rk4"};
 // Traces one frame of `fields`; every scene must balance its energy to 0.1%
 // and write only finite values (checked here, as test expectations).
 TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::PhotonProgramOptions options = {});
+// The same with every renderer option given (a photon stage is always made).
+TraceResult traceFields(const Scene& scene, const FieldSet& fields, render::RendererOptions options);
 // The same for the scene's own voxelized fields.
 TraceResult trace(const Scene& scene, render::PhotonProgramOptions options = {});
 

@@ -8,6 +8,7 @@
 #include "render/graph/FrameRenderer.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
+#include "tests/integration/TraceHelpers.h"
 
 #include <gtest/gtest.h>
 
@@ -45,17 +46,12 @@ public:
         if (writesFrame_) tallies = sums_.total;
         ++calls;
     }
+    bool receivesTotals() const override { return writesFrame_; }
     int calls = 0;
 
 private:
     SharedSums& sums_;
     bool writesFrame_;
-};
-
-struct PassResult {
-    render::PhotonStats stats;
-    std::vector<float> map, fluence;
-    std::vector<glm::vec4> paths, pathPower;
 };
 
 render::RendererOptions recordingOptions() {
@@ -67,27 +63,16 @@ render::RendererOptions recordingOptions() {
     return options;
 }
 
-PassResult tracePass(const Scene& scene, const FieldSet& fields, render::RendererOptions options) {
-    render::FrameRenderer renderer(scene, fields, options);
-    PassResult result;
-    result.stats = renderer.render(fields).photons;
-    if (!scene.receivers.empty()) result.map = renderer.receivers().download(0);
-    result.fluence = renderer.photonStage()->downloadFluence();
-    result.paths = renderer.photonStage()->downloadPaths();
-    result.pathPower = renderer.photonStage()->downloadPathPower();
-    return result;
-}
-
 // The pass traced as `shares` shares, share 0 last; what share 0 holds.
-PassResult traceShared(const Scene& scene, const FieldSet& fields, unsigned shares) {
+test::TraceResult traceShared(const Scene& scene, const FieldSet& fields, unsigned shares) {
     SharedSums sums;
-    PassResult first;
+    test::TraceResult first;
     for (unsigned index = shares; index-- > 0;) {
         InTurnExchange exchange(sums, index == 0);
         render::RendererOptions options = recordingOptions();
         options.share = {index, shares};
         options.exchange = &exchange;
-        PassResult result = tracePass(scene, fields, options);
+        test::TraceResult result = test::traceFields(scene, fields, options);
         EXPECT_EQ(exchange.calls, 1) << "one exchange a pass";
         if (index == 0) first = std::move(result);
     }
@@ -128,8 +113,8 @@ TEST(SharedLightPass, ThreeSharesOfPhotonsGiveTheWholePassBitForBit) {
     test::glContext();
     const Scene scene = reducedDefaultScene("photons");
     const FieldSet fields = sim::voxelizeScene(scene);
-    const PassResult whole = tracePass(scene, fields, recordingOptions());
-    const PassResult shared = traceShared(scene, fields, 3);
+    const test::TraceResult whole = test::traceFields(scene, fields, recordingOptions());
+    const test::TraceResult shared = traceShared(scene, fields, 3);
     ASSERT_GT(whole.stats.photonsReceived, 30000u) << "the floor is lit";
     EXPECT_GT(whole.stats.surfaceTransmissions, 5000u) << "photons go through the sphere";
     EXPECT_EQ(whole.map, shared.map) << "the receiver map, bit for bit";
@@ -147,15 +132,15 @@ TEST(SharedLightPass, TwoSharesOfWavefrontSeedsGiveTheWholePassBitForBit) {
     const FieldSet fields = sim::voxelizeScene(scene);
     render::RendererOptions options;
     options.drawsImage = false;
-    const PassResult whole = tracePass(scene, fields, options);
+    const test::TraceResult whole = test::traceFields(scene, fields, options);
     SharedSums sums;
-    PassResult shared;
+    test::TraceResult shared;
     for (unsigned index = 2; index-- > 0;) {
         InTurnExchange exchange(sums, index == 0);
         render::RendererOptions share = options;
         share.share = {index, 2};
         share.exchange = &exchange;
-        PassResult result = tracePass(scene, fields, share);
+        test::TraceResult result = test::traceFields(scene, fields, share);
         if (index == 1) {
             EXPECT_LT(result.stats.wavefront.patches, whole.stats.wavefront.patches) << "a part only";
         }
@@ -174,8 +159,8 @@ TEST(SharedLightPass, TheFluenceOfAScatteringMediumAgreesToRounding) {
     scene.medium.scattering = Rgb(0.5);
     const FieldSet fields = sim::voxelizeScene(scene);
     ASSERT_TRUE(fields.hasScattering());
-    const PassResult whole = tracePass(scene, fields, recordingOptions());
-    const PassResult shared = traceShared(scene, fields, 2);
+    const test::TraceResult whole = test::traceFields(scene, fields, recordingOptions());
+    const test::TraceResult shared = traceShared(scene, fields, 2);
     EXPECT_EQ(whole.map, shared.map);
     ASSERT_EQ(whole.fluence.size(), shared.fluence.size());
     double sum = 0.0, difference = 0.0;
