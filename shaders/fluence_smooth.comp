@@ -1,7 +1,8 @@
 // The 3×3×3 smoothing of the stored photon radiance ([Sun08] §4.4):
 // fluence and power-weighted direction are filtered with the binomial kernel
 // [1 2 1]/4 along each axis (weights outside the grid left out and the rest
-// renormalised), for the view pass to read.
+// renormalised), for the view pass to read; `scale` multiplies both (2 for
+// the fluence of half the photons, ErrorEstimateStage).
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "common/grid_sampling.glsl"
@@ -10,6 +11,8 @@ layout(std430, binding = kRawFluence) readonly buffer RawFluence { float raw_flu
 layout(std430, binding = kRawFluenceDirection) readonly buffer RawFluenceDirection { float raw_fluence_direction[]; };
 layout(std430, binding = kFluence) writeonly buffer Fluence { float fluence[]; };
 layout(std430, binding = kFluenceDirection) writeonly buffer FluenceDirection { float fluence_direction[]; };
+
+uniform float scale;
 
 void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID);
@@ -30,8 +33,8 @@ void main() {
                 weights += weight;
             }
     uint index = 3u * uint(grid_linear_index(cell));
-    phi /= weights;
-    direction /= weights;
+    phi *= scale / weights;
+    direction *= scale / weights;
     fluence[index + 0u] = phi.r;
     fluence[index + 1u] = phi.g;
     fluence[index + 2u] = phi.b;

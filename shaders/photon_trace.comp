@@ -17,6 +17,9 @@
 //   EIKON_SHARP_SURFACES   1: the scene has sharp surfaces (common/sharp_surface_blocks.glsl)
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
+//   EIKON_RECORD_ENDS      1: where EIKON_RECORDED_PHOTONS photons, every end_stride-th from photon 0,
+//                          ended (position, fate, receiver, power), for the discretisation estimate
+//                          (ErrorEstimateStage)
 //   EIKON_LOOP_BUDGET      loop iterations a photon may run where the driver caps them
 //                          (common/loop_budget.glsl); 0: no cap. Where set, a photon that runs
 //                          out is suspended and resumed by the next dispatch
@@ -60,6 +63,9 @@ layout(local_size_x = 64) in;
 #ifndef EIKON_RECORD_STRIDE
 #define EIKON_RECORD_STRIDE 1
 #endif
+#ifndef EIKON_RECORD_ENDS
+#define EIKON_RECORD_ENDS 0
+#endif
 
 #include "common/ray_march.glsl"
 #include "common/emitters.glsl"
@@ -79,8 +85,15 @@ const uint MAX_BOUNCES = 16u;
 layout(std430, binding = kPhotonPaths) writeonly buffer PhotonPaths { vec4 path_vertices[]; };  // xyz, w: 1 written
 layout(std430, binding = kPhotonPathPower) writeonly buffer PhotonPathPower { vec4 path_power[]; };  // rgb: W at the vertex
 #endif
+#if EIKON_RECORD_ENDS
+// Per recorded photon two vec4: (end position, fate) and (RGB power at the
+// end, receiver it ended on or -1).
+layout(std430, binding = kPhotonEnds) writeonly buffer PhotonEnds { vec4 photon_ends[]; };
+#endif
 
 uniform uint photon_offset;    // index of this batch's first photon
+uniform uint photon_stride;    // invocation id traces photon photon_offset + id · photon_stride
+uniform uint checkerboard;     // 1: with photon_stride 2, each half takes a checkerboard of strata (checkerboard_photon)
 uniform uint batch_size;
 uniform uint seed;
 uniform float power_cutoff;    // Russian roulette once every channel is below this fraction of the emitted power
@@ -129,6 +142,20 @@ void record_vertex(uint photon, uint vertex, vec3 x, vec3 power) {
         uint index = slot * uint(EIKON_RECORD_PATHS) + vertex;
         path_vertices[index] = vec4(x, 1.0f);
         path_power[index] = vec4(power, 0.0f);
+    }
+#endif
+}
+
+#if EIKON_RECORD_ENDS
+uniform uint end_stride;  // the ends of photons 0, k, 2k, … are kept (a uniform: one program for every k)
+#endif
+
+void record_end(uint photon, vec3 x, int fate, int receiver, vec3 power) {
+#if EIKON_RECORD_ENDS
+    uint slot = photon / end_stride;
+    if (photon % end_stride == 0u && slot < uint(EIKON_RECORDED_PHOTONS)) {
+        photon_ends[2u * slot] = vec4(x, float(fate));
+        photon_ends[2u * slot + 1u] = vec4(power, float(receiver));
     }
 #endif
 }
@@ -305,6 +332,21 @@ void take_channel(uint photon) {
 #endif
 }
 
+// The photon that index `photon` of a stride-2 half of the pass traces: an
+// emitter's photon i takes stratum (i mod s, i / s), so with s even the even
+// indices alone would be the even columns, a half whose mean differs from
+// the other's at first order in the strata; swapping the pairs (2k, 2k + 1)
+// of odd rows gives each half a checkerboard, whose diagonal pairs of strata
+// share their centre. With s odd, index parity is the checkerboard already.
+// A bijection on each emitter's photons, so the two halves are the pass.
+uint checkerboard_photon(uint photon) {
+    Emitter emitter = emitters[emitter_of(photon)];
+    uint local = photon - emitter.photons.x;
+    uvec2 strata = emitter.photons.zw;
+    if (strata.x % 2u != 0u || local >= strata.x * strata.y || ((local / strata.x) & 1u) == 0u) return photon;
+    return emitter.photons.x + (local ^ 1u);
+}
+
 // Where photon `photon` starts, its direction and the power it carries,
 // sampled from its emitter (stratified; a dispersive photon carries one
 // channel, at three times its power, so each channel keeps its total).
@@ -329,7 +371,7 @@ void emit_photon(uint photon, out vec3 x, out vec3 direction, out vec3 emitted) 
 #endif
 }
 
-// Traces photon `photon_offset + id`, or resumes suspended photon `id`.
+// Traces photon `photon_offset + id · photon_stride`, or resumes suspended photon `id`.
 void trace_photon(uint id) {
     uint photon;
     vec3 x;
@@ -366,7 +408,8 @@ void trace_photon(uint id) {
     } else
 #endif
     {
-        photon = photon_offset + id;
+        photon = photon_offset + id * photon_stride;
+        if (checkerboard != 0u) photon = checkerboard_photon(photon);
         vec3 direction;
         emit_photon(photon, x, direction, emitted);
         power = emitted;
@@ -385,6 +428,7 @@ void trace_photon(uint id) {
     float max_invariant_error = 0.0f;
     float invariant_error_sum = 0.0f;
     int fate = kEscaped;
+    int end_receiver = -1;  // the receiver it last landed on
     bool marched = false;  // the last move was a step of the march (not a flight, bounce or emission)
 
     for (uint passes = 1u;; ++passes) {
@@ -402,6 +446,7 @@ void trace_photon(uint id) {
             if (flight.hit.receiver >= 0) {
                 x = x + flight.distance * d;
                 record_vertex(photon, vertex++, x, power);
+                end_receiver = flight.hit.receiver;
                 if (land_on_receiver(flight.hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
                 break;
             }
@@ -411,7 +456,8 @@ void trace_photon(uint id) {
                 // last vertex, one step past the boundary, moved back onto
                 // it — or where it last was (a light or receiver outside
                 // the grid); never far away.
-                if (stepped_out && vertex > 0u) record_vertex(photon, vertex - 1u, grid_exit_point(x, d), power);
+                if (stepped_out) x = grid_exit_point(x, d);
+                if (stepped_out && vertex > 0u) record_vertex(photon, vertex - 1u, x, power);
                 fate = kEscaped;
                 break;
             }
@@ -474,6 +520,7 @@ void trace_photon(uint id) {
             x = mix(start, x, hit.fraction);
             marched = false;  // it is on the receiver, not past the grid's boundary
             record_vertex(photon, vertex++, x, power);
+            end_receiver = hit.receiver;
             if (land_on_receiver(hit, photon, bounces, x, x_lost, v, field, power, reflected, fate)) continue;
             break;
         }
@@ -524,10 +571,12 @@ void trace_photon(uint id) {
     if (fate != kSuspended) {
         add_power(fate, power);
         atomicAdd(group_photons[fate - kEscaped], 1u);
+        record_end(photon, x, fate, fate == kReceived ? end_receiver : -1, power);
     }
 #else
     add_power(fate, power);
     atomicAdd(group_photons[fate - kEscaped], 1u);
+    record_end(photon, x, fate, fate == kReceived ? end_receiver : -1, power);
 #endif
     atomicAdd(group_steps, steps - first_step);
     atomicMax(group_max_invariant_bits, floatBitsToUint(max_invariant_error));

@@ -1,5 +1,7 @@
 #include "apps/eikon/FrameExport.h"
 
+#include "bridge/core/PrimeStride.h"
+
 #include "io/vtk/ExportGeometry.h"
 
 #include <algorithm>
@@ -37,22 +39,11 @@ io::PolyData meshPolyData(const std::vector<TriangleMesh>& meshes) {
     return io::triangleMesh(vertices, triangles, {std::move(object)});
 }
 
-// The largest prime <= n (n >= 2), or 1: photon i of an emitter takes
-// stratum (i mod s, i / s) of an s × s grid, and a prime stride longer than
-// s shares no factor with it, so the recorded photons spread over all strata.
-long long largestPrimeAtMost(long long n) {
-    for (long long k = n; k >= 2; --k) {
-        bool prime = true;
-        for (long long d = 2; d * d <= k && prime; ++d) prime = k % d != 0;
-        if (prime) return k;
-    }
-    return 1;
-}
-
 }  // namespace
 
 render::RendererOptions rendererOptionsFor(const Scene& scene) {
     render::RendererOptions options;
+    options.estimateErrors = scene.render.errorEstimate;
     const VtkExportDesc& vtk = scene.exports.vtk;
     if (vtk.enabled && vtk.photonPaths > 0) {
         options.photons.recordPathVertices = vtk.pathVertices;

@@ -1,6 +1,7 @@
 #include "apps/eikon/FrameLoop.h"
 
 #include "apps/common/FrameSource.h"
+#include "apps/eikon/ErrorWarning.h"
 #include "apps/eikon/FrameOutputs.h"
 #include "apps/eikon/FrameShareLoop.h"
 #include "apps/eikon/PowerWarning.h"
@@ -56,6 +57,25 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
     return json;
 }
 
+nlohmann::json outputErrorsJson(const render::OutputErrors& errors) {
+    nlohmann::json json = nlohmann::json::object();
+    if (errors.receivers) json["receivers"] = *errors.receivers;
+    if (errors.image) json["image"] = *errors.image;
+    if (errors.fluence) json["fluence"] = *errors.fluence;
+    return json;
+}
+
+nlohmann::json errorEstimateJson(const render::ErrorEstimate& estimate) {
+    nlohmann::json noise = estimate.noiseEstimated ? outputErrorsJson(estimate.noise) : nlohmann::json::object();
+    noise["method"] = estimate.noiseEstimated ? "two batches (even and odd photons), relative RMS"
+                                              : "none (a deterministic wavefront, or a light pass shared among ranks)";
+    nlohmann::json discretisation = outputErrorsJson(estimate.discretisation);
+    discretisation["method"] = "against the reference march (RK4, steps of reference_step_voxels)";
+    discretisation["reference_step_voxels"] = estimate.referenceStepVoxels;
+    discretisation["probe_photons"] = estimate.probePhotons;
+    return {{"noise", noise}, {"discretisation", discretisation}, {"ms", estimate.milliseconds}};
+}
+
 // Each turn renders the current frame and, while more follow, produces the
 // next (FrameSource.h). The host fields' frame time includes the advance
 // that produced the frame, as the ring's includes nothing of the next one's
@@ -78,6 +98,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
     std::optional<FrameOutputs> outputs;  // opened once frame 0 is rendered: its GPU resources all fit
     const bool simulated = fields.changesOverTime();
     PowerWarning warning;
+    ErrorWarning errorWarning(scene.render.warnError);
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
         const bool more = frame + 1 < frames;
@@ -92,6 +113,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
         timing.frameMs = millisecondsSince(start) + (source.throughRing() ? 0.0 : current.simulateMs);
         if (writes) {
             warning.check(frame, result);
+            errorWarning.check(frame, result);
             if (!outputs) outputs.emplace(scene, openOutput());
             outputs->write(frame, result,
                            frameReportJson(frame, current, simulated, result, timing,
@@ -144,6 +166,7 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
     const bool tracesPhotons = std::any_of(result.stages.begin(), result.stages.end(),
                                            [](const render::StageReport& stage) { return stage.name == "photons"; });
     if (tracesPhotons) report["photons"] = photonsJson(result.photons);
+    if (result.errorEstimate) report["error_estimate"] = errorEstimateJson(*result.errorEstimate);
     if (distribution != Distribution::None)
         report["distribution"] = {{"mode", distributionName(distribution)}, {"ranks", Ranks::world().size()}};
     if (simulated) {

@@ -37,6 +37,7 @@
     X(kHdrImage, 7)             /* buffer HdrImage { vec4 radiance[]; } */                                                      \
     X(kLdrImage, 8)             /* buffer LdrImage { uint rgba8[]; } */                                                         \
     X(kPhotonPaths, 9)          /* buffer PhotonPaths { vec4 vertices[]; }: optional recording for tests and export */          \
+    X(kPhotonEnds, 10)          /* buffer PhotonEnds { vec4 ends[]; }: per recorded photon (end, fate), (power, receiver) */    \
     X(kReceiverTallies, 11)     /* buffer ReceiverTallies { uint units[]; }: per texel and channel a 64-bit fixed-point sum */  \
     X(kFluenceDirection, 12)    /* buffer FluenceDirection { float direction[]; }: xyz per cell, power-weighted */              \
     X(kRawFluence, 13)          /* buffer RawFluence: the photon pass's unsmoothed fluence, RGB per cell */                     \

@@ -169,6 +169,11 @@ struct RenderDesc {
     int surfaceDepth = 4;         // sharp-surface events that split a camera ray into reflection and refraction, 0..8
     EnvironmentDesc environment;  // `background` in the file sets a uniform environment's radiance
     bool writeHdr = true;         // also write the linear image as Radiance .hdr
+    // Estimate each frame's noise and discretisation error
+    // (render/stages/ErrorEstimateStage.h) and warn, once a run, where
+    // either exceeds warnError (relative, > 0).
+    bool errorEstimate = true;
+    double warnError = 0.05;
 };
 
 // How photons are marched ([Sun08] §4.2–4.4 and §5.3).

@@ -304,7 +304,7 @@ EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& scene
 RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     RenderDesc render;
     const auto fields = node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background",
-                                     "environment", "write_hdr", "surface_depth"});
+                                     "environment", "write_hdr", "surface_depth", "error_estimate", "warn_error"});
     if (auto photons = fields.optional("photons")) render.photons = photons->integer(1, kMaxPhotons);
     if (auto width = fields.optional("width")) render.width = static_cast<int>(width->integer(1, kMaxImageEdge));
     if (auto height = fields.optional("height")) render.height = static_cast<int>(height->integer(1, kMaxImageEdge));
@@ -319,6 +319,8 @@ RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     if (auto writeHdr = fields.optional("write_hdr")) render.writeHdr = writeHdr->boolean();
     if (auto depth = fields.optional("surface_depth"))
         render.surfaceDepth = static_cast<int>(depth->integer(0, 8));
+    if (auto estimate = fields.optional("error_estimate")) render.errorEstimate = estimate->boolean();
+    if (auto warn = fields.optional("warn_error")) render.warnError = warn->number(kPositive);
     return render;
 }
 

@@ -37,6 +37,12 @@ void Buffer::clearToZero() {
     glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 }
 
+void Buffer::copyFrom(const Buffer& source) {
+    EIKON_CHECK_MSG(source.bytes() == bytes_, "a buffer copied from one of its own size");
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (bytes_ > 0) glCopyNamedBufferSubData(source.id(), id(), 0, 0, static_cast<GLsizeiptr>(bytes_));
+}
+
 std::uint64_t Texture3D::bytesFor(GLenum internalFormat, int width, int height, int depth, int levels) {
     EIKON_CHECK(internalFormat == GL_R32F || internalFormat == GL_RGBA32F);
     const std::uint64_t texel = internalFormat == GL_R32F ? 4 : 16;

@@ -62,6 +62,8 @@ public:
     void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
     void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
     void clearToZero();
+    // The whole of `source`, of the same size, copied on the GPU.
+    void copyFrom(const Buffer& source);
     void bindStorage(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id()); }
     void bindUniform(GLuint binding) const { glBindBufferBase(GL_UNIFORM_BUFFER, binding, id()); }
 

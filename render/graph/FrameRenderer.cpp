@@ -53,6 +53,17 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     photonSettings_.powerCutoff = scene.tracer.powerCutoff;
     photonSettings_.share = options.share;
     photonSettings_.exchange = options.exchange;
+    if (options.estimateErrors && view_) {
+        const double referenceStep = ErrorEstimateStage::referenceStepVoxels(scene) * voxel;
+        if (stepStructure_) {
+            stepStructure_->enableReference(referenceStep);
+        } else {
+            referenceSteps_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction());
+            referenceSteps_->enableReference(referenceStep);
+        }
+        errorEstimate_ = std::make_unique<ErrorEstimateStage>(scene_, fields_, receivers_, stepStructure_ != nullptr);
+        if (options.share.whole() && !options.exchange) photonSettings_.evenHalf = errorEstimate_->evenHalf();
+    }
 }
 
 const gl::Texture3D* FrameRenderer::stepTexture() const {
@@ -112,6 +123,9 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     if (stepStructure_)
         result.stages.push_back(runStage("step_structure", indexChanged || extinctionChanged,
                                          [&] { stepStructure_->run(prepare_->smoothedIndex(fields_), fields_); }));
+    if (referenceSteps_)
+        result.stages.push_back(runStage("reference_steps", indexChanged || extinctionChanged,
+                                         [&] { referenceSteps_->run(prepare_->smoothedIndex(fields_), fields_); }));
     if (photons_)
         result.stages.push_back(runStage("photons", photonsNeeded, [&] {
             last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
@@ -124,6 +138,11 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
     }));
+    if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded, [&] {
+        const StepStructureStage& reference = referenceSteps_ ? *referenceSteps_ : *stepStructure_;
+        last_.errorEstimate = errorEstimate_->run(
+            fields_, {photons_.get(), stepTexture(), &reference.referenceStepTexture(), photonSettings_});
+    }));
     tracedIndexVersion_ = fields.indexVersion;
     tracedExtinctionVersion_ = fields.extinctionVersion;
     tracedScatteringVersion_ = fields.scatteringVersion;
@@ -133,6 +152,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.image = last_.image;
     result.hdr = last_.hdr;
     result.photons = last_.photons;
+    result.errorEstimate = last_.errorEstimate;
     return result;
 }
 

@@ -8,6 +8,7 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
+#include "render/stages/ErrorEstimateStage.h"
 #include "render/stages/FieldRing.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/PhotonStage.h"
@@ -18,6 +19,7 @@
 #include "render/stages/ViewStage.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +37,7 @@ struct FrameResult {
     PhotonStats photons;          // of the latest photon pass
     std::vector<StageReport> stages;
     UploadBytes copied;           // host bytes the driver read, bytes copied on the GPU
+    std::optional<ErrorEstimate> errorEstimate;  // with RendererOptions::estimateErrors
 };
 
 struct RendererOptions {
@@ -48,6 +51,11 @@ struct RendererOptions {
     // False for a share that only traces light: no view and post stages,
     // and the frame's image stays empty (another process draws it).
     bool drawsImage = true;
+    // Estimate each frame's noise and discretisation error (an
+    // "error_estimate" stage, ErrorEstimateStage.h); `eikon run` sets it
+    // from render.error_estimate. Where the light pass is shared among
+    // processes, the noise is not estimated.
+    bool estimateErrors = false;
 };
 
 class FrameRenderer {
@@ -92,6 +100,10 @@ private:
     std::unique_ptr<PhotonStage> photons_;
     std::unique_ptr<ViewStage> view_;
     PostStage post_;
+    // With estimateErrors: the reference step labels (the scene's own step
+    // structure's where it has one, else this one's) and the estimate.
+    std::unique_ptr<StepStructureStage> referenceSteps_;
+    std::unique_ptr<ErrorEstimateStage> errorEstimate_;
     PhotonSettings photonSettings_;
 
     std::uint64_t tracedIndexVersion_ = ~0ull, tracedExtinctionVersion_ = ~0ull, tracedScatteringVersion_ = ~0ull,

@@ -112,7 +112,7 @@ unsigned defaultMaxSteps(const GridSpec& grid, double stepLength) {
 
 PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, ReceiverMaps& receivers,
                          PhotonProgramOptions options)
-    : receivers_(receivers), surfaces_(scene), dispersion_(scene.tracer.dispersion) {
+    : receivers_(receivers), surfaces_(scene), dispersion_(scene.tracer.dispersion), options_(options) {
     storeFluence_ = scene.tracer.storeFluence ? 2 : (fields.hasScattering() ? 1 : 0);
     if (options.bareMarch) storeFluence_ = 0;
     const TracerDesc& tracer = scene.tracer;
@@ -141,7 +141,8 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
                         {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
                         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
                         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
-                        {"EIKON_RECORD_STRIDE", std::to_string(std::max(1, options.recordStride))}});
+                        {"EIKON_RECORD_STRIDE", std::to_string(options.recordPathVertices > 0 ? std::max(1, options.recordStride) : 1)},
+                        {"EIKON_RECORD_ENDS", options.recordEnds ? "1" : "0"}});
         program_ = gl::compileComputeProgram("photon_trace.comp", defines);
         resumable_ = loopBudget > 0;
     }
@@ -166,6 +167,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         static_cast<std::size_t>(options.recordPathVertices) * static_cast<std::size_t>(options.recordedPhotons);
     paths_ = gl::Buffer(recordedVertices * sizeof(glm::vec4));
     pathPower_ = gl::Buffer(recordedVertices * sizeof(glm::vec4));
+    if (options.recordEnds) ends_ = gl::Buffer(2 * static_cast<std::size_t>(options.recordedPhotons) * sizeof(glm::vec4));
 }
 
 void PhotonStage::setEmitters(const Scene& scene) {
@@ -208,6 +210,10 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     paths_.bindStorage(layout::kPhotonPaths);
     pathPower_.clearToZero();
     pathPower_.bindStorage(layout::kPhotonPathPower);
+    if (ends_.id()) {
+        ends_.clearToZero();
+        ends_.bindStorage(layout::kPhotonEnds);
+    }
     if (storeFluence_ > 0) {
         rawFluence_.clearToZero();
         rawDirection_.clearToZero();
@@ -216,28 +222,51 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     }
     if (!surfaces_.empty()) surfaces_.bind();
     PhotonStats stats;
+    resumed_ = 0;
+    resumeDispatches_ = 0;
     if (wavefront_) {
         stats.byWavefront = true;
         stats.wavefront = wavefront_->run({emissionFaces_, receivers_.count(), surfaces_.empty() ? 0u : surfaces_.count(),
                                            settings.maxSteps, settings.stepLength, dispersion_, powerUnit_,
                                            settings.share});
+    } else if (settings.recordedOnly) {
+        const std::size_t stride = static_cast<std::size_t>(std::max(1, options_.recordStride));
+        const std::size_t count = std::min(static_cast<std::size_t>(options_.recordedPhotons),
+                                           (static_cast<std::size_t>(photons_) + stride - 1) / stride);
+        tracePhotons(settings, 0, stride, count);
+        stats.photons = static_cast<long long>(count);
+        stats.photonsResumed = resumed_;
+        stats.resumeDispatches = resumeDispatches_;
     } else {
-        tracePhotons(settings);
+        const PhotonRange range = shareRange(static_cast<std::size_t>(photons_), settings.share);
+        if (settings.evenHalf) {
+            EIKON_CHECK_MSG(settings.share.whole() && !settings.exchange, "halves of a whole pass");
+            tracePhotons(settings, range.first, 2, (range.count + 1) / 2, true);
+            settings.evenHalf->copyTalliesFrom(receivers_);
+            if (storeFluence_ > 0) {
+                if (!halfFluence_.id()) {
+                    const gl::GpuResource resource{"render.error_estimate", "the fluence of half the photons"};
+                    for (gl::Buffer* buffer : {&halfRawFluence_, &halfRawDirection_, &halfFluence_, &halfDirection_})
+                        *buffer = gl::Buffer(rawFluence_.bytes(), resource);
+                }
+                halfRawFluence_.copyFrom(rawFluence_);
+                halfRawDirection_.copyFrom(rawDirection_);
+            }
+            tracePhotons(settings, range.first + 1, 2, range.count / 2, true);
+        } else {
+            tracePhotons(settings, range.first, 1, range.count);
+        }
         stats.photons = photons_;
         stats.photonsResumed = resumed_;
         stats.resumeDispatches = resumeDispatches_;
     }
     if (settings.exchange) combineShares(*settings.exchange, stats);
     receivers_.filter(powerUnit_);
+    if (settings.evenHalf) settings.evenHalf->filter(2.0f * powerUnit_);
     if (storeFluence_ > 0) {
-        fields.gridBlock().bindUniform(layout::kGridBlock);
-        rawFluence_.bindStorage(layout::kRawFluence);
-        rawDirection_.bindStorage(layout::kRawFluenceDirection);
-        fluence_.bindStorage(layout::kFluence);
-        direction_.bindStorage(layout::kFluenceDirection);
-        const glm::ivec3 r = fields.grid().resolution;
-        fluenceSmoothProgram_.dispatchOverCells(r);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        smoothFluence(fields, rawFluence_, rawDirection_, fluence_, direction_, 1.0f);
+        if (settings.evenHalf)
+            smoothFluence(fields, halfRawFluence_, halfRawDirection_, halfFluence_, halfDirection_, 2.0f);
     }
     gl::checkpoint("photon stage");
 
@@ -268,8 +297,23 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     return stats;
 }
 
-void PhotonStage::tracePhotons(const PhotonSettings& settings) {
+void PhotonStage::smoothFluence(const FieldTextures& fields, const gl::Buffer& raw, const gl::Buffer& rawDirection,
+                                const gl::Buffer& smoothed, const gl::Buffer& smoothedDirection, float scale) {
+    fields.gridBlock().bindUniform(layout::kGridBlock);
+    raw.bindStorage(layout::kRawFluence);
+    rawDirection.bindStorage(layout::kRawFluenceDirection);
+    smoothed.bindStorage(layout::kFluence);
+    smoothedDirection.bindStorage(layout::kFluenceDirection);
+    fluenceSmoothProgram_.use();
+    glUniform1f(fluenceSmoothProgram_.uniform("scale"), scale);
+    fluenceSmoothProgram_.dispatchOverCells(fields.grid().resolution);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void PhotonStage::tracePhotons(const PhotonSettings& settings, std::size_t first, std::size_t stride,
+                               std::size_t count, bool checkerboard) {
     program_.use();
+    glUniform1ui(program_.uniform("checkerboard"), checkerboard ? 1u : 0u);
     if (!surfaces_.empty()) glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
     glUniform1ui(program_.uniform("emitter_count"), emitterCount_);
     glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
@@ -280,14 +324,13 @@ void PhotonStage::tracePhotons(const PhotonSettings& settings) {
     glUniform3f(program_.uniform("power_unit"), powerUnit_.r, powerUnit_.g, powerUnit_.b);
     glUniform3f(program_.uniform("dispersion"), static_cast<float>(dispersion_.r), static_cast<float>(dispersion_.g),
                 static_cast<float>(dispersion_.b));
-    resumed_ = 0;
-    resumeDispatches_ = 0;
-    const PhotonRange range = shareRange(static_cast<std::size_t>(photons_), settings.share);
-    const std::size_t end = range.first + range.count;
+    glUniform1ui(program_.uniform("photon_stride"), static_cast<GLuint>(stride));
+    if (options_.recordEnds)
+        glUniform1ui(program_.uniform("end_stride"), static_cast<GLuint>(std::max(1, options_.recordStride)));
     const std::size_t batchPhotons = resumable_ ? kResumableBatchPhotons : kBatchPhotons;
-    for (std::size_t offset = range.first; offset < end; offset += batchPhotons) {
-        const std::size_t batch = std::min(batchPhotons, end - offset);
-        glUniform1ui(program_.uniform("photon_offset"), static_cast<GLuint>(offset));
+    for (std::size_t done = 0; done < count; done += batchPhotons) {
+        const std::size_t batch = std::min(batchPhotons, count - done);
+        glUniform1ui(program_.uniform("photon_offset"), static_cast<GLuint>(first + done * stride));
         glUniform1ui(program_.uniform("batch_size"), static_cast<GLuint>(batch));
         if (resumable_) {
             glUniform1ui(program_.uniform("resuming"), 0u);
@@ -368,6 +411,19 @@ std::vector<glm::vec4> PhotonStage::downloadPathPower() const {
     std::vector<glm::vec4> power(pathPower_.bytes() / sizeof(glm::vec4));
     if (!power.empty()) pathPower_.download(power.data(), power.size() * sizeof(glm::vec4));
     return power;
+}
+
+std::vector<PhotonEnd> PhotonStage::downloadEnds() const {
+    std::vector<glm::vec4> raw(ends_.bytes() / sizeof(glm::vec4));
+    if (!raw.empty()) ends_.download(raw.data(), raw.size() * sizeof(glm::vec4));
+    std::vector<PhotonEnd> ends(raw.size() / 2);
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+        ends[i].position = glm::vec3(raw[2 * i]);
+        ends[i].fate = static_cast<int>(raw[2 * i].w);
+        ends[i].power = glm::vec3(raw[2 * i + 1]);
+        ends[i].receiver = static_cast<int>(raw[2 * i + 1].w);
+    }
+    return ends;
 }
 
 std::vector<glm::vec4> PhotonStage::downloadPaths() const {

@@ -32,6 +32,24 @@ struct PhotonSettings {
     double powerCutoff = 1e-4;    // relative to a photon's emitted power
     PassShare share{};            // this process's share of the pass (LightPassShare.h)
     LightPassExchange* exchange = nullptr;  // combines the shares' tallies; null for a whole pass
+    // Only the recorded photons (0, k, 2k, …: PhotonProgramOptions), not the
+    // whole pass: the probe of the discretisation estimate.
+    bool recordedOnly = false;
+    // Where set, the even photons are traced first, then the odd ones (each
+    // half a checkerboard of every emitter's strata), and this gets the
+    // tallies of the even half, filtered as for twice its
+    // photons (and the stage keeps that half's fluence, halfFluence): two
+    // independent batches for the noise estimate (ErrorEstimateStage). The
+    // whole pass's tallies are the same bits either way. A whole pass only.
+    ReceiverMaps* evenHalf = nullptr;
+};
+
+// Where a recorded photon ended (PhotonProgramOptions::recordEnds).
+struct PhotonEnd {
+    glm::vec3 position{0.0f};  // on the receiver, where it left the grid, or where it stopped
+    int fate = 0;              // layout::PowerTally: kEscaped, kReceived, kCutOff, kBlocked; 0 not traced
+    glm::vec3 power{0.0f};     // RGB, W, at the end
+    int receiver = -1;         // the receiver it ended on (kReceived)
 };
 
 // Options that change the photon program itself (compile-time #defines).
@@ -39,6 +57,7 @@ struct PhotonProgramOptions {
     int recordPathVertices = 0;  // per recorded photon; 0 records nothing (compiled out)
     int recordedPhotons = 64;
     int recordStride = 1;        // record photons 0, k, 2k, … (a sample spread over all emitters and strata)
+    bool recordEnds = false;     // keep where each of the recordedPhotons, every recordStride-th, ended (downloadEnds)
     bool bareMarch = false;      // benchmark limit: no attenuation, deposits or receivers
     // The loop budget a photon may spend in one dispatch; unset: the
     // driver's (gl::currentLoopBudget). Tests shrink it to suspend photons
@@ -100,9 +119,21 @@ public:
     // recordPathVertices per photon, and the RGB power (W) at each of them.
     std::vector<glm::vec4> downloadPaths() const;
     std::vector<glm::vec4> downloadPathPower() const;
+    std::vector<PhotonEnd> downloadEnds() const;  // recordedPhotons of them, with recordEnds
+    // The smoothed fluence and direction of the even half of the last pass
+    // traced with PhotonSettings::evenHalf, scaled to the whole pass's power.
+    const gl::Buffer& halfFluence() const { return halfFluence_; }
+    const gl::Buffer& halfFluenceDirection() const { return halfDirection_; }
 
 private:
-    void tracePhotons(const PhotonSettings& settings);
+    // Traces photons first, first + stride, … (count of them); checkerboard:
+    // with stride 2, the halves take checkerboards of strata
+    // (checkerboard_photon in shaders/photon_trace.comp).
+    void tracePhotons(const PhotonSettings& settings, std::size_t first, std::size_t stride, std::size_t count,
+                      bool checkerboard = false);
+    // The fluence smoothing of raw into smoothed, times scale.
+    void smoothFluence(const FieldTextures& fields, const gl::Buffer& raw, const gl::Buffer& rawDirection,
+                       const gl::Buffer& smoothed, const gl::Buffer& smoothedDirection, float scale);
     // Sums the raw tallies of every share of the pass into this one's
     // (statistics, receivers, fluence, recorded paths), before the filters.
     void combineShares(LightPassExchange& exchange, PhotonStats& stats);
@@ -123,6 +154,9 @@ private:
     long long photons_ = 0;      // the count the emitters were built for
     glm::vec3 powerUnit_{0.0f};  // W per fixed-point tally unit, per channel
     gl::Buffer rawFluence_, rawDirection_, fluence_, direction_;
+    gl::Buffer halfRawFluence_, halfRawDirection_, halfFluence_, halfDirection_;  // allocated by the first halved pass
+    PhotonProgramOptions options_;
+    gl::Buffer ends_;
     gl::Buffer stats_;
     gl::Buffer paths_;
     gl::Buffer pathPower_;

@@ -27,6 +27,8 @@ public:
     // processes (LightPassShare.h).
     std::vector<std::uint64_t> downloadTallies() const;
     void uploadTallies(const std::vector<std::uint64_t>& tallies);
+    // The tallies of `other`, receivers of the same sizes, copied on the GPU.
+    void copyTalliesFrom(const ReceiverMaps& other) { tallies_.copyFrom(other.tallies_); }
     void bind() const;
     // Turns the tallies into irradiance maps; powerUnit is W per tally unit.
     void filter(const glm::vec3& powerUnit);

@@ -30,6 +30,32 @@ StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& t
     step_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z, gl::gridResource("the octree step sizes", r.x, r.y, r.z));
 }
 
+void StepStructureStage::enableReference(double minStep) {
+    referenceMinStep_ = minStep;
+    if (reference_.id()) return;
+    const glm::ivec3 r = grid_.resolution;
+    reference_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z, gl::gridResource("the reference step sizes", r.x, r.y, r.z));
+}
+
+void StepStructureStage::label(const gl::Texture3D& target, double epsilon, double epsilonPrime, double minStep) {
+    const float maxDispersion = static_cast<float>(std::max({tracer_.dispersion.r, tracer_.dispersion.g, tracer_.dispersion.b}));
+    labelProgram_.use();
+    pyramid_.bindSampler(layout::kPyramidTexture);
+    target.bindImage(layout::kStepImage, GL_WRITE_ONLY);
+    glUniform1i(labelProgram_.uniform("levels"), levels_);
+    glUniform1f(labelProgram_.uniform("epsilon"), static_cast<float>(epsilon));
+    glUniform1f(labelProgram_.uniform("epsilon_prime"), static_cast<float>(epsilonPrime));
+    glUniform1f(labelProgram_.uniform("index_scale"), maxDispersion);
+    glUniform1f(labelProgram_.uniform("capped_step"),
+                static_cast<float>(tracer_.maxStepVoxels * grid_.smallestVoxelEdge()));
+    glUniform1f(labelProgram_.uniform("min_step"), static_cast<float>(minStep));
+    const glm::dvec3 h = grid_.voxelSize();
+    glUniform1f(labelProgram_.uniform("node_edge"), static_cast<float>(std::max({h.x, h.y, h.z}) * std::sqrt(3.0)));
+    glUniform1f(labelProgram_.uniform("optical_depth_tolerance"), static_cast<float>(kOpticalDepthTolerance));
+    labelProgram_.dispatchOverCells(grid_.resolution);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
 void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields) {
     minmaxProgram_.use();
     smoothedIndex.bindSampler(layout::kIndexTexture);
@@ -42,22 +68,8 @@ void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldText
         minmaxProgram_.dispatchOverCells(glm::max(paddedSize_ >> level, glm::ivec3(1)));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
-    const float maxDispersion = static_cast<float>(std::max({tracer_.dispersion.r, tracer_.dispersion.g, tracer_.dispersion.b}));
-    labelProgram_.use();
-    pyramid_.bindSampler(layout::kPyramidTexture);
-    step_.bindImage(layout::kStepImage, GL_WRITE_ONLY);
-    glUniform1i(labelProgram_.uniform("levels"), levels_);
-    glUniform1f(labelProgram_.uniform("epsilon"), static_cast<float>(tracer_.epsilon));
-    glUniform1f(labelProgram_.uniform("epsilon_prime"), static_cast<float>(tracer_.epsilonPrime));
-    glUniform1f(labelProgram_.uniform("index_scale"), maxDispersion);
-    glUniform1f(labelProgram_.uniform("capped_step"),
-                static_cast<float>(tracer_.maxStepVoxels * grid_.smallestVoxelEdge()));
-    glUniform1f(labelProgram_.uniform("min_step"), static_cast<float>(tracer_.stepVoxels * grid_.smallestVoxelEdge()));
-    const glm::dvec3 h = grid_.voxelSize();
-    glUniform1f(labelProgram_.uniform("node_edge"), static_cast<float>(std::max({h.x, h.y, h.z}) * std::sqrt(3.0)));
-    glUniform1f(labelProgram_.uniform("optical_depth_tolerance"), static_cast<float>(kOpticalDepthTolerance));
-    labelProgram_.dispatchOverCells(grid_.resolution);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    label(step_, tracer_.epsilon, tracer_.epsilonPrime, tracer_.stepVoxels * grid_.smallestVoxelEdge());
+    if (reference_.id()) label(reference_, 0.0, 0.0, referenceMinStep_);
     gl::checkpoint("step structure stage");
 }
 

@@ -26,8 +26,16 @@ public:
     // 1 where the node holds no extinction, 0).
     const gl::Texture3D& stepTexture() const { return step_; }
     int levels() const { return levels_; }
+    // Also labels, on every run, a reference structure for the
+    // discretisation estimate: long steps only through nodes whose index and
+    // extinction are exactly uniform (ε = ε′ = 0, where a straight flight is
+    // exact), `minStep` (metres) everywhere else.
+    void enableReference(double minStep);
+    const gl::Texture3D& referenceStepTexture() const { return reference_; }
 
 private:
+    void label(const gl::Texture3D& target, double epsilon, double epsilonPrime, double minStep);
+
     GridSpec grid_;
     TracerDesc tracer_;
     int levels_ = 1;
@@ -36,6 +44,8 @@ private:
     gl::Program labelProgram_;
     gl::Texture3D pyramid_;
     gl::Texture3D step_;
+    gl::Texture3D reference_;  // with enableReference
+    double referenceMinStep_ = 0.0;
 };
 
 }  // namespace eikon::render
