@@ -97,6 +97,51 @@ TEST_F(Cli, RunWritesFramesAndReport) {
     EXPECT_EQ(lines, 2);
 }
 
+// The per-frame error estimates reach report.jsonl, and a frame whose noise
+// is above render.warn_error (4096 photons on a 32² map: about 10%) is
+// reported on stderr once a run, whatever the number of frames.
+TEST_F(Cli, ErrorEstimatesAreReportedAndWarnedOnceAboveTheThreshold) {
+    const std::string scene = writeScene("ok.json", validScene());
+    const auto warnings = [](const std::string& output) {
+        int count = 0;
+        for (auto at = output.find("eikon: warning:"); at != std::string::npos; at = output.find("eikon: warning:", at + 1))
+            ++count;
+        return count;
+    };
+    const Outcome noisy = runEikon("run " + scene + " --out " + (dir_ / "noisy").string() + " --frames 2 --quiet");
+    ASSERT_EQ(noisy.exitCode, 0) << noisy.output;
+    EXPECT_EQ(warnings(noisy.output), 1) << noisy.output;
+    EXPECT_NE(noisy.output.find("noise of the receiver maps"), std::string::npos) << noisy.output;
+    EXPECT_NE(noisy.output.find("render.warn_error = 5%"), std::string::npos) << noisy.output;
+    std::ifstream report(dir_ / "noisy" / "report.jsonl");
+    for (std::string line; std::getline(report, line);) {
+        const nlohmann::json estimate = nlohmann::json::parse(line).at("error_estimate");
+        EXPECT_GT(estimate["noise"]["receivers"].get<double>(), 0.05);
+        EXPECT_GT(estimate["noise"]["image"].get<double>(), 0.0);
+        EXPECT_LT(estimate["discretisation"]["receivers"].get<double>(), 0.05);
+        EXPECT_EQ(estimate["discretisation"]["probe_photons"].get<int>(), 4096);
+    }
+
+    const Outcome lenient = runEikon("run " + scene + " --out " + (dir_ / "lenient").string() +
+                                     " --quiet --set render.warn_error=2");
+    ASSERT_EQ(lenient.exitCode, 0) << lenient.output;
+    EXPECT_EQ(warnings(lenient.output), 0) << lenient.output;
+
+    const Outcome off = runEikon("run " + scene + " --out " + (dir_ / "off").string() +
+                                 " --quiet --set render.error_estimate=false");
+    ASSERT_EQ(off.exitCode, 0) << off.output;
+    EXPECT_EQ(warnings(off.output), 0) << off.output;
+    std::ifstream offReport(dir_ / "off" / "report.jsonl");
+    std::string line;
+    ASSERT_TRUE(std::getline(offReport, line));
+    EXPECT_FALSE(nlohmann::json::parse(line).contains("error_estimate"));
+
+    const Outcome bad = runEikon("run " + scene + " --out " + (dir_ / "bad").string() + " --set render.warn_error=0");
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.output.find("render.warn_error"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(dir_ / "bad"));
+}
+
 TEST_F(Cli, VtkExportWritesATimeSeries) {
     const std::string scene = writeScene("ok.json", validScene());
     const fs::path out = dir_ / "out";
@@ -376,7 +421,7 @@ TEST_F(Cli, MaxStepsNotTheDriversLoopCapStopsPhotons) {
     const fs::path out = dir_ / "run";
     const Outcome outcome = runEikon("run " + scene + " --out " + out.string() +
                                      " --quiet --set 'tracer.step_policy=\"uniform\"' --set tracer.step_voxels=0.01"
-                                     " --set tracer.max_steps=1000000");
+                                     " --set tracer.max_steps=1000000 --set render.error_estimate=false");
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
     EXPECT_EQ(outcome.output.find("warning"), std::string::npos) << outcome.output;
     std::ifstream report(out / "report.jsonl");
