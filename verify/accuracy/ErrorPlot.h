@@ -1,8 +1,7 @@
-// accuracy.png: error against run time, log–log, one panel per case and one
-// curve per integrator and step policy (the sweeps over grid, smoothing,
-// octree tolerances and photon count as their own marked curves). Drawn by a
-// small rasterizer (lines, markers, stb_easy_font text) and written as PNG
-// through io/image/ImageIo: no plotting library renders headless here.
+// accuracy.png and accuracy.svg: error against run time, log–log, one panel
+// per case and one curve per integrator and step policy (the sweeps over
+// grid, smoothing, octree tolerances and photon count as their own marked
+// curves), drawn by PLplot (verify/plot/LogLogFigure.h).
 #pragma once
 
 #include "verify/accuracy/AccuracyRun.h"
