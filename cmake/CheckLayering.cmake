@@ -31,6 +31,7 @@ set(rules
   "shaders|common/,shaders/common/,bridge/layout/"
   "verify/reference|bridge/"
   "verify/plot|bridge/,io/files/"
+  "verify/converge|bridge/,sim/,render/,verify/plot/"
   "verify/accuracy|bridge/,io/files/,io/image/,render/,verify/reference/,verify/plot/"
   "apps/common|bridge/,io/,sim/,render/"
   "apps/eikon|bridge/,io/,sim/,render/,verify/,apps/common/"

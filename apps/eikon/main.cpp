@@ -5,6 +5,7 @@
 #include "apps/common/ExitCodes.h"
 #include "apps/eikon/AccuracyCommand.h"
 #include "apps/eikon/BenchCommand.h"
+#include "apps/eikon/ConvergeCommand.h"
 #include "apps/eikon/InfoCommand.h"
 #include "apps/eikon/Ranks.h"
 #include "apps/eikon/RunCommand.h"
@@ -13,7 +14,7 @@
 
 namespace {
 
-// bench and accuracy measure one process; under mpirun every rank would
+// bench, accuracy and converge measure one process; under mpirun every rank would
 // measure the same thing at once.
 void requireOneProcess(eikon::app::Ranks& ranks, const char* command) {
     ranks.checkInputsTogether([&] {
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
     eikon::app::addBenchCommand(app, benchOptions);
     eikon::app::AccuracyOptions accuracyOptions;
     eikon::app::addAccuracyCommand(app, accuracyOptions);
+    eikon::app::ConvergeOptions convergeOptions;
+    eikon::app::addConvergeCommand(app, convergeOptions);
     return eikon::app::parseAndRun(app, argc, argv, "eikon", [&] {
         return ranks.runGuarded([&] {
             if (app.got_subcommand("run")) return eikon::app::runCommand(runOptions);
@@ -46,6 +49,10 @@ int main(int argc, char** argv) {
             if (app.got_subcommand("accuracy")) {
                 requireOneProcess(ranks, "accuracy");
                 return eikon::app::accuracyCommand(accuracyOptions);
+            }
+            if (app.got_subcommand("converge")) {
+                requireOneProcess(ranks, "converge");
+                return eikon::app::convergeCommand(convergeOptions);
             }
             return eikon::app::infoCommand();
         });

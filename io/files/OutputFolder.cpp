@@ -43,7 +43,7 @@ std::vector<fs::path> listedFiles(const fs::path& root) {
 // The names eikon gives its outputs (frames, report, VTK and OpenVDB
 // series), relative to the folder.
 const std::string kOutputNames =
-    R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|)"
+    R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|converge\.(csv|md|png|svg)|)"
     R"(vtk/(fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series))";
 
 // A temporary eikon was writing when it was killed (AtomicFile.h names
@@ -93,7 +93,7 @@ void OutputFolder::requireUsable(const fs::path& root, bool force) {
                          ": the output folder holds an earlier run; choose another --out or pass --force to clear it");
 }
 
-OutputFolder::OutputFolder(fs::path root, bool force) : root_(std::move(root)) {
+OutputFolder::OutputFolder(fs::path root, bool force, bool withFrames) : root_(std::move(root)) {
     requireUsable(root_, force);
     if (fs::exists(root_) && !fs::is_empty(root_)) {
         const bool listed = fs::is_regular_file(root_ / kManifestName);
@@ -103,7 +103,7 @@ OutputFolder::OutputFolder(fs::path root, bool force) : root_(std::move(root)) {
             if (listed && isEikonTemporary(file)) earlier.push_back(file);
         clearEarlierRun(root_, earlier);
     }
-    fs::create_directories(root_ / "frames");
+    fs::create_directories(withFrames ? root_ / "frames" : root_);
     before_ = filesBelow(root_);
     recordWrittenFiles();
 }

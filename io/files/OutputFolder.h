@@ -18,8 +18,9 @@ namespace eikon::io {
 class OutputFolder {
 public:
     // Throws InputError (exit code 2) when `root` is a file, holds files eikon
-    // did not write, or holds an earlier run and !force.
-    OutputFolder(std::filesystem::path root, bool force);
+    // did not write, or holds an earlier run and !force. withFrames: with
+    // its frames/ folder (`eikon converge` writes no frames).
+    OutputFolder(std::filesystem::path root, bool force, bool withFrames = true);
     // The same refusals, without touching the folder: for a run that
     // checks everything before it writes anything.
     static void requireUsable(const std::filesystem::path& root, bool force);

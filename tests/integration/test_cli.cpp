@@ -2,6 +2,7 @@
 // file and JSON path of bad input, nothing written on refusal, and the
 // output layout of a run.
 #include "io/vdb/VdbVolumeFile.h"
+#include "tests/integration/CliRun.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
@@ -26,22 +27,9 @@
 namespace {
 
 namespace fs = std::filesystem;
+using eikon::test::Outcome;
+using eikon::test::runEikon;
 
-struct Outcome {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr together
-};
-
-Outcome runEikon(const std::string& arguments, const std::string& environment = "") {
-    const std::string command = environment + " " + std::string(EIKON_EXECUTABLE) + " " + arguments + " 2>&1";
-    Outcome outcome;
-    FILE* pipe = popen(command.c_str(), "r");
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe)) outcome.output += buffer;
-    const int status = pclose(pipe);
-    outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return outcome;
-}
 
 class Cli : public ::testing::Test {
 protected:

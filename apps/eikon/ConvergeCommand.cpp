@@ -1,0 +1,99 @@
+#include "apps/eikon/ConvergeCommand.h"
+
+#include "bridge/core/Error.h"
+#include "bridge/core/NumberFormat.h"
+#include "io/files/AtomicFile.h"
+#include "io/files/OutputFolder.h"
+#include "io/scene/SceneParser.h"
+#include "render/gl/GlContext.h"
+#include "verify/converge/ConvergeReport.h"
+#include "verify/converge/ConvergeStudy.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace eikon::app {
+
+namespace {
+
+// The outputs asked for, each one the scene has; all it has when none is named.
+converge::Outputs requestedOutputs(const std::string& list, const converge::Outputs& available) {
+    if (list.empty()) return available;
+    converge::Outputs requested;
+    std::stringstream items(list);
+    for (std::string item; std::getline(items, item, ',');) {
+        bool* flag = item == "receivers" ? &requested.receivers : item == "image" ? &requested.image
+                                                               : item == "fluence" ? &requested.fluence : nullptr;
+        const bool has = item == "receivers" ? available.receivers : item == "image" ? available.image
+                                                                  : item == "fluence" && available.fluence;
+        if (!flag) throw InputError("--outputs", "receivers, image or fluence, comma-separated", "\"" + item + "\"");
+        if (!has)
+            throw InputError("--outputs", "an output the scene has (receivers where it has any, fluence where it "
+                                          "scatters or stores it)", "\"" + item + "\"");
+        *flag = true;
+    }
+    return requested;
+}
+
+std::string commandLine(const ConvergeOptions& options) {
+    std::string command = "eikon converge " + options.scenePath + " --budget-s " + formatNumber(options.budgetSeconds);
+    if (options.frame > 0) command += " --frame " + std::to_string(options.frame);
+    if (!options.outputs.empty()) command += " --outputs " + options.outputs;
+    if (!options.reference.empty()) command += " --reference " + options.reference;
+    for (const std::string& value : options.overrides) command += " --set " + value;
+    return command;
+}
+
+}  // namespace
+
+void addConvergeCommand(CLI::App& app, ConvergeOptions& options) {
+    CLI::App* converge = app.add_subcommand(
+        "converge", "Error against run time for your own scene: a self-convergence study over its knobs "
+                    "(photons or wavefront refinement, step, grid) within a time budget");
+    converge->add_option("scene", options.scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
+    converge->add_option("--out", options.outDir, "Output folder for converge.csv, converge.png/.svg, converge.md")
+        ->required();
+    converge->add_option("--budget-s", options.budgetSeconds, "Wall-time budget in seconds (default 300)");
+    converge->add_option("--frame", options.frame, "Frame of the scene to study (default 0)")
+        ->check(CLI::Range(0, 1000000));
+    converge->add_option("--outputs", options.outputs,
+                         "Outputs to compare, comma-separated: receivers, image, fluence (default: all the scene has)");
+    converge->add_option("--reference", options.reference,
+                         "How much finer the reference is, e.g. photons=16,step=4,grid=1.5 (default: as fits the "
+                         "budget)");
+    converge->add_option("--set", options.overrides, "Override a scene value, e.g. --set render.photons=100000")
+        ->type_name("KEY.PATH=VALUE");
+    converge->add_flag("--force", options.force, "Clear the output folder if it holds an earlier study");
+}
+
+int convergeCommand(const ConvergeOptions& options) {
+    // Every input is checked before anything is written.
+    if (!(options.budgetSeconds > 0.0) || !std::isfinite(options.budgetSeconds))
+        throw InputError("--budget-s", "a number of seconds > 0", formatNumber(options.budgetSeconds));
+    std::optional<converge::Refinement> reference;
+    if (!options.reference.empty()) reference = converge::parseReference(options.reference, "--reference");
+    const Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    const auto context = gl::createHeadlessContext();
+    const converge::Outputs outputs = requestedOutputs(options.outputs, converge::outputsOf(scene));
+    const std::filesystem::path out(options.outDir);
+    io::OutputFolder::requireUsable(out, options.force);
+
+    converge::StudyOptions study{options.budgetSeconds, options.frame, outputs, reference, [](const converge::Measured& m) {
+        std::printf("%-10s %-70s %8.3f s  worst error %.3g\n", m.rung.knob.c_str(), m.rung.setting.c_str(), m.seconds,
+                    m.worst());
+        std::fflush(stdout);
+    }};
+    const converge::Study result = converge::runStudy(scene, study);
+    io::OutputFolder folder(out, options.force, /*withFrames=*/false);
+    io::writeFileAtomically(out / "converge.csv", converge::csvText(result));
+    converge::writePlot(result, out);
+    io::writeFileAtomically(out / "converge.md",
+                            converge::markdownText(result, commandLine(options), context->info().renderer));
+    folder.recordWrittenFiles();
+    std::printf("%zu settings and the reference in %.0f s: %s\n", result.rungs.size(), result.wallSeconds,
+                out.string().c_str());
+    return 0;
+}
+
+}  // namespace eikon::app

@@ -1,0 +1,28 @@
+// Runs the eikon executable as a user would, for the command-line tests.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+namespace eikon::test {
+
+struct Outcome {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// `environment` is prefixed to the command line ("LP_NUM_THREADS=2").
+inline Outcome runEikon(const std::string& arguments, const std::string& environment = "") {
+    const std::string command = environment + " " + std::string(EIKON_EXECUTABLE) + " " + arguments + " 2>&1";
+    Outcome outcome;
+    FILE* pipe = popen(command.c_str(), "r");
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) outcome.output += buffer;
+    const int status = pclose(pipe);
+    outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return outcome;
+}
+
+}  // namespace eikon::test

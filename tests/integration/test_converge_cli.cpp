@@ -1,0 +1,112 @@
+// `eikon converge` as users meet it: a study of a small scene writes its
+// CSV, plot (PNG and SVG) and report, its photon ladder's error falls as
+// the photons grow and time is spent, and bad arguments exit 2 with a clear
+// message having written nothing.
+#include "tests/integration/CliRun.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using eikon::test::Outcome;
+using eikon::test::runEikon;
+
+class ConvergeCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("eikon_converge_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+        scene_ = (dir_ / "scene.json").string();
+        std::ofstream(scene_) << R"({
+  "grid": {"resolution": [24, 24, 24], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
+  "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5}],
+  "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
+  "receivers": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 1, 0], "size": 1.0, "resolution": 32}],
+  "camera": {"position": [0, 1, 2], "target": [0, 0.3, 0], "up": [0, 1, 0], "fov_deg": 45},
+  "render": {"photons": 16384, "width": 48, "height": 36, "seed": 3}
+})";
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+    std::string scene_;
+};
+
+std::string readAll(const fs::path& path) {
+    std::stringstream text;
+    text << std::ifstream(path).rdbuf();
+    return text.str();
+}
+
+TEST_F(ConvergeCli, StudyWritesItsFilesAndThePhotonLadderConverges) {
+    const fs::path out = dir_ / "study";
+    const Outcome outcome = runEikon("converge " + scene_ + " --out " + out.string() + " --budget-s 60",
+                                     "LP_NUM_THREADS=2");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    for (const char* file : {"converge.csv", "converge.png", "converge.svg", "converge.md"})
+        EXPECT_TRUE(fs::exists(out / file)) << file;
+    EXPECT_GT(fs::file_size(out / "converge.png"), 10000u);
+
+    std::ifstream csv(out / "converge.csv");
+    std::string header, row;
+    std::getline(csv, header);
+    EXPECT_EQ(header, "knob,setting,photons_factor,step_factor,grid_factor,run_time_s,receivers_relative_l1,"
+                      "image_relative_l1,fluence_relative_l1");
+    std::map<double, double> photonError;  // photons factor → receivers' error
+    int rows = 0;
+    while (std::getline(csv, row)) {
+        ++rows;
+        EXPECT_EQ(row.find("nan"), std::string::npos) << row;
+        std::vector<std::string> cells;
+        std::string cell;
+        bool quoted = false;
+        for (char c : row) {
+            if (c == '"') quoted = !quoted;
+            else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
+            else cell += c;
+        }
+        cells.push_back(cell);
+        ASSERT_EQ(cells.size(), 9u) << row;
+        if ((cells[0] == "photons" || cells[0] == "scene") && !cells[6].empty())
+            photonError[std::stod(cells[2])] = std::stod(cells[6]);
+    }
+    EXPECT_GE(rows, 10) << "the ladders and the reference";
+    ASSERT_GE(photonError.size(), 4u);
+    EXPECT_LT(photonError.rbegin()->second, 0.6 * photonError.begin()->second)
+        << "32x the photons: the noise, which dominates with sharp glass in uniform air, falls (ideally to "
+           "1/sqrt(32) of it)";
+
+    const std::string report = readAll(out / "converge.md");
+    for (const char* part : {"Cheapest setting for an error", "The reference's own error", "Monte Carlo noise",
+                             "Richardson with the integrator's order p = 2", "Left out", "relative L1"})
+        EXPECT_NE(report.find(part), std::string::npos) << part;
+}
+
+TEST_F(ConvergeCli, BadArgumentsExitTwoAndWriteNothing) {
+    const fs::path out = dir_ / "never";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"converge --out " + out.string(), "scene"},
+        {"converge " + scene_ + " --out " + out.string() + " --budget-s 0", "--budget-s: expected a number of seconds > 0"},
+        {"converge " + scene_ + " --out " + out.string() + " --budget-s -5", "--budget-s"},
+        {"converge " + scene_ + " --out " + out.string() + " --outputs receivers,colour", "--outputs: expected receivers, image or fluence"},
+        {"converge " + scene_ + " --out " + out.string() + " --outputs fluence", "--outputs: expected an output the scene has"},
+        {"converge " + scene_ + " --out " + out.string() + " --reference photons=0", "--reference: expected photons=F"},
+        {"converge " + (dir_ / "missing.json").string() + " --out " + out.string(), "missing.json"}};
+    for (const auto& [arguments, message] : cases) {
+        const Outcome outcome = runEikon(arguments);
+        EXPECT_EQ(outcome.exitCode, 2) << arguments << "\n" << outcome.output;
+        EXPECT_NE(outcome.output.find(message), std::string::npos) << arguments << "\n" << outcome.output;
+        EXPECT_FALSE(fs::exists(out)) << arguments;
+    }
+}
+
+}  // namespace

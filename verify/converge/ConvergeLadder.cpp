@@ -1,0 +1,114 @@
+#include "verify/converge/ConvergeLadder.h"
+
+#include "bridge/core/Error.h"
+#include "bridge/core/NumberFormat.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace eikon::converge {
+
+namespace {
+
+bool byWavefront(const Scene& scene) { return scene.tracer.estimator == TracerDesc::Estimator::Wavefront; }
+
+// The grid knob changes the cells the simulation runs on, which is the
+// simulation's own convergence, not the renderer's.
+bool hasGridKnob(const Scene& scene) { return !scene.sim.has_value(); }
+
+std::string joined(const std::vector<std::string>& parts) {
+    std::string text;
+    for (const std::string& part : parts) text += (text.empty() ? "" : ", ") + part;
+    return text.empty() ? "the scene's own settings" : text;
+}
+
+}  // namespace
+
+Rung refinedRung(const Scene& scene, const std::string& knob, const Refinement& refinement) {
+    Rung rung{knob, refinement, "", scene};
+    Scene& s = rung.scene;
+    std::vector<std::string> changed;
+    if (refinement.photons != 1.0) {
+        if (byWavefront(scene)) {
+            s.tracer.wavefront.splitTexels = std::max(0.05, scene.tracer.wavefront.splitTexels / refinement.photons);
+            s.tracer.wavefront.tearTexels = std::max(0.05, scene.tracer.wavefront.tearTexels / refinement.photons);
+            changed.push_back("tracer.wavefront.split_texels=" + formatNumber(s.tracer.wavefront.splitTexels) +
+                              ", tear_texels=" + formatNumber(s.tracer.wavefront.tearTexels));
+        } else {
+            s.render.photons = std::max(1LL, std::llround(static_cast<double>(scene.render.photons) * refinement.photons));
+            changed.push_back("render.photons=" + std::to_string(s.render.photons));
+        }
+    }
+    if (refinement.step != 1.0) {
+        s.tracer.stepVoxels = scene.tracer.stepVoxels / refinement.step;
+        s.tracer.maxStepVoxels = std::max(s.tracer.stepVoxels, scene.tracer.maxStepVoxels / refinement.step);
+        s.render.stepVoxels = scene.render.stepVoxels / refinement.step;
+        changed.push_back("tracer.step_voxels=" + formatNumber(s.tracer.stepVoxels) +
+                          ", render.step_voxels=" + formatNumber(s.render.stepVoxels));
+    }
+    if (refinement.grid != 1.0) {
+        const glm::dvec3 cells = glm::dvec3(scene.grid.resolution) * refinement.grid;
+        s.grid.resolution = glm::max(glm::ivec3(glm::round(cells)), glm::ivec3(4));
+        changed.push_back("grid.resolution=[" + std::to_string(s.grid.resolution.x) + "," +
+                          std::to_string(s.grid.resolution.y) + "," + std::to_string(s.grid.resolution.z) + "]");
+    }
+    rung.setting = joined(changed);
+    return rung;
+}
+
+Ladder buildLadder(const Scene& scene, const Refinement& reference) {
+    Ladder ladder;
+    ladder.rungs.push_back(refinedRung(scene, "scene", {}));
+    const std::string lightKnob = byWavefront(scene) ? "refinement" : "photons";
+    for (double f : {0.125, 0.25, 0.5, 2.0, 4.0}) ladder.rungs.push_back(refinedRung(scene, lightKnob, {f, 1.0, 1.0}));
+    for (double f : {0.25, 0.5, 2.0}) ladder.rungs.push_back(refinedRung(scene, "step", {1.0, f, 1.0}));
+    if (hasGridKnob(scene)) {
+        for (double f : {0.5, 0.75, 1.25}) ladder.rungs.push_back(refinedRung(scene, "grid", {1.0, 1.0, f}));
+    } else {
+        ladder.leftOut.push_back("grid: the fluid solver runs on the render grid (its convergence is the solver's)");
+    }
+    for (int level : {-1, 1, 2}) {
+        const double f = std::pow(2.0, level);
+        ladder.rungs.push_back(refinedRung(scene, "all", {f, f, hasGridKnob(scene) ? std::pow(1.25, level) : 1.0}));
+    }
+    Refinement finest = reference;
+    if (!hasGridKnob(scene)) finest.grid = 1.0;
+    // Every rung stays coarser than the reference in each knob it refines.
+    const auto finer = [&](const Rung& rung) {
+        const Refinement& r = rung.refinement;
+        return (r.photons > 1.0 && r.photons >= finest.photons) || (r.step > 1.0 && r.step >= finest.step) ||
+               (r.grid > 1.0 && r.grid >= finest.grid);
+    };
+    for (const Rung& rung : ladder.rungs)
+        if (finer(rung)) ladder.leftOut.push_back(rung.knob + " at " + rung.setting + ": not coarser than the reference");
+    ladder.rungs.erase(std::remove_if(ladder.rungs.begin(), ladder.rungs.end(), finer), ladder.rungs.end());
+    ladder.reference = refinedRung(scene, "reference", finest);
+    ladder.reference.scene.render.seed = scene.render.seed + 7919;  // independent noise
+    ladder.leftOut.push_back("smoothing: its width is a model choice, not a discretisation that converges");
+    return ladder;
+}
+
+Refinement parseReference(const std::string& text, const std::string& where) {
+    Refinement refinement;
+    std::stringstream items(text);
+    for (std::string item; std::getline(items, item, ',');) {
+        const auto equals = item.find('=');
+        const std::string key = item.substr(0, equals);
+        double value = 0.0;
+        bool read = false;
+        if (equals != std::string::npos) {
+            std::stringstream number(item.substr(equals + 1));
+            read = static_cast<bool>(number >> value) && number.eof() && std::isfinite(value) && value > 0.0;
+        }
+        double* knob = key == "photons" ? &refinement.photons : key == "step" ? &refinement.step
+                                                                : key == "grid" ? &refinement.grid : nullptr;
+        if (!knob || !read)
+            throw InputError(where, "photons=F, step=F or grid=F (F > 0: how many times finer), comma-separated",
+                             "\"" + item + "\"");
+        *knob = value;
+    }
+    return refinement;
+}
+
+}  // namespace eikon::converge
