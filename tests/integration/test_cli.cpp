@@ -533,6 +533,35 @@ TEST_F(AccuracyCli, WritesCsvPlotAndReportForOneCase) {
     EXPECT_NE(report.str().find("cheapest ≤ 1%"), std::string::npos);
 }
 
+// Every measurement of a case rests on samples: the invariant of the linear
+// slab is read where paths leave its far face for a screen beyond it (an
+// escaping path ends on the grid's boundary, without its exit direction).
+TEST_F(AccuracyCli, EveryLinearSlabMeasurementHasSamples) {
+    const Outcome outcome = runEikon("accuracy --quick --case linear_slab --out " + dir_.string(), "LP_NUM_THREADS=2");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    std::ifstream csv(dir_ / "accuracy.csv");
+    std::string header, row;
+    std::getline(csv, header);
+    ASSERT_NE(header.find(",samples,"), std::string::npos) << header;
+    int rows = 0;
+    while (std::getline(csv, row)) {
+        // samples is the 17th column; the quoted metric before it holds no comma.
+        std::vector<std::string> cells;
+        std::string cell;
+        bool quoted = false;
+        for (char c : row) {
+            if (c == '"') quoted = !quoted;
+            else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
+            else cell += c;
+        }
+        cells.push_back(cell);
+        ASSERT_GT(cells.size(), 16u) << row;
+        EXPECT_GT(std::stoi(cells[16]), 10) << row;
+        ++rows;
+    }
+    EXPECT_GE(rows, 20);
+}
+
 TEST_F(AccuracyCli, UnknownCaseIsAnInputError) {
     const Outcome outcome = runEikon("accuracy --case nosuch --out " + dir_.string());
     EXPECT_EQ(outcome.exitCode, 2) << outcome.output;

@@ -51,6 +51,24 @@ public:
         const double a = 1.0, b = 0.25;
         const glm::dvec3 light(1.0, -0.2, 0.0);
         Scene scene = layeredScene(glm::dvec3(1.28, 0.64, 0.32), light, pathCasePhotons(quick));
+        // A screen 10 cm past the far x face, beyond the longest step: an
+        // escaping path ends on the grid's boundary, but one flying to a
+        // receiver keeps its vertex past the face, and the flight from there
+        // carries the exact exit direction.
+        ReceiverDesc screen;
+        screen.point = glm::dvec3(1.38, 0.32, 0.16);
+        screen.normal = glm::dvec3(-1.0, 0.0, 0.0);
+        screen.size = 0.64;
+        screen.resolution = 8;
+        scene.receivers.push_back(screen);
+        // Photons aim at what the scene states: a smooth box of the field's
+        // own extent (the sampled field below replaces whatever it would
+        // voxelize to) keeps the whole grid in their region beside the screen.
+        ObjectDesc medium;
+        medium.kind = ObjectDesc::Kind::Box;
+        medium.surface = ObjectDesc::Surface::Smooth;
+        medium.box = {scene.grid.boundsMin, scene.grid.boundsMax};
+        scene.objects.push_back(medium);
         applySettings(scene, settings, glm::ivec3(128, 64, 32));
         const GridSpec grid = scene.grid.spec();
         const double h = grid.voxelSize().x;

@@ -16,6 +16,7 @@ namespace {
 
 constexpr Colour kInk{20, 20, 20}, kGrid{222, 222, 222}, kGuide{160, 160, 160}, kQuiet{90, 90, 90};
 constexpr int kLegendRowHeight = 24;
+constexpr double kCharacterMillimetres = 3.4;
 // PLplot's colour map 0 entry redefined for each colour drawn (0 is the background).
 constexpr int kDrawingColour = 1;
 
@@ -179,7 +180,9 @@ void render(const Figure& figure, const char* device, const std::filesystem::pat
     pls->scol0(0, 255, 255, 255);
     pls->init();
     pls->adv(0);
-    pls->schr(0.0, 0.75);
+    // PLplot scales its default character height with the page; text of a
+    // fixed pixel height reads the same on a figure of any size.
+    pls->schr(kCharacterMillimetres, 1.0);
     for (std::size_t i = 0; i < figure.panels.size(); ++i) {
         const double column = static_cast<double>(static_cast<int>(i) % figure.columns);
         const double row = static_cast<double>(static_cast<int>(i) / figure.columns);
