@@ -105,8 +105,8 @@ std::vector<OwnError> referenceOwnError(const Study& study) {
 
 std::string csvText(const Study& study) {
     std::ostringstream csv;
-    csv << "knob,setting,photons_factor,step_factor,grid_factor,run_time_s,receivers_" << "relative_l1,image_relative_l1,"
-        << "fluence_relative_l1\n";
+    csv << "knob,setting,photons_factor,step_factor,grid_factor,run_time_s,"
+           "receivers_relative_l1,image_relative_l1,fluence_relative_l1\n";
     const auto row = [&](const Measured& m) {
         csv << m.rung.knob << ",\"" << m.rung.setting << "\"," << number(m.rung.refinement.photons) << ","
             << number(m.rung.refinement.step) << "," << number(m.rung.refinement.grid) << "," << number(m.seconds)
