@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace eikon::test {
 
@@ -23,6 +24,20 @@ inline Outcome runEikon(const std::string& arguments, const std::string& environ
     const int status = pclose(pipe);
     outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return outcome;
+}
+
+// The cells of one CSV row; a quoted cell may hold commas.
+inline std::vector<std::string> csvCells(const std::string& row) {
+    std::vector<std::string> cells;
+    std::string cell;
+    bool quoted = false;
+    for (char c : row) {
+        if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
+        else cell += c;
+    }
+    cells.push_back(cell);
+    return cells;
 }
 
 }  // namespace eikon::test

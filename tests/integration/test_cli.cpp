@@ -545,16 +545,7 @@ TEST_F(AccuracyCli, EveryLinearSlabMeasurementHasSamples) {
     ASSERT_NE(header.find(",samples,"), std::string::npos) << header;
     int rows = 0;
     while (std::getline(csv, row)) {
-        // samples is the 17th column; the quoted metric before it holds no comma.
-        std::vector<std::string> cells;
-        std::string cell;
-        bool quoted = false;
-        for (char c : row) {
-            if (c == '"') quoted = !quoted;
-            else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
-            else cell += c;
-        }
-        cells.push_back(cell);
+        const std::vector<std::string> cells = eikon::test::csvCells(row);  // samples: the 17th
         ASSERT_GT(cells.size(), 16u) << row;
         EXPECT_GT(std::stoi(cells[16]), 10) << row;
         ++rows;

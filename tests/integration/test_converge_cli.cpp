@@ -66,15 +66,7 @@ TEST_F(ConvergeCli, StudyWritesItsFilesAndThePhotonLadderConverges) {
     while (std::getline(csv, row)) {
         ++rows;
         EXPECT_EQ(row.find("nan"), std::string::npos) << row;
-        std::vector<std::string> cells;
-        std::string cell;
-        bool quoted = false;
-        for (char c : row) {
-            if (c == '"') quoted = !quoted;
-            else if (c == ',' && !quoted) cells.push_back(cell), cell.clear();
-            else cell += c;
-        }
-        cells.push_back(cell);
+        const std::vector<std::string> cells = eikon::test::csvCells(row);
         ASSERT_EQ(cells.size(), 9u) << row;
         if ((cells[0] == "photons" || cells[0] == "scene") && !cells[6].empty())
             photonError[std::stod(cells[2])] = std::stod(cells[6]);
