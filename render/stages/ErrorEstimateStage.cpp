@@ -54,12 +54,6 @@ std::vector<float> allMaps(const ReceiverMaps& maps) {
     return texels;
 }
 
-std::vector<float> downloadFloats(const gl::Buffer& buffer) {
-    std::vector<float> values(buffer.bytes() / sizeof(float));
-    if (!values.empty()) buffer.download(values.data(), values.size() * sizeof(float));
-    return values;
-}
-
 double totalPower(const glm::vec3& power) { return static_cast<double>(power.r) + power.g + power.b; }
 
 }  // namespace
@@ -126,7 +120,7 @@ ErrorEstimate ErrorEstimateStage::run(const FieldTextures& fields, const Inputs&
     if (estimate.noiseEstimated) {
         if (receivers_.count() > 0) estimate.noise.receivers = relativeRms(allMaps(evenHalf_), allMaps(receivers_), 3);
         if (fluence)
-            estimate.noise.fluence = relativeRms(downloadFloats(inputs.photons->halfFluence()),
+            estimate.noise.fluence = relativeRms(inputs.photons->downloadHalfFluence(),
                                                  inputs.photons->downloadFluence(), 3);
         halfView_->run(fields, {fluence ? &inputs.photons->halfFluence() : nullptr,
                                 fluence ? &inputs.photons->halfFluenceDirection() : nullptr, inputs.sceneSteps});

@@ -395,17 +395,11 @@ void PhotonStage::resumeSuspended(std::size_t batch) {
     }
 }
 
-std::vector<float> PhotonStage::downloadFluence() const {
-    std::vector<float> values(fluence_.bytes() / sizeof(float));
-    if (!values.empty()) fluence_.download(values.data(), values.size() * sizeof(float));
-    return values;
-}
+std::vector<float> PhotonStage::downloadFluence() const { return downloadFloats(fluence_); }
 
-std::vector<float> PhotonStage::downloadFluenceDirection() const {
-    std::vector<float> values(direction_.bytes() / sizeof(float));
-    if (!values.empty()) direction_.download(values.data(), values.size() * sizeof(float));
-    return values;
-}
+std::vector<float> PhotonStage::downloadFluenceDirection() const { return downloadFloats(direction_); }
+
+std::vector<float> PhotonStage::downloadHalfFluence() const { return downloadFloats(halfFluence_); }
 
 std::vector<glm::vec4> PhotonStage::downloadPathPower() const {
     std::vector<glm::vec4> power(pathPower_.bytes() / sizeof(glm::vec4));

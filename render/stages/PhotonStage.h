@@ -124,6 +124,7 @@ public:
     // traced with PhotonSettings::evenHalf, scaled to the whole pass's power.
     const gl::Buffer& halfFluence() const { return halfFluence_; }
     const gl::Buffer& halfFluenceDirection() const { return halfDirection_; }
+    std::vector<float> downloadHalfFluence() const;
 
 private:
     // Traces photons first, first + stride, … (count of them); checkerboard:
