@@ -54,7 +54,11 @@ render::RendererOptions rendererOptionsFor(const Scene& scene) {
 }
 
 FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder, bool deferIndexes)
-    : exports_(scene.exports) {
+    : exports_(scene.exports), deferIndexes_(deferIndexes) {
+    paraview_.camera = scene.camera;
+    paraview_.gridMin = scene.grid.boundsMin;
+    paraview_.gridMax = scene.grid.boundsMax;
+    paraview_.collections = {"fields", "receivers", "meshes", "photon_paths"};
     if (exports_.vtk.enabled) {
         vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
         if (exports_.vtk.receivers && !scene.receivers.empty())
@@ -85,6 +89,11 @@ void FrameExporter::writeIndexes(const std::map<int, double>& frameTimes) {
             if (exports_.vtk.exportsFrame(frame)) index->record(frame, time);
         if (!index->empty()) index->write();
     }
+    writeParaViewState();
+}
+
+void FrameExporter::writeParaViewState() {
+    if (vtk_) io::writeParaViewState(vtk_->directory(), paraview_);
 }
 
 bool FrameExporter::wantsFrame(int frame) const {
@@ -111,6 +120,7 @@ void FrameExporter::write(int frame, const ExportInputs& inputs, const render::F
                                io::photonPolylines(photons->downloadPaths(), photons->downloadPathPower(),
                                                    exports_.vtk.pathVertices));
         }
+        if (!deferIndexes_) writeParaViewState();
     }
     if (vdb_ && exports_.vdb.exportsFrame(frame))
         vdb_->writeFrame(frame, time, io::selectCells(arrays, exports_.vdb, "export.vdb"));

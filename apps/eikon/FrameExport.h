@@ -7,6 +7,7 @@
 #include "bridge/grid/FieldViews.h"
 #include "io/export/ExportArrays.h"
 #include "io/vdb/VdbFrameWriter.h"
+#include "io/vtk/ParaViewState.h"
 #include "io/vtk/PolyDataWriter.h"
 #include "io/vtk/VtkSeriesWriter.h"
 #include "bridge/mesh/TriangleMesh.h"
@@ -55,8 +56,11 @@ public:
 
 private:
     std::vector<io::VtkSeriesIndex*> seriesIndexes();  // of the .vti and .vtp series written
+    void writeParaViewState();  // after the indexes, so it names only collections that exist
 
     ExportDesc exports_;
+    io::ParaViewState paraview_;
+    bool deferIndexes_;
     std::optional<io::VtkSeriesWriter> vtk_;
     std::optional<io::VdbFrameWriter> vdb_;
     std::optional<io::PolyDataSeries> receivers_;

@@ -1,0 +1,154 @@
+#include "io/vtk/ParaViewState.h"
+
+#include "io/files/AtomicFile.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace eikon::io {
+
+namespace {
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
+std::string list(const glm::dvec3& v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
+
+bool opens(const ParaViewState& state, const std::string& name) {
+    return std::find(state.collections.begin(), state.collections.end(), name) != state.collections.end();
+}
+
+// The script's fixed part: helpers, then one block per collection.
+constexpr const char* kPrologue = R"(# Written by eikon: opens this run's VTK export in ParaView (5.10 or later).
+#   pvpython open_in_paraview.py [PICTURE.png]   (saves PICTURE.png when named)
+#   ParaView: View > Python Shell > Run Script
+import os
+import sys
+from paraview.simple import *
+
+here = os.path.dirname(os.path.abspath(globals().get('__file__', 'open_in_paraview.py')))
+view = GetActiveViewOrCreate('RenderView')
+
+
+def collection(name):
+    return PVDReader(registrationName=name, FileName=os.path.join(here, name + '.pvd'))
+
+
+def colour(source, display, association, array, preset, corner):
+    data = source.CellData if association == 'CELLS' else source.PointData
+    components = data[array].GetNumberOfComponents()
+    ColorBy(display, (association, array, 'Magnitude') if components > 1 else (association, array))
+    lut = GetColorTransferFunction(array)
+    lut.ApplyPreset(preset, True)
+    display.RescaleTransferFunctionToDataRange(True, False)
+    display.SetScalarBarVisibility(view, True)
+    GetScalarBar(lut, view).WindowLocation = corner
+    return lut
+
+)";
+
+constexpr const char* kFields = R"(
+# The fields: the grid's outline and a slice through its centre, facing the
+# camera, coloured by the first of these that the export holds and that
+# varies by more than 1e-9 in SI units over frame 0 (sharp objects leave δn 0).
+fields = collection('fields')
+fields.UpdatePipeline()
+outline = Show(fields, view)
+outline.SetRepresentationType('Outline')
+
+
+def varies(name):
+    low, high = fields.CellData[name].GetRange(-1)
+    return high - low > 1e-9
+
+
+names = [n for n in fields.CellData.keys() if varies(n)]
+shown = next((n for n in ('delta_index', 'fluence', 'temperature', 'density', 'extinction', 'index') if n in names),
+             names[0] if names else None)
+cut = Slice(registrationName='fields slice', Input=fields)
+cut.SliceType = 'Plane'
+cut.SliceType.Origin = grid_centre
+cut.SliceType.Normal = slice_normal
+cut.UpdatePipeline()
+cut_display = Show(cut, view)
+if not shown:
+    Hide(cut, view)
+else:
+    colour(cut, cut_display, 'CELLS', shown, 'Viridis (matplotlib)', 'Lower Left Corner')
+    if shown == 'index':  # n spans 1e-5 in a mirage: six decimals, not 1.0e+00 at both ends
+        bar = GetScalarBar(GetColorTransferFunction('index'), view)
+        bar.AutomaticLabelFormat = 0
+        bar.LabelFormat = '%-#.6f'
+        bar.RangeLabelFormat = '%-#.6f'
+)";
+
+constexpr const char* kReceivers = R"(
+# Receivers: each texel of an irradiance map a quad, W/m^2.
+receivers = collection('receivers')
+receivers.UpdatePipeline()
+colour(receivers, Show(receivers, view), 'CELLS', 'irradiance', 'Inferno (matplotlib)', 'Lower Right Corner')
+)";
+
+constexpr const char* kMeshes = R"(
+# Meshes and the water surface, translucent so what is behind them shows.
+meshes = collection('meshes')
+meshes.UpdatePipeline()
+mesh_display = Show(meshes, view)
+mesh_display.DiffuseColor = [0.8, 0.9, 1.0]
+mesh_display.Opacity = 0.3
+)";
+
+constexpr const char* kPaths = R"(
+# Photon paths, coloured by the power they carry (W).
+paths = collection('photon_paths')
+paths.UpdatePipeline()
+colour(paths, Show(paths, view), 'POINTS', 'power', 'Cool to Warm', 'Upper Right Corner')
+)";
+
+constexpr const char* kEpilogue = R"(
+GetAnimationScene().UpdateAnimationUsingDataTimeSteps()
+view.CameraPosition = camera_position
+view.CameraFocalPoint = camera_target
+view.CameraViewUp = camera_up
+view.CameraViewAngle = camera_fov_deg
+Render(view)
+if len(sys.argv) > 1:
+    SaveScreenshot(sys.argv[1], view, ImageResolution=[800, 600])
+)";
+
+}  // namespace
+
+std::string paraviewStateScript(const ParaViewState& state) {
+    const glm::dvec3 forward = glm::normalize(state.camera.target - state.camera.position);
+    glm::dvec3 normal{0.0};
+    const glm::dvec3 reach = glm::abs(forward);
+    normal[reach.x >= reach.y && reach.x >= reach.z ? 0 : reach.y >= reach.z ? 1 : 2] = 1.0;
+    std::string script = kPrologue;
+    script += "# The scene's grid and camera.\n";
+    script += "grid_centre = " + list(0.5 * (state.gridMin + state.gridMax)) + "\n";
+    script += "slice_normal = " + list(normal) + "\n";
+    script += "camera_position = " + list(state.camera.position) + "\n";
+    script += "camera_target = " + list(state.camera.target) + "\n";
+    script += "camera_up = " + list(state.camera.up) + "\n";
+    script += "camera_fov_deg = " + number(state.camera.fovDeg) + "\n";
+    if (opens(state, "fields")) script += kFields;
+    if (opens(state, "receivers")) script += kReceivers;
+    if (opens(state, "meshes")) script += kMeshes;
+    if (opens(state, "photon_paths")) script += kPaths;
+    script += kEpilogue;
+    return script;
+}
+
+void writeParaViewState(const std::filesystem::path& vtkFolder, ParaViewState state) {
+    std::erase_if(state.collections,
+                  [&](const std::string& name) { return !std::filesystem::exists(vtkFolder / (name + ".pvd")); });
+    writeFileAtomically(vtkFolder / "open_in_paraview.py", paraviewStateScript(state));
+}
+
+}  // namespace eikon::io

@@ -1,0 +1,34 @@
+// A ParaView Python state for a run's VTK export (docs/paraview.md):
+// DIR/vtk/open_in_paraview.py opens the collections that exist — fields,
+// receivers, meshes, photon paths — with colour maps for each and the
+// scene's camera. Run it with `pvpython open_in_paraview.py [PICTURE.png]`
+// (a picture is saved when named) or from ParaView's Python shell. The
+// fields show as a slice through the grid's centre, coloured by δn where it
+// is exported (n itself spans 1e-5 in a mirage, so an `index` bar reads
+// 1.0e+00 at both ends; its labels get six decimals when it is the one shown).
+#pragma once
+
+#include "bridge/scene/Scene.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace eikon::io {
+
+struct ParaViewState {
+    CameraDesc camera;
+    glm::dvec3 gridMin{0.0}, gridMax{1.0};
+    // Collections in DIR/vtk the script opens, as NAME for NAME.pvd: any of
+    // "fields", "receivers", "meshes", "photon_paths".
+    std::vector<std::string> collections;
+};
+
+// The script's text.
+std::string paraviewStateScript(const ParaViewState& state);
+
+// Writes vtkFolder/open_in_paraview.py atomically, listing only the
+// collections whose .pvd exists there.
+void writeParaViewState(const std::filesystem::path& vtkFolder, ParaViewState state);
+
+}  // namespace eikon::io
