@@ -8,6 +8,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 
 namespace eikon {
@@ -42,6 +43,15 @@ struct VolumeDesc {
     // scale, or a matrix); built by the scene parser (volume.offset,
     // up_axis, transform). Velocities turn and scale with its linear part.
     glm::dmat4 placement{1.0};
+    // volume.preset "blender": a Mantaflow cache's grids lie in the domain
+    // object's frame, index (i,j,k) at (i,j,k)·dx with dx = the longest
+    // dimension / the resolution, cell (i,j,k) covering [i, i+1]·(D/res) from
+    // the domain's corner (Blender's fluid.c: cell_size = size / base_res).
+    // Each file's placement is then placement · T(−D/2) · S(D / (res·dx)) ·
+    // T(dx/2), res from the grids' file_base_resolution metadata
+    // (sim/volume/VolumeSequence). D: the domain's dimensions (m), as
+    // Blender's N panel shows them; the location and rotation are in placement.
+    std::optional<glm::dvec3> blenderDomainDimensions;
 
     // Optics: κ = densityExtinction·ρ, σs = densityScattering·ρ per channel;
     // T = ambientTemperature + temperatureScale·t + flameTemperature·f, and

@@ -99,6 +99,18 @@ VdbExportDesc readVdb(const JsonReader& node) {
     return vdb;
 }
 
+const NumberRange kTurnRange = NumberRange::closed(-3600.0, 3600.0);
+
+// Blender's object matrix: scale, then turns about x, y and z in that order
+// (XYZ Euler), then the translation.
+glm::dmat4 objectMatrix(const glm::dvec3& translate, const glm::dvec3& turnsDeg, const glm::dvec3& scale) {
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), translate);
+    m = glm::rotate(m, glm::radians(turnsDeg.z), glm::dvec3(0.0, 0.0, 1.0));
+    m = glm::rotate(m, glm::radians(turnsDeg.y), glm::dvec3(0.0, 1.0, 0.0));
+    m = glm::rotate(m, glm::radians(turnsDeg.x), glm::dvec3(1.0, 0.0, 0.0));
+    return glm::scale(m, scale);
+}
+
 // volume.transform: {"translate", "rotate_deg", "scale"} in Blender's order
 // (scale, then turns about x, y and z in that order, then the translation:
 // its object transform with the XYZ Euler rotation) or {"matrix"}: 16
@@ -125,13 +137,9 @@ glm::dmat4 readVolumeTransform(const JsonReader& node) {
     }
     glm::dvec3 translate(0.0), turns(0.0), scale(1.0);
     if (auto t = fields.optional("translate")) translate = t->vec3(kCoordinateRange);
-    if (auto r = fields.optional("rotate_deg")) turns = r->vec3(NumberRange::closed(-3600.0, 3600.0));
+    if (auto r = fields.optional("rotate_deg")) turns = r->vec3(kTurnRange);
     if (auto s = fields.optional("scale")) scale = glm::dvec3(s->rgb(kLengthRange));
-    glm::dmat4 m = glm::translate(glm::dmat4(1.0), translate);
-    m = glm::rotate(m, glm::radians(turns.z), glm::dvec3(0.0, 0.0, 1.0));
-    m = glm::rotate(m, glm::radians(turns.y), glm::dvec3(0.0, 1.0, 0.0));
-    m = glm::rotate(m, glm::radians(turns.x), glm::dvec3(1.0, 0.0, 0.0));
-    return glm::scale(m, scale);
+    return objectMatrix(translate, turns, scale);
 }
 
 // A Z-up file's world (Blender's) in eikon's Y-up one: (x, y, z) → (x, z, −y).
@@ -204,7 +212,8 @@ void readExport(const JsonReader& node, Scene& scene) {
 
 VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     VolumeDesc volume;
-    const auto fields = node.object({"path", "frame_start", "frame_time", "grids", "offset", "up_axis", "transform",
+    const auto fields = node.object({"path", "frame_start", "frame_time", "preset", "blender_domain", "grids",
+                                     "offset", "up_axis", "transform",
                                      "density_extinction",
                                      "density_scattering", "anisotropy", "ambient_temperature", "temperature_scale",
                                      "flame_temperature", "refractivity", "reference_temperature", "pressure"});
@@ -223,11 +232,38 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     }
     if (auto start = fields.optional("frame_start")) volume.frameStart = static_cast<int>(start->integer(0, kMaxFrameNumber));
     if (auto time = fields.optional("frame_time")) volume.frameTime = time->number(kPositive);
+    // Presets: the grid names and axes of a Blender (Mantaflow) or Houdini
+    // cache; the explicit keys below still override them.
+    const std::string preset = fields.optional("preset") ? fields.member("preset").oneOf({"none", "blender", "houdini"})
+                                                         : std::string("none");
+    bool zUp = preset == "blender";
+    glm::dmat4 transform(1.0);
+    if (preset == "blender") {
+        volume.flameGrid = "flame";
+        volume.velocityGrid = "velocity";
+        if (fields.optional("transform"))
+            fields.member("transform").fail("no `transform` with preset \"blender\" (blender_domain places the cache)",
+                                            "a transform");
+        const JsonReader domain = fields.member("blender_domain");
+        const auto keys = domain.object({"location", "rotation_deg", "dimensions"});
+        const glm::dvec3 location = keys.member("location").vec3(kCoordinateRange);
+        const glm::dvec3 rotation = keys.optional("rotation_deg") ? keys.member("rotation_deg").vec3(kTurnRange)
+                                                                  : glm::dvec3(0.0);
+        volume.blenderDomainDimensions = keys.member("dimensions").vec3(kLengthRange);
+        transform = objectMatrix(location, rotation, glm::dvec3(1.0));
+    } else {
+        if (fields.optional("blender_domain"))
+            fields.member("blender_domain").fail("no `blender_domain` without preset \"blender\"", "a domain");
+        if (preset == "houdini") {
+            volume.flameGrid = "flame";
+            volume.velocityGrid = "vel";
+        }
+        if (fields.optional("transform")) transform = readVolumeTransform(fields.member("transform"));
+    }
     if (auto grids = fields.optional("grids")) readGridNames(*grids, volume);
     glm::dvec3 offset(0.0);
     if (auto v = fields.optional("offset")) offset = v->vec3(kCoordinateRange);
-    const bool zUp = fields.optional("up_axis") && fields.member("up_axis").oneOf({"y", "z"}) == "z";
-    const glm::dmat4 transform = fields.optional("transform") ? readVolumeTransform(fields.member("transform")) : glm::dmat4(1.0);
+    if (fields.optional("up_axis")) zUp = fields.member("up_axis").oneOf({"y", "z"}) == "z";
     volume.placement = glm::translate(glm::dmat4(1.0), offset) * (zUp ? zUpToYUp() : glm::dmat4(1.0)) * transform;
     if (auto v = fields.optional("density_extinction")) volume.densityExtinction = v->rgb(kAttenuationRange);
     if (auto v = fields.optional("density_scattering")) {

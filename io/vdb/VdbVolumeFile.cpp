@@ -102,6 +102,25 @@ int VdbVolumeFile::componentsOf(const std::string& name) const {
     return 1;
 }
 
+VdbVolumeFile::GridFrame VdbVolumeFile::gridFrame(const std::string& name) const {
+    const std::vector<std::string> names = gridNames();
+    if (std::find(names.begin(), names.end(), name) == names.end())
+        throw InputError(path_.string(), "a grid named \"" + name + "\"", "the grids " + quotedNames(names));
+    openvdb::GridBase::Ptr grid;
+    try {
+        grid = grids_->file->readGridMetadata(name);
+    } catch (const std::exception& error) {
+        throw InputError(path_.string() + ": grid \"" + name + "\"", "readable metadata",
+                         std::string("OpenVDB: ") + error.what());
+    }
+    GridFrame frame;
+    const openvdb::Vec3d voxel = grid->voxelSize();
+    frame.voxelSize = glm::dvec3(voxel[0], voxel[1], voxel[2]);
+    if (const auto resolution = grid->getMetadata<openvdb::Vec3IMetadata>("file_base_resolution"))
+        frame.baseResolution = glm::ivec3(resolution->value()[0], resolution->value()[1], resolution->value()[2]);
+    return frame;
+}
+
 std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
                                          const glm::dvec3& offset) const {
     return sample(name, components, spec, glm::translate(glm::dmat4(1.0), offset));

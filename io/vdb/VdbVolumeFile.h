@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,14 @@ public:
     // Vector values come as stored, in the file's frame.
     std::vector<float> sample(const std::string& name, int components, const GridSpec& grid,
                               const glm::dmat4& placement) const;
+    // Grid `name`'s voxel size (its transform's, per axis) and Mantaflow's
+    // `file_base_resolution` metadata (the domain's cells per axis), absent
+    // where the grid lacks it. InputError as sample's for a missing grid.
+    struct GridFrame {
+        glm::dvec3 voxelSize{0.0};
+        std::optional<glm::ivec3> baseResolution;
+    };
+    GridFrame gridFrame(const std::string& name) const;
     // 3 when the file's grid `name` is a vec3s grid, else 1 (sample then
     // says what it found, or that there is no such grid).
     int componentsOf(const std::string& name) const;

@@ -3,7 +3,11 @@
 #include "io/vdb/VdbVolumeFile.h"
 #include "io/vdb/VolumeFramePath.h"
 
+#include "bridge/core/Error.h"
+
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/vector_relational.hpp>
 
 namespace eikon::sim {
 
@@ -22,21 +26,52 @@ void VolumeSequence::seekFrame(int frame) {
     else frame_ = frame;
 }
 
+namespace {
+
+// The first grid the scene reads from the file.
+std::string firstGrid(const VolumeDesc& desc) {
+    for (const std::string* name : {&desc.densityGrid, &desc.temperatureGrid, &desc.flameGrid, &desc.velocityGrid,
+                                    &desc.indexGrid, &desc.deltaIndexGrid, &desc.extinctionGrid, &desc.scatteringGrid,
+                                    &desc.anisotropyGrid})
+        if (!name->empty()) return *name;
+    return {};
+}
+
+// A Blender (Mantaflow) cache's index frame in its domain's, centred: voxel
+// (i,j,k) at (i,j,k)·dx in the file is the cell covering
+// [i, i+1]·D/res from the domain's corner (VolumeDesc::blenderDomainDimensions).
+glm::dmat4 blenderCellFrame(const io::VdbVolumeFile& file, const std::string& grid, const glm::dvec3& dimensions) {
+    const io::VdbVolumeFile::GridFrame frame = file.gridFrame(grid);
+    if (!frame.baseResolution || glm::any(glm::lessThan(*frame.baseResolution, glm::ivec3(1))))
+        throw InputError(file.path().string() + ": grid \"" + grid + "\"",
+                         "Mantaflow's file_base_resolution metadata (volume.preset \"blender\" reads a Blender cache)",
+                         frame.baseResolution ? "a resolution below 1" : "none");
+    const double dx = frame.voxelSize.x;
+    const glm::dvec3 cell = dimensions / glm::dvec3(*frame.baseResolution);
+    return glm::translate(glm::dmat4(1.0), -0.5 * dimensions) * glm::scale(glm::dmat4(1.0), cell / dx) *
+           glm::translate(glm::dmat4(1.0), glm::dvec3(0.5 * dx));
+}
+
+}  // namespace
+
 void VolumeSequence::load(int frame) {
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
     const io::VdbVolumeFile file(path);
+    VolumeDesc desc = desc_;
+    if (desc_.blenderDomainDimensions)
+        desc.placement = desc_.placement * blenderCellFrame(file, firstGrid(desc_), *desc_.blenderDomainDimensions);
     VolumeSamples samples;
-    if (!desc_.densityGrid.empty()) samples.density = file.sample(desc_.densityGrid, 1, grid_, desc_.placement);
+    if (!desc_.densityGrid.empty()) samples.density = file.sample(desc_.densityGrid, 1, grid_, desc.placement);
     if (!desc_.temperatureGrid.empty())
-        samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, desc_.placement);
-    if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, desc_.placement);
-    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, desc_.placement);
-    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, desc_.placement);
-    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, desc_.placement);
+        samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, desc.placement);
+    if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, desc.placement);
+    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, desc.placement);
+    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, desc.placement);
+    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, desc.placement);
     // κ and σs grids: RGB as a vec3s grid, or grey as a float grid.
     const auto rgb = [&](const std::string& name) {
-        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, desc_.placement);
-        const std::vector<float> grey = file.sample(name, 1, grid_, desc_.placement);
+        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, desc.placement);
+        const std::vector<float> grey = file.sample(name, 1, grid_, desc.placement);
         std::vector<float> channels(3 * grey.size());
         for (std::size_t c = 0; c < grey.size(); ++c) channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = grey[c];
         return channels;
@@ -45,8 +80,8 @@ void VolumeSequence::load(int frame) {
     if (!desc_.scatteringGrid.empty()) samples.scattering = rgb(desc_.scatteringGrid);
     std::vector<float> velocity;
     if (!desc_.velocityGrid.empty()) {
-        velocity = file.sample(desc_.velocityGrid, 3, grid_, desc_.placement);
-        const glm::dmat3 turn(desc_.placement);  // a velocity turns and scales with the volume
+        velocity = file.sample(desc_.velocityGrid, 3, grid_, desc.placement);
+        const glm::dmat3 turn(desc.placement);  // a velocity turns and scales with the volume
         for (std::size_t c = 0; c < velocity.size(); c += 3) {
             const glm::dvec3 v = turn * glm::dvec3(velocity[c], velocity[c + 1], velocity[c + 2]);
             for (int a = 0; a < 3; ++a) velocity[c + static_cast<std::size_t>(a)] = static_cast<float>(v[a]);

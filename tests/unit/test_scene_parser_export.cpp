@@ -188,6 +188,21 @@ TEST_F(SceneParserVolume, BadValuesAreReportedAtTheirPath) {
               std::string::npos);
     EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "grids": {"vel": "v"}})")).find("volume.grids.vel"),
               std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "preset": "blender"})")).find("volume.blender_domain"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "preset": "blender", "transform": {"scale": 2},
+                                    "blender_domain": {"location": [0, 0, 0], "dimensions": [1, 1, 1]}})"))
+                  .find("volume.transform: expected no `transform` with preset \"blender\""),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "blender_domain": {"location": [0, 0, 0], "dimensions": [1, 1, 1]}})"))
+                  .find("volume.blender_domain: expected no `blender_domain` without preset \"blender\""),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "preset": "blender",
+                                    "blender_domain": {"location": [0, 0, 0], "dimensions": [1, 0, 1]}})"))
+                  .find("volume.blender_domain.dimensions"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "preset": "maya"})")).find("volume.preset"),
+              std::string::npos);
     json both = validScene();
     both["sim"] = json::object();
     both["volume"] = {{"path", "single.vdb"}};

@@ -3,11 +3,14 @@
 // scene's. A density linear in the file's coordinates, sampled at every
 // render cell, must read what the placement computed here by hand gives —
 // to 1e-6 m of position — and a velocity turns and scales with it.
+#include "bridge/core/Error.h"
 #include "io/scene/SceneParser.h"
 #include "sim/SceneFields.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
 
 #include <cmath>
 #include <filesystem>
@@ -85,6 +88,82 @@ TEST(VolumePlacement, ATurnedScaledZUpVolumeLandsWhereItsPlacementSays) {
                 for (int a = 0; a < 3; ++a) EXPECT_NEAR(arrays[1].values[3 * c + static_cast<std::size_t>(a)], v[a], 1e-6);
             }
     EXPECT_LT(worstMetres, 1e-6) << "position error of the placement";
+    fs::remove_all(folder);
+}
+
+// A cache as Blender 3.4's Mantaflow writes one (checked against a real
+// bake: grids named density, flame, temperature, velocity; fog-volume
+// class; half float; a uniform linear transform of voxel dx = the longest
+// dimension / the resolution, index (0,0,0) at the origin; Mantaflow's
+// file_base_resolution metadata; Z-up, in the domain object's frame).
+// Cell (i,j,k) covers [i, i+1]·D/res from the domain's corner (Blender's
+// fluid.c), so its centre in Blender's world is
+//   location + R · (−D/2 + (i + ½, j + ½, k + ½) · D/res).
+// The density is i + 2j + 4k, exact in half float, and linear, so trilinear
+// sampling reads the cell coordinate of any point back exactly.
+TEST(VolumePlacement, ABlenderCacheLandsWhereItsDomainWas) {
+    const fs::path folder = fs::path(::testing::TempDir()) / "eikon_blender_cache";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const glm::dvec3 location(1.0, 2.0, 3.0), turns(10.0, -15.0, 30.0), dimensions(1.6, 1.2, 2.0);
+    const glm::ivec3 resolution(13, 10, 16);  // Blender's for these dimensions at resolution_max 16
+    const double dx = 2.0 / 16;
+    openvdb::initialize();
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->setGridClass(openvdb::GRID_FOG_VOLUME);
+    density->setSaveFloatAsHalf(true);
+    density->setTransform(openvdb::math::Transform::createLinearTransform(dx));
+    density->insertMeta("file_base_resolution",
+                        openvdb::Vec3IMetadata(openvdb::Vec3i(resolution.x, resolution.y, resolution.z)));
+    auto accessor = density->getAccessor();
+    for (int k = 0; k < resolution.z; ++k)
+        for (int j = 0; j < resolution.y; ++j)
+            for (int i = 0; i < resolution.x; ++i) accessor.setValue(openvdb::Coord(i, j, k), float(i + 2 * j + 4 * k));
+    openvdb::io::File((folder / "fluid_data_0001.vdb").string()).write({density});
+
+    // A render grid well inside the domain, in eikon's Y-up world: Blender's
+    // (x, y, z) is eikon's (x, z, −y).
+    nlohmann::json root = nlohmann::json::parse(R"({
+      "grid": {"resolution": [9, 8, 7], "bounds": {"min": [0.75, 2.75, -2.25], "max": [1.25, 3.25, -1.75]}},
+      "lights": [{"type": "point", "position": [0, 5, 0], "power": 1}],
+      "volume": {"path": "fluid_data_####.vdb", "preset": "blender", "grids": {"temperature": "", "flame": "",
+                 "velocity": ""}, "blender_domain": {"location": [1, 2, 3], "rotation_deg": [10, -15, 30],
+                 "dimensions": [1.6, 1.2, 2.0]}}})");
+    const SceneFields fields(parseScene(root, (folder / "scene.json").string()));
+    const auto arrays = fields.exportArrays();
+    ASSERT_EQ(arrays[0].name, "density");
+    const Mat3 rotation = multiply(turn(2, turns.z), multiply(turn(1, turns.y), turn(0, turns.x)));
+    const Mat3 unturn{{{rotation[0][0], rotation[1][0], rotation[2][0]},
+                       {rotation[0][1], rotation[1][1], rotation[2][1]},
+                       {rotation[0][2], rotation[1][2], rotation[2][2]}}};
+    const GridSpec& grid = fields.fields().grid;
+    const glm::dvec3 cell = dimensions / glm::dvec3(resolution);
+    double worstMetres = 0.0;
+    for (int k = 0; k < grid.resolution.z; ++k)
+        for (int j = 0; j < grid.resolution.y; ++j)
+            for (int i = 0; i < grid.resolution.x; ++i) {
+                const glm::dvec3 x = grid.cellCentre(i, j, k);
+                const glm::dvec3 blender(x.x, -x.z, x.y);
+                const glm::dvec3 u = (transformed(unturn, blender - location) + 0.5 * dimensions) / cell - 0.5;
+                const double expected = u.x + 2.0 * u.y + 4.0 * u.z;
+                // The density's gradient in metres: (1/cx, 2/cy, 4/cz) in the domain's axes.
+                const double gradient = glm::length(glm::dvec3(1.0, 2.0, 4.0) / cell);
+                worstMetres = std::max(worstMetres,
+                                       std::abs(arrays[0].values[grid.linearIndex(i, j, k)] - expected) / gradient);
+            }
+    EXPECT_LT(worstMetres, 1e-6) << "position error of the Blender preset";
+
+    // Without Mantaflow's metadata the preset cannot place the cache.
+    density->removeMeta("file_base_resolution");
+    openvdb::io::File((folder / "fluid_data_0001.vdb").string()).write({density});
+    try {
+        SceneFields refused(parseScene(root, (folder / "scene.json").string()));
+        FAIL() << "a cache without file_base_resolution was placed";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("expected Mantaflow's file_base_resolution metadata"), std::string::npos)
+            << error.what();
+    }
     fs::remove_all(folder);
 }
 
