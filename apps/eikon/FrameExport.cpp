@@ -93,7 +93,9 @@ void FrameExporter::writeIndexes(const std::map<int, double>& frameTimes) {
 }
 
 void FrameExporter::writeParaViewState() {
-    if (vtk_) io::writeParaViewState(vtk_->directory(), paraview_);
+    if (!vtk_ || paraviewWritten_) return;
+    io::writeParaViewState(vtk_->directory(), paraview_);
+    paraviewWritten_ = true;
 }
 
 bool FrameExporter::wantsFrame(int frame) const {

@@ -56,10 +56,11 @@ public:
 
 private:
     std::vector<io::VtkSeriesIndex*> seriesIndexes();  // of the .vti and .vtp series written
-    void writeParaViewState();  // after the indexes, so it names only collections that exist
+    void writeParaViewState();  // once, after the first indexes, so it names only collections that exist
 
     ExportDesc exports_;
     io::ParaViewState paraview_;
+    bool paraviewWritten_ = false;  // every collection has its index from the first exported frame on
     bool deferIndexes_;
     std::optional<io::VtkSeriesWriter> vtk_;
     std::optional<io::VdbFrameWriter> vdb_;

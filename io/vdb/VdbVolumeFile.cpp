@@ -54,6 +54,10 @@ std::string quotedNames(const std::vector<std::string>& names) {
     return list;
 }
 
+InputError noGridNamed(const fs::path& path, const std::string& name, const std::vector<std::string>& names) {
+    return InputError(path.string(), "a grid named \"" + name + "\"", "the grids " + quotedNames(names));
+}
+
 // Samples `grid` trilinearly at each render cell centre (x fastest),
 // through one accessor per z slice (accessors are not thread-safe).
 template <class GridT, class Sampler, class Store>
@@ -105,7 +109,7 @@ int VdbVolumeFile::componentsOf(const std::string& name) const {
 VdbVolumeFile::GridFrame VdbVolumeFile::gridFrame(const std::string& name) const {
     const std::vector<std::string> names = gridNames();
     if (std::find(names.begin(), names.end(), name) == names.end())
-        throw InputError(path_.string(), "a grid named \"" + name + "\"", "the grids " + quotedNames(names));
+        throw noGridNamed(path_, name, names);
     openvdb::GridBase::Ptr grid;
     try {
         grid = grids_->file->readGridMetadata(name);
@@ -134,7 +138,7 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     const VdbGridEntry* entry = nullptr;
     for (const VdbGridEntry& grid : grids_->layout.grids)
         if (grid.name == name && !entry) entry = &grid;
-    if (!entry) throw InputError(path_.string(), "a grid named \"" + name + "\"", "the grids " + quotedNames(gridNames()));
+    if (!entry) throw noGridNamed(path_, name, gridNames());
     const std::string wanted = components == 1 ? "float" : "vec3s";
     if (entry->valueType != wanted)
         throw InputError(where, "a " + wanted + " grid", "a grid of type \"" + entry->treeType + "\"");

@@ -57,21 +57,22 @@ glm::dmat4 blenderCellFrame(const io::VdbVolumeFile& file, const std::string& gr
 void VolumeSequence::load(int frame) {
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
     const io::VdbVolumeFile file(path);
-    VolumeDesc desc = desc_;
-    if (desc_.blenderDomainDimensions)
-        desc.placement = desc_.placement * blenderCellFrame(file, firstGrid(desc_), *desc_.blenderDomainDimensions);
+    const glm::dmat4 placement =
+        desc_.blenderDomainDimensions
+            ? desc_.placement * blenderCellFrame(file, firstGrid(desc_), *desc_.blenderDomainDimensions)
+            : desc_.placement;
     VolumeSamples samples;
-    if (!desc_.densityGrid.empty()) samples.density = file.sample(desc_.densityGrid, 1, grid_, desc.placement);
+    if (!desc_.densityGrid.empty()) samples.density = file.sample(desc_.densityGrid, 1, grid_, placement);
     if (!desc_.temperatureGrid.empty())
-        samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, desc.placement);
-    if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, desc.placement);
-    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, desc.placement);
-    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, desc.placement);
-    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, desc.placement);
+        samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, placement);
+    if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, placement);
+    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, placement);
+    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, placement);
+    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, placement);
     // κ and σs grids: RGB as a vec3s grid, or grey as a float grid.
     const auto rgb = [&](const std::string& name) {
-        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, desc.placement);
-        const std::vector<float> grey = file.sample(name, 1, grid_, desc.placement);
+        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, placement);
+        const std::vector<float> grey = file.sample(name, 1, grid_, placement);
         std::vector<float> channels(3 * grey.size());
         for (std::size_t c = 0; c < grey.size(); ++c) channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = grey[c];
         return channels;
@@ -80,8 +81,8 @@ void VolumeSequence::load(int frame) {
     if (!desc_.scatteringGrid.empty()) samples.scattering = rgb(desc_.scatteringGrid);
     std::vector<float> velocity;
     if (!desc_.velocityGrid.empty()) {
-        velocity = file.sample(desc_.velocityGrid, 3, grid_, desc.placement);
-        const glm::dmat3 turn(desc.placement);  // a velocity turns and scales with the volume
+        velocity = file.sample(desc_.velocityGrid, 3, grid_, placement);
+        const glm::dmat3 turn(placement);  // a velocity turns and scales with the volume
         for (std::size_t c = 0; c < velocity.size(); c += 3) {
             const glm::dvec3 v = turn * glm::dvec3(velocity[c], velocity[c + 1], velocity[c + 2]);
             for (int a = 0; a < 3; ++a) velocity[c + static_cast<std::size_t>(a)] = static_cast<float>(v[a]);
