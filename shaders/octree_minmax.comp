@@ -2,16 +2,24 @@
 // (min δn, max δn, min κ, max κ) with κ the largest extinction channel.
 // Level 0 takes each voxel's 3×3×3 neighbourhood, the cells trilinear
 // interpolation mixes anywhere inside it; level k > 0 reduces the 2×2×2
-// children of level k − 1.
+// children of level k − 1. An emitting voxel counts as holding extinction (a
+// vanishing 1e-30 /m at least), so that no camera ray crosses its glow in one
+// jump (octree_label: such a node is not empty).
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #ifndef EIKON_HAS_EXTINCTION
 #define EIKON_HAS_EXTINCTION 0
 #endif
+#ifndef EIKON_HAS_EMISSION
+#define EIKON_HAS_EMISSION 0
+#endif
 
 layout(binding = kIndexTexture) uniform sampler3D index_texture;  // r: smoothed δn (level 0 input)
 #if EIKON_HAS_EXTINCTION
 layout(binding = kExtinctionTexture) uniform sampler3D extinction_texture;  // rgb: κ (level 0 input)
+#endif
+#if EIKON_HAS_EMISSION
+layout(binding = kEmissionTexture) uniform sampler3D emission_texture;  // rgb: ε (level 0 input)
 #endif
 layout(rgba32f, binding = kFinerLevelImage) readonly uniform image3D finer_level;  // level k − 1 (k > 0)
 layout(rgba32f, binding = kPyramidLevelImage) writeonly uniform image3D this_level;
@@ -39,6 +47,10 @@ void main() {
                     float kappa = max(kappa3.r, max(kappa3.g, kappa3.b));
 #else
                     float kappa = 0.0f;
+#endif
+#if EIKON_HAS_EMISSION
+                    vec3 glow = texelFetch(emission_texture, cell, 0).rgb;
+                    if (max(glow.r, max(glow.g, glow.b)) > 0.0f) kappa = max(kappa, 1e-30f);
 #endif
                     range = merged(range, vec4(index, index, kappa, kappa));
                 }

@@ -15,6 +15,7 @@
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].map.z)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
 //   EIKON_SHARP_SURFACES   1: the scene has sharp surfaces (common/sharp_surface_blocks.glsl)
+//   EIKON_VOLUME_GLOW      1: a glowing volume may be an emitter (common/volume_glow.glsl)
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0
 //   EIKON_RECORD_ENDS      1: where EIKON_RECORDED_PHOTONS photons, every end_stride-th from photon 0,
@@ -98,9 +99,17 @@ uniform uint batch_size;
 uniform uint seed;
 uniform float power_cutoff;    // Russian roulette once every channel is below this fraction of the emitted power
 // Random dimensions of the roulette draws, apart from those of emission (0,
-// 1), receiver bounces (2, 3, …) and sharp surfaces (64, 65, …).
+// 1), receiver bounces (2, 3, …), sharp surfaces (64, 65, …) and a glow
+// photon's cell and point (kGlowDimensions).
 const uint kRouletteDimensions = 0x80000000u;
 uniform vec3 power_unit;       // W per fixed-point tally unit, per channel
+
+#ifndef EIKON_VOLUME_GLOW
+#define EIKON_VOLUME_GLOW 0
+#endif
+#if EIKON_VOLUME_GLOW
+#include "common/volume_glow.glsl"
+#endif
 
 // Tallies of this work group, flushed to PhotonStats once by its first
 // invocation: a global atomic per work group instead of per photon (64
@@ -356,12 +365,21 @@ void emit_photon(uint photon, out vec3 x, out vec3 direction, out vec3 emitted) 
     if (emitter.origin.w == 0.0f) {
         x = emitter.origin.xyz;
         direction = sample_cone(emitter.axis.xyz, emitter.tangent.xyz, emitter.bitangent.xyz, emitter.axis.w, u.x, u.y);
-    } else {
+        emitted = emitter.photon_power.rgb * spot_profile(emitter, direction);
+    } else if (emitter.origin.w == 1.0f) {
         vec2 disk = emitter.axis.w * sample_disk_concentric(u.x, u.y);
         x = emitter.origin.xyz + disk.x * emitter.tangent.xyz + disk.y * emitter.bitangent.xyz;
         direction = emitter.axis.xyz;
+        emitted = emitter.photon_power.rgb;
+    } else {
+#if EIKON_VOLUME_GLOW
+        emit_glow_photon(photon, u, emitter.photon_power.rgb, x, direction, emitted);
+#else
+        x = vec3(0.0f);
+        direction = vec3(0.0f, 0.0f, 1.0f);
+        emitted = vec3(0.0f);  // not built without the option (PhotonStage)
+#endif
     }
-    emitted = emitter.photon_power.rgb * spot_profile(emitter, direction);
     take_channel(photon);
 #if EIKON_DISPERSION
     int channel = int(photon % 3u);

@@ -11,13 +11,15 @@
 // transmittance, and at interfaces the environment reflected about ∇n/|∇n|
 // weighted by the Fresnel term (total internal reflection is left to the ray
 // equation). A receiver it meets shows albedo/π × its photon irradiance; a
-// ray that escapes sees the environment. At a sharp surface
+// ray that escapes sees the environment. A glowing medium adds its emission
+// ε ([Ihrke07] §3, L_e) under the same transmittance as in-scattering:
+// each step gathers (σs·φ·p + ε)·∫exp(−κs)ds. At a sharp surface
 // (common/sharp_surfaces.glsl) a step ends exactly there and the ray splits
 // into its Fresnel-weighted reflection and refraction, both traced, until
 // `surface_depth` surface events; past that it follows the stronger branch.
 //
 // Program options: EIKON_HAS_EXTINCTION, EIKON_HAS_SCATTERING,
-// EIKON_HAS_ANISOTROPY, EIKON_STEP_STRUCTURE (1: large steps through empty
+// EIKON_HAS_ANISOTROPY, EIKON_HAS_EMISSION, EIKON_STEP_STRUCTURE (1: large steps through empty
 // nodes), EIKON_FRESNEL, EIKON_ENVIRONMENT (layout::EnvironmentKind),
 // EIKON_SHARP_SURFACES (1: the scene has sharp surfaces),
 // EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
@@ -294,7 +296,8 @@ void main() {
             ReceiverHit hit = first_receiver_crossing(start, x);
             float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
             vec3 kappa = sample_extinction(start);
-            radiance += ray.throughput * in_scattered_radiance(start, d) * attenuated_track_length(kappa, travelled);
+            vec3 gathered = in_scattered_radiance(start, d) + sample_emission(start);
+            radiance += ray.throughput * gathered * attenuated_track_length(kappa, travelled);
             ray.throughput *= beer_lambert_transmittance(kappa, travelled);
             vec3 normal = vec3(0.0f);
             float reflection = fresnel_share(start, x, d, n_start, gradient, normal);

@@ -73,6 +73,12 @@ void publishField(std::vector<float>& current, std::vector<float>&& next, std::u
 
 void validateFields(const FieldSet& fields, const std::string& source) {
     validateFields(viewsOf(fields), source);
+    if (!fields.hasEmission()) return;  // emission comes from host memory only (an imported volume)
+    checkSize(fields.emission, 3 * fields.grid.cellCount(), source + ": field emission");
+    for (std::size_t v = 0; v < fields.emission.size(); ++v)
+        if (!std::isfinite(fields.emission[v]) || fields.emission[v] < 0.0f)
+            throw InputError(source + ": field emission, " + cellName(fields.grid, v / 3), "a finite value >= 0",
+                             std::to_string(fields.emission[v]));
 }
 
 }  // namespace eikon

@@ -31,6 +31,10 @@ struct FieldSet {
     std::vector<float> extinction;    // three per cell (RGB), empty when κ = 0 everywhere
     std::vector<float> scattering;    // three per cell (RGB), empty when σs = 0 everywhere
     std::vector<float> anisotropy;    // Henyey–Greenstein g, one per cell, empty when g = 0 everywhere
+    // Emitted radiance per unit length ε in W/(m³·sr), three per cell (RGB),
+    // empty when nothing glows: an imported volume's blackbody emission or
+    // emission grid (sim/optics/VolumeOptics.h). It shares κ's version.
+    std::vector<float> emission;
     // The sharp mesh and water surfaces (sim/SharpMeshSurfaces.h), empty
     // when the scene has none: the nodes of every object's tree, the roots
     // first (node k is the root of the k-th such object in scene order), and
@@ -38,20 +42,21 @@ struct FieldSet {
     std::vector<float> surfaceNodes;
     std::vector<float> surfaceTriangles;
     std::uint64_t indexVersion = 0;
-    std::uint64_t extinctionVersion = 0;
+    std::uint64_t extinctionVersion = 0;  // κ and ε together
     std::uint64_t scatteringVersion = 0;  // σs and g together
     std::uint64_t surfaceVersion = 0;     // surface nodes and triangles together
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }
     bool hasAnisotropy() const { return !anisotropy.empty(); }
+    bool hasEmission() const { return !emission.empty(); }
 };
 
 // Replaces `current` with `next` and bumps `version` if their values differ.
 void publishField(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version);
 
 // Throws InputError naming the field and cell of the first value that is not
-// finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ, a surface vertex or normal not finite): fields are checked
+// finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ, ε < 0, a surface vertex or normal not finite): fields are checked
 // where they enter the bridge, never traced silently.
 void validateFields(const FieldSet& fields, const std::string& source);
 

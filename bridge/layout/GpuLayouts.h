@@ -52,7 +52,8 @@
     X(kWavefrontCounters, 22)   /* buffer Counters (GpuWavefrontCounters) */                                   \
     X(kSuspendedIn, 23)         /* buffer SuspendedIn { GpuSuspendedPhoton[] }: photons a dispatch resumes */      \
     X(kSuspendedOut, 24)        /* buffer SuspendedOut { GpuSuspendedPhoton[] }: photons it suspends */           \
-    X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */
+    X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */                                           \
+    X(kGlowCells, 26)           /* buffer GlowCells { GpuGlowCell cells[]; }: a glowing volume's emitting cells */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into
@@ -65,7 +66,8 @@
     X(kScatteringTexture, 3)  /* rgba32f (σs rgb, 0) */                                                            \
     X(kStepTexture, 4)        /* rgba32f (octree level, step cap in m, 1 if the node is empty of extinction, 0) */ \
     X(kEnvironmentTexture, 5) /* rgba32f equirectangular environment */                                            \
-    X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */
+    X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */                                                       \
+    X(kEmissionTexture, 7)    /* rgba32f (ε rgb in W/(m³·sr), 0) */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \
@@ -137,11 +139,11 @@ static_assert(offsetof(GpuGrid, resolution) == 48);
 // One light's emission, prepared on the CPU so that the photons of all lights
 // carry exactly the power each light sends toward the traced region.
 struct GpuEmitter {
-    glm::vec4 origin;       // point, spot: position; directional: centre of the emitting disk. w: kind (0 cone, 1 disk)
+    glm::vec4 origin;       // point, spot: position; directional: centre of the emitting disk. w: kind (0 cone, 1 disk, 2 glowing volume)
     glm::vec4 axis;         // unit central direction. w: cone: cos of its half-angle; disk: radius (m)
     glm::vec4 tangent;      // unit, ⟂ axis
     glm::vec4 bitangent;    // unit, ⟂ axis and tangent
-    glm::vec4 photonPower;  // rgb W carried by each photon where the spot profile is 1; w unused
+    glm::vec4 photonPower;  // rgb W carried by each photon where the spot profile is 1 (glowing volume: × its cell's colour); w unused
     glm::vec4 spot;         // xyz: unit spot axis; w: cos of the spot's outer half-angle (−2: no profile)
     glm::vec4 spotEdge;     // x: cos of the spot's inner half-angle (full intensity inside)
     glm::uvec4 photons;     // x: first photon index, y: photon count, z: strata along u1, w: strata along u2
@@ -233,6 +235,14 @@ static_assert(sizeof(GpuSuspendedPhoton) == 96);
 
 // How many photons a dispatch suspended (may pass the buffer's capacity:
 // those past it are cut off instead).
+// One emitting cell of a glowing volume (render/stages/VolumeGlow.h), in
+// cell order.
+struct GpuGlowCell {
+    glm::vec4 colour;  // rgb: ε per channel over the cell's Σε; w: the inclusive cumulative share of all cells' Σε
+    glm::uvec4 cell;   // x: linear cell index
+};
+static_assert(sizeof(GpuGlowCell) == 32);
+
 struct GpuSuspendedCount {
     std::uint32_t count;
     std::uint32_t unused[3];

@@ -37,6 +37,7 @@ struct VolumeDesc {
     std::string extinctionGrid;
     std::string scatteringGrid;
     std::string anisotropyGrid;
+    std::string emissionGrid;  // ε in W/(m³·sr), grey or RGB, added to the blackbody term
 
     // The file's world into the scene's, affine: translate(offset) · up axis
     // (Z-up files turned to eikon's Y-up) · transform (translate · rotate ·
@@ -65,6 +66,20 @@ struct VolumeDesc {
     double refractivity = 2.93e-4;       // n0 − 1 of air at T0, p0, > 0
     double referenceTemperature = 273.15;  // T0, K, > 0
     double pressure = 101325.0;            // Pa, > 0 (p0 = 101325 Pa)
+
+    // Emission, the L_e of [Ihrke07] §3, eqs. 1–2. Blackbody: each cell glows
+    // by Kirchhoff's law, ε = emissionScale · κa · B(T) per channel, κa = κ − σs
+    // its absorption and B(T) the Planck radiance in eikon's RGB
+    // (sim/optics/Blackbody.h); flameAbsorption is the soot a flame adds to κ
+    // (grey, 1/m per unit flame), so a fire both glows and darkens what is
+    // behind it. emissionScale 1 is the physical glow.
+    enum class Emission { None, Blackbody };
+    Emission emission = Emission::None;
+    double emissionScale = 1.0;     // >= 0
+    double flameAbsorption = 0.0;   // 1/m per unit flame, >= 0
+    // The emission also lights the scene: photons leave the glowing cells
+    // (render/stages/PhotonEmission.h, a volume emitter).
+    bool emissionLights = false;
 };
 
 }  // namespace eikon

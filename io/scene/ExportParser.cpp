@@ -155,16 +155,50 @@ std::string readGridName(const JsonReader& node) { return node.string(); }
 
 void readGridNames(const JsonReader& node, VolumeDesc& volume) {
     const auto fields = node.object({"density", "temperature", "flame", "velocity", "index", "delta_index",
-                                     "extinction", "scattering", "anisotropy"});
+                                     "extinction", "scattering", "anisotropy", "emission"});
     for (const auto& [key, name] : {std::pair{"density", &volume.densityGrid}, {"temperature", &volume.temperatureGrid},
                                     {"flame", &volume.flameGrid}, {"velocity", &volume.velocityGrid},
                                     {"index", &volume.indexGrid}, {"delta_index", &volume.deltaIndexGrid},
                                     {"extinction", &volume.extinctionGrid}, {"scattering", &volume.scatteringGrid},
-                                    {"anisotropy", &volume.anisotropyGrid}})
+                                    {"anisotropy", &volume.anisotropyGrid}, {"emission", &volume.emissionGrid}})
         if (auto grid = fields.optional(key)) *name = readGridName(*grid);
     if (!volume.indexGrid.empty() && !volume.deltaIndexGrid.empty())
         fields.member("delta_index").fail("\"\" when `index` names a grid (both would set the index)",
                                           "\"" + volume.deltaIndexGrid + "\"");
+}
+
+// volume.emission, emission_scale, flame_absorption, emission_lights: each
+// refused where it could have no effect.
+void readVolumeEmission(const JsonObjectReader& fields, VolumeDesc& volume) {
+    if (auto v = fields.optional("flame_absorption")) {
+        volume.flameAbsorption = v->number(kAttenuationRange);
+        if (volume.flameGrid.empty()) v->fail("no flame_absorption without a flame grid (grids.flame)", "a flame_absorption");
+    }
+    if (auto v = fields.optional("emission"))
+        volume.emission = v->oneOf({"none", "blackbody"}) == "blackbody" ? VolumeDesc::Emission::Blackbody
+                                                                         : VolumeDesc::Emission::None;
+    const bool blackbody = volume.emission == VolumeDesc::Emission::Blackbody;
+    if (auto v = fields.optional("emission_scale")) {
+        volume.emissionScale = v->number(kNonNegative);
+        if (!blackbody) v->fail("no emission_scale without emission \"blackbody\"", formatNumber(volume.emissionScale));
+    }
+    if (blackbody) {
+        const JsonReader node = fields.member("emission");
+        if (volume.temperatureGrid.empty() && volume.flameGrid.empty())
+            node.fail("a temperature or flame grid for emission \"blackbody\" (it glows by temperature)",
+                      "neither grids.temperature nor grids.flame");
+        const bool absorbs = volume.flameAbsorption > 0.0 || !volume.extinctionGrid.empty() ||
+                             (!volume.densityGrid.empty() && volume.densityExtinction != volume.densityScattering);
+        if (!absorbs)
+            node.fail("something that absorbs for emission \"blackbody\" (Kirchhoff: ε = κa·B(T); set "
+                      "flame_absorption, density_extinction above density_scattering, or grids.extinction)",
+                      "no absorption");
+    }
+    if (auto v = fields.optional("emission_lights")) {
+        volume.emissionLights = v->boolean();
+        if (volume.emissionLights && !blackbody && volume.emissionGrid.empty())
+            v->fail("no emission_lights without emission (emission \"blackbody\" or grids.emission)", "true");
+    }
 }
 
 // Exported fields that only some scenes have, and what provides them.
@@ -216,7 +250,8 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
                                      "offset", "up_axis", "transform",
                                      "density_extinction",
                                      "density_scattering", "anisotropy", "ambient_temperature", "temperature_scale",
-                                     "flame_temperature", "refractivity", "reference_temperature", "pressure"});
+                                     "flame_temperature", "refractivity", "reference_temperature", "pressure",
+                                     "emission", "emission_scale", "flame_absorption", "emission_lights"});
     const JsonReader pathNode = fields.member("path");
     const std::filesystem::path path = pathNode.string();
     volume.path = (path.is_absolute() ? path : std::filesystem::path(sceneFolder) / path).string();
@@ -287,9 +322,10 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     if (auto v = fields.optional("pressure")) volume.pressure = v->number(kPositive);
     if (volume.densityGrid.empty() && volume.temperatureGrid.empty() && volume.flameGrid.empty() &&
         volume.indexGrid.empty() && volume.deltaIndexGrid.empty() && volume.extinctionGrid.empty() &&
-        volume.scatteringGrid.empty())
+        volume.scatteringGrid.empty() && volume.emissionGrid.empty())
         fields.member("grids").fail("at least one grid named (density, temperature, flame, or an optical grid)",
                                     "every grid left empty");
+    readVolumeEmission(fields, volume);
 
     const std::string firstFile = volumeFramePath(volume, volume.frameStart);
     if (!std::filesystem::is_regular_file(firstFile))

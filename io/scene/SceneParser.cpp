@@ -622,7 +622,6 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
                                       std::to_string(sharp));
     scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
     scene.lights = readList<LightDesc>(fields, "lights", readLight);
-    if (scene.lights.empty()) fields.member("lights").fail("an array of at least one light");
     if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
     scene.receivers = readList<ReceiverDesc>(
         fields, "receivers", [&](const JsonReader& node) { return readReceiver(node, scene.tracer.estimator); });
@@ -640,7 +639,14 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     if (auto volume = fields.optional("volume")) {
         if (scene.sim) volume->fail("either a sim section or a volume, not both", "both");
         scene.volume = readVolume(*volume, sceneFolder);
+        if (scene.volume->emissionLights && scene.tracer.estimator == TracerDesc::Estimator::Wavefront)
+            volume->member("emission_lights")
+                .fail("false with tracer.estimator \"wavefront\" (a glowing volume is no wavefront source; "
+                      "\"photons\" traces it)", "true");
     }
+    const bool volumeLights = scene.volume && scene.volume->emissionLights;
+    if (scene.lights.empty() && !volumeLights)
+        fields.member("lights").fail("an array of at least one light (or a volume with emission_lights)");
     if (auto exports = fields.optional("export")) readExport(*exports, scene);  // last: it checks the fields exist
     return scene;
 }

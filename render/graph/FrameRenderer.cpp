@@ -35,7 +35,8 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     if (ring) ring->fenceCurrent();
     prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
     if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree)
-        stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction());
+        stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
+                                                              fields_.hasEmission());
     // Photons light receivers and in-scattering; a scene with neither has no
     // photon stage unless the caller asks for the photons' tallies.
     const bool photonsWanted =
@@ -58,7 +59,8 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
         if (stepStructure_) {
             stepStructure_->enableReference(referenceStep);
         } else {
-            referenceSteps_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction());
+            referenceSteps_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
+                                                              fields_.hasEmission());
             referenceSteps_->enableReference(referenceStep);
         }
         errorEstimate_ = std::make_unique<ErrorEstimateStage>(scene_, fields_, receivers_, stepStructure_ != nullptr);
@@ -117,6 +119,8 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         result.copied = {std::exchange(pendingUpload_, {}).host + bytes.host, bytes.gpu};
     }));
     if (ring) ring->fenceCurrent();  // the slot is free again once the copies issued so far ran
+    if (photons_ && extinctionChanged && fields.emission.floats)
+        photons_->setVolumeGlow(scene_, fields.emission.host, fields.grid);  // the glow lights the scene
     // A moved light matters only through the photons it sends.
     const bool photonsNeeded = photons_ && (fieldsChanged || lightsChanged_);
     result.stages.push_back(runStage("prepare", indexChanged, [&] { prepare_->run(fields_); }));

@@ -83,7 +83,8 @@ FieldUpload FieldRing::current() const {
             slot.indexVersion,
             slot.extinctionVersion,
             slot.scatteringVersion,
-            slot.surfaceVersion};
+            slot.surfaceVersion,
+            FieldSource{}};  // emission comes only from imported volumes, never through the ring
 }
 
 ConstFieldViews FieldRing::currentViews() const {

@@ -68,7 +68,8 @@ FieldUpload hostUpload(const FieldSet& fields) {
             fields.indexVersion,
             fields.extinctionVersion,
             fields.scatteringVersion,
-            fields.surfaceVersion};
+            fields.surfaceVersion,
+            hostSource(fields.emission)};
 }
 
 UploadBytes FieldTextures::upload(const FieldUpload& fields) {
@@ -87,14 +88,17 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
         extinction_ = {};
         scattering_ = {};
         anisotropy_ = {};
+        emission_ = {};
         indexVersion_ = extinctionVersion_ = scatteringVersion_ = surfaceVersion_ = ~0ull;
         bytes.host += sizeof block;
     }
     if (fields.indexVersion != indexVersion_) uploadField(index_, "the refractive index", GL_R32F, GL_RED, grid_, fields.deltaIndex, bytes);
     indexVersion_ = fields.indexVersion;
+    const bool extinctionChanged = fields.extinctionVersion != extinctionVersion_;
     if (!fields.extinction.floats) extinction_ = {};
-    else if (fields.extinctionVersion != extinctionVersion_)
-        uploadField(extinction_, "the extinction", GL_RGBA32F, GL_RGB, grid_, fields.extinction, bytes);
+    else if (extinctionChanged) uploadField(extinction_, "the extinction", GL_RGBA32F, GL_RGB, grid_, fields.extinction, bytes);
+    if (!fields.emission.floats) emission_ = {};
+    else if (extinctionChanged) uploadField(emission_, "the emission", GL_RGBA32F, GL_RGB, grid_, fields.emission, bytes);
     extinctionVersion_ = fields.extinctionVersion;
     const bool scatteringChanged = fields.scatteringVersion != scatteringVersion_;
     if (!fields.scattering.floats) scattering_ = {};
@@ -119,6 +123,7 @@ void FieldTextures::bindForTracing() const {
     if (hasExtinction()) extinction_.bindSampler(layout::kExtinctionTexture);
     if (hasScattering()) scattering_.bindSampler(layout::kScatteringTexture);
     if (hasAnisotropy()) anisotropy_.bindSampler(layout::kAnisotropyTexture);
+    if (hasEmission()) emission_.bindSampler(layout::kEmissionTexture);
     if (surfaceTriangles_.id()) {
         surfaceNodes_.bindStorage(layout::kSurfaceNodes);
         surfaceTriangles_.bindStorage(layout::kSurfaceTriangles);

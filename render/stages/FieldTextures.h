@@ -1,5 +1,5 @@
 // The field grid on the GPU: the GridBlock uniform and one 3D texture per
-// field the scene has (δn always; κ, σs only when present), and the storage
+// field the scene has (δn always; κ, σs, g, ε only when present), and the storage
 // buffers of the sharp mesh and water surfaces' trees and triangles (when
 // the scene has such surfaces). Re-uploads a field only when its version
 // changed. Values come either from host memory (the driver copies them: host
@@ -28,6 +28,7 @@ struct FieldUpload {
     FieldSource deltaIndex, extinction, scattering, anisotropy;
     FieldSource surfaceNodes, surfaceTriangles;
     std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0, surfaceVersion = 0;
+    FieldSource emission;  // host memory only (an imported volume's); versioned with κ
 };
 
 FieldUpload hostUpload(const FieldSet& fields);
@@ -48,6 +49,7 @@ public:
     bool hasExtinction() const { return static_cast<bool>(extinction_.id()); }
     bool hasScattering() const { return static_cast<bool>(scattering_.id()); }
     bool hasAnisotropy() const { return static_cast<bool>(anisotropy_.id()); }
+    bool hasEmission() const { return static_cast<bool>(emission_.id()); }
     std::uint64_t surfaceVersion() const { return surfaceVersion_; }
     const GridSpec& grid() const { return grid_; }
     std::uint64_t indexVersion() const { return indexVersion_; }
@@ -63,10 +65,11 @@ private:
     gl::Texture3D extinction_;
     gl::Texture3D scattering_;
     gl::Texture3D anisotropy_;
+    gl::Texture3D emission_;
     gl::Buffer surfaceNodes_;
     gl::Buffer surfaceTriangles_;
     std::uint64_t indexVersion_ = ~0ull;
-    std::uint64_t extinctionVersion_ = ~0ull;
+    std::uint64_t extinctionVersion_ = ~0ull;  // also covers emission
     std::uint64_t scatteringVersion_ = ~0ull;  // also covers anisotropy, which scattering owns
     std::uint64_t surfaceVersion_ = ~0ull;
 };

@@ -142,7 +142,7 @@ Box emissionRegion(const Scene& scene) {
 }
 
 std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& lights, const Box& region,
-                                              long long photons) {
+                                              long long photons, const Rgb& glowPower) {
     std::vector<EmitterGeometry> geometries;
     double totalPower = 0.0;
     for (const auto& light : lights) {
@@ -152,6 +152,13 @@ std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& ligh
         if (channelSum(geometry.powerIntoRegion) <= 0.0) continue;
         totalPower += channelSum(geometry.powerIntoRegion);
         geometries.push_back(geometry);
+    }
+    if (channelSum(glowPower) > 0.0) {
+        EmitterGeometry glow;  // sampled from its cells, not from this geometry
+        glow.kind = 2.0f;
+        glow.powerIntoRegion = glowPower;
+        totalPower += channelSum(glowPower);
+        geometries.push_back(glow);
     }
     std::vector<layout::GpuEmitter> emitters;
     long long first = 0;
@@ -168,7 +175,11 @@ std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& ligh
         emitter.axis = glm::vec4(glm::vec3(geometry.axis), static_cast<float>(geometry.shape));
         emitter.tangent = glm::vec4(glm::vec3(tangent), 0.0f);
         emitter.bitangent = glm::vec4(glm::vec3(bitangent), 0.0f);
-        emitter.photonPower = glm::vec4(glm::vec3(geometry.powerIntoRegion / static_cast<double>(count)), 0.0f);
+        // A glowing volume's photon carries the whole power in each channel,
+        // times its cell's colour (ε_c / Σε): the power summed over channels.
+        const Rgb photonPower = geometry.kind == 2.0f ? Rgb(channelSum(geometry.powerIntoRegion))
+                                                      : geometry.powerIntoRegion;
+        emitter.photonPower = glm::vec4(glm::vec3(photonPower / static_cast<double>(count)), 0.0f);
         emitter.spot = glm::vec4(glm::vec3(geometry.spotAxis), static_cast<float>(geometry.spotCosOuter));
         emitter.spotEdge = glm::vec4(static_cast<float>(geometry.spotCosInner), 0.0f, 0.0f, 0.0f);
         emitter.photons = glm::uvec4(static_cast<unsigned>(first), static_cast<unsigned>(count), strataU,

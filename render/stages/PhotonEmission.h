@@ -28,9 +28,11 @@ struct Box {
 // when there is nothing else.
 Box emissionRegion(const Scene& scene);
 
-// One emitter per light with non-zero power toward `region`; photons are
-// shared among lights in proportion to that power (each light at least one).
+// One emitter per light with non-zero power toward `region`, and one for a
+// glowing volume of power `glowPower` (render/stages/VolumeGlow.h) where it
+// is non-zero; photons are shared among them in proportion to that power
+// (each at least one).
 std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& lights, const Box& region,
-                                              long long photons);
+                                              long long photons, const Rgb& glowPower = Rgb(0.0));
 
 }  // namespace eikon::render

@@ -17,6 +17,9 @@ namespace eikon::render {
 namespace {
 
 constexpr std::size_t kBatchPhotons = std::size_t{1} << 20;
+
+// The scene's volume lights it (volume.emission_lights): photons leave its glowing cells.
+bool glowLights(const Scene& scene) { return scene.volume && scene.volume->emissionLights; }
 // Where photons may be suspended, a batch is no larger than the buffer that
 // holds its suspended photons (96 bytes each: 24 MiB), so none is lost.
 constexpr std::size_t kResumableBatchPhotons = std::size_t{1} << 18;
@@ -142,7 +145,8 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
                         {"EIKON_RECORD_PATHS", std::to_string(options.recordPathVertices)},
                         {"EIKON_RECORDED_PHOTONS", std::to_string(options.recordedPhotons)},
                         {"EIKON_RECORD_STRIDE", std::to_string(options.recordPathVertices > 0 ? std::max(1, options.recordStride) : 1)},
-                        {"EIKON_RECORD_ENDS", options.recordEnds ? "1" : "0"}});
+                        {"EIKON_RECORD_ENDS", options.recordEnds ? "1" : "0"},
+                        {"EIKON_VOLUME_GLOW", glowLights(scene) ? "1" : "0"}});
         program_ = gl::compileComputeProgram("photon_trace.comp", defines);
         resumable_ = loopBudget > 0;
     }
@@ -152,6 +156,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
             buffer = gl::Buffer(kResumableBatchPhotons * sizeof(layout::GpuSuspendedPhoton), resource);
         suspendedCount_ = gl::Buffer(sizeof(layout::GpuSuspendedCount));
     }
+    if (glowLights(scene)) glow_ = std::make_unique<VolumeGlow>();
     setEmitters(scene);
     if (storeFluence_ > 0) {
         const std::size_t bytes = 3 * fields.grid().cellCount() * sizeof(float);
@@ -172,7 +177,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
 
 void PhotonStage::setEmitters(const Scene& scene) {
     photons_ = scene.render.photons;
-    const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), photons_);
+    const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), photons_, glow_ ? glow_->power() : Rgb(0.0));
     powerUnit_ = glm::vec3(0.0f);
     if (wavefront_) {
         // Units of the brightest light's power over 2^50: a deposit of any
@@ -194,7 +199,14 @@ void PhotonStage::setEmitters(const Scene& scene) {
     emitterCount_ = static_cast<unsigned>(emitters.size());
     emissionFaces_.clear();
     for (const auto& emitter : emitters) emissionFaces_.push_back(emissionFaces(emitter));
-    emitters_ = gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
+    emitters_ = emitters.empty() ? gl::Buffer()
+                                 : gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
+}
+
+void PhotonStage::setVolumeGlow(const Scene& scene, const float* emission, const GridSpec& grid) {
+    if (!glow_) return;
+    glow_->update(emission, grid);
+    setEmitters(scene);
 }
 
 PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* stepTexture,
@@ -204,6 +216,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     receivers_.bind();
     receivers_.clearTallies();
     emitters_.bindStorage(layout::kEmitters);
+    if (glow_) glow_->bind();
     stats_.clearToZero();
     stats_.bindStorage(layout::kPhotonStats);
     paths_.clearToZero();
@@ -312,6 +325,7 @@ void PhotonStage::smoothFluence(const FieldTextures& fields, const gl::Buffer& r
 
 void PhotonStage::tracePhotons(const PhotonSettings& settings, std::size_t first, std::size_t stride,
                                std::size_t count, bool checkerboard) {
+    if (emitterCount_ == 0) return;  // no light this frame: lights of no power, a volume that does not glow yet
     program_.use();
     glUniform1ui(program_.uniform("checkerboard"), checkerboard ? 1u : 0u);
     if (!surfaces_.empty()) glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());

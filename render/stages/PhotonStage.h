@@ -12,6 +12,7 @@
 #include "render/stages/LightPassShare.h"
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SharpSurfaceBuffer.h"
+#include "render/stages/VolumeGlow.h"
 #include "render/stages/WavefrontStage.h"
 
 #include <glm/vec3.hpp>
@@ -102,8 +103,13 @@ public:
     PhotonStage(const Scene& scene, const FieldTextures& fields, ReceiverMaps& receivers,
                 PhotonProgramOptions options = {});
 
-    // Rebuilds the emitters from the scene's lights (a light moved).
+    // Rebuilds the emitters from the scene's lights (a light moved) and the
+    // glowing volume's power.
     void setEmitters(const Scene& scene);
+    // A scene whose volume lights it (volume.emission_lights): the glowing
+    // cells of this frame's emission (RGB per cell, host memory), then
+    // setEmitters. Ignored without emission lights.
+    void setVolumeGlow(const Scene& scene, const float* emission, const GridSpec& grid);
 
     // stepTexture: the octree step structure, when the scene's tracer uses it.
     PhotonStats run(const FieldTextures& fields, const gl::Texture3D* stepTexture, const PhotonSettings& settings);
@@ -151,6 +157,7 @@ private:
     gl::Program fluenceSmoothProgram_;
     gl::Buffer emitters_;
     unsigned emitterCount_ = 0;
+    std::unique_ptr<VolumeGlow> glow_;  // with emission lights
     std::vector<unsigned> emissionFaces_;  // per emitter, for the wavefront
     long long photons_ = 0;      // the count the emitters were built for
     glm::vec3 powerUnit_{0.0f};  // W per fixed-point tally unit, per channel

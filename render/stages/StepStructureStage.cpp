@@ -11,10 +11,12 @@
 
 namespace eikon::render {
 
-StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction)
+StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction,
+                                       bool hasEmission)
     : grid_(grid), tracer_(tracer),
       minmaxProgram_(gl::compileComputeProgram("octree_minmax.comp",
-                                               {{"EIKON_HAS_EXTINCTION", hasExtinction ? "1" : "0"}})),
+                                               {{"EIKON_HAS_EXTINCTION", hasExtinction ? "1" : "0"},
+                                                {"EIKON_HAS_EMISSION", hasEmission ? "1" : "0"}})),
       labelProgram_(gl::compileComputeProgram("octree_label.comp")) {
     // Levels until one node spans the grid; level 0 padded to a multiple of
     // the coarsest node so that every level halves exactly (a mip chain).
@@ -59,7 +61,7 @@ void StepStructureStage::label(const gl::Texture3D& target, double epsilon, doub
 void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields) {
     minmaxProgram_.use();
     smoothedIndex.bindSampler(layout::kIndexTexture);
-    if (fields.hasExtinction()) fields.bindForTracing();  // κ at its texture unit
+    if (fields.hasExtinction() || fields.hasEmission()) fields.bindForTracing();  // κ, ε at their texture units
     for (int level = 0; level < levels_; ++level) {
         glUniform1i(minmaxProgram_.uniform("level"), level);
         if (level > 0)

@@ -3,7 +3,8 @@
 // level of the largest octree node around it whose index varies by less than
 // ε (no step cap) or ε′ (step capped), and whose extinction varies by less
 // than kOpticalDepthTolerance across it, in shaders/octree_label.comp.
-// Rebuilt whenever the index or extinction changes.
+// Rebuilt whenever the index or extinction changes (emission shares κ's
+// version; an emitting voxel is never an empty node).
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
@@ -19,7 +20,7 @@ constexpr double kOpticalDepthTolerance = 0.01;
 
 class StepStructureStage {
 public:
-    StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction);
+    StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction, bool hasEmission);
 
     void run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields);
     // rgba32f per voxel: (octree level, step cap in metres or 1e30 for none,

@@ -67,6 +67,7 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
         "view_rays.comp", {{"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
                            {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"},
                            {"EIKON_HAS_ANISOTROPY", fields.hasAnisotropy() ? "1" : "0"},
+                           {"EIKON_HAS_EMISSION", fields.hasEmission() ? "1" : "0"},
                            {"EIKON_STEP_STRUCTURE", hasStepStructure ? "1" : "0"},
                            {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
                            {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},

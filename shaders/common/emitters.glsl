@@ -2,7 +2,7 @@
 // layout::GpuEmitter, built by render/stages/PhotonEmission) and the spot
 // profile. GLSL only.
 struct Emitter {
-    vec4 origin;        // w: kind (0 cone, 1 disk)
+    vec4 origin;        // w: kind (0 cone, 1 disk, 2 glowing volume: common/volume_glow.glsl)
     vec4 axis;          // w: cone: cos of half-angle; disk: radius
     vec4 tangent;
     vec4 bitangent;

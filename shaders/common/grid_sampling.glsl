@@ -1,12 +1,16 @@
 // The field grid as shaders see it: the GridBlock uniform (C++ mirror:
 // layout::GpuGrid) and the field textures, sampled trilinearly between cell
-// centres with clamp-to-edge. GLSL only. A program sets EIKON_HAS_EXTINCTION
-// and EIKON_HAS_SCATTERING to 1 only when the scene has such fields.
+// centres with clamp-to-edge. GLSL only. A program sets EIKON_HAS_EXTINCTION,
+// EIKON_HAS_SCATTERING and EIKON_HAS_EMISSION to 1 only when the scene has
+// such fields.
 #ifndef EIKON_HAS_EXTINCTION
 #define EIKON_HAS_EXTINCTION 0
 #endif
 #ifndef EIKON_HAS_SCATTERING
 #define EIKON_HAS_SCATTERING 0
+#endif
+#ifndef EIKON_HAS_EMISSION
+#define EIKON_HAS_EMISSION 0
 #endif
 
 layout(std140, binding = kGridBlock) uniform GridBlock {
@@ -22,6 +26,9 @@ layout(binding = kExtinctionTexture) uniform sampler3D extinction_texture;  // �
 #endif
 #if EIKON_HAS_SCATTERING
 layout(binding = kScatteringTexture) uniform sampler3D scattering_texture;  // σs rgb in 1/m
+#endif
+#if EIKON_HAS_EMISSION
+layout(binding = kEmissionTexture) uniform sampler3D emission_texture;  // ε rgb in W/(m³·sr)
 #endif
 
 const float EIKON_INFINITY = 1e30f;
@@ -71,6 +78,15 @@ vec3 sample_extinction(vec3 x) {
 vec3 sample_scattering(vec3 x) {
 #if EIKON_HAS_SCATTERING
     return textureLod(scattering_texture, grid_uvw(x), 0.0f).rgb;
+#else
+    return vec3(0.0f);
+#endif
+}
+
+// Emitted radiance per unit length ε at x ([Ihrke07] §3, L_e).
+vec3 sample_emission(vec3 x) {
+#if EIKON_HAS_EMISSION
+    return textureLod(emission_texture, grid_uvw(x), 0.0f).rgb;
 #else
     return vec3(0.0f);
 #endif

@@ -3,6 +3,7 @@
 #include "bridge/core/Error.h"
 #include "bridge/core/NumberFormat.h"
 #include "sim/optics/AirOptics.h"
+#include "sim/optics/Blackbody.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,8 +32,12 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     const double mediumDelta = medium.index - fields.referenceIndex;
     const bool dense = !samples.density.empty();
     const bool scatteringGrid = !samples.scattering.empty();
+    const bool soot = !samples.flame.empty() && volume.flameAbsorption > 0.0;
     const bool absorbs = positive(medium.extinction) || (dense && positive(volume.densityExtinction)) ||
-                         !samples.extinction.empty() || scatteringGrid;
+                         !samples.extinction.empty() || scatteringGrid || soot;
+    const bool blackbody = volume.emission == VolumeDesc::Emission::Blackbody;
+    const bool emits = blackbody || !samples.emission.empty();
+    static const BlackbodyTable planck;
     const bool scatters = positive(medium.scattering) || (dense && positive(volume.densityScattering)) || scatteringGrid;
     const bool anisotropic =
         scatters && (medium.anisotropy != 0.0 || volume.anisotropy != 0.0 || !samples.anisotropy.empty());
@@ -43,6 +48,7 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     std::vector<float> deltaIndex(cells);
     std::vector<float> extinction(absorbs ? 3 * cells : 0), scattering(scatters ? 3 * cells : 0);
     std::vector<float> anisotropy(anisotropic ? cells : 0);
+    std::vector<float> emission(emits ? 3 * cells : 0);
     for (std::size_t c = 0; c < cells; ++c) {
         const double t = volumeTemperature(volume, samples, c);
         if (!(t > 0.0))
@@ -61,6 +67,8 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
         }
         deltaIndex[c] = static_cast<float>(baseDelta + air.refractivityAt(t, volume.pressure) - ambient);
         const double rho = dense ? std::max(0.0, static_cast<double>(samples.density[c])) : 0.0;
+        const double flameKappa = soot ? volume.flameAbsorption * std::max(0.0, static_cast<double>(samples.flame[c])) : 0.0;
+        const glm::dvec3 radiance = blackbody ? volume.emissionScale * planck.rgb(t) : glm::dvec3(0.0);
         double sigmaSum = 0.0, volumeSigmaSum = 0.0;
         for (int ch = 0; ch < 3; ++ch) {
             const std::size_t k = 3 * c + static_cast<std::size_t>(ch);
@@ -68,9 +76,15 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
             const double sigmaGrid = scatteringGrid ? samples.scattering[k] : 0.0;
             if (kappaGrid < 0.0) refuse(c, "an extinction >= 0 in the extinction grid", kappaGrid);
             if (sigmaGrid < 0.0) refuse(c, "a scattering >= 0 in the scattering grid", sigmaGrid);
-            const double kappa = medium.extinction[ch] + volume.densityExtinction[ch] * rho + kappaGrid;
+            const double kappa = medium.extinction[ch] + volume.densityExtinction[ch] * rho + kappaGrid + flameKappa;
             const double volumeSigma = volume.densityScattering[ch] * rho + sigmaGrid;
             if (absorbs) extinction[k] = static_cast<float>(kappa);
+            if (emits) {
+                const double epsilonGrid = samples.emission.empty() ? 0.0 : samples.emission[k];
+                if (!(epsilonGrid >= 0.0)) refuse(c, "an emission >= 0 in the emission grid", epsilonGrid);
+                const double absorption = std::max(0.0, kappa - medium.scattering[ch] - volumeSigma);
+                emission[k] = static_cast<float>(absorption * radiance[ch] + epsilonGrid);
+            }
             if (scatters) {
                 if (medium.scattering[ch] + volumeSigma > kappa)
                     refuse(c, "scattering <= extinction (the scattering grid's σs within the extinction it adds to)",
@@ -88,6 +102,9 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     }
     publishField(fields.deltaIndex, std::move(deltaIndex), fields.indexVersion);
     publishField(fields.extinction, std::move(extinction), fields.extinctionVersion);
+    std::uint64_t emissionVersion = fields.extinctionVersion;
+    publishField(fields.emission, std::move(emission), emissionVersion);
+    fields.extinctionVersion = std::max(fields.extinctionVersion, emissionVersion);  // κ and ε share a version
     const std::uint64_t before = fields.scatteringVersion;
     publishField(fields.scattering, std::move(scattering), fields.scatteringVersion);
     std::uint64_t gVersion = before;

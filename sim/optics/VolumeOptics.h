@@ -12,6 +12,11 @@
 // (n) or a `delta_index` grid (n − n_ref) replaces the medium's index in
 // the first term; `extinction` and `scattering` (1/m, grey or RGB) add to κ
 // and σs; an `anisotropy` grid is the volume's g per cell.
+// Emission ([Ihrke07] §3, L_e of eqs. 1–2), W/(m³·sr) per channel:
+//   ε = emission_scale · (κ − σs) · B(T) + ε_grid   (emission "blackbody";
+//   Kirchhoff's law: a cell emits as it absorbs, at its temperature), with
+//   κ += flame_absorption · f, the soot of the flame; ε_grid an `emission`
+//   grid (grey or RGB) as it is. Objects composited over the volume leave ε.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -32,15 +37,16 @@ struct VolumeSamples {
     std::vector<float> extinction;  // RGB per cell (a grey grid's value in each channel)
     std::vector<float> scattering;  // RGB per cell
     std::vector<float> anisotropy;
+    std::vector<float> emission;    // RGB per cell, W/(m³·sr)
 };
 
 // Temperature in K of a cell from the samples (ambient where absent).
 double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples, std::size_t cell);
 
-// Fills fields.deltaIndex, .extinction, .scattering, .anisotropy (left empty
-// where zero everywhere) on fields.grid, bumping the versions of what
+// Fills fields.deltaIndex, .extinction, .scattering, .anisotropy, .emission
+// (left empty where the scene makes them zero everywhere) on fields.grid, bumping the versions of what
 // changed. InputError naming `source` and the cell where T <= 0, n <= 0,
-// κ < 0, σs > κ or |g| >= 1.
+// κ < 0, σs > κ, |g| >= 1 or ε < 0.
 void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
                        const std::string& source, FieldSet& fields);
 

@@ -32,7 +32,7 @@ namespace {
 std::string firstGrid(const VolumeDesc& desc) {
     for (const std::string* name : {&desc.densityGrid, &desc.temperatureGrid, &desc.flameGrid, &desc.velocityGrid,
                                     &desc.indexGrid, &desc.deltaIndexGrid, &desc.extinctionGrid, &desc.scatteringGrid,
-                                    &desc.anisotropyGrid})
+                                    &desc.anisotropyGrid, &desc.emissionGrid})
         if (!name->empty()) return *name;
     return {};
 }
@@ -69,7 +69,7 @@ void VolumeSequence::load(int frame) {
     if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, placement);
     if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, placement);
     if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, placement);
-    // κ and σs grids: RGB as a vec3s grid, or grey as a float grid.
+    // κ, σs and ε grids: RGB as a vec3s grid, or grey as a float grid.
     const auto rgb = [&](const std::string& name) {
         if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, placement);
         const std::vector<float> grey = file.sample(name, 1, grid_, placement);
@@ -79,6 +79,7 @@ void VolumeSequence::load(int frame) {
     };
     if (!desc_.extinctionGrid.empty()) samples.extinction = rgb(desc_.extinctionGrid);
     if (!desc_.scatteringGrid.empty()) samples.scattering = rgb(desc_.scatteringGrid);
+    if (!desc_.emissionGrid.empty()) samples.emission = rgb(desc_.emissionGrid);
     std::vector<float> velocity;
     if (!desc_.velocityGrid.empty()) {
         velocity = file.sample(desc_.velocityGrid, 3, grid_, placement);

@@ -67,6 +67,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"Patches", {layout::kWavefrontPatches, 0, sizeof(layout::GpuWavefrontPatch)}},
         {"Children", {layout::kWavefrontChildren, 0, sizeof(layout::GpuWavefrontPatch)}},
         {"Counters", {layout::kWavefrontCounters, sizeof(layout::GpuWavefrontCounters), 0}},
+        {"GlowCells", {layout::kGlowCells, 0, sizeof(layout::GpuGlowCell)}},
     };
     return rows;
 }
@@ -78,7 +79,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"pyramid", layout::kPyramidTexture},               {"gradient_texture", layout::kGradientTexture},
         {"extinction_texture", layout::kExtinctionTexture}, {"scattering_texture", layout::kScatteringTexture},
         {"step_structure", layout::kStepTexture},           {"environment_texture", layout::kEnvironmentTexture},
-        {"anisotropy_texture", layout::kAnisotropyTexture},
+        {"anisotropy_texture", layout::kAnisotropyTexture}, {"emission_texture", layout::kEmissionTexture},
     };
     return rows;
 }
@@ -112,7 +113,7 @@ std::vector<Variant> productionVariants() {
         {"smooth_index.comp", {}},
         {"prepare_gradient.comp", {}},
         {"octree_minmax.comp", {{"EIKON_HAS_EXTINCTION", "0"}}},
-        {"octree_minmax.comp", {{"EIKON_HAS_EXTINCTION", "1"}}},
+        {"octree_minmax.comp", {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_EMISSION", "1"}}},
         {"octree_label.comp", {}},
         {"receiver_filter.comp", {}},
         {"fluence_smooth.comp", {}},
@@ -126,6 +127,7 @@ std::vector<Variant> productionVariants() {
           {"EIKON_STORE_FLUENCE", "1"},
           {"EIKON_BOUNCE", "1"},
           {"EIKON_SHARP_SURFACES", "1"},
+          {"EIKON_VOLUME_GLOW", "1"},
           {"EIKON_RECORD_PATHS", "8"}}},
         {"photon_trace.comp", {{"EIKON_BARE_MARCH", "1"}}},
         {"wavefront_trace.comp", {}},
@@ -136,6 +138,7 @@ std::vector<Variant> productionVariants() {
          {{"EIKON_HAS_EXTINCTION", "1"},
           {"EIKON_HAS_SCATTERING", "1"},
           {"EIKON_HAS_ANISOTROPY", "1"},
+          {"EIKON_HAS_EMISSION", "1"},
           {"EIKON_STEP_STRUCTURE", "1"},
           {"EIKON_ENVIRONMENT", std::to_string(layout::kHdrEnvironment)},
           {"EIKON_SHARP_SURFACES", "1"},

@@ -311,7 +311,7 @@ TEST(SceneParserErrors, UnknownLightType) {
 TEST(SceneParserErrors, MissingLights) {
     json scene = validScene();
     scene.erase("lights");
-    expectErrorAt(scene, "lights", "at least one light, found nothing");
+    expectErrorAt(scene, "lights", "at least one light (or a volume with emission_lights), found nothing");
     scene["lights"] = json::array();
     expectErrorAt(scene, "lights", "found an array of 0 elements");
 }

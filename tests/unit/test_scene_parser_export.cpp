@@ -215,5 +215,53 @@ TEST_F(SceneParserVolume, BadValuesAreReportedAtTheirPath) {
     }
 }
 
+TEST_F(SceneParserVolume, ReadsEmissionAndRefusesWhatCouldNotGlow) {
+    const Scene scene = parse(json::parse(R"({"path": "single.vdb", "grids": {"flame": "flame", "emission": "glow"},
+        "flame_absorption": 4, "emission": "blackbody", "emission_scale": 0.5, "emission_lights": true})"));
+    const VolumeDesc& v = *scene.volume;
+    EXPECT_EQ(v.emission, VolumeDesc::Emission::Blackbody);
+    EXPECT_EQ(v.emissionScale, 0.5);
+    EXPECT_EQ(v.flameAbsorption, 4.0);
+    EXPECT_EQ(v.emissionGrid, "glow");
+    EXPECT_TRUE(v.emissionLights);
+    EXPECT_EQ(parse(json::parse(R"({"path": "single.vdb"})")).volume->emission, VolumeDesc::Emission::None);
+
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "flame_absorption": 2})"))
+                  .find("volume.flame_absorption: expected no flame_absorption without a flame grid"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "emission_scale": 2})"))
+                  .find("volume.emission_scale: expected no emission_scale without emission \"blackbody\""),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "emission": "glow"})")).find("volume.emission: expected one of"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "grids": {"temperature": "", "density": "", "extinction": "k"},
+                                    "emission": "blackbody"})"))
+                  .find("volume.emission: expected a temperature or flame grid"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "emission": "blackbody"})"))
+                  .find("volume.emission: expected something that absorbs"),
+              std::string::npos);
+    EXPECT_NE(error(json::parse(R"({"path": "single.vdb", "emission_lights": true})"))
+                  .find("volume.emission_lights: expected no emission_lights without emission"),
+              std::string::npos);
+    json wavefront = validScene();
+    wavefront["tracer"] = {{"estimator", "wavefront"}};
+    wavefront["volume"] = json::parse(R"({"path": "single.vdb", "grids": {"emission": "glow"}, "emission_lights": true})");
+    try {
+        parseScene(wavefront, (folder_ / "scene.json").string());
+        ADD_FAILURE() << "emission lights with the wavefront accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("volume.emission_lights: expected false with tracer.estimator \"wavefront\""),
+                  std::string::npos)
+            << e.what();
+    }
+    json dark = validScene();
+    dark["lights"] = json::array();
+    dark["volume"] = json::parse(R"({"path": "single.vdb", "grids": {"emission": "glow"}, "emission_lights": true})");
+    EXPECT_TRUE(parseScene(dark, (folder_ / "scene.json").string()).lights.empty()) << "the fire is the only light";
+    dark["volume"]["emission_lights"] = false;
+    EXPECT_THROW(parseScene(dark, (folder_ / "scene.json").string()), InputError);
+}
+
 }  // namespace
 }  // namespace eikon

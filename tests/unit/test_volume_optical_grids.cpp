@@ -2,13 +2,15 @@
 // index grid (n) or a delta_index grid (n − n_ref) sets the index where the
 // volume is, extinction and scattering grids (grey float or RGB vec3s) add
 // to κ and σs, an anisotropy grid is the volume's g; values that cannot be
-// are refused naming the file and cell; and eikon's own export reads back
+// are refused naming the file and cell; a flame glows by Kirchhoff's law
+// plus what an emission grid adds; and eikon's own export reads back
 // as the fields it was written from.
 #include "bridge/core/Error.h"
 #include "io/export/ExportArrays.h"
 #include "io/scene/SceneParser.h"
 #include "io/vdb/VdbFrameWriter.h"
 #include "sim/SceneFields.h"
+#include "sim/optics/Blackbody.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
@@ -36,7 +38,10 @@ protected:
             {"kappa", 3, [](double x, double, double, int c) { return float((c + 1) * (x + 0.5)); }},
             {"sigma", 1, [](double, double, double, int) { return 0.25f; }},
             {"too_much", 1, [](double, double, double, int) { return 10.0f; }},
-            {"g", 1, [](double, double, double, int) { return 0.3f; }}};
+            {"g", 1, [](double, double, double, int) { return 0.3f; }},
+            {"flame", 1, [](double x, double, double, int) { return float(x + 0.5); }},
+            {"glow", 1, [](double, double, double, int) { return 2.0f; }},
+            {"negative_glow", 1, [](double, double, double, int) { return -1.0f; }}};
         test::writeVdbFile(folder_ / "lens.vdb", grids, 0.025, -0.3, 0.3);
     }
     void TearDown() override { fs::remove_all(folder_); }
@@ -105,6 +110,33 @@ TEST_F(VolumeOpticalGrids, ImpossibleValuesAreRefusedNamingTheFileAndCell) {
               std::string::npos);
     EXPECT_NE(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "index": "kappa"}})", inside)
                   .find("expected a float grid"),
+              std::string::npos);
+}
+
+// Kirchhoff: a flame f = x + 0.5 at T = 293.15 K + 2000 K·f with soot κ = 3·f
+// /m emits ε = scale·κ·B(T) per channel, plus an emission grid's 2 W/(m³·sr),
+// to 2e-4 of the brightest channel (the Planck table's error and float32).
+TEST_F(VolumeOpticalGrids, AFlameGlowsByKirchhoffsLawPlusTheEmissionGrid) {
+    SceneFields fields(scene(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "flame": "flame",
+        "emission": "glow"}, "flame_temperature": 2000, "flame_absorption": 3, "emission": "blackbody",
+        "emission_scale": 0.5})"));
+    const FieldSet& set = fields.fields();
+    ASSERT_TRUE(set.hasEmission());
+    ASSERT_TRUE(set.hasExtinction());
+    for (int i = 0; i < 8; ++i) {
+        const std::size_t c = set.grid.linearIndex(i, 2, 1);
+        const double f = set.grid.cellCentre(i, 2, 1).x + 0.5;
+        const glm::dvec3 planck = blackbodyRgb(293.15 + 2000.0 * f);
+        const double brightest = std::max({planck.r, planck.g, planck.b});
+        for (int ch = 0; ch < 3; ++ch) {
+            EXPECT_NEAR(set.extinction[3 * c + ch], 3.0 * f, 1e-5) << "the soot absorbs, grey";
+            EXPECT_NEAR(set.emission[3 * c + ch], 0.5 * 3.0 * f * planck[ch] + 2.0, 2e-4 * 1.5 * f * brightest + 1e-6)
+                << "cell " << i << " channel " << ch;
+        }
+    }
+    EXPECT_NE(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "emission": "negative_glow"}})",
+                      "[-0.2, -0.1, -0.1], \"max\": [0.2, 0.1, 0.1]")
+                  .find("lens.vdb: cell 0: expected an emission >= 0 in the emission grid"),
               std::string::npos);
 }
 
