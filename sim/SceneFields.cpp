@@ -190,7 +190,7 @@ void SceneFields::refreshFromSimulation() {
 std::vector<NamedArray> SceneFields::exportArrays() const {
     if (volume_) return volume_->exportArrays();
     if (!fluid_) return {};
-    return solverArrays(fluid_->state(), fields_.grid, scene_.sim->ambientTemperature);
+    return solverArrays(fluid_->state(), fields_.grid, *scene_.sim);
 }
 
 CoverageGrids SceneFields::coverageGrids() const {

@@ -29,6 +29,10 @@ struct NamedArray {
     int components = 1;
     std::vector<float> values;
     ArrayMeaning meaning{};
+    // The run can never change it (a solver field no source drives,
+    // sim/fluid/SolverExport.h): VTK export writes it once, not every frame
+    // (io/vtk/VtkSeriesWriter.h).
+    bool constant = false;
 };
 
 // One exported frame: its grid and its arrays.

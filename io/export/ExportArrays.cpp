@@ -67,7 +67,7 @@ ExportFrame selectCells(const ExportFrame& frame, const ExportSelection& selecti
                         "export array \"" + array.name + "\" size");
         if (!selection.wants(array.name)) continue;
         NamedArray selected{array.name, array.components, std::vector<float>(c * result.grid.cellCount()),
-                            array.meaning};
+                            array.meaning, array.constant};
         std::vector<double> sum(c);
         for (int k = 0; k < out.z; ++k)
             for (int j = 0; j < out.y; ++j)

@@ -44,7 +44,8 @@ std::vector<fs::path> listedFiles(const fs::path& root) {
 // series), relative to the folder.
 const std::string kOutputNames =
     R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|converge\.(csv|md|png|svg)|)"
-    R"(vtk/((fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series)|open_in_paraview\.py))";
+    R"(vtk/((fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series)|fields_static\.vti|)"
+    R"(open_in_paraview\.py))";
 
 // A temporary eikon was writing when it was killed (AtomicFile.h names
 // them NAME.tmpPID): an output's, or the list's.

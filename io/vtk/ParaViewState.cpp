@@ -53,11 +53,19 @@ def colour(source, display, association, array, preset, corner):
 
 )";
 
+constexpr const char* kStaticFields = R"(
+# Arrays the run never changes are written once, in fields_static.vti: they
+# join every frame's own (the series first: it carries the time).
+fields = AppendAttributes(registrationName='fields and unchanging arrays',
+                          Input=[collection('fields'),
+                                 XMLImageDataReader(registrationName='fields_static',
+                                                    FileName=[os.path.join(here, 'fields_static.vti')])])
+)";
+
 constexpr const char* kFields = R"(
 # The fields: the grid's outline and a slice through its centre, facing the
 # camera, coloured by the first of these that the export holds and that
 # varies by more than 1e-9 in SI units over frame 0 (sharp objects leave δn 0).
-fields = collection('fields')
 fields.UpdatePipeline()
 outline = Show(fields, view)
 outline.SetRepresentationType('Outline')
@@ -137,7 +145,10 @@ std::string paraviewStateScript(const ParaViewState& state) {
     script += "camera_target = " + list(state.camera.target) + "\n";
     script += "camera_up = " + list(state.camera.up) + "\n";
     script += "camera_fov_deg = " + number(state.camera.fovDeg) + "\n";
-    if (opens(state, "fields")) script += kFields;
+    if (opens(state, "fields")) {
+        script += state.staticFields ? kStaticFields : "\nfields = collection('fields')\n";
+        script += kFields;
+    }
     if (opens(state, "receivers")) script += kReceivers;
     if (opens(state, "meshes")) script += kMeshes;
     if (opens(state, "photon_paths")) script += kPaths;
@@ -148,6 +159,7 @@ std::string paraviewStateScript(const ParaViewState& state) {
 void writeParaViewState(const std::filesystem::path& vtkFolder, ParaViewState state) {
     std::erase_if(state.collections,
                   [&](const std::string& name) { return !std::filesystem::exists(vtkFolder / (name + ".pvd")); });
+    state.staticFields = std::filesystem::exists(vtkFolder / "fields_static.vti");
     writeFileAtomically(vtkFolder / "open_in_paraview.py", paraviewStateScript(state));
 }
 

@@ -22,13 +22,17 @@ struct ParaViewState {
     // Collections in DIR/vtk the script opens, as NAME for NAME.pvd: any of
     // "fields", "receivers", "meshes", "photon_paths".
     std::vector<std::string> collections;
+    // fields_static.vti holds the arrays the run never changes
+    // (io/vtk/VtkSeriesWriter.h): the script merges them into the fields.
+    bool staticFields = false;
 };
 
 // The script's text.
 std::string paraviewStateScript(const ParaViewState& state);
 
 // Writes vtkFolder/open_in_paraview.py atomically, listing only the
-// collections whose .pvd exists there.
+// collections whose .pvd exists there, and the static fields where their
+// file does.
 void writeParaViewState(const std::filesystem::path& vtkFolder, ParaViewState state);
 
 }  // namespace eikon::io

@@ -26,7 +26,8 @@ const std::string& checkedBaseName(const std::string& name) {
 }  // namespace
 
 VtkSeriesWriter::VtkSeriesWriter(const fs::path& outputFolder, std::string baseName, Compression compression)
-    : directory_(outputFolder / "vtk"), compression_(compression), index_(directory_, checkedBaseName(baseName), "vti") {
+    : directory_(outputFolder / "vtk"), baseName_(checkedBaseName(baseName)), compression_(compression),
+      index_(directory_, baseName_, "vti") {
     std::error_code error;
     fs::create_directories(directory_, error);
     if (error || !fs::is_directory(directory_))
@@ -42,9 +43,31 @@ void VtkSeriesWriter::writeFrame(int frame, double time, const FieldSet& fields,
 void VtkSeriesWriter::writeFrame(int frame, double time, const ExportFrame& arrays) {
     EIKON_CHECK_MSG(frame >= 0, "frame " + std::to_string(frame));
     EIKON_CHECK_MSG(std::isfinite(time), "time of frame " + std::to_string(frame));
-    const GridSpec& grid = arrays.grid;
-    const std::size_t cells = grid.cellCount();
+    std::set<std::string> names;
+    std::vector<const NamedArray*> varying, constant;
+    for (const NamedArray& array : arrays.arrays) {
+        EIKON_CHECK_MSG(!array.name.empty() && names.insert(array.name).second,
+                        "VTK array name \"" + array.name + "\" empty or repeated");
+        EIKON_CHECK_MSG(array.components >= 1 &&
+                            array.values.size() == static_cast<std::size_t>(array.components) * arrays.grid.cellCount(),
+                        "VTK array \"" + array.name + "\" size");
+        (array.constant ? constant : varying).push_back(&array);
+    }
+    // A frame of constant arrays only (nothing moves) stays whole: ParaView's
+    // Append Attributes takes its time from the series, which then needs an
+    // array of its own.
+    if (varying.empty()) {
+        varying = constant;
+    } else if (!constant.empty() && !staticWritten_) {
+        writeImage(staticPath(), arrays.grid, constant, std::nullopt);
+        staticWritten_ = true;
+    }
+    writeImage(framePath(frame), arrays.grid, varying, time);
+    index_.add(frame, time);
+}
 
+void VtkSeriesWriter::writeImage(const fs::path& path, const GridSpec& grid, const std::vector<const NamedArray*>& arrays,
+                                 std::optional<double> time) const {
     // Cell data, not point data: eikon's samples are cell-centred (GridSpec:
     // cell (i,j,k) is the box boundsMin + [i, i+1]·voxelSize, its value
     // belongs to the whole voxel). ImageData points sit on the voxel corners,
@@ -58,22 +81,17 @@ void VtkSeriesWriter::writeFrame(int frame, double time, const ExportFrame& arra
     image->SetOrigin(grid.boundsMin.x, grid.boundsMin.y, grid.boundsMin.z);
     const glm::dvec3 voxel = grid.voxelSize();
     image->SetSpacing(voxel.x, voxel.y, voxel.z);
-    EIKON_CHECK(static_cast<std::size_t>(image->GetNumberOfCells()) == cells);
-
-    std::set<std::string> names;
-    for (const NamedArray& array : arrays.arrays) {
-        EIKON_CHECK_MSG(!array.name.empty() && names.insert(array.name).second,
-                        "VTK array name \"" + array.name + "\" empty or repeated");
-        EIKON_CHECK_MSG(array.components >= 1 && array.values.size() == static_cast<std::size_t>(array.components) * cells,
-                        "VTK array \"" + array.name + "\" size");
-        image->GetCellData()->AddArray(makeFloatArray(array.name, array.components, array.values));
+    EIKON_CHECK(static_cast<std::size_t>(image->GetNumberOfCells()) == grid.cellCount());
+    std::vector<NamedArray> described;  // for the units field data
+    for (const NamedArray* array : arrays) {
+        image->GetCellData()->AddArray(makeFloatArray(array->name, array->components, array->values));
+        described.push_back({array->name, array->components, {}, array->meaning});
     }
-
-    addTimeValue(*image, time);
-    addUnits(*image, arrays.arrays);
+    if (time) addTimeValue(*image, *time);
+    addUnits(*image, described);
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetInputData(image);
-    writeVtkXmlAtomically(*writer, compression_, framePath(frame));
-    index_.add(frame, time);
+    writeVtkXmlAtomically(*writer, compression_, path);
 }
+
 }  // namespace eikon::io

@@ -4,10 +4,22 @@
 
 namespace eikon::sim {
 
-std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid,
-                                         double ambientTemperature) {
+ConstantSolverFields solverArraysNeverChange(const SimDesc& desc) {
+    ConstantSolverFields constant{desc.sources.empty(), true, true, true};
+    for (const SimDesc::Source& source : desc.sources) {
+        if (source.kind == SimDesc::Source::Kind::HotPlate) {
+            if (source.temperature != desc.ambientTemperature) constant.temperature = false;
+        } else {
+            if (source.concentration > 0.0) constant.concentration = false;
+            if (source.dye > 0.0) constant.dye = false;
+        }
+    }
+    return constant;
+}
+
+std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid, const SimDesc& desc) {
     const std::size_t cells = renderGrid.cellCount();
-    const auto ambient = static_cast<float>(ambientTemperature);
+    const auto ambient = static_cast<float>(desc.ambientTemperature);
     NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f), {"m/s", ArrayRole::Velocity}};
     NamedArray temperature{"temperature", 1, std::vector<float>(cells, ambient), {"K", ArrayRole::Scalar, ambient}};
     NamedArray concentration{"concentration", 1, std::vector<float>(cells, 0.0f), {"1", ArrayRole::Density}};
@@ -28,6 +40,11 @@ std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& re
                 dye.values[cell] = static_cast<float>(sampleTrilinear(state.dye, flow.lattice(state.dye, x)));
             }
     });
+    const ConstantSolverFields constant = solverArraysNeverChange(desc);
+    velocity.constant = constant.velocity;
+    temperature.constant = constant.temperature;
+    concentration.constant = constant.concentration;
+    dye.constant = constant.dye;
     return {std::move(velocity), std::move(temperature), std::move(concentration), std::move(dye)};
 }
 

@@ -90,6 +90,37 @@ TEST_F(ParaViewState, CollectionsWithoutAnIndexAreLeftOut) {
     state.collections = {"fields", "receivers", "meshes", "photon_paths"};
     eikon::io::writeParaViewState(dir_, state);
     EXPECT_EQ(openedCollections(readText(dir_ / "open_in_paraview.py")), (std::set<std::string>{"fields"}));
+    EXPECT_EQ(readText(dir_ / "open_in_paraview.py").find("fields_static"), std::string::npos) << "no such file here";
+}
+
+// A gas heated by a plate: concentration and dye never change, so they are
+// written once into fields_static.vti and the state merges that file into
+// the fields; every frame holds the rest.
+TEST_F(ParaViewState, ArraysARunNeverChangesAreWrittenOnceAndMerged) {
+    std::ofstream(dir_ / "plume.json") << R"({
+      "grid": {"resolution": [12, 12, 12], "bounds": {"min": [0, 0, 0], "max": [0.3, 0.3, 0.3]}},
+      "lights": [{"type": "point", "position": [0.15, 1, 0.15], "power": 1}],
+      "render": {"photons": 1024, "width": 16, "height": 12},
+      "sim": {"resolution": [12, 12, 12],
+              "sources": [{"type": "hot_plate", "min": [0.1, 0, 0.1], "max": [0.2, 0.03, 0.2], "temperature": 400}]}
+    })";
+    const auto outcome = runEikon("run " + (dir_ / "plume.json").string() + " --out " + (dir_ / "out").string() +
+                                  " --frames 3 --vtk --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const fs::path vtk = dir_ / "out" / "vtk";
+    ASSERT_TRUE(fs::exists(vtk / "fields_static.vti"));
+    const std::string once = readText(vtk / "fields_static.vti");
+    EXPECT_NE(once.find("Name=\"dye\""), std::string::npos);
+    EXPECT_NE(once.find("Name=\"concentration\""), std::string::npos);
+    EXPECT_EQ(once.find("Name=\"temperature\""), std::string::npos);
+    for (const char* frame : {"fields_00000.vti", "fields_00002.vti"}) {
+        const std::string text = readText(vtk / frame);
+        EXPECT_EQ(text.find("Name=\"dye\""), std::string::npos) << frame;
+        EXPECT_NE(text.find("Name=\"temperature\""), std::string::npos) << frame;
+    }
+    const std::string script = readText(vtk / "open_in_paraview.py");
+    EXPECT_NE(script.find("AppendAttributes"), std::string::npos);
+    EXPECT_NE(script.find("'fields_static.vti'"), std::string::npos);
 }
 
 // ParaView itself renders the state: the picture is not the background alone.

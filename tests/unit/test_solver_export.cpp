@@ -1,4 +1,5 @@
 // The solver's fields resampled onto the render grid for export.
+#include "sim/SceneFields.h"
 #include "sim/fluid/SolverExport.h"
 
 #include <gtest/gtest.h>
@@ -29,7 +30,9 @@ TEST(SolverExport, LinearFieldsResampleExactlyAndOutsideIsAmbient) {
 
     // 5 cells over [0.1, 1.35]: centres 0.225 … 1.225, the last outside the solver box.
     const GridSpec render{{5, 5, 5}, {0.1, 0.1, 0.1}, {1.35, 1.35, 1.35}};
-    const auto arrays = solverArrays(state, render, 290.0);
+    SimDesc desc;
+    desc.ambientTemperature = 290.0;
+    const auto arrays = solverArrays(state, render, desc);
     ASSERT_EQ(arrays.size(), 4u);
     EXPECT_EQ(arrays[0].name, "velocity");
     EXPECT_EQ(arrays[1].name, "temperature");
@@ -57,6 +60,47 @@ TEST(SolverExport, LinearFieldsResampleExactlyAndOutsideIsAmbient) {
                 EXPECT_NEAR(arrays[0].values[3 * c + 0], x.y, 1e-6);
                 EXPECT_NEAR(arrays[0].values[3 * c + 1], 0.0, 1e-6);
             }
+}
+
+// What the export writes once must really never change: a hot plate heats
+// and moves a gas, while no source carries liquid B or dye, so over four
+// frames concentration and dye keep every bit and are the arrays marked
+// constant; temperature and velocity change and are not. A jet that carries
+// dye makes dye change, and it is no longer marked.
+TEST(SolverExport, ArraysMarkedConstantNeverChange) {
+    Scene scene;
+    scene.grid.resolution = glm::ivec3(12);
+    scene.grid.boundsMin = glm::dvec3(0.0);
+    scene.grid.boundsMax = glm::dvec3(0.3);
+    SimDesc sim;
+    sim.resolution = glm::ivec3(12);
+    SimDesc::Source plate;
+    plate.region = {glm::dvec3(0.1, 0.0, 0.1), glm::dvec3(0.2, 0.03, 0.2)};
+    plate.temperature = 400.0;
+    sim.sources.push_back(plate);
+    scene.sim = sim;
+    SceneFields fields(scene);
+    const std::vector<NamedArray> first = fields.exportArrays();
+    std::vector<std::string> marked;
+    for (const NamedArray& array : first)
+        if (array.constant) marked.push_back(array.name);
+    EXPECT_EQ(marked, (std::vector<std::string>{"concentration", "dye"}));
+    for (int frame = 0; frame < 3; ++frame) fields.advanceFrame();
+    const std::vector<NamedArray> later = fields.exportArrays();
+    ASSERT_EQ(later.size(), first.size());
+    for (std::size_t a = 0; a < first.size(); ++a) {
+        if (first[a].constant) EXPECT_EQ(later[a].values, first[a].values) << first[a].name;
+        else EXPECT_NE(later[a].values, first[a].values) << first[a].name << " changes, and is not marked";
+    }
+
+    SimDesc::Source jet;
+    jet.kind = SimDesc::Source::Kind::Jet;
+    jet.dye = 0.5;
+    sim.sources.push_back(jet);
+    const ConstantSolverFields withDye = solverArraysNeverChange(sim);
+    EXPECT_FALSE(withDye.dye);
+    EXPECT_FALSE(withDye.concentration) << "a jet carries liquid B (concentration 1 by default)";
+    EXPECT_FALSE(withDye.velocity);
 }
 
 }  // namespace

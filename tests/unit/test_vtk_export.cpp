@@ -227,6 +227,47 @@ TEST_F(VtkExportTest, OptionalFieldsAreLeftOut) {
     EXPECT_NE(cellData->GetArray("delta_index"), nullptr);
 }
 
+// Arrays marked constant go once into NAME_static.vti (no TimeValue), not
+// into any frame: two frames each hold only the varying arrays, the static
+// file the constant one, written at the first frame, and the indexes list
+// only the frames.
+TEST_F(VtkExportTest, ConstantArraysAreWrittenOnceBesideTheSeries) {
+    VtkSeriesWriter writer(root_, "fields");
+    const FieldSet fields = makeFields(1.0f);
+    NamedArray dye{"dye", 1, std::vector<float>(fields.grid.cellCount(), 0.0f), {"1", ArrayRole::Density}};
+    dye.constant = true;
+    writer.writeFrame(0, 0.0, fields, {dye});
+    ASSERT_TRUE(fs::exists(writer.staticPath()));
+    const auto staticTime = fs::last_write_time(writer.staticPath());
+    writer.writeFrame(1, 0.5, makeFields(2.0f), {dye});
+    EXPECT_EQ(fs::last_write_time(writer.staticPath()), staticTime) << "written once";
+    for (int frame : {0, 1}) {
+        vtkNew<vtkXMLImageDataReader> reader;
+        reader->SetFileName(writer.framePath(frame).c_str());
+        reader->Update();
+        EXPECT_EQ(reader->GetOutput()->GetCellData()->GetArray("dye"), nullptr) << "frame " << frame;
+        EXPECT_NE(reader->GetOutput()->GetCellData()->GetArray("extinction"), nullptr) << "frame " << frame;
+    }
+    vtkNew<vtkXMLImageDataReader> reader;
+    reader->SetFileName(writer.staticPath().c_str());
+    reader->Update();
+    vtkImageData* image = reader->GetOutput();
+    EXPECT_EQ(image->GetCellData()->GetNumberOfArrays(), 1);
+    expectArray(*image, "dye", 1, dye.values);
+    EXPECT_EQ(image->GetFieldData()->GetArray("TimeValue"), nullptr) << "the same at every time";
+    EXPECT_EQ(image->GetNumberOfCells(), 24);
+    EXPECT_EQ(readAll(writer.collectionPath()).find("static"), std::string::npos);
+    EXPECT_EQ(readAll(writer.seriesPath()).find("static"), std::string::npos);
+
+    // When nothing varies the frame stays whole: the series carries the time.
+    VtkSeriesWriter still(root_, "still");
+    std::vector<NamedArray> onlyConstant = ExportFrame{fields.grid, fieldArrays(viewsOf(fields))}.arrays;
+    for (NamedArray& array : onlyConstant) array.constant = true;
+    still.writeFrame(0, 0.0, {fields.grid, onlyConstant});
+    EXPECT_FALSE(fs::exists(still.staticPath()));
+    expectRoundTrip(still.framePath(0), fields, 0.0, nullptr);
+}
+
 TEST_F(VtkExportTest, RejectsUnsafeBaseNameAndMismatchedArrays) {
     EXPECT_THROW(VtkSeriesWriter(root_, "a/b"), InputError);
     EXPECT_THROW(VtkSeriesWriter(root_, "x\"y"), InputError);
