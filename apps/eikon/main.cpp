@@ -7,6 +7,7 @@
 #include "apps/eikon/BenchCommand.h"
 #include "apps/eikon/ConvergeCommand.h"
 #include "apps/eikon/InfoCommand.h"
+#include "apps/eikon/ParaViewCommand.h"
 #include "apps/eikon/Ranks.h"
 #include "apps/eikon/RunCommand.h"
 
@@ -14,8 +15,8 @@
 
 namespace {
 
-// bench, accuracy and converge measure one process; under mpirun every rank would
-// measure the same thing at once.
+// bench, accuracy and converge measure one process, and paraview writes one
+// file; under mpirun every rank would do the same thing at once.
 void requireOneProcess(eikon::app::Ranks& ranks, const char* command) {
     ranks.checkInputsTogether([&] {
         if (ranks.distributed())
@@ -39,6 +40,8 @@ int main(int argc, char** argv) {
     eikon::app::addAccuracyCommand(app, accuracyOptions);
     eikon::app::ConvergeOptions convergeOptions;
     eikon::app::addConvergeCommand(app, convergeOptions);
+    eikon::app::ParaViewOptions paraviewOptions;
+    eikon::app::addParaViewCommand(app, paraviewOptions);
     return eikon::app::parseAndRun(app, argc, argv, "eikon", [&] {
         return ranks.runGuarded([&] {
             if (app.got_subcommand("run")) return eikon::app::runCommand(runOptions);
@@ -53,6 +56,10 @@ int main(int argc, char** argv) {
             if (app.got_subcommand("converge")) {
                 requireOneProcess(ranks, "converge");
                 return eikon::app::convergeCommand(convergeOptions);
+            }
+            if (app.got_subcommand("paraview")) {
+                requireOneProcess(ranks, "paraview");
+                return eikon::app::paraviewCommand(paraviewOptions);
             }
             return eikon::app::infoCommand();
         });

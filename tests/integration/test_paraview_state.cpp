@@ -123,6 +123,28 @@ TEST_F(ParaViewState, ArraysARunNeverChangesAreWrittenOnceAndMerged) {
     EXPECT_NE(script.find("'fields_static.vti'"), std::string::npos);
 }
 
+// `eikon paraview DIR SCENE` writes the state again, with the scene's camera
+// as --set leaves it; a folder without a VTK export is refused (exit 2) and
+// gets nothing.
+TEST_F(ParaViewState, TheParaViewCommandRewritesTheState) {
+    const fs::path script = runScene();
+    fs::remove(script);
+    const fs::path scene = dir_ / "scene.json";
+    const auto outcome =
+        runEikon("paraview " + (dir_ / "out").string() + " " + scene.string() + " --set camera.fov_deg=30");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    ASSERT_TRUE(fs::exists(script));
+    const std::string text = readText(script);
+    EXPECT_NE(text.find("camera_fov_deg = 30"), std::string::npos);
+    EXPECT_EQ(openedCollections(text), (std::set<std::string>{"fields", "receivers", "photon_paths"}));
+
+    fs::create_directories(dir_ / "empty");
+    const auto refused = runEikon("paraview " + (dir_ / "empty").string() + " " + scene.string());
+    EXPECT_EQ(refused.exitCode, 2) << refused.output;
+    EXPECT_NE(refused.output.find("no vtk/ folder"), std::string::npos) << refused.output;
+    EXPECT_TRUE(fs::is_empty(dir_ / "empty"));
+}
+
 // ParaView itself renders the state: the picture is not the background alone.
 TEST_F(ParaViewState, ParaViewRendersTheState) {
     const char* pvbatch = std::getenv("EIKON_PVBATCH");
