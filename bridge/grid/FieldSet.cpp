@@ -44,6 +44,13 @@ void validateFields(const ConstFieldViews& fields, const std::string& source) {
                 throw InputError(source + ": field anisotropy, " + cellName(fields.grid, c), "a value in (-1, 1)",
                                  std::to_string(fields.anisotropy[c]));
     }
+    if (fields.hasEmission()) {
+        checkSize(fields.emission, 3 * cells, source + ": field emission");
+        for (std::size_t v = 0; v < fields.emission.size(); ++v)
+            if (!std::isfinite(fields.emission[v]) || fields.emission[v] < 0.0f)
+                throw InputError(source + ": field emission, " + cellName(fields.grid, v / 3), "a finite value >= 0",
+                                 std::to_string(fields.emission[v]));
+    }
     if (fields.surfaceTriangles.size() % kSurfaceTriangleFloats != 0)
         throw InputError(source + ": sharp surface triangles", "a multiple of " + std::to_string(kSurfaceTriangleFloats) +
                          " floats", std::to_string(fields.surfaceTriangles.size()));
@@ -73,12 +80,6 @@ void publishField(std::vector<float>& current, std::vector<float>&& next, std::u
 
 void validateFields(const FieldSet& fields, const std::string& source) {
     validateFields(viewsOf(fields), source);
-    if (!fields.hasEmission()) return;  // emission comes from host memory only (an imported volume)
-    checkSize(fields.emission, 3 * fields.grid.cellCount(), source + ": field emission");
-    for (std::size_t v = 0; v < fields.emission.size(); ++v)
-        if (!std::isfinite(fields.emission[v]) || fields.emission[v] < 0.0f)
-            throw InputError(source + ": field emission, " + cellName(fields.grid, v / 3), "a finite value >= 0",
-                             std::to_string(fields.emission[v]));
 }
 
 }  // namespace eikon

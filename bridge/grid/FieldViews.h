@@ -3,8 +3,8 @@
 // persistently mapped GPU buffers (render/stages/FieldRing.h), so that the
 // simulation writes its output straight into memory the GPU reads.
 // Layout as in FieldSet: δn one float per cell, κ and σs three (RGB), g one,
-// the sharp surfaces' tree nodes and triangles as FieldSet lays them out; an
-// empty span is a field the scene does not have.
+// the sharp surfaces' tree nodes and triangles as FieldSet lays them out, ε
+// three; an empty span is a field the scene does not have.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -24,13 +24,16 @@ struct BasicFieldViews {
     std::span<Value> anisotropy;
     std::span<Value> surfaceNodes;
     std::span<Value> surfaceTriangles;
+    std::span<Value> emission{};  // RGB per cell; host memory only (an imported volume's), never in the ring
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }
     bool hasAnisotropy() const { return !anisotropy.empty(); }
+    bool hasEmission() const { return !emission.empty(); }
 
     operator BasicFieldViews<const float>() const {
-        return {grid, referenceIndex, deltaIndex, extinction, scattering, anisotropy, surfaceNodes, surfaceTriangles};
+        return {grid,       referenceIndex, deltaIndex,   extinction,       scattering,
+                anisotropy, surfaceNodes,   surfaceTriangles, emission};
     }
 };
 using FieldViews = BasicFieldViews<float>;

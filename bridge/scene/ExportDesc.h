@@ -18,10 +18,11 @@ namespace eikon {
 // (RGB, 1/m); anisotropy: HG g; fluence: φ (RGB, W/m²); photon_direction: the
 // power-weighted mean photon direction; velocity (m/s), temperature (K),
 // concentration, dye: the simulation's (or an imported volume's) fields on
-// the render grid; density, flame: an imported volume's grids.
-inline constexpr std::array<const char*, 13> kExportFieldNames{
+// the render grid; density, flame: an imported volume's grids; emission: ε
+// (RGB, W/(m³·sr)) of a glowing volume.
+inline constexpr std::array<const char*, 14> kExportFieldNames{
     "index",    "delta_index", "extinction",    "scattering", "anisotropy", "fluence", "photon_direction",
-    "velocity", "temperature", "concentration", "dye",        "density",    "flame"};
+    "velocity", "temperature", "concentration", "dye",        "density",    "flame",   "emission"};
 
 // An axis-aligned box in metres, max > min on every axis.
 struct ExportRegion {

@@ -25,6 +25,7 @@ std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields) {
     if (fields.hasExtinction()) arrays.push_back({"extinction", 3, copy(fields.extinction), {"1/m", ArrayRole::Density}});
     if (fields.hasScattering()) arrays.push_back({"scattering", 3, copy(fields.scattering), {"1/m", ArrayRole::Density}});
     if (fields.hasAnisotropy()) arrays.push_back({"anisotropy", 1, copy(fields.anisotropy), {"1", ArrayRole::Scalar}});
+    if (fields.hasEmission()) arrays.push_back({"emission", 3, copy(fields.emission), {"W/(m^3 sr)", ArrayRole::Density}});
     return arrays;
 }
 

@@ -18,8 +18,8 @@
 
 namespace eikon::io {
 
-// index (n_ref + δn, float32), delta_index, and extinction, scattering and
-// anisotropy where the field set has them.
+// index (n_ref + δn, float32), delta_index, and extinction, scattering,
+// anisotropy and emission where the field set has them.
 std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields);
 
 // The cells [first, first + count) of `grid` whose centres lie in `region`

@@ -210,6 +210,8 @@ bool sceneProvides(const Scene& scene, const std::string& field) {
     if (field == "concentration" || field == "dye") return sim;
     if (field == "density") return volume && !scene.volume->densityGrid.empty();
     if (field == "flame") return volume && !scene.volume->flameGrid.empty();
+    if (field == "emission")
+        return volume && (scene.volume->emission == VolumeDesc::Emission::Blackbody || !scene.volume->emissionGrid.empty());
     return true;
 }
 
@@ -224,7 +226,8 @@ void resolveSelection(const JsonReader& node, const ExportSelection& selection, 
         const std::string& field = selection.fields[i];
         if (!sceneProvides(scene, field))
             node.member("fields").element(i).fail(
-                "a field this scene has (\"" + field + "\" needs a `sim` section or a `volume` grid for it)",
+                "a field this scene has (\"" + field + "\" needs a `sim` section or a `volume` grid for it, "
+                "emission a glowing volume)",
                 "\"" + field + "\"");
         if (field == "fluence" || field == "photon_direction") scene.tracer.storeFluence = true;
     }

@@ -140,6 +140,25 @@ TEST_F(VolumeOpticalGrids, AFlameGlowsByKirchhoffsLawPlusTheEmissionGrid) {
               std::string::npos);
 }
 
+// A glowing volume's ε exported to OpenVDB (a vec3s `emission` grid) and
+// imported again as grids.emission gives back the same ε, to 1e-6 of its
+// largest value (the export's pruning tolerance).
+TEST_F(VolumeOpticalGrids, ExportedEmissionReadsBackAsAnEmissionGrid) {
+    const SceneFields glowing(scene(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "flame": "flame"},
+        "flame_temperature": 2000, "flame_absorption": 3, "emission": "blackbody"})"));
+    const FieldSet& source = glowing.fields();
+    ASSERT_TRUE(source.hasEmission());
+    io::VdbFrameWriter(folder_, "fields").writeFrame(0, 0.0, {source.grid, io::fieldArrays(viewsOf(source))});
+    const SceneFields read(scene(R"({"path": "vdb/fields_00000.vdb", "grids": {"density": "", "temperature": "",
+        "emission": "emission"}})"));
+    const FieldSet& imported = read.fields();
+    ASSERT_EQ(imported.emission.size(), source.emission.size());
+    const float largest = *std::max_element(source.emission.begin(), source.emission.end());
+    EXPECT_GT(largest, 100.0f) << "the flame glows";
+    for (std::size_t k = 0; k < source.emission.size(); ++k)
+        ASSERT_NEAR(imported.emission[k], source.emission[k], 1e-6 * largest) << "value " << k;
+}
+
 // eikon → OpenVDB → eikon: a glass sphere's index and an absorbing medium,
 // exported and imported on the same grid, come back to 1e-12.
 TEST_F(VolumeOpticalGrids, EikonsOwnExportReadsBackAsTheFieldsItWasWrittenFrom) {
