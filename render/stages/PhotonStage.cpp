@@ -17,12 +17,12 @@ namespace eikon::render {
 namespace {
 
 constexpr std::size_t kBatchPhotons = std::size_t{1} << 20;
-
-// The scene's volume lights it (volume.emission_lights): photons leave its glowing cells.
-bool glowLights(const Scene& scene) { return scene.volume && scene.volume->emissionLights; }
 // Where photons may be suspended, a batch is no larger than the buffer that
 // holds its suspended photons (96 bytes each: 24 MiB), so none is lost.
 constexpr std::size_t kResumableBatchPhotons = std::size_t{1} << 18;
+
+// The scene's volume lights it (volume.emission_lights): photons leave its glowing cells.
+bool glowLights(const Scene& scene) { return scene.volume && scene.volume->emissionLights; }
 
 Rgb tallyOf(const layout::GpuPhotonStats& gpu, layout::PowerTally tally, const Rgb& unit) {
     Rgb watts;
