@@ -58,7 +58,6 @@ FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& ou
     paraview_.camera = scene.camera;
     paraview_.gridMin = scene.grid.boundsMin;
     paraview_.gridMax = scene.grid.boundsMax;
-    paraview_.collections = {"fields", "receivers", "meshes", "photon_paths"};
     if (exports_.vtk.enabled) {
         vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
         if (exports_.vtk.receivers && !scene.receivers.empty())

@@ -4,7 +4,6 @@
 #include "io/scene/SceneParser.h"
 #include "io/vtk/ParaViewState.h"
 
-#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -28,10 +27,7 @@ int paraviewCommand(const ParaViewOptions& options) {
     state.camera = scene.camera;
     state.gridMin = scene.grid.boundsMin;
     state.gridMax = scene.grid.boundsMax;
-    state.collections = {"fields", "receivers", "meshes", "photon_paths"};
-    const bool any = std::any_of(state.collections.begin(), state.collections.end(),
-                                 [&](const std::string& name) { return fs::exists(vtk / (name + ".pvd")); });
-    if (!any)
+    if (io::collectionsIn(vtk, io::kParaViewCollections).empty())
         throw InputError(options.runDir, "a run folder whose vtk/ holds fields.pvd, receivers.pvd, meshes.pvd or "
                                          "photon_paths.pvd (eikon run --vtk)",
                          fs::is_directory(vtk) ? "none of them" : "no vtk/ folder");

@@ -78,7 +78,7 @@ struct VolumeDesc {
     double emissionScale = 1.0;     // >= 0
     double flameAbsorption = 0.0;   // 1/m per unit flame, >= 0
     // The emission also lights the scene: photons leave the glowing cells
-    // (render/stages/PhotonEmission.h, a volume emitter).
+    // (render/stages/VolumeGlow.h, a volume emitter).
     bool emissionLights = false;
 };
 

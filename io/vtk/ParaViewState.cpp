@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <cstdio>
 
@@ -156,9 +157,13 @@ std::string paraviewStateScript(const ParaViewState& state) {
     return script;
 }
 
+std::vector<std::string> collectionsIn(const std::filesystem::path& vtkFolder, std::vector<std::string> names) {
+    std::erase_if(names, [&](const std::string& name) { return !std::filesystem::exists(vtkFolder / (name + ".pvd")); });
+    return names;
+}
+
 void writeParaViewState(const std::filesystem::path& vtkFolder, ParaViewState state) {
-    std::erase_if(state.collections,
-                  [&](const std::string& name) { return !std::filesystem::exists(vtkFolder / (name + ".pvd")); });
+    state.collections = collectionsIn(vtkFolder, std::move(state.collections));
     state.staticFields = std::filesystem::exists(vtkFolder / "fields_static.vti");
     writeFileAtomically(vtkFolder / "open_in_paraview.py", paraviewStateScript(state));
 }

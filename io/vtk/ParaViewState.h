@@ -16,12 +16,18 @@
 
 namespace eikon::io {
 
+// Every collection a run's VTK export can hold, in the order the script opens them.
+inline const std::vector<std::string> kParaViewCollections{"fields", "receivers", "meshes", "photon_paths"};
+
+// The collections of `names` whose NAME.pvd exists in vtkFolder.
+std::vector<std::string> collectionsIn(const std::filesystem::path& vtkFolder, std::vector<std::string> names);
+
 struct ParaViewState {
     CameraDesc camera;
     glm::dvec3 gridMin{0.0}, gridMax{1.0};
     // Collections in DIR/vtk the script opens, as NAME for NAME.pvd: any of
     // "fields", "receivers", "meshes", "photon_paths".
-    std::vector<std::string> collections;
+    std::vector<std::string> collections = kParaViewCollections;
     // fields_static.vti holds the arrays the run never changes
     // (io/vtk/VtkSeriesWriter.h): the script merges them into the fields.
     bool staticFields = false;

@@ -14,6 +14,11 @@ namespace {
 
 bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
 
+// Built on first use (4097 Planck integrals), by scenes that glow only.
+const BlackbodyTable& planckTable() {
+    static const BlackbodyTable table;
+    return table;
+}
 
 }  // namespace
 
@@ -37,7 +42,6 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
                          !samples.extinction.empty() || scatteringGrid || soot;
     const bool blackbody = volume.emission == VolumeDesc::Emission::Blackbody;
     const bool emits = blackbody || !samples.emission.empty();
-    static const BlackbodyTable planck;
     const bool scatters = positive(medium.scattering) || (dense && positive(volume.densityScattering)) || scatteringGrid;
     const bool anisotropic =
         scatters && (medium.anisotropy != 0.0 || volume.anisotropy != 0.0 || !samples.anisotropy.empty());
@@ -68,7 +72,7 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
         deltaIndex[c] = static_cast<float>(baseDelta + air.refractivityAt(t, volume.pressure) - ambient);
         const double rho = dense ? std::max(0.0, static_cast<double>(samples.density[c])) : 0.0;
         const double flameKappa = soot ? volume.flameAbsorption * std::max(0.0, static_cast<double>(samples.flame[c])) : 0.0;
-        const glm::dvec3 radiance = blackbody ? volume.emissionScale * planck.rgb(t) : glm::dvec3(0.0);
+        const glm::dvec3 radiance = blackbody ? volume.emissionScale * planckTable().rgb(t) : glm::dvec3(0.0);
         double sigmaSum = 0.0, volumeSigmaSum = 0.0;
         for (int ch = 0; ch < 3; ++ch) {
             const std::size_t k = 3 * c + static_cast<std::size_t>(ch);

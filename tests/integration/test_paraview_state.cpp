@@ -87,7 +87,6 @@ TEST_F(ParaViewState, RunWritesValidPythonThatOpensOnlyWhatExists) {
 TEST_F(ParaViewState, CollectionsWithoutAnIndexAreLeftOut) {
     std::ofstream(dir_ / "fields.pvd") << "<VTKFile/>";
     eikon::io::ParaViewState state;
-    state.collections = {"fields", "receivers", "meshes", "photon_paths"};
     eikon::io::writeParaViewState(dir_, state);
     EXPECT_EQ(openedCollections(readText(dir_ / "open_in_paraview.py")), (std::set<std::string>{"fields"}));
     EXPECT_EQ(readText(dir_ / "open_in_paraview.py").find("fields_static"), std::string::npos) << "no such file here";

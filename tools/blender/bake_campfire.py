@@ -1,7 +1,7 @@
 # Bakes the fire of scenes/campfire.json with Blender's Mantaflow (Blender
 # 3.4, headless):
 #   blender --background --factory-startup --python tools/blender/bake_campfire.py -- OUT_DIR
-# writes OUT_DIR/data/fluid_data_####.vdb (density, flame, heat, temperature,
+# writes OUT_DIR/data/fluid_data_####.vdb (density, flame, temperature, shadow,
 # velocity, ...; half float). Frame 30 is scenes/volumes/campfire.vdb. The
 # domain is the one scenes/campfire.json names in volume.blender_domain:
 # location (0, 0, 0.5) m, no rotation, dimensions 0.5 × 0.5 × 1 m.
@@ -9,6 +9,8 @@
 # Blender 3.4 cannot run the bake operator without a window (the fluid
 # modifier's data pointer is missing), so the cache is "Replay" and stepping
 # the frames bakes it.
+# Blender (Debian's `blender` package) is needed only to remake this asset, not to
+# build or test eikon, so tools/debian-packages.txt does not list it.
 import sys
 
 import bpy

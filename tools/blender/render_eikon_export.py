@@ -3,6 +3,8 @@
 #   eikon run scenes/painted_smoke.json --out DIR --set 'export.vdb={"fields": ["scattering", "fluence"], "up_axis": "z"}'
 #   blender --background --factory-startup --python tools/blender/render_eikon_export.py -- DIR/vdb/fields_00000.vdb OUT.png
 # The smoke's density is 8 × eikon's σs so that its thin strokes show.
+# Blender (Debian's `blender` package) is needed only to remake this asset, not to
+# build or test eikon, so tools/debian-packages.txt does not list it.
 import math
 import sys
 
