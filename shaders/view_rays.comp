@@ -19,7 +19,8 @@
 // `surface_depth` surface events; past that it follows the stronger branch.
 //
 // Program options: EIKON_HAS_EXTINCTION, EIKON_HAS_SCATTERING,
-// EIKON_HAS_ANISOTROPY, EIKON_HAS_EMISSION, EIKON_STEP_STRUCTURE (1: large steps through empty
+// EIKON_HAS_ANISOTROPY, EIKON_HAS_EMISSION, EIKON_MULTIPLE_SCATTERING (1: add the
+// lattice's multiply scattered fluence, σs·φ_ms/(4π)), EIKON_STEP_STRUCTURE (1: large steps through empty
 // nodes), EIKON_FRESNEL, EIKON_ENVIRONMENT (layout::EnvironmentKind),
 // EIKON_SHARP_SURFACES (1: the scene has sharp surfaces),
 // EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
@@ -88,6 +89,12 @@ layout(std140, binding = kCameraBlock) uniform CameraBlock {
 layout(std430, binding = kFluence) readonly buffer Fluence { float fluence[]; };
 layout(std430, binding = kFluenceDirection) readonly buffer FluenceDirection { float fluence_direction[]; };
 #endif
+#ifndef EIKON_MULTIPLE_SCATTERING
+#define EIKON_MULTIPLE_SCATTERING 0
+#endif
+#if EIKON_MULTIPLE_SCATTERING
+layout(std430, binding = kMultipleFluence) readonly buffer MultipleFluence { float multiple_fluence[]; };
+#endif
 #if EIKON_HAS_ANISOTROPY
 layout(binding = kAnisotropyTexture) uniform sampler3D anisotropy_texture;
 #endif
@@ -126,7 +133,13 @@ vec3 in_scattered_radiance(vec3 x, vec3 d) {
         float cos_theta = dot(normalize(direction_sum), -d);
         phase = mix(isotropic, henyey_greenstein(cos_theta, g), coherence);
     }
+#if EIKON_MULTIPLE_SCATTERING
+    // Light scattered before, from the lattice: isotropic ([Geist LBL] §III-D).
+    vec3 multiple = vec3(multiple_fluence[index], multiple_fluence[index + 1u], multiple_fluence[index + 2u]);
+    return sample_scattering(x) * (phi * phase + multiple * isotropic);
+#else
     return sample_scattering(x) * phi * phase;
+#endif
 #else
     return vec3(0.0f);
 #endif

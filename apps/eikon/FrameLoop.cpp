@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -55,6 +56,30 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
                              {"patches_at_limit", p.wavefront.atLimit},
                              {"rays", p.wavefront.rays}};
     return json;
+}
+
+// The lattice's steps and ledger per channel (render/stages/LatticeScattering.h).
+nlohmann::json latticeJson(const render::LatticeStats& lattice) {
+    auto perChannel = [&](auto value) {
+        nlohmann::json values = nlohmann::json::array();
+        for (const render::LatticeChannel& channel : lattice.channels) values.push_back(value(channel));
+        return values;
+    };
+    // A channel the probes never saw converge reports its change as null (JSON has no infinity).
+    auto finite = [](double value) { return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr); };
+    return {{"method", "lbm"},
+            {"directions", lattice.directions},
+            {"warm_start", lattice.warmStart},
+            {"iterations", perChannel([](const render::LatticeChannel& c) { return c.iterations; })},
+            {"capped", lattice.capped()},
+            {"change_per_iteration", perChannel([&](const render::LatticeChannel& c) { return finite(c.change); })},
+            {"estimated_remaining", perChannel([&](const render::LatticeChannel& c) { return finite(c.remaining); })},
+            {"power_w",
+             {{"source", perChannel([](const render::LatticeChannel& c) { return c.source; })},
+              {"absorbed", perChannel([](const render::LatticeChannel& c) { return c.absorbed; })},
+              {"escaped", perChannel([](const render::LatticeChannel& c) { return c.escapedTotal(); })},
+              {"undelivered", perChannel([](const render::LatticeChannel& c) { return c.undelivered(); })}}},
+            {"energy_balance_error", lattice.balanceError()}};
 }
 
 nlohmann::json outputErrorsJson(const render::OutputErrors& errors) {
@@ -166,6 +191,10 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
     const bool tracesPhotons = std::any_of(result.stages.begin(), result.stages.end(),
                                            [](const render::StageReport& stage) { return stage.name == "photons"; });
     if (tracesPhotons) report["photons"] = photonsJson(result.photons);
+    const bool diffuses = std::any_of(result.stages.begin(), result.stages.end(), [](const render::StageReport& stage) {
+        return stage.name == "multiple_scattering" && stage.ran;
+    });
+    if (diffuses && result.lattice) report["multiple_scattering"] = latticeJson(*result.lattice);
     if (result.errorEstimate) report["error_estimate"] = errorEstimateJson(*result.errorEstimate);
     if (distribution != Distribution::None)
         report["distribution"] = {{"mode", distributionName(distribution)}, {"ranks", Ranks::world().size()}};

@@ -53,7 +53,12 @@
     X(kSuspendedIn, 23)         /* buffer SuspendedIn { GpuSuspendedPhoton[] }: photons a dispatch resumes */      \
     X(kSuspendedOut, 24)        /* buffer SuspendedOut { GpuSuspendedPhoton[] }: photons it suspends */           \
     X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */                                           \
-    X(kGlowCells, 26)           /* buffer GlowCells { GpuGlowCell cells[]; }: a glowing volume's emitting cells */
+    X(kGlowCells, 26)           /* buffer GlowCells { GpuGlowCell cells[]; }: a glowing volume's emitting cells */ \
+    X(kLatticeIn, 27)           /* buffer LatticeIn { float density[]; }: one channel's link densities, W, read */ \
+    X(kLatticeOut, 28)          /* buffer LatticeOut { float density[]; }: the same after one step, written */ \
+    X(kLatticeProbes, 29)       /* buffer LatticeProbes { float fluence[]; }: the lattice's fluence at its probes */ \
+    X(kMultipleFluence, 30)     /* buffer MultipleFluence { float fluence[]; }: RGB per cell, W/m², light scattered ≥ once */ \
+    X(kLatticeTallies, 31)      /* buffer LatticeTallies { vec4 tallies[]; }: per work group, the lattice's ledger */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into

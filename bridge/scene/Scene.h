@@ -209,6 +209,14 @@ struct TracerDesc {
         long long maxPatches = 1 << 18;  // patches one refinement level holds; beyond, patches stop splitting
         int reflections = 1;          // Fresnel branches followed: reflected at the first, second, … Fresnel event
     } wavefront;
+    // Light scattered more than once: not followed (single scattering only),
+    // or diffused on a lattice ([Geist LBL] §III-C; render/stages/LatticeScattering).
+    enum class MultipleScattering { None, Lbm } multipleScattering = MultipleScattering::None;
+    struct Lattice {
+        int directions = 18;       // links per voxel: 6 ([Geist LBL]'s) or 18 (with the face diagonals)
+        double tolerance = 1e-3;   // converged below this estimated remaining relative change at the probes, > 0
+        int maxIterations = 4000;  // steps per channel and frame, >= 1
+    } lattice;
 };
 
 // The built-in fluid solver (sim/fluid) and the optics that turn its

@@ -352,7 +352,8 @@ TracerDesc readTracer(const JsonReader& node) {
     TracerDesc tracer;
     const auto fields = node.object({"integrator", "step_policy", "step_voxels", "max_step_voxels", "epsilon",
                                      "epsilon_prime", "renormalize", "power_cutoff", "max_steps", "dispersion",
-                                     "store_fluence", "estimator", "wavefront"});
+                                     "store_fluence", "estimator", "wavefront", "multiple_scattering", "lbm_directions",
+                                     "lbm_tolerance", "lbm_max_iterations"});
     if (auto integrator = fields.optional("integrator")) tracer.integrator = readIntegrator(*integrator);
     if (auto policy = fields.optional("step_policy")) tracer.stepPolicy = readStepPolicy(*policy);
     if (auto step = fields.optional("step_voxels")) tracer.stepVoxels = step->number(kPositive);
@@ -370,6 +371,18 @@ TracerDesc readTracer(const JsonReader& node) {
     if (auto estimator = fields.optional("estimator"))
         tracer.estimator = estimator->oneOf({"photons", "wavefront"}) == "wavefront" ? TracerDesc::Estimator::Wavefront
                                                                                      : TracerDesc::Estimator::Photons;
+    if (auto multiple = fields.optional("multiple_scattering"))
+        tracer.multipleScattering = multiple->oneOf({"none", "lbm"}) == "lbm" ? TracerDesc::MultipleScattering::Lbm
+                                                                              : TracerDesc::MultipleScattering::None;
+    if (auto directions = fields.optional("lbm_directions")) {
+        const long long count = directions->integer(6, 18);
+        if (count != 6 && count != 18) directions->fail("6 or 18", std::to_string(count));
+        tracer.lattice.directions = static_cast<int>(count);
+    }
+    if (auto tolerance = fields.optional("lbm_tolerance"))
+        tracer.lattice.tolerance = tolerance->number(NumberRange::open(0.0, 1.0));
+    if (auto cap = fields.optional("lbm_max_iterations"))
+        tracer.lattice.maxIterations = static_cast<int>(cap->integer(1, 1000000));
     if (auto wavefront = fields.optional("wavefront")) {
         const auto keys = wavefront->object({"grid_cells", "max_depth", "split_texels", "tear_texels", "min_power", "max_patches",
                                              "reflections"});

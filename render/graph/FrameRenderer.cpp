@@ -43,9 +43,14 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
         !scene.receivers.empty() || fields_.hasScattering() || scene.tracer.storeFluence || options.tracePhotons;
     if (photonsWanted)
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
+    // The lattice diffuses what the photons scattered, on the share that holds the whole pass.
+    const bool holdsWholePass = !options.exchange || options.exchange->receivesTotals();
+    if (scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm && fields_.hasScattering() && photons_ &&
+        holdsWholePass)
+        lattice_ = std::make_unique<LatticeScattering>(fields.grid, fields_, LatticeSettings::of(scene.tracer));
     if (options.drawsImage)
         view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr,
-                                            options.recordViewExits);
+                                            lattice_ != nullptr, options.recordViewExits);
     const double voxel = fields.grid.smallestVoxelEdge();
     photonSettings_.seed = scene.render.seed;
     photonSettings_.stepLength = scene.tracer.stepVoxels * voxel;
@@ -134,10 +139,15 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         result.stages.push_back(runStage("photons", photonsNeeded, [&] {
             last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
         }));
+    if (lattice_)
+        result.stages.push_back(runStage("multiple_scattering", photonsNeeded, [&] {
+            last_.lattice = lattice_->run(fields_, photons_->rawFluence());
+        }));
     const bool viewNeeded = view_ && (fieldsChanged || photonsNeeded || cameraChanged_);
     if (view_) result.stages.push_back(runStage("view", viewNeeded, [&] {
         view_->run(fields_, {photons_ ? &photons_->fluence() : nullptr,
-                             photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture()});
+                             photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture(),
+                             lattice_ ? &lattice_->fluence() : nullptr});
     }));
     if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
@@ -156,6 +166,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.image = last_.image;
     result.hdr = last_.hdr;
     result.photons = last_.photons;
+    result.lattice = last_.lattice;
     result.errorEstimate = last_.errorEstimate;
     return result;
 }

@@ -1,8 +1,9 @@
 // One frame of the render half: upload → prepare → step structure → photons
-// → view → post. A stage runs only when one of its inputs changed since it
+// → multiple scattering → view → post. A stage runs only when one of its inputs changed since it
 // last ran (field versions, camera); stages the scene does not need are not
 // created (uniform steps → no step structure, no receivers → no maps, no
-// scattering → no fluence, neither receivers nor scattering → no photons).
+// scattering → no fluence and no lattice, neither receivers nor scattering →
+// no photons).
 // Each frame reports every stage it has with whether it ran and its wall time.
 #pragma once
 
@@ -11,6 +12,7 @@
 #include "render/stages/ErrorEstimateStage.h"
 #include "render/stages/FieldRing.h"
 #include "render/stages/FieldTextures.h"
+#include "render/stages/LatticeScattering.h"
 #include "render/stages/PhotonStage.h"
 #include "render/stages/PostStage.h"
 #include "render/stages/PrepareStage.h"
@@ -35,6 +37,7 @@ struct FrameResult {
     Image8 image;
     std::vector<float> hdr;       // linear RGBA radiance, when the scene writes HDR
     PhotonStats photons;          // of the latest photon pass
+    std::optional<LatticeStats> lattice;  // of the latest multiple-scattering pass, where the scene has one
     std::vector<StageReport> stages;
     UploadBytes copied;           // host bytes the driver read, bytes copied on the GPU
     std::optional<ErrorEstimate> errorEstimate;  // with RendererOptions::estimateErrors
@@ -85,6 +88,8 @@ public:
     // Null when the scene has nothing for photons to light (no receivers, no scattering).
     const PhotonStage* photonStage() const { return photons_.get(); }
     const ViewStage& viewStage() const { return *view_; }  // only where the renderer draws images
+    // Null unless the scene asks for multiple scattering and something scatters.
+    const LatticeScattering* latticeStage() const { return lattice_.get(); }
 
 private:
     const gl::Texture3D* stepTexture() const;  // null for uniform steps
@@ -98,6 +103,7 @@ private:
     std::unique_ptr<PrepareStage> prepare_;
     std::unique_ptr<StepStructureStage> stepStructure_;  // octree step policy only
     std::unique_ptr<PhotonStage> photons_;
+    std::unique_ptr<LatticeScattering> lattice_;
     std::unique_ptr<ViewStage> view_;
     PostStage post_;
     // With estimateErrors: the reference step labels (the scene's own step

@@ -99,10 +99,10 @@ ErrorEstimateStage::ErrorEstimateStage(const Scene& scene, const FieldTextures& 
     viewScene.render.height = std::max(
         1, static_cast<int>(std::lround(viewScene.render.width * static_cast<double>(scene.render.height) /
                                         scene.render.width)));
-    view_ = std::make_unique<ViewStage>(viewScene, fields, receivers_, sceneHasStepStructure);
-    if (noiseByBatches_) halfView_ = std::make_unique<ViewStage>(viewScene, fields, evenHalf_, sceneHasStepStructure);
+    view_ = std::make_unique<ViewStage>(viewScene, fields, receivers_, sceneHasStepStructure, false);
+    if (noiseByBatches_) halfView_ = std::make_unique<ViewStage>(viewScene, fields, evenHalf_, sceneHasStepStructure, false);
     viewScene.render.stepVoxels = referenceStepVoxels(scene);
-    referenceView_ = std::make_unique<ViewStage>(viewScene, fields, receivers_, true);
+    referenceView_ = std::make_unique<ViewStage>(viewScene, fields, receivers_, true, false);
 }
 
 ErrorEstimate ErrorEstimateStage::run(const FieldTextures& fields, const Inputs& inputs) {

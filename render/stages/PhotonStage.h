@@ -119,6 +119,9 @@ public:
     // direction (xyz per cell); empty unless storesFluence().
     const gl::Buffer& fluence() const { return fluence_; }
     const gl::Buffer& fluenceDirection() const { return direction_; }
+    // The unsmoothed fluence φ₁ of the whole pass: σs·φ₁·V per cell is the
+    // power the photons lost to scattering there (the lattice's source).
+    const gl::Buffer& rawFluence() const { return rawFluence_; }
     std::vector<float> downloadFluence() const;
     std::vector<float> downloadFluenceDirection() const;
     // Recorded vertices (xyz, w = 1 where written) of the recorded photons,

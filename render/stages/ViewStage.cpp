@@ -55,8 +55,9 @@ layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render
 }
 
 ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers,
-                     bool hasStepStructure, bool recordExit)
-    : receivers_(receivers), surfaces_(scene), render_(scene.render), width_(scene.render.width), height_(scene.render.height) {
+                     bool hasStepStructure, bool multipleScattering, bool recordExit)
+    : receivers_(receivers), surfaces_(scene), multipleScattering_(multipleScattering), render_(scene.render),
+      width_(scene.render.width), height_(scene.render.height) {
     const double voxel = fields.grid().smallestVoxelEdge();
     stepLength_ = scene.render.stepVoxels * voxel;
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
@@ -68,6 +69,7 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                            {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"},
                            {"EIKON_HAS_ANISOTROPY", fields.hasAnisotropy() ? "1" : "0"},
                            {"EIKON_HAS_EMISSION", fields.hasEmission() ? "1" : "0"},
+                           {"EIKON_MULTIPLE_SCATTERING", multipleScattering ? "1" : "0"},
                            {"EIKON_STEP_STRUCTURE", hasStepStructure ? "1" : "0"},
                            {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
                            {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
@@ -113,6 +115,10 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     if (fields.hasScattering()) {
         inputs.fluence->bindStorage(layout::kFluence);
         inputs.fluenceDirection->bindStorage(layout::kFluenceDirection);
+    }
+    if (multipleScattering_) {
+        EIKON_CHECK_MSG(inputs.multipleFluence, "the lattice's fluence for a scene with multiple scattering");
+        inputs.multipleFluence->bindStorage(layout::kMultipleFluence);
     }
     if (inputs.stepTexture) inputs.stepTexture->bindSampler(layout::kStepTexture);
     if (environment_.id()) environment_.bindSampler(layout::kEnvironmentTexture);

@@ -21,13 +21,15 @@ struct ViewInputs {
     const gl::Buffer* fluence = nullptr;           // smoothed φ, when the scene scatters
     const gl::Buffer* fluenceDirection = nullptr;  // and its mean direction
     const gl::Texture3D* stepTexture = nullptr;    // step structure, when built
+    const gl::Buffer* multipleFluence = nullptr;   // φ of light scattered ≥ once, with multiple scattering
 };
 
 class ViewStage {
 public:
     // recordExit: also keep each pixel's exit direction (tests).
+    // multipleScattering: the scene's in-scattering adds the lattice's fluence.
     ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers, bool hasStepStructure,
-              bool recordExit = false);
+              bool multipleScattering, bool recordExit = false);
 
     void run(const FieldTextures& fields, const ViewInputs& inputs);
     void setCamera(const CameraDesc& camera);
@@ -42,6 +44,7 @@ public:
 private:
     const ReceiverMaps& receivers_;
     SharpSurfaceBuffer surfaces_;
+    bool multipleScattering_;
     RenderDesc render_;
     int width_, height_;
     double stepLength_;

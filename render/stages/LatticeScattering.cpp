@@ -1,0 +1,201 @@
+#include "render/stages/LatticeScattering.h"
+
+#include "bridge/core/Error.h"
+#include "bridge/layout/GpuLayouts.h"
+#include "render/gl/GlDebug.h"
+#include "render/gl/GpuMemory.h"
+#include "render/gl/ShaderLibrary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+
+namespace eikon::render {
+
+namespace {
+
+constexpr int kLedgerValues = 8;  // per work group: source, absorbed, escaped through six faces (two vec4)
+
+int groupCount(const glm::ivec3& resolution) {
+    const glm::ivec3 groups = (resolution + 3) / 4;
+    return groups.x * groups.y * groups.z;
+}
+
+}  // namespace
+
+LatticeSettings LatticeSettings::of(const TracerDesc& tracer) {
+    LatticeSettings settings;
+    settings.directions = tracer.lattice.directions;
+    settings.tolerance = tracer.lattice.tolerance;
+    settings.maxIterations = tracer.lattice.maxIterations;
+    return settings;
+}
+
+double LatticeChannel::escapedTotal() const { return std::accumulate(escaped.begin(), escaped.end(), 0.0); }
+
+int LatticeStats::iterations() const {
+    return channels[0].iterations + channels[1].iterations + channels[2].iterations;
+}
+
+bool LatticeStats::capped() const { return channels[0].capped || channels[1].capped || channels[2].capped; }
+
+double LatticeStats::balanceError() const {
+    double worst = 0.0;
+    for (const LatticeChannel& channel : channels)
+        if (channel.source > 0.0) worst = std::max(worst, std::abs(channel.undelivered()) / channel.source);
+    return worst;
+}
+
+LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings)
+    : grid_(grid), settings_(settings) {
+    EIKON_CHECK_MSG(settings.directions == 6 || settings.directions == 18, "a lattice of 6 or 18 links (io/scene)");
+    EIKON_CHECK_MSG(fields.hasScattering(), "a lattice only where some voxel scatters (FrameRenderer)");
+    const glm::ivec3 r = grid.resolution;
+    const int stride = std::max(1, std::min(settings.probeStride, std::min(r.x, std::min(r.y, r.z)) / 2));
+    settings_.probeStride = stride;
+    probes_ = (r + stride - 1) / stride;
+
+    const std::size_t cells = grid.cellCount();
+    const std::size_t stateBytes = static_cast<std::size_t>(settings.directions) * cells * sizeof(float);
+    GLint64 largestBlock = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largestBlock);
+    if (stateBytes > static_cast<std::size_t>(largestBlock))
+        throw InputError("tracer.lbm_directions",
+                         "a lattice whose densities of one channel fit one storage block (" +
+                             std::to_string(largestBlock) + " bytes, GL_MAX_SHADER_STORAGE_BLOCK_SIZE)",
+                         std::to_string(settings.directions) + " links × " + std::to_string(cells) +
+                             " cells = " + std::to_string(stateBytes) + " bytes; use 6 links or a coarser grid");
+    for (auto& pair : states_)
+        for (gl::Buffer& state : pair) {
+            state = gl::Buffer(stateBytes, gl::gridResource("the lattice's link densities", r.x, r.y, r.z));
+            state.clearToZero();
+        }
+    fluence_ = gl::Buffer(3 * cells * sizeof(float), gl::gridResource("the multiply scattered fluence", r.x, r.y, r.z));
+    fluence_.clearToZero();
+    probeValues_ = gl::Buffer(static_cast<std::size_t>(probes_.x) * probes_.y * probes_.z * sizeof(float));
+    tallies_ = gl::Buffer(static_cast<std::size_t>(groupCount(r)) * 2 * sizeof(glm::vec4));
+
+    auto compile = [&](int pass) {
+        return gl::compileComputeProgram(
+            "lattice_scattering.comp", {{"EIKON_HAS_EXTINCTION", "1"},
+                                        {"EIKON_HAS_SCATTERING", "1"},
+                                        {"EIKON_HAS_ANISOTROPY", fields.hasAnisotropy() ? "1" : "0"},
+                                        {"EIKON_LATTICE_DIRECTIONS", std::to_string(settings.directions)},
+                                        {"EIKON_LATTICE_PASS", std::to_string(pass)}});
+    };
+    step_ = compile(0);
+    probe_ = compile(1);
+    result_ = compile(2);
+}
+
+LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffer& rawFluence) {
+    LatticeStats stats;
+    stats.directions = settings_.directions;
+    stats.warmStart = warm_;
+    fields.bindForTracing();
+    rawFluence.bindStorage(layout::kRawFluence);
+    for (int channel = 0; channel < 3; ++channel)
+        stats.channels[channel] = runChannel(channel, warm_);
+    warm_ = true;
+    gl::checkpoint("lattice scattering");
+    return stats;
+}
+
+LatticeChannel LatticeScattering::runChannel(int channel, bool warm) {
+    std::array<gl::Buffer, 2>& pair = states_[channel];
+    int& current = current_[channel];
+    if (!warm) {
+        pair[0].clearToZero();
+        pair[1].clearToZero();
+    }
+    LatticeChannel result;
+    std::vector<float> previous = probeFluence(channel, pair[current]);
+    double previousDelta = -1.0;
+    bool converged = false;
+    while (!converged && result.iterations < settings_.maxIterations) {
+        const int steps = std::min(settings_.checkInterval, settings_.maxIterations - result.iterations);
+        step_.use();
+        glUniform1i(step_.uniform("channel"), channel);
+        glUniform3i(step_.uniform("periodic"), settings_.periodic.x, settings_.periodic.y, settings_.periodic.z);
+        for (int s = 0; s < steps; ++s) {
+            pair[current].bindStorage(layout::kLatticeIn);
+            pair[1 - current].bindStorage(layout::kLatticeOut);
+            step_.dispatchOverCells(grid_.resolution);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+            current = 1 - current;
+        }
+        result.iterations += steps;
+        const std::vector<float> probes = probeFluence(channel, pair[current]);
+        double norm = 0.0, difference = 0.0;
+        for (std::size_t p = 0; p < probes.size(); ++p) {
+            norm += std::abs(static_cast<double>(probes[p]));
+            difference += std::abs(static_cast<double>(probes[p]) - previous[p]);
+        }
+        previous = probes;
+        if (norm == 0.0) {
+            // No light at any probe yet: light born anywhere reaches one
+            // within two probe spacings, unless there is none.
+            converged = difference == 0.0 && result.iterations >= 2 * settings_.probeStride;
+            result.change = result.remaining = converged ? 0.0 : std::numeric_limits<double>::infinity();
+            continue;
+        }
+        const double delta = difference / norm;
+        result.change = delta / steps;
+        const double ratio = previousDelta > 0.0 ? delta / previousDelta : std::numeric_limits<double>::infinity();
+        result.remaining = delta == 0.0 ? 0.0
+                           : ratio < 1.0 ? delta * ratio / (1.0 - ratio)
+                                         : std::numeric_limits<double>::infinity();
+        converged = result.remaining < settings_.tolerance;
+        previousDelta = delta;
+    }
+    result.capped = !converged;
+    const LatticeChannel tally = ledger(channel, pair[current]);
+    result.source = tally.source;
+    result.absorbed = tally.absorbed;
+    result.escaped = tally.escaped;
+    return result;
+}
+
+std::vector<float> LatticeScattering::probeFluence(int channel, const gl::Buffer& state) {
+    probe_.use();
+    glUniform1i(probe_.uniform("channel"), channel);
+    glUniform3i(probe_.uniform("periodic"), settings_.periodic.x, settings_.periodic.y, settings_.periodic.z);
+    glUniform1i(probe_.uniform("probe_stride"), settings_.probeStride);
+    state.bindStorage(layout::kLatticeIn);
+    probeValues_.bindStorage(layout::kLatticeProbes);
+    probe_.dispatchOverCells(probes_);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    std::vector<float> values(probeValues_.bytes() / sizeof(float));
+    probeValues_.download(values.data(), values.size() * sizeof(float));
+    return values;
+}
+
+LatticeChannel LatticeScattering::ledger(int channel, const gl::Buffer& state) {
+    result_.use();
+    glUniform1i(result_.uniform("channel"), channel);
+    glUniform3i(result_.uniform("periodic"), settings_.periodic.x, settings_.periodic.y, settings_.periodic.z);
+    state.bindStorage(layout::kLatticeIn);
+    fluence_.bindStorage(layout::kMultipleFluence);
+    tallies_.bindStorage(layout::kLatticeTallies);
+    result_.dispatchOverCells(grid_.resolution);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    std::vector<float> values(tallies_.bytes() / sizeof(float));
+    tallies_.download(values.data(), values.size() * sizeof(float));
+    LatticeChannel tally;
+    for (std::size_t g = 0; g < values.size(); g += kLedgerValues) {  // a fixed order: the same bits every run
+        tally.source += values[g];
+        tally.absorbed += values[g + 1];
+        for (int face = 0; face < 6; ++face) tally.escaped[face] += values[g + 2 + face];
+    }
+    return tally;
+}
+
+std::vector<float> LatticeScattering::downloadFluence() const {
+    std::vector<float> values(fluence_.bytes() / sizeof(float));
+    fluence_.download(values.data(), values.size() * sizeof(float));
+    return values;
+}
+
+}  // namespace eikon::render

@@ -1,0 +1,98 @@
+// Multiple scattering by lattice-Boltzmann lighting ([Geist LBL] §III-C;
+// shaders/lattice_scattering.comp): the power the light pass's photons lose
+// to scattering is born on a lattice of 6 or 18 links per voxel, which
+// collides and streams it until the flow is steady; the view pass then adds
+// σs·φ_ms/(4π), the fluence φ_ms of light scattered at least once scattered
+// again (isotropically: the lattice keeps no finer angular detail).
+//
+// Channels run one after another (each has its own pair of density buffers,
+// so a 128³ grid of 6 links fits one storage block on every driver). Each
+// converges on its own: every `checkInterval` steps the fluence at a sparse
+// set of probe cells is read back; with Δ the relative L1 change since the
+// last check and r the ratio of successive Δ (the lattice converges
+// geometrically), the remaining change is estimated as Δ·r/(1 − r), and
+// the channel stops below the tolerance or at the step cap. A frame starts
+// from the previous frame's densities (warm start) unless restart() is
+// called or nothing was there.
+#pragma once
+
+#include "bridge/scene/Scene.h"
+#include "render/gl/GlObjects.h"
+#include "render/stages/FieldTextures.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <vector>
+
+namespace eikon::render {
+
+struct LatticeSettings {
+    int directions = 18;       // 6 or 18
+    double tolerance = 1e-3;   // on the estimated remaining relative change at the probes
+    int maxIterations = 4000;  // per channel
+    int checkInterval = 16;    // steps between probe read-backs
+    int probeStride = 8;       // a probe every probeStride-th cell on each axis (fewer on small grids)
+    // Faces that wrap instead of letting light out, per axis: a laterally
+    // periodic slab, or an infinite medium. Scenes use outflow on every face.
+    glm::ivec3 periodic{0};
+
+    static LatticeSettings of(const TracerDesc& tracer);
+};
+
+// Per channel: the lattice's steps this frame, its ledger (W) and how it ended.
+struct LatticeChannel {
+    int iterations = 0;
+    bool capped = false;         // stopped at maxIterations, not converged
+    double change = 0.0;         // relative L1 change at the probes per step, over the last check
+    double remaining = 0.0;      // estimated remaining relative change (the convergence measure)
+    double source = 0.0;         // born from the light pass's scattering
+    double absorbed = 0.0;
+    std::array<double, 6> escaped{};  // through the grid faces −x, +x, −y, +y, −z, +z
+    double escapedTotal() const;
+    // source − absorbed − escaped: what the lattice has not yet delivered
+    // (the flow is not steady); 0 to rounding at convergence.
+    double undelivered() const { return source - absorbed - escapedTotal(); }
+};
+
+struct LatticeStats {
+    int directions = 0;
+    bool warmStart = false;  // began from the previous frame's densities
+    std::array<LatticeChannel, 3> channels;
+    int iterations() const;  // all channels together
+    bool capped() const;
+    // |undelivered| / source, worst channel (0 where nothing scatters).
+    double balanceError() const;
+};
+
+class LatticeScattering {
+public:
+    LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings);
+
+    // Diffuses the light the light pass scattered: `rawFluence` holds φ₁
+    // (RGB per cell, W/m², the photons' unsmoothed fluence: its σs·φ₁·V is
+    // exactly the power they lost to scattering).
+    LatticeStats run(const FieldTextures& fields, const gl::Buffer& rawFluence);
+    // The next run starts from no light rather than the last densities.
+    void restart() { warm_ = false; }
+
+    // φ_ms, RGB per cell, W/m².
+    const gl::Buffer& fluence() const { return fluence_; }
+    std::vector<float> downloadFluence() const;
+
+private:
+    LatticeChannel runChannel(int channel, bool warm);
+    std::vector<float> probeFluence(int channel, const gl::Buffer& state);
+    LatticeChannel ledger(int channel, const gl::Buffer& state);
+
+    GridSpec grid_;
+    LatticeSettings settings_;
+    glm::ivec3 probes_{0};
+    gl::Program step_, probe_, result_;
+    std::array<std::array<gl::Buffer, 2>, 3> states_;  // per channel, ping-pong
+    std::array<int, 3> current_{0, 0, 0};              // which of the pair holds the densities
+    gl::Buffer probeValues_, tallies_, fluence_;
+    bool warm_ = false;
+};
+
+}  // namespace eikon::render

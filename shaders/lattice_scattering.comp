@@ -1,0 +1,186 @@
+// Multiple scattering by lattice-Boltzmann lighting ([Geist LBL] §III-C,
+// eqs. 4–5): per voxel and channel, the photon densities f_i along the
+// lattice's links (common/lattice_directions.glsl) collide and stream,
+//   f_i(r + c_i, t + 1) = Θ f(r, t),
+// until the lattice holds the steady flow of light scattered at least once.
+// Its source is the power the light pass's photons lose to scattering,
+// σs·φ₁·V per voxel (φ₁ the raw fluence they deposit), born isotropically.
+//
+// The collision is eq. 5 in exponential form. The paper's linear
+// Θ_ii = 1 − σt + σs/6 (σ per lattice step) goes negative once a voxel is
+// thicker than one mean free path; here a density arriving through link i
+// crosses its voxel with transmittance E_i = exp(−σt ℓ_i), the part
+// 1 − E_i that interacts scatters with the albedo a = σs/σt and is absorbed
+// otherwise, and light born in a voxel (scattered, or the source) leaves
+// along link i with weight w_i after half a link, exp(−σt ℓ_i/2), what
+// interacts on the way being born again in the same voxel (a geometric
+// series, summed in closed form). In the limit of thin voxels this is the
+// paper's Θ. Absorbed light leaves the lattice (the paper's rest density
+// Θ_0j = σa, which this lattice tallies instead of keeping). The lattice
+// ignores refraction: light diffuses straight through index changes, sharp
+// or smooth. Anisotropic media scatter by the similarity relation
+// σs′ = σs(1 − g), σt′ = σt − σs + σs′ (the 6- or 18-link lattice scatters
+// isotropically by construction).
+//
+// Passes (EIKON_LATTICE_PASS): 0 one collide-and-stream step of one channel
+// from LatticeIn to LatticeOut; 1 the fluence at the convergence probes
+// (every probe_stride-th cell on each axis); 2 the fluence of every cell
+// into MultipleFluence and per work group the power ledger (source,
+// absorbed, escaped through each grid face), summed on the host in a fixed
+// order so that a run gives the same bits every time.
+// Program options: EIKON_LATTICE_DIRECTIONS (6 or 18), EIKON_LATTICE_PASS,
+// EIKON_HAS_ANISOTROPY.
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+
+#include "common/grid_sampling.glsl"
+#include "common/lattice_directions.glsl"
+
+#ifndef EIKON_LATTICE_DIRECTIONS
+#define EIKON_LATTICE_DIRECTIONS 6
+#endif
+#ifndef EIKON_LATTICE_PASS
+#define EIKON_LATTICE_PASS 0
+#endif
+#ifndef EIKON_HAS_ANISOTROPY
+#define EIKON_HAS_ANISOTROPY 0
+#endif
+const int DIRECTIONS = EIKON_LATTICE_DIRECTIONS;
+
+layout(std430, binding = kRawFluence) readonly buffer RawFluence { float raw_fluence[]; };
+layout(std430, binding = kLatticeIn) readonly buffer LatticeIn { float density_in[]; };
+#if EIKON_LATTICE_PASS == 0
+layout(std430, binding = kLatticeOut) writeonly buffer LatticeOut { float density_out[]; };
+#elif EIKON_LATTICE_PASS == 1
+layout(std430, binding = kLatticeProbes) writeonly buffer LatticeProbes { float probe_fluence[]; };
+uniform int probe_stride;
+#else
+layout(std430, binding = kMultipleFluence) writeonly buffer MultipleFluence { float multiple_fluence[]; };
+layout(std430, binding = kLatticeTallies) writeonly buffer LatticeTallies { vec4 group_tallies[]; };
+shared float group_values[64 * 8];
+#endif
+#if EIKON_HAS_ANISOTROPY
+layout(binding = kAnisotropyTexture) uniform sampler3D anisotropy_texture;
+#endif
+
+uniform int channel;     // 0, 1, 2: the lattice runs one channel at a time
+uniform ivec3 periodic;  // 1 on an axis whose faces wrap (slab and infinite-medium checks); 0: outflow
+
+int cell_count() { return grid.resolution.x * grid.resolution.y * grid.resolution.z; }
+
+// The cell a link from `cell` along `offset` reaches: wrapped on periodic
+// axes; x = −1 where it leaves the grid.
+ivec3 linked_cell(ivec3 cell, ivec3 offset) {
+    ivec3 next = cell + offset;
+    ivec3 size = grid.resolution.xyz;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (next[axis] >= 0 && next[axis] < size[axis]) continue;
+        if (periodic[axis] == 0) return ivec3(-1);
+        next[axis] = (next[axis] + size[axis]) % size[axis];
+    }
+    return next;
+}
+
+struct Collision {
+    float outgoing[DIRECTIONS];  // W along each link
+    float absorbed;              // W
+    float source;                // W born from the light pass's scattering
+    float fluence;               // W/m²
+};
+
+Collision collide(ivec3 cell) {
+    float kappa = texelFetch(extinction_texture, cell, 0)[channel];
+    float sigma_s = texelFetch(scattering_texture, cell, 0)[channel];
+#if EIKON_HAS_ANISOTROPY
+    float g = texelFetch(anisotropy_texture, cell, 0).r;
+#else
+    float g = 0.0f;
+#endif
+    float reduced = sigma_s * (1.0f - g);
+    float sigma_t = max(kappa - sigma_s + reduced, 0.0f);
+    float albedo = sigma_t > 0.0f ? min(reduced / sigma_t, 1.0f) : 0.0f;
+    float volume = grid.voxel_size.w;
+    int index = grid_linear_index(cell);
+
+    Collision c;
+    c.source = sigma_s * raw_fluence[3 * index + channel] * volume;
+    float interactions = 0.0f;  // W of the arriving light that scatters or is absorbed in this voxel
+    float track = 0.0f;         // W·m: its track length
+    float escape = 0.0f;        // share of light born here that leaves its half link unscattered
+    float half_track = 0.0f;    // m: the mean track of that half link
+    float half_link[DIRECTIONS];  // transmittance of each half link, weighted
+    int cells = cell_count();
+    for (int i = 0; i < DIRECTIONS; ++i) {
+        ivec3 offset = lattice_offset(i);
+        float link = length(vec3(offset) * grid.voxel_size.xyz);
+        ivec3 from = linked_cell(cell, -offset);
+        float arriving = from.x < 0 ? 0.0f : density_in[i * cells + grid_linear_index(from)];
+        float transmittance = exp(-sigma_t * link);
+        c.outgoing[i] = arriving * transmittance;
+        interactions += arriving * (1.0f - transmittance);
+        track += arriving * link * mean_transmittance(sigma_t * link);
+        float weight = lattice_weight(i, DIRECTIONS);
+        half_link[i] = weight * exp(-0.5f * sigma_t * link);
+        escape += half_link[i];
+        half_track += weight * 0.5f * link * mean_transmittance(0.5f * sigma_t * link);
+    }
+    float born = albedo * interactions + c.source;
+    // All generations born here: born / (1 − a(1 − escape)). A voxel so
+    // thick that its escape underflows keeps its born light (absorbed).
+    float retention = max(1.0f - albedo * (1.0f - escape), 1e-7f);
+    float escaping = born * (escape / retention);
+    for (int i = 0; i < DIRECTIONS; ++i) c.outgoing[i] += escape > 0.0f ? escaping * (half_link[i] / escape) : 0.0f;
+    c.absorbed = (1.0f - albedo) * interactions + (born - escaping);
+    c.fluence = (track + born / retention * half_track) / volume;
+    return c;
+}
+
+void main() {
+#if EIKON_LATTICE_PASS == 1
+    ivec3 probe = ivec3(gl_GlobalInvocationID);
+    ivec3 probes = (grid.resolution.xyz + probe_stride - 1) / probe_stride;
+    if (any(greaterThanEqual(probe, probes))) return;
+    ivec3 cell = min(probe * probe_stride + probe_stride / 2, grid.resolution.xyz - 1);
+    probe_fluence[probe.x + probes.x * (probe.y + probes.y * probe.z)] = collide(cell).fluence;
+#else
+    ivec3 cell = ivec3(gl_GlobalInvocationID);
+    bool inside = all(lessThan(cell, grid.resolution.xyz));
+#if EIKON_LATTICE_PASS == 0
+    if (!inside) return;
+    Collision c = collide(cell);
+    int cells = cell_count();
+    int index = grid_linear_index(cell);
+    for (int i = 0; i < DIRECTIONS; ++i) density_out[i * cells + index] = c.outgoing[i];
+#else
+    // Ledger values of this cell: source, absorbed, escaped through −x, +x, −y, +y, −z, +z.
+    float values[8] = float[8](0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f);
+    if (inside) {
+        Collision c = collide(cell);
+        multiple_fluence[3 * grid_linear_index(cell) + channel] = c.fluence;
+        values[0] = c.source;
+        values[1] = c.absorbed;
+        for (int i = 0; i < DIRECTIONS; ++i) {
+            ivec3 offset = lattice_offset(i);
+            if (linked_cell(cell, offset).x >= 0) continue;
+            // The first axis on which the link leaves names the face.
+            ivec3 next = cell + offset;
+            int face = 0;
+            for (int axis = 2; axis >= 0; --axis)
+                if (periodic[axis] == 0 && (next[axis] < 0 || next[axis] >= grid.resolution[axis]))
+                    face = 2 * axis + (offset[axis] > 0 ? 1 : 0);
+            values[2 + face] += c.outgoing[i];
+        }
+    }
+    uint local = gl_LocalInvocationIndex;
+    for (int k = 0; k < 8; ++k) group_values[int(local) * 8 + k] = values[k];
+    barrier();
+    if (local == 0u) {
+        float sums[8] = float[8](0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f);
+        for (int l = 0; l < 64; ++l)
+            for (int k = 0; k < 8; ++k) sums[k] += group_values[l * 8 + k];
+        uint group = gl_WorkGroupID.x + gl_NumWorkGroups.x * (gl_WorkGroupID.y + gl_NumWorkGroups.y * gl_WorkGroupID.z);
+        group_tallies[2u * group] = vec4(sums[0], sums[1], sums[2], sums[3]);
+        group_tallies[2u * group + 1u] = vec4(sums[4], sums[5], sums[6], sums[7]);
+    }
+#endif
+#endif
+}
