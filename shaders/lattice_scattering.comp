@@ -3,8 +3,9 @@
 // lattice's links (common/lattice_directions.glsl) collide and stream,
 //   f_i(r + c_i, t + 1) = Θ f(r, t),
 // until the lattice holds the steady flow of light scattered at least once.
-// Its source is the power the light pass's photons lose to scattering,
-// σs·φ₁·V per voxel (φ₁ the raw fluence they deposit), born isotropically.
+// Its source is the power the light pass's photons lose to scattering in
+// each voxel (RawScattered, tallied by the σs/κ their attenuation used),
+// born isotropically.
 //
 // The collision is eq. 5 in exponential form. The paper's linear
 // Θ_ii = 1 − σt + σs/6 (σ per lattice step) goes negative once a voxel is
@@ -46,7 +47,7 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #endif
 const int DIRECTIONS = EIKON_LATTICE_DIRECTIONS;
 
-layout(std430, binding = kRawFluence) readonly buffer RawFluence { float raw_fluence[]; };
+layout(std430, binding = kRawScattered) readonly buffer RawScattered { float raw_scattered[]; };
 layout(std430, binding = kLatticeIn) readonly buffer LatticeIn { float density_in[]; };
 #if EIKON_LATTICE_PASS == 0
 layout(std430, binding = kLatticeOut) writeonly buffer LatticeOut { float density_out[]; };
@@ -102,7 +103,7 @@ Collision collide(ivec3 cell) {
     int index = grid_linear_index(cell);
 
     Collision c;
-    c.source = sigma_s * raw_fluence[3 * index + channel] * volume;
+    c.source = raw_scattered[3 * index + channel];
     float interactions = 0.0f;  // W of the arriving light that scatters or is absorbed in this voxel
     float track = 0.0f;         // W·m: its track length
     float escape = 0.0f;        // share of light born here that leaves its half link unscattered

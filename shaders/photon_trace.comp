@@ -12,6 +12,7 @@
 //   EIKON_RENORMALIZE      1: |v| = n(x) after every step
 //   EIKON_DISPERSION       1: each photon carries one RGB channel with its own index scale
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
+//   EIKON_LATTICE_SOURCE   1: also the power scattered per cell (the multiple-scattering lattice's source)
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].map.z)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
 //   EIKON_SHARP_SURFACES   1: the scene has sharp surfaces (common/sharp_surface_blocks.glsl)
@@ -46,6 +47,9 @@ layout(local_size_x = 64) in;
 #ifndef EIKON_DISPERSION
 #define EIKON_DISPERSION 0
 #endif
+#ifndef EIKON_LATTICE_SOURCE
+#define EIKON_LATTICE_SOURCE 0
+#endif
 #ifndef EIKON_STORE_FLUENCE
 #define EIKON_STORE_FLUENCE 0
 #endif
@@ -75,6 +79,9 @@ layout(local_size_x = 64) in;
 
 #if EIKON_STORE_FLUENCE > 0
 layout(std430, binding = kRawFluence) buffer RawFluence { float raw_fluence[]; };  // RGB per cell, W/m²
+#if EIKON_LATTICE_SOURCE
+layout(std430, binding = kRawScattered) buffer RawScattered { float raw_scattered[]; };  // RGB per cell, W
+#endif
 layout(std430, binding = kRawFluenceDirection) buffer RawFluenceDirection { float raw_fluence_direction[]; };  // xyz per cell
 #endif
 layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
@@ -188,7 +195,7 @@ uint deposits = 0u;
 // every voxel the segment crosses and adds the power-weighted length spent in
 // it, with Beer–Lambert decay along the way at the segment's extinction κ;
 // the power-weighted direction goes beside it.
-void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa) {
+void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa, vec3 sigma_s) {
 #if EIKON_STORE_FLUENCE > 0
     vec3 delta = b - a;
     float length_ = length(delta);
@@ -216,9 +223,10 @@ void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa) {
 #else
             bool stored = true;
 #endif
+            vec3 entering = power * beer_lambert_transmittance(kappa, t * length_);
+            vec3 track = entering * attenuated_track_length(kappa, piece);  // W·m
             if (stored) {
-                vec3 entering = power * beer_lambert_transmittance(kappa, t * length_);
-                vec3 value = entering * attenuated_track_length(kappa, piece) / grid.voxel_size.w;
+                vec3 value = track / grid.voxel_size.w;
                 atomicAdd(raw_fluence[index + 0u], value.r);
                 atomicAdd(raw_fluence[index + 1u], value.g);
                 atomicAdd(raw_fluence[index + 2u], value.b);
@@ -228,6 +236,16 @@ void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa) {
                 atomicAdd(raw_fluence_direction[index + 2u], weighted.z);
                 ++deposits;
             }
+#if EIKON_LATTICE_SOURCE
+            // The power scattered out of the photon here, by the σs/κ of the
+            // step's start that its attenuation used: the lattice's source.
+            vec3 scattered = track * sigma_s;
+            if (any(greaterThan(scattered, vec3(0.0f)))) {
+                atomicAdd(raw_scattered[index + 0u], scattered.r);
+                atomicAdd(raw_scattered[index + 1u], scattered.g);
+                atomicAdd(raw_scattered[index + 2u], scattered.b);
+            }
+#endif
         }
         if (t_next >= 1.0f) break;
         t = t_next;
@@ -530,7 +548,8 @@ void trace_photon(uint id) {
                                                chord_length * ds);
         }
         vec3 kappa = sample_extinction(start);
-        deposit_segment(start, hit.receiver >= 0 ? mix(start, x, hit.fraction) : x, power, kappa);
+        deposit_segment(start, hit.receiver >= 0 ? mix(start, x, hit.fraction) : x, power, kappa,
+                        sample_scattering(start));
         vec3 transmitted = power * beer_lambert_transmittance(kappa, travelled);
         absorbed += power - transmitted;
         power = transmitted;

@@ -45,8 +45,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
     // The lattice diffuses what the photons scattered, on the share that holds the whole pass.
     const bool holdsWholePass = !options.exchange || options.exchange->receivesTotals();
-    if (scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm && fields_.hasScattering() && photons_ &&
-        holdsWholePass)
+    if (photons_ && feedsLattice(scene, fields_) && holdsWholePass)
         lattice_ = std::make_unique<LatticeScattering>(fields.grid, fields_, LatticeSettings::of(scene.tracer));
     if (options.drawsImage)
         view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr,
@@ -141,7 +140,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         }));
     if (lattice_)
         result.stages.push_back(runStage("multiple_scattering", photonsNeeded, [&] {
-            last_.lattice = lattice_->run(fields_, photons_->rawFluence());
+            last_.lattice = lattice_->run(fields_, photons_->scatteredPower());
         }));
     const bool viewNeeded = view_ && (fieldsChanged || photonsNeeded || cameraChanged_);
     if (view_) result.stages.push_back(runStage("view", viewNeeded, [&] {

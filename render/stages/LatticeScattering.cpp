@@ -90,12 +90,12 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     result_ = compile(2);
 }
 
-LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffer& rawFluence) {
+LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffer& scatteredPower) {
     LatticeStats stats;
     stats.directions = settings_.directions;
     stats.warmStart = warm_;
     fields.bindForTracing();
-    rawFluence.bindStorage(layout::kRawFluence);
+    scatteredPower.bindStorage(layout::kRawScattered);
     for (int channel = 0; channel < 3; ++channel)
         stats.channels[channel] = runChannel(channel, warm_);
     warm_ = true;

@@ -69,10 +69,10 @@ class LatticeScattering {
 public:
     LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings);
 
-    // Diffuses the light the light pass scattered: `rawFluence` holds φ₁
-    // (RGB per cell, W/m², the photons' unsmoothed fluence: its σs·φ₁·V is
-    // exactly the power they lost to scattering).
-    LatticeStats run(const FieldTextures& fields, const gl::Buffer& rawFluence);
+    // Diffuses the light the light pass scattered: `scatteredPower` holds,
+    // RGB per cell in W, what the photons lost to scattering there
+    // (PhotonStage::scatteredPower).
+    LatticeStats run(const FieldTextures& fields, const gl::Buffer& scatteredPower);
     // The next run starts from no light rather than the last densities.
     void restart() { warm_ = false; }
 

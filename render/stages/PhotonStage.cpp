@@ -108,6 +108,11 @@ void requireEstimatorFits(const Scene& scene, bool scatters) {
                          "\"wavefront\"");
 }
 
+bool feedsLattice(const Scene& scene, const FieldTextures& fields) {
+    return scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm && fields.hasScattering() &&
+           scene.tracer.estimator == TracerDesc::Estimator::Photons;
+}
+
 unsigned defaultMaxSteps(const GridSpec& grid, double stepLength) {
     const glm::dvec3 extent = grid.extent();
     return static_cast<unsigned>(std::min(4.0 * (extent.x + extent.y + extent.z) / stepLength, 2147483647.0));
@@ -139,6 +144,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         defines.insert({{"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
                         {"EIKON_DISPERSION", tracer.dispersive() ? "1" : "0"},
                         {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
+                        {"EIKON_LATTICE_SOURCE", feedsLattice(scene, fields) ? "1" : "0"},
                         {"EIKON_BOUNCE", std::any_of(scene.receivers.begin(), scene.receivers.end(),
                                                      [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
                         {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
@@ -166,6 +172,8 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         fluence_ = gl::Buffer(bytes, gl::gridResource("the fluence", r.x, r.y, r.z));
         direction_ = gl::Buffer(bytes, gl::gridResource("the fluence direction", r.x, r.y, r.z));
         fluenceSmoothProgram_ = gl::compileComputeProgram("fluence_smooth.comp");
+        if (feedsLattice(scene, fields))
+            rawScattered_ = gl::Buffer(bytes, gl::gridResource("the photons' scattered power", r.x, r.y, r.z));
     }
     stats_ = gl::Buffer(sizeof(layout::GpuPhotonStats));
     const std::size_t recordedVertices =
@@ -232,6 +240,10 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
         rawDirection_.clearToZero();
         rawFluence_.bindStorage(layout::kRawFluence);
         rawDirection_.bindStorage(layout::kRawFluenceDirection);
+    }
+    if (rawScattered_.id()) {
+        rawScattered_.clearToZero();
+        rawScattered_.bindStorage(layout::kRawScattered);
     }
     if (!surfaces_.empty()) surfaces_.bind();
     PhotonStats stats;
@@ -369,7 +381,7 @@ void PhotonStage::combineShares(LightPassExchange& exchange, PhotonStats& stats)
     const std::vector<std::uint64_t> receiverTallies = receivers_.downloadTallies();
     tallies.sums.insert(tallies.sums.end(), receiverTallies.begin(), receiverTallies.end());
     tallies.maxima = {gpu.steps.z};
-    gl::Buffer* floatBuffers[] = {&rawFluence_, &rawDirection_, &paths_, &pathPower_};
+    gl::Buffer* floatBuffers[] = {&rawFluence_, &rawDirection_, &rawScattered_, &paths_, &pathPower_};
     for (const gl::Buffer* buffer : floatBuffers) {
         const std::vector<float> values = downloadFloats(*buffer);
         tallies.floatSums.insert(tallies.floatSums.end(), values.begin(), values.end());

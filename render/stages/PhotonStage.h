@@ -119,9 +119,10 @@ public:
     // direction (xyz per cell); empty unless storesFluence().
     const gl::Buffer& fluence() const { return fluence_; }
     const gl::Buffer& fluenceDirection() const { return direction_; }
-    // The unsmoothed fluence φ₁ of the whole pass: σs·φ₁·V per cell is the
-    // power the photons lost to scattering there (the lattice's source).
-    const gl::Buffer& rawFluence() const { return rawFluence_; }
+    // The power (W, RGB per cell) the photons lost to scattering, by the
+    // σs/κ their attenuation used: the multiple-scattering lattice's source.
+    // Empty unless the scene has a lattice (tracer.multiple_scattering).
+    const gl::Buffer& scatteredPower() const { return rawScattered_; }
     std::vector<float> downloadFluence() const;
     std::vector<float> downloadFluenceDirection() const;
     // Recorded vertices (xyz, w = 1 where written) of the recorded photons,
@@ -165,6 +166,7 @@ private:
     long long photons_ = 0;      // the count the emitters were built for
     glm::vec3 powerUnit_{0.0f};  // W per fixed-point tally unit, per channel
     gl::Buffer rawFluence_, rawDirection_, fluence_, direction_;
+    gl::Buffer rawScattered_;  // with a lattice
     gl::Buffer halfRawFluence_, halfRawDirection_, halfFluence_, halfDirection_;  // allocated by the first halved pass
     PhotonProgramOptions options_;
     gl::Buffer ends_;
@@ -184,6 +186,11 @@ private:
 // fluence grid. The stage checks it; a caller checks it first where it must
 // refuse before writing anything.
 void requireEstimatorFits(const Scene& scene, bool scatters);
+
+// Whether the scene diffuses what its photons scatter on a lattice
+// (tracer.multiple_scattering "lbm" where some voxel scatters): the photon
+// pass then tallies the power it scatters per cell.
+bool feedsLattice(const Scene& scene, const FieldTextures& fields);
 
 // Default trapped-ray cap: four crossings of the grid along all three axes
 // at the smallest step.

@@ -44,6 +44,7 @@ namespace {
 #include "shaders/common/step_size.glsl"
 #include "shaders/common/sharp_surfaces.glsl"
 #include "shaders/common/footprint_coverage.glsl"
+#include "shaders/common/lattice_directions.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 

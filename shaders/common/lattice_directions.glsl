@@ -48,9 +48,18 @@ int lattice_opposite(int i) {
 }
 
 // (1 − e^{−x})/x, the mean transmittance over a path of optical depth x: the
-// track length a photon lays down per unit of geometric path crossed. Its
-// series below 1e-3, where the quotient loses digits.
+// track length a photon lays down per unit of geometric path crossed. Below
+// x = 0.5 its Taylor series Σ (−x)^k/(k + 1)!, to k = 9 (error below 1e-9),
+// where the quotient would lose digits to cancellation.
 float mean_transmittance(float x) {
-    if (x < 1e-3f) return 1.0f - 0.5f * x + x * x / 6.0f;
+    if (x < 0.5f) {
+        float sum = 1.0f / 3628800.0f;  // 1/10!
+        float factorial = 3628800.0f;
+        for (int k = 9; k >= 1; --k) {
+            factorial /= float(k + 1);  // (k + 1)! → k!
+            sum = 1.0f / factorial - x * sum;
+        }
+        return sum;
+    }
     return (1.0f - exp(-x)) / x;
 }

@@ -68,6 +68,12 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"Children", {layout::kWavefrontChildren, 0, sizeof(layout::GpuWavefrontPatch)}},
         {"Counters", {layout::kWavefrontCounters, sizeof(layout::GpuWavefrontCounters), 0}},
         {"GlowCells", {layout::kGlowCells, 0, sizeof(layout::GpuGlowCell)}},
+        {"LatticeIn", {layout::kLatticeIn, 0, sizeof(float)}},
+        {"LatticeOut", {layout::kLatticeOut, 0, sizeof(float)}},
+        {"LatticeProbes", {layout::kLatticeProbes, 0, sizeof(float)}},
+        {"MultipleFluence", {layout::kMultipleFluence, 0, sizeof(float)}},
+        {"LatticeTallies", {layout::kLatticeTallies, 0, sizeof(glm::vec4)}},
+        {"RawScattered", {layout::kRawScattered, 0, sizeof(float)}},
     };
     return rows;
 }
@@ -125,6 +131,7 @@ std::vector<Variant> productionVariants() {
           {"EIKON_OCTREE_STEPS", "1"},
           {"EIKON_DISPERSION", "1"},
           {"EIKON_STORE_FLUENCE", "1"},
+          {"EIKON_LATTICE_SOURCE", "1"},
           {"EIKON_BOUNCE", "1"},
           {"EIKON_SHARP_SURFACES", "1"},
           {"EIKON_VOLUME_GLOW", "1"},
@@ -142,7 +149,18 @@ std::vector<Variant> productionVariants() {
           {"EIKON_STEP_STRUCTURE", "1"},
           {"EIKON_ENVIRONMENT", std::to_string(layout::kHdrEnvironment)},
           {"EIKON_SHARP_SURFACES", "1"},
+          {"EIKON_MULTIPLE_SCATTERING", "1"},
           {"EIKON_RECORD_EXIT", "1"}}},
+        {"lattice_scattering.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}, {"EIKON_LATTICE_PASS", "0"}}},
+        {"lattice_scattering.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}, {"EIKON_LATTICE_PASS", "1"}}},
+        {"lattice_scattering.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"},
+          {"EIKON_HAS_SCATTERING", "1"},
+          {"EIKON_HAS_ANISOTROPY", "1"},
+          {"EIKON_LATTICE_DIRECTIONS", "18"},
+          {"EIKON_LATTICE_PASS", "2"}}},
     };
 }
 

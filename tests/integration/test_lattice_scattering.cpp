@@ -31,12 +31,12 @@ using render::LatticeScattering;
 using render::LatticeSettings;
 using render::LatticeStats;
 
-// A homogeneous grey medium on `grid` with the lattice's source given as
-// the single-scattering fluence φ₁ per cell (σs·φ₁·V is the power born).
+// A homogeneous grey medium on `grid` with the lattice's source: the power
+// scattered out of the light pass in each cell.
 struct LatticeCase {
     GridSpec grid;
     double extinction = 1.0, scattering = 0.5;  // 1/m
-    std::vector<float> sourceFluence;           // RGB per cell, W/m²
+    std::vector<float> sourcePower;             // RGB per cell, W
 
     FieldSet fields() const {
         FieldSet set;
@@ -59,7 +59,7 @@ LatticeRun runLattice(const LatticeCase& lattice, const LatticeSettings& setting
     const FieldSet set = lattice.fields();
     render::FieldTextures textures;
     textures.upload(render::hostUpload(set));
-    const gl::Buffer source(lattice.sourceFluence.size() * sizeof(float), lattice.sourceFluence.data());
+    const gl::Buffer source(lattice.sourcePower.size() * sizeof(float), lattice.sourcePower.data());
     LatticeScattering stage(set.grid, textures, settings);
     LatticeRun run;
     run.stats = stage.run(textures, source);
@@ -94,10 +94,10 @@ void expectDiffusionProfile(int directions) {
     lattice.extinction = mua + mus;
     lattice.scattering = mus;
     const std::size_t cells = lattice.grid.cellCount();
-    lattice.sourceFluence.assign(3 * cells, 0.0f);
+    lattice.sourcePower.assign(3 * cells, 0.0f);
     const double power = 1.0;  // W, red channel only: the others hold no light
     const std::size_t centre = lattice.grid.linearIndex(n / 2, n / 2, n / 2);
-    lattice.sourceFluence[3 * centre] = static_cast<float>(power / (mus * lattice.grid.voxelVolume()));
+    lattice.sourcePower[3 * centre] = static_cast<float>(power);
 
     LatticeSettings settings;
     settings.directions = directions;
@@ -143,8 +143,8 @@ struct SlabResult {
 
 // A slab of optical thickness τ and albedo a filling a one-cell column
 // (periodic in x and y: a laterally infinite slab) of cubic voxels, lit at
-// normal incidence from z = 0 with E0 = 1 W/m². The source is exact: the
-// collimated beam's fluence averaged over each cell, E0·(e^{−τ_k} − e^{−τ_k+1})/Δτ.
+// normal incidence from z = 0 with E0 = 1 W/m². The source is exact: what
+// the collimated beam scatters in each cell, a·E0·h²·(e^{−τ_k} − e^{−τ_{k+1}}).
 // Cells: 40, or 4 per unit of τ where that is more (`cells` overrides).
 SlabResult latticeSlab(double tau, double albedo, int directions, double tolerance = 1e-6, int cells = 0) {
     const int n = cells > 0 ? cells : std::max(40, static_cast<int>(4 * tau));
@@ -153,11 +153,11 @@ SlabResult latticeSlab(double tau, double albedo, int directions, double toleran
     slab.grid = {glm::ivec3(1, 1, n), glm::dvec3(0.0), glm::dvec3(h, h, thickness)};
     slab.extinction = tau / thickness;
     slab.scattering = albedo * slab.extinction;
-    slab.sourceFluence.assign(3 * static_cast<std::size_t>(n), 0.0f);
+    slab.sourcePower.assign(3 * static_cast<std::size_t>(n), 0.0f);
     const double dtau = slab.extinction * h;
     for (int k = 0; k < n; ++k) {
-        const double phi = (std::exp(-k * dtau) - std::exp(-(k + 1) * dtau)) / dtau;
-        for (int c = 0; c < 3; ++c) slab.sourceFluence[3 * k + c] = static_cast<float>(phi);
+        const double scattered = albedo * h * h * (std::exp(-k * dtau) - std::exp(-(k + 1) * dtau));
+        for (int c = 0; c < 3; ++c) slab.sourcePower[3 * k + c] = static_cast<float>(scattered);
     }
     LatticeSettings settings;
     settings.directions = directions;
@@ -253,15 +253,15 @@ TEST(LatticeScattering, WarmStartsSaveStepsAndRunsRepeatBitForBit) {
     lattice.grid = {glm::ivec3(n), glm::dvec3(-0.12), glm::dvec3(0.12)};
     lattice.extinction = 50.0;
     lattice.scattering = 45.0;
-    lattice.sourceFluence.assign(3 * lattice.grid.cellCount(), 0.0f);
+    lattice.sourcePower.assign(3 * lattice.grid.cellCount(), 0.0f);
     for (int k = 8; k < 16; ++k)
         for (int j = 8; j < 16; ++j)
             for (int i = 8; i < 16; ++i)
-                for (int c = 0; c < 3; ++c) lattice.sourceFluence[3 * lattice.grid.linearIndex(i, j, k) + c] = 1.0f + c;
+                for (int c = 0; c < 3; ++c) lattice.sourcePower[3 * lattice.grid.linearIndex(i, j, k) + c] = 1.0f + c;
     const FieldSet set = lattice.fields();
     render::FieldTextures textures;
     textures.upload(render::hostUpload(set));
-    gl::Buffer source(lattice.sourceFluence.size() * sizeof(float), lattice.sourceFluence.data());
+    gl::Buffer source(lattice.sourcePower.size() * sizeof(float), lattice.sourcePower.data());
     LatticeSettings settings;
     settings.tolerance = 1e-4;
     LatticeScattering stage(set.grid, textures, settings), twin(set.grid, textures, settings);
@@ -275,7 +275,7 @@ TEST(LatticeScattering, WarmStartsSaveStepsAndRunsRepeatBitForBit) {
     EXPECT_TRUE(again.warmStart);
     EXPECT_EQ(again.iterations(), 3 * 2 * settings.checkInterval);
 
-    std::vector<float> brighter = lattice.sourceFluence;
+    std::vector<float> brighter = lattice.sourcePower;
     for (float& value : brighter) value *= 1.1f;
     source.upload(brighter.data(), brighter.size() * sizeof(float));
     const LatticeStats warm = stage.run(textures, source);
