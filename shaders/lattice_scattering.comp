@@ -28,7 +28,10 @@
 // (every probe_stride-th cell on each axis); 2 the fluence of every cell
 // into MultipleFluence and per work group the power ledger (source,
 // absorbed, escaped through each grid face), summed on the host in a fixed
-// order so that a run gives the same bits every time.
+// order so that a run gives the same bits every time; 3 whether the three
+// channels differ anywhere (medium, or source by more than float rounding):
+// where they do not, one channel is solved and its densities copied to the
+// other two.
 // Program options: EIKON_LATTICE_DIRECTIONS (6 or 18), EIKON_LATTICE_PASS,
 // EIKON_HAS_ANISOTROPY.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
@@ -54,6 +57,8 @@ layout(std430, binding = kLatticeOut) writeonly buffer LatticeOut { float densit
 #elif EIKON_LATTICE_PASS == 1
 layout(std430, binding = kLatticeProbes) writeonly buffer LatticeProbes { float probe_fluence[]; };
 uniform int probe_stride;
+#elif EIKON_LATTICE_PASS == 3
+layout(std430, binding = kLatticeGrey) buffer LatticeGrey { uint channels_differ; };
 #else
 layout(std430, binding = kMultipleFluence) writeonly buffer MultipleFluence { float multiple_fluence[]; };
 layout(std430, binding = kLatticeTallies) writeonly buffer LatticeTallies { vec4 group_tallies[]; };
@@ -104,6 +109,18 @@ Collision collide(ivec3 cell) {
 
     Collision c;
     c.source = raw_scattered[3 * index + channel];
+    // Per length class (common/lattice_directions.glsl): a link's
+    // transmittance, its mean transmittance, and those of half a link.
+    float transmittance[6], track_per_length[6], half_transmittance[6], half_track_per_length[6], link_length[6];
+    for (int k = 0; k < 6; ++k) {
+        ivec3 offset = lattice_offset(k < 3 ? 2 * k : 6 + 4 * (k - 3));
+        link_length[k] = length(vec3(offset) * grid.voxel_size.xyz);
+        float depth = sigma_t * link_length[k];
+        transmittance[k] = exp(-depth);
+        half_transmittance[k] = exp(-0.5f * depth);
+        track_per_length[k] = mean_transmittance(depth);
+        half_track_per_length[k] = mean_transmittance(0.5f * depth);
+    }
     float interactions = 0.0f;  // W of the arriving light that scatters or is absorbed in this voxel
     float track = 0.0f;         // W·m: its track length
     float escape = 0.0f;        // share of light born here that leaves its half link unscattered
@@ -111,18 +128,16 @@ Collision collide(ivec3 cell) {
     float half_link[DIRECTIONS];  // transmittance of each half link, weighted
     int cells = cell_count();
     for (int i = 0; i < DIRECTIONS; ++i) {
-        ivec3 offset = lattice_offset(i);
-        float link = length(vec3(offset) * grid.voxel_size.xyz);
-        ivec3 from = linked_cell(cell, -offset);
+        int k = lattice_length_class(i);
+        ivec3 from = linked_cell(cell, -lattice_offset(i));
         float arriving = from.x < 0 ? 0.0f : density_in[i * cells + grid_linear_index(from)];
-        float transmittance = exp(-sigma_t * link);
-        c.outgoing[i] = arriving * transmittance;
-        interactions += arriving * (1.0f - transmittance);
-        track += arriving * link * mean_transmittance(sigma_t * link);
+        c.outgoing[i] = arriving * transmittance[k];
+        interactions += arriving * (1.0f - transmittance[k]);
+        track += arriving * link_length[k] * track_per_length[k];
         float weight = lattice_weight(i, DIRECTIONS);
-        half_link[i] = weight * exp(-0.5f * sigma_t * link);
+        half_link[i] = weight * half_transmittance[k];
         escape += half_link[i];
-        half_track += weight * 0.5f * link * mean_transmittance(0.5f * sigma_t * link);
+        half_track += weight * 0.5f * link_length[k] * half_track_per_length[k];
     }
     float born = albedo * interactions + c.source;
     // All generations born here: born / (1 − a(1 − escape)). A voxel so
@@ -136,7 +151,20 @@ Collision collide(ivec3 cell) {
 }
 
 void main() {
-#if EIKON_LATTICE_PASS == 1
+#if EIKON_LATTICE_PASS == 3
+    ivec3 cell = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(cell, grid.resolution.xyz))) return;
+    int index = 3 * grid_linear_index(cell);
+    vec3 kappa = texelFetch(extinction_texture, cell, 0).rgb;
+    vec3 sigma_s = texelFetch(scattering_texture, cell, 0).rgb;
+    vec3 source = vec3(raw_scattered[index], raw_scattered[index + 1], raw_scattered[index + 2]);
+    // The sources are float sums in an order the channels need not share:
+    // equal to a part in 1e6 counts as the same.
+    float largest = max(source.r, max(source.g, source.b));
+    if (kappa.r != kappa.g || kappa.g != kappa.b || sigma_s.r != sigma_s.g || sigma_s.g != sigma_s.b ||
+        largest - min(source.r, min(source.g, source.b)) > 1e-6f * largest)
+        atomicOr(channels_differ, 1u);
+#elif EIKON_LATTICE_PASS == 1
     ivec3 probe = ivec3(gl_GlobalInvocationID);
     ivec3 probes = (grid.resolution.xyz + probe_stride - 1) / probe_stride;
     if (any(greaterThanEqual(probe, probes))) return;

@@ -94,6 +94,26 @@ layout(std430, binding = kFluenceDirection) readonly buffer FluenceDirection { f
 #endif
 #if EIKON_MULTIPLE_SCATTERING
 layout(std430, binding = kMultipleFluence) readonly buffer MultipleFluence { float multiple_fluence[]; };
+
+// The lattice's fluence at x, trilinear between cell centres (the lattice
+// is smooth on the scale of a cell, and a nearest-cell read shows the
+// voxels in a coarse grid).
+vec3 multiple_fluence_at(vec3 x) {
+    vec3 u = (x - grid.bounds_min.xyz) / grid.voxel_size.xyz - 0.5f;
+    ivec3 last = grid.resolution.xyz - 1;
+    ivec3 low = clamp(ivec3(floor(u)), ivec3(0), last);
+    vec3 t = clamp(u - vec3(low), vec3(0.0f), vec3(1.0f));
+    vec3 sum = vec3(0.0f);
+    for (int corner = 0; corner < 8; ++corner) {
+        ivec3 bit = ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+        ivec3 cell = min(low + bit, last);
+        vec3 weight = mix(vec3(1.0f) - t, t, vec3(bit));
+        uint index = 3u * uint(grid_linear_index(cell));
+        sum += weight.x * weight.y * weight.z *
+               vec3(multiple_fluence[index], multiple_fluence[index + 1u], multiple_fluence[index + 2u]);
+    }
+    return sum;
+}
 #endif
 #if EIKON_HAS_ANISOTROPY
 layout(binding = kAnisotropyTexture) uniform sampler3D anisotropy_texture;
@@ -135,8 +155,7 @@ vec3 in_scattered_radiance(vec3 x, vec3 d) {
     }
 #if EIKON_MULTIPLE_SCATTERING
     // Light scattered before, from the lattice: isotropic ([Geist LBL] §III-D).
-    vec3 multiple = vec3(multiple_fluence[index], multiple_fluence[index + 1u], multiple_fluence[index + 2u]);
-    return sample_scattering(x) * (phi * phase + multiple * isotropic);
+    return sample_scattering(x) * (phi * phase + multiple_fluence_at(x) * isotropic);
 #else
     return sample_scattering(x) * phi * phase;
 #endif

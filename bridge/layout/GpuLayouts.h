@@ -58,6 +58,7 @@
     X(kLatticeOut, 28)          /* buffer LatticeOut { float density[]; }: the same after one step, written */ \
     X(kLatticeProbes, 28)       /* buffer LatticeProbes { float fluence[]; }: the lattice's fluence at its probes (probe pass) */ \
     X(kLatticeTallies, 28)      /* buffer LatticeTallies { vec4 tallies[]; }: per work group, the lattice's ledger (result pass) */ \
+    X(kLatticeGrey, 28)         /* buffer LatticeGrey { uint differ; }: 1 where the channels' media or sources differ (grey pass) */ \
     X(kRawScattered, 29)        /* buffer RawScattered { float scattered[]; }: RGB per cell, W the photons lost to scattering */ \
     X(kMultipleFluence, 30)     /* buffer MultipleFluence { float fluence[]; }: RGB per cell, W/m², light scattered ≥ once */
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -88,6 +89,17 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     step_ = compile(0);
     probe_ = compile(1);
     result_ = compile(2);
+    grey_ = compile(3);
+    greyFlag_ = gl::Buffer(sizeof(std::uint32_t));
+}
+
+bool LatticeScattering::channelsDiffer() {
+    greyFlag_.clearToZero();
+    greyFlag_.bindStorage(layout::kLatticeGrey);
+    grey_.use();
+    grey_.dispatchOverCells(grid_.resolution);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    return greyFlag_.downloadAs<std::uint32_t>() != 0;
 }
 
 LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffer& scatteredPower) {
@@ -96,8 +108,24 @@ LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffe
     stats.warmStart = warm_;
     fields.bindForTracing();
     scatteredPower.bindStorage(layout::kRawScattered);
-    for (int channel = 0; channel < 3; ++channel)
-        stats.channels[channel] = runChannel(channel, warm_);
+    stats.grey = !channelsDiffer();
+    if (stats.grey) {
+        // The same bits in every channel: solve one, copy its densities, and
+        // take the others' fluence and ledger from them.
+        stats.channels[0] = runChannel(0, warm_);
+        for (int channel = 1; channel < 3; ++channel) {
+            for (int half = 0; half < 2; ++half) states_[channel][half].copyFrom(states_[0][half]);
+            current_[channel] = current_[0];
+            stats.channels[channel] = stats.channels[0];
+            const LatticeChannel tally = ledger(channel, states_[channel][current_[channel]]);
+            stats.channels[channel].source = tally.source;
+            stats.channels[channel].absorbed = tally.absorbed;
+            stats.channels[channel].escaped = tally.escaped;
+            stats.channels[channel].iterations = 0;
+        }
+    } else {
+        for (int channel = 0; channel < 3; ++channel) stats.channels[channel] = runChannel(channel, warm_);
+    }
     warm_ = true;
     gl::checkpoint("lattice scattering");
     return stats;

@@ -6,7 +6,9 @@
 // again (isotropically: the lattice keeps no finer angular detail).
 //
 // Channels run one after another (each has its own pair of density buffers,
-// so a 128³ grid of 6 links fits one storage block on every driver). Each
+// so a 128³ grid of 6 links fits one storage block on every driver); where
+// the medium and the source are grey (the same in all three channels,
+// checked on the GPU each frame) the first is solved and copied. Each
 // converges on its own: every `checkInterval` steps the fluence at a sparse
 // set of probe cells is read back; with Δ the relative L1 change since the
 // last check and r the ratio of successive Δ (the lattice converges
@@ -58,6 +60,7 @@ struct LatticeChannel {
 struct LatticeStats {
     int directions = 0;
     bool warmStart = false;  // began from the previous frame's densities
+    bool grey = false;       // one channel solved for all three
     std::array<LatticeChannel, 3> channels;
     int iterations() const;  // all channels together
     bool capped() const;
@@ -88,10 +91,11 @@ private:
     GridSpec grid_;
     LatticeSettings settings_;
     glm::ivec3 probes_{0};
-    gl::Program step_, probe_, result_;
+    bool channelsDiffer();
+    gl::Program step_, probe_, result_, grey_;
     std::array<std::array<gl::Buffer, 2>, 3> states_;  // per channel, ping-pong
     std::array<int, 3> current_{0, 0, 0};              // which of the pair holds the densities
-    gl::Buffer probeValues_, tallies_, fluence_;
+    gl::Buffer probeValues_, tallies_, fluence_, greyFlag_;
     bool warm_ = false;
 };
 

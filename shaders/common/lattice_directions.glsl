@@ -40,6 +40,10 @@ float lattice_weight(int i, int directions) {
     return i < 6 ? 1.0f / 30.0f : 1.0f / 15.0f;
 }
 
+// The links' length classes: 0–2 along x, y, z; 3–5 the diagonals of the
+// xy, yz and zx planes (each class one length on any box voxel).
+int lattice_length_class(int i) { return i < 6 ? i / 2 : 3 + (i - 6) / 4; }
+
 // The direction with the opposite offset.
 int lattice_opposite(int i) {
     if (i < 6) return (i % 2 == 0) ? i + 1 : i - 1;

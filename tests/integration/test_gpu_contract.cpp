@@ -74,6 +74,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"MultipleFluence", {layout::kMultipleFluence, 0, sizeof(float)}},
         {"LatticeTallies", {layout::kLatticeTallies, 0, sizeof(glm::vec4)}},
         {"RawScattered", {layout::kRawScattered, 0, sizeof(float)}},
+        {"LatticeGrey", {layout::kLatticeGrey, sizeof(std::uint32_t), 0}},
     };
     return rows;
 }
@@ -155,6 +156,8 @@ std::vector<Variant> productionVariants() {
          {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}, {"EIKON_LATTICE_PASS", "0"}}},
         {"lattice_scattering.comp",
          {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}, {"EIKON_LATTICE_PASS", "1"}}},
+        {"lattice_scattering.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}, {"EIKON_LATTICE_PASS", "3"}}},
         {"lattice_scattering.comp",
          {{"EIKON_HAS_EXTINCTION", "1"},
           {"EIKON_HAS_SCATTERING", "1"},
