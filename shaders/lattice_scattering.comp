@@ -1,4 +1,4 @@
-// Multiple scattering by lattice-Boltzmann lighting ([Geist LBL] §III-C,
+// Multiple scattering by lattice-Boltzmann lighting ([Bernabei12] §III-C,
 // eqs. 4–5): per voxel and channel, the photon densities f_i along the
 // lattice's links (common/lattice_directions.glsl) collide and stream,
 //   f_i(r + c_i, t + 1) = Θ f(r, t),

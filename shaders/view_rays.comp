@@ -154,7 +154,7 @@ vec3 in_scattered_radiance(vec3 x, vec3 d) {
         phase = mix(isotropic, henyey_greenstein(cos_theta, g), coherence);
     }
 #if EIKON_MULTIPLE_SCATTERING
-    // Light scattered before, from the lattice: isotropic ([Geist LBL] §III-D).
+    // Light scattered before, from the lattice: isotropic ([Bernabei12] §III-D).
     return sample_scattering(x) * (phi * phase + multiple_fluence_at(x) * isotropic);
 #else
     return sample_scattering(x) * phi * phase;

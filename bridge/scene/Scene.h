@@ -210,10 +210,10 @@ struct TracerDesc {
         int reflections = 1;          // Fresnel branches followed: reflected at the first, second, … Fresnel event
     } wavefront;
     // Light scattered more than once: not followed (single scattering only),
-    // or diffused on a lattice ([Geist LBL] §III-C; render/stages/LatticeScattering).
+    // or diffused on a lattice ([Bernabei12] §III-C; render/stages/LatticeScattering).
     enum class MultipleScattering { None, Lbm } multipleScattering = MultipleScattering::None;
     struct Lattice {
-        int directions = 18;       // links per voxel: 6 ([Geist LBL]'s) or 18 (with the face diagonals)
+        int directions = 18;       // links per voxel: 6 ([Bernabei12]'s) or 18 (with the face diagonals)
         double tolerance = 1e-3;   // converged below this estimated remaining relative change at the probes, > 0
         int maxIterations = 4000;  // steps per channel and frame, >= 1
     } lattice;

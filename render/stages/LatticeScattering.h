@@ -1,4 +1,4 @@
-// Multiple scattering by lattice-Boltzmann lighting ([Geist LBL] §III-C;
+// Multiple scattering by lattice-Boltzmann lighting ([Bernabei12] §III-C;
 // shaders/lattice_scattering.comp): the power the light pass's photons lose
 // to scattering is born on a lattice of 6 or 18 links per voxel, which
 // collides and streams it until the flow is steady; the view pass then adds

@@ -1,8 +1,8 @@
 // The direction sets of the lattice that carries multiply scattered light
-// ([Geist LBL] §III-C, eqs. 4–5): D3Q6, the six principal directions the
+// ([Bernabei12] §III-C, eqs. 4–5): D3Q6, the six principal directions the
 // paper uses, and D3Q18, which adds the twelve face diagonals of the
-// original lattice-Boltzmann lighting (Geist and Steele's 18 links, here
-// without the rest particle). A link moves a photon density to the
+// original lattice-Boltzmann lighting ([Geist04]'s 18 links, here without
+// the rest particle). A link moves a photon density to the
 // neighbour at offset c_i in one lattice step.
 //
 // Weights w_i are the share of isotropically scattered power each link

@@ -197,7 +197,7 @@ TEST(LatticeScattering, SlabLedgerCloses) {
 // isotropic density is φ/4 in the continuum, 0.225·φ on 18 links and φ/6 on
 // 6), and at low albedo most of the reflected light leaves after one or two
 // scatterings, from within a mean free path of the face. The 6 links of
-// [Geist LBL] are worse everywhere (reflectance 38–40% low at albedo 0.5,
+// [Bernabei12] are worse everywhere (reflectance 38–40% low at albedo 0.5,
 // 4–7% at 0.99); the 18-link lattice is the closer in every case. Where the
 // reference has fewer than 100 transmitted photons (τ = 20 below albedo
 // 0.99) its binomial error is added to the bound; at τ = 20, albedo 0.5
