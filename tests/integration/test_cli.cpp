@@ -231,6 +231,33 @@ TEST_F(Cli, WavefrontInAScatteringSceneIsRefusedBeforeAnythingIsWritten) {
     EXPECT_FALSE(fs::exists(out));
 }
 
+// Multiple scattering by --set: the first frame's report carries the
+// lattice's steps and ledger; the second frame of a static scene runs no
+// lattice (nothing changed) and reports none.
+TEST_F(Cli, MultipleScatteringReachesTheReport) {
+    const std::string scene = writeScene(
+        "milky.json", replaced(R"("medium": {"index": 1.0})",
+                               R"("medium": {"index": 1.0, "extinction": 4, "scattering": 3.6})"));
+    const fs::path out = dir_ / "out";
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() +
+                                     " --frames 2 --quiet --set 'tracer.multiple_scattering=\"lbm\"'");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    std::ifstream report(out / "report.jsonl");
+    std::string first, second;
+    std::getline(report, first);
+    std::getline(report, second);
+    const nlohmann::json frame = nlohmann::json::parse(first);
+    ASSERT_TRUE(frame.contains("multiple_scattering")) << first;
+    const nlohmann::json& lattice = frame["multiple_scattering"];
+    EXPECT_EQ(lattice["directions"], 18);
+    EXPECT_GT(lattice["iterations"][0].get<int>(), 0);
+    EXPECT_GT(lattice["power_w"]["source"][0].get<double>(), 0.0);
+    EXPECT_LT(lattice["energy_balance_error"].get<double>(), 1e-2);
+    EXPECT_NE(first.find("\"name\":\"multiple_scattering\",\"ran\":true"), std::string::npos) << first;
+    EXPECT_NE(second.find("\"name\":\"multiple_scattering\",\"ran\":false"), std::string::npos) << second;
+    EXPECT_FALSE(nlohmann::json::parse(second).contains("multiple_scattering"));
+}
+
 TEST_F(Cli, VtkExportWritesEachFramesDeformedMesh) {
     const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/twisting_glass.json";
     const fs::path out = dir_ / "out";

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <tuple>
 
 namespace eikon {
 namespace {
@@ -142,6 +143,35 @@ TEST(SceneParser, NewKeysTakeDefaults) {
         EXPECT_EQ(tracer.dispersion, Rgb(1.0));
         EXPECT_FALSE(tracer.storeFluence);
         EXPECT_EQ(tracer.maxStepVoxels, defaults.tracer.maxStepVoxels);
+        EXPECT_EQ(tracer.multipleScattering, TracerDesc::MultipleScattering::None);
+        EXPECT_EQ(tracer.lattice.directions, 18);
+        EXPECT_DOUBLE_EQ(tracer.lattice.tolerance, 1e-3);
+        EXPECT_EQ(tracer.lattice.maxIterations, 4000);
+    }
+}
+
+TEST(SceneParser, MultipleScatteringKeys) {
+    json scene = validScene();
+    scene["tracer"] = json::parse(R"({"multiple_scattering": "lbm", "lbm_directions": 6, "lbm_tolerance": 1e-5,
+                                      "lbm_max_iterations": 250})");
+    const TracerDesc tracer = parseScene(scene, "test.json").tracer;
+    EXPECT_EQ(tracer.multipleScattering, TracerDesc::MultipleScattering::Lbm);
+    EXPECT_EQ(tracer.lattice.directions, 6);
+    EXPECT_DOUBLE_EQ(tracer.lattice.tolerance, 1e-5);
+    EXPECT_EQ(tracer.lattice.maxIterations, 250);
+}
+
+TEST(SceneParserErrors, MultipleScatteringValuesAreRefusedAtTheirPath) {
+    for (const auto& [key, value, detail] :
+         {std::tuple<const char*, json, const char*>{"multiple_scattering", "diffusion", "\"lbm\""},
+          {"lbm_directions", 12, "6 or 18"},
+          {"lbm_directions", 26, "18"},
+          {"lbm_tolerance", 0, "(0, 1)"},
+          {"lbm_tolerance", 1, "(0, 1)"},
+          {"lbm_max_iterations", 0, ""}}) {
+        json scene = validScene();
+        scene["tracer"] = {{key, value}};
+        expectErrorAt(scene, std::string("tracer.") + key, detail);
     }
 }
 
