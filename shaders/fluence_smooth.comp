@@ -2,7 +2,8 @@
 // fluence and power-weighted direction are filtered with the binomial kernel
 // [1 2 1]/4 along each axis (weights outside the grid left out and the rest
 // renormalised), for the view pass to read; `scale` multiplies both (2 for
-// the fluence of half the photons, ErrorEstimateStage).
+// the fluence of half the photons, ErrorEstimateStage). With `reach` 0 (the
+// wavefront's fluence, which has no noise) the cell is copied unfiltered.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "common/grid_sampling.glsl"
@@ -13,6 +14,7 @@ layout(std430, binding = kFluence) writeonly buffer Fluence { float fluence[]; }
 layout(std430, binding = kFluenceDirection) writeonly buffer FluenceDirection { float fluence_direction[]; };
 
 uniform float scale;
+uniform int reach;  // 1: the 3×3×3 kernel; 0: the cell itself
 
 void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID);
@@ -20,9 +22,9 @@ void main() {
     vec3 phi = vec3(0.0f);
     vec3 direction = vec3(0.0f);
     float weights = 0.0f;
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
+    for (int dz = -reach; dz <= reach; ++dz)
+        for (int dy = -reach; dy <= reach; ++dy)
+            for (int dx = -reach; dx <= reach; ++dx) {
                 ivec3 neighbour = cell + ivec3(dx, dy, dz);
                 if (any(lessThan(neighbour, ivec3(0))) || any(greaterThanEqual(neighbour, grid.resolution.xyz))) continue;
                 float weight = float((2 - abs(dx)) * (2 - abs(dy)) * (2 - abs(dz)));

@@ -11,7 +11,7 @@
 //   EIKON_OCTREE_STEPS     1: adaptive steps from the step structure
 //   EIKON_RENORMALIZE      1: |v| = n(x) after every step
 //   EIKON_DISPERSION       1: each photon carries one RGB channel with its own index scale
-//   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
+//   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere (common/fluence_deposits.glsl)
 //   EIKON_LATTICE_SOURCE   1: also the power scattered per cell (the multiple-scattering lattice's source)
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].map.z)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
@@ -47,12 +47,6 @@ layout(local_size_x = 64) in;
 #ifndef EIKON_DISPERSION
 #define EIKON_DISPERSION 0
 #endif
-#ifndef EIKON_LATTICE_SOURCE
-#define EIKON_LATTICE_SOURCE 0
-#endif
-#ifndef EIKON_STORE_FLUENCE
-#define EIKON_STORE_FLUENCE 0
-#endif
 #ifndef EIKON_BOUNCE
 #define EIKON_BOUNCE 0
 #endif
@@ -75,15 +69,8 @@ layout(local_size_x = 64) in;
 #include "common/ray_march.glsl"
 #include "common/emitters.glsl"
 #include "common/suspended_photons.glsl"
+#include "common/fluence_deposits.glsl"
 
-
-#if EIKON_STORE_FLUENCE > 0
-layout(std430, binding = kRawFluence) buffer RawFluence { float raw_fluence[]; };  // RGB per cell, W/m²
-#if EIKON_LATTICE_SOURCE
-layout(std430, binding = kRawScattered) buffer RawScattered { float raw_scattered[]; };  // RGB per cell, W
-#endif
-layout(std430, binding = kRawFluenceDirection) buffer RawFluenceDirection { float raw_fluence_direction[]; };  // xyz per cell
-#endif
 layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
 const uint MAX_BOUNCES = 16u;
@@ -186,82 +173,6 @@ void deposit_on_receiver(ReceiverHit hit, vec3 power) {
     uvec3 units = power_units(power);
     for (int channel = 0; channel < 3; ++channel)
         if (units[channel] != 0u) add_wide_receiver(base + uint(2 * channel), units[channel]);
-}
-
-uint deposits = 0u;
-
-// Track-length estimator over the segment a → b (docs/architecture.md,
-// Conventions: φ = Σ Φ·ℓ / h³): a 3D DDA ([Amanatides87]) visits
-// every voxel the segment crosses and adds the power-weighted length spent in
-// it, with Beer–Lambert decay along the way at the segment's extinction κ;
-// the power-weighted direction goes beside it.
-void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa, vec3 sigma_s) {
-#if EIKON_STORE_FLUENCE > 0
-    vec3 delta = b - a;
-    float length_ = length(delta);
-    if (length_ <= 0.0f) return;
-    vec3 direction = delta / length_;
-    vec3 p = (a - grid.bounds_min.xyz) / grid.voxel_size.xyz;
-    vec3 q = (b - grid.bounds_min.xyz) / grid.voxel_size.xyz;
-    vec3 span = q - p;
-    ivec3 cell = clamp(ivec3(floor(p)), ivec3(0), grid.resolution.xyz - 1);
-    ivec3 stride = ivec3(sign(span));
-    vec3 inverse = 1.0f / abs(span);
-    vec3 next_face = vec3(cell) + step(vec3(0.0f), span);  // the face ahead on each axis
-    vec3 t_max = mix((next_face - p) / span, vec3(1e30f), equal(span, vec3(0.0f)));
-    vec3 t_delta = mix(inverse, vec3(1e30f), equal(span, vec3(0.0f)));
-    float t = 0.0f;
-    int guard = 3 * (int(abs(span.x)) + int(abs(span.y)) + int(abs(span.z))) + 6;
-    spend_loops(uint(guard));
-    for (int i = 0; i < guard; ++i) {
-        float t_next = min(1.0f, min(t_max.x, min(t_max.y, t_max.z)));
-        float piece = (t_next - t) * length_;
-        if (piece > 0.0f) {
-            uint index = 3u * uint(grid_linear_index(cell));
-#if EIKON_STORE_FLUENCE == 1
-            bool stored = any(greaterThan(texelFetch(scattering_texture, cell, 0).rgb, vec3(0.0f)));
-#else
-            bool stored = true;
-#endif
-            vec3 entering = power * beer_lambert_transmittance(kappa, t * length_);
-            vec3 track = entering * attenuated_track_length(kappa, piece);  // W·m
-            if (stored) {
-                vec3 value = track / grid.voxel_size.w;
-                atomicAdd(raw_fluence[index + 0u], value.r);
-                atomicAdd(raw_fluence[index + 1u], value.g);
-                atomicAdd(raw_fluence[index + 2u], value.b);
-                vec3 weighted = (value.r + value.g + value.b) * direction;
-                atomicAdd(raw_fluence_direction[index + 0u], weighted.x);
-                atomicAdd(raw_fluence_direction[index + 1u], weighted.y);
-                atomicAdd(raw_fluence_direction[index + 2u], weighted.z);
-                ++deposits;
-            }
-#if EIKON_LATTICE_SOURCE
-            // The power scattered out of the photon here, by the σs/κ of the
-            // step's start that its attenuation used: the lattice's source.
-            vec3 scattered = track * sigma_s;
-            if (any(greaterThan(scattered, vec3(0.0f)))) {
-                atomicAdd(raw_scattered[index + 0u], scattered.r);
-                atomicAdd(raw_scattered[index + 1u], scattered.g);
-                atomicAdd(raw_scattered[index + 2u], scattered.b);
-            }
-#endif
-        }
-        if (t_next >= 1.0f) break;
-        t = t_next;
-        if (t_max.x <= t_max.y && t_max.x <= t_max.z) {
-            cell.x += stride.x;
-            t_max.x += t_delta.x;
-        } else if (t_max.y <= t_max.z) {
-            cell.y += stride.y;
-            t_max.y += t_delta.y;
-        } else {
-            cell.z += stride.z;
-            t_max.z += t_delta.z;
-        }
-        if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, grid.resolution.xyz))) break;
-    }
-#endif
 }
 
 uint emitter_of(uint photon) {

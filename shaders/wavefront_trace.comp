@@ -11,8 +11,13 @@
 // (`min_power`). A finished patch deposits its power — E = Φ_patch / area,
 // eq. 15 — over the texels its footprint covers by exact coverage
 // (common/wavefront_deposits.glsl), so power is conserved even where a
-// caustic folds the footprint to a line. No sampling: the same scene gives
-// the same bits.
+// caustic folds the footprint to a line. Where the pass stores fluence, a
+// patch also splits while its tube through the grid is wider than
+// `split_voxels`, and a finished patch traces its tube's axis — the ray of
+// its centroid — depositing its power along the way by cloud-in-cell
+// weights (common/fluence_deposits.glsl), the photons' track-length
+// estimator without their noise. No sampling: the same scene gives the same
+// receiver bits (fluence sums floats, equal to their rounding).
 //
 // One program, three modes (uniform `mode`), one invocation a patch or a ray:
 //   0 seed:   patch p of this chunk of the emitter's faces of grid_cells²
@@ -23,7 +28,7 @@
 //             their new corners (its edge midpoints) untraced.
 //
 // Program options (#defines set by WavefrontStage): those of
-// common/ray_march.glsl, and
+// common/ray_march.glsl and common/fluence_deposits.glsl, and
 //   EIKON_LOOP_BUDGET      loop iterations an invocation may run where the driver caps them
 //                          (common/loop_budget.glsl); 0: no cap
 layout(local_size_x = 64) in;
@@ -44,12 +49,14 @@ layout(local_size_x = 64) in;
 #include "common/footprint_coverage.glsl"
 #include "common/photon_stats_block.glsl"
 #include "common/pass_loops.glsl"
+#include "common/fluence_deposits.glsl"
 
 struct Corner {
     vec4 ends;      // xy: emission square; zw: receiver map coordinates
     vec4 power;     // rgb: arriving power per unit power density; w: history bits
     vec4 absorbed;  // rgb: absorbed; w: fate | (receiver + 1) << 4
     vec4 source;    // rgb: power the ray starts this wavefront with (emitted, or reflected into the branch)
+    vec4 exit;      // xyz: the last point in the grid the ray reached; w: 1 if it reached the grid
 };
 struct Patch {
     Corner corners[3];
@@ -64,7 +71,8 @@ layout(std430, binding = kWavefrontCounters) buffer Counters {
     uint split_patches;
     uint limited_patches;
     uint traced_rays;
-    uint unused_counters[3];
+    uint tube_rays;
+    uint unused_counters[2];
 };
 layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
@@ -78,7 +86,8 @@ uniform uint max_depth;       // splits a patch may descend by
 uniform uint capacity;        // patches the children buffer holds (a multiple of 4)
 uniform float split_texels;   // largest footprint edge, in texels, of a finished patch
 uniform float tear_texels;    // largest straight footprint edge, in texels, of a finished torn patch
-uniform float min_power;      // share of a texel's unobstructed power below which a patch does not split
+uniform float min_power;      // share of a texel's (voxel's) unobstructed power below which a patch does not split
+uniform float split_voxels;   // largest width, in voxels, of a finished patch's tube through the grid (fluence)
 uniform int channel;          // −1: all channels at once; 0, 1, 2: this channel only (dispersion)
 uniform int branch;           // −1: the main wavefront; b: the branch reflected at Fresnel event b
 const uint kUnbranched = 0xFFFFFFu;  // history of a ray that ended before its branch's reflection
@@ -86,6 +95,12 @@ uniform vec3 power_unit;      // W per fixed-point tally unit, per channel
 
 #include "common/wavefront_emission.glsl"
 #include "common/wavefront_rays.glsl"
+
+// A patch corner: the ray of point u, depositing nothing.
+Corner trace_corner(uint emitter_index, uint face, vec2 u) {
+    atomicAdd(traced_rays, 1u);
+    return trace_ray(emitter_index, face, u, vec3(0.0f));
+}
 
 uint corner_history(Corner corner) { return floatBitsToUint(corner.power.w); }
 uint corner_fate_code(Corner corner) { return floatBitsToUint(corner.absorbed.w); }
@@ -117,11 +132,30 @@ bool corners_agree(Patch p) {
            corner_fate_code(p.corners[1]) == corner_fate_code(p.corners[2]);
 }
 
+bool reaches_grid(Patch p) { return p.corners[0].exit.w + p.corners[1].exit.w + p.corners[2].exit.w > 0.0f; }
+
+#if EIKON_STORE_FLUENCE > 0
+// The fluence of a finished patch's tube, narrower than split_voxels where it
+// crosses the grid: its power Φ carried along its axis, the ray of its
+// centroid, as the photons' track-length estimator carries a photon's
+// (common/fluence_deposits.glsl). A branch's tube starts at its reflection;
+// one whose corners all missed the grid, or none of which began the branch,
+// deposits nothing.
+void deposit_tube(Patch p, vec3 power, vec3 sourced) {
+    if (!reaches_grid(p) || !any(greaterThan(sourced, vec3(0.0f)))) return;
+    atomicAdd(tube_rays, 1u);
+    trace_ray(p.info.x, p.info.z, (p.corners[0].ends.xy + p.corners[1].ends.xy + p.corners[2].ends.xy) / 3.0f, power);
+    uint before = atomicAdd(deposit_tallies[0], deposits);
+    if (before + deposits < before) atomicAdd(deposit_tallies[1], 1u);
+}
+#endif
+
 // A patch that is done: its power Φ (patch_power), a third to each corner's
 // ledger — its source, absorbed, unfollowed reflections — and what arrives:
 // on a receiver's plane, by footprint (the part on the square received, the
 // rest escaped); with corners that agree elsewhere, to their common fate;
-// else each corner's third to its own fate, at its own texel if received.
+// else each corner's third to its own fate, at its own texel if received;
+// and, where the pass stores fluence, its tube's (deposit_tube).
 void finish_patch(Patch p) {
     Emitter emitter = emitters[p.info.x];
     vec3 third = patch_power(emitter, p.info.z, p.corners[0].ends.xy, p.corners[1].ends.xy, p.corners[2].ends.xy) / 3.0f;
@@ -157,6 +191,9 @@ void finish_patch(Patch p) {
         }
     }
     atomicAdd(finished_patches, 1u);
+#if EIKON_STORE_FLUENCE > 0
+    deposit_tube(p, 3.0f * third, sourced);
+#endif
 }
 
 // The footprint, in texel coordinates of receiver r, that the patch's
@@ -189,8 +226,8 @@ bool carries_power(Patch p, vec2 straight[3]) {
     return share * 0.5f * abs(twice_signed_area(straight[0], straight[1], straight[2])) >= min_power;
 }
 
-// Whether a patch must split: while it is larger than split_texels on a
-// receiver and carries power (carries_power) — the light a grazing ray
+// Whether a patch must split for a receiver: while it is larger than
+// split_texels there and carries power (carries_power) — the light a grazing ray
 // refracts into a wide, faint halo would otherwise split without end, and
 // what such a patch misplaces is at most its own power.
 // - A footprint in a receiver's plane (footprint_receiver) is measured
@@ -203,7 +240,7 @@ bool carries_power(Patch p, vec2 straight[3]) {
 //   tear_texels; none reached one, or some fly away from its plane (a tear
 //   at its horizon, where light grazes it): the patch stops, as do corners
 //   that agree elsewhere.
-bool wants_split(Patch p) {
+bool wants_receiver_split(Patch p) {
     vec2 straight[3];
     int r = footprint_receiver(p);
     if (r < 0) {
@@ -225,6 +262,55 @@ bool wants_split(Patch p) {
     return !straight_footprint(p, r, straight) || carries_power(p, straight);
 }
 
+float longest_edge(vec3 a, vec3 b, vec3 c) { return max(distance(a, b), max(distance(b, c), distance(c, a))); }
+
+#if EIKON_STORE_FLUENCE > 0
+// Whether a patch must split for the fluence in the grid: while its tube is
+// wider than split_voxels there and it carries at least min_power of what a
+// voxel's cross-section gets unobstructed. The width, in voxels, is that of
+// the triangle of its corners where they enter the grid and where they last
+// leave it, when they agree (one history, one fate); when they disagree (a
+// silhouette, a shadow edge), that of its emission rays flown straight as far
+// as the farthest corner got in the grid, so that a torn patch splits only
+// down to the tube width, not without end. A patch none of whose corners
+// reached the grid does not split for it.
+bool wants_grid_split(Patch p) {
+    if (!reaches_grid(p)) return false;
+    Emitter emitter = emitters[p.info.x];
+    vec3 x[3];
+    vec3 d[3];
+    float farthest = 0.0f;
+    bool all_inside = true;
+    for (int k = 0; k < 3; ++k) {
+        emission_ray(emitter, p.info.z, p.corners[k].ends.xy, x[k], d[k]);
+        if (p.corners[k].exit.w > 0.0f) farthest = max(farthest, distance(x[k], p.corners[k].exit.xyz));
+        else all_inside = false;
+    }
+    vec3 voxel = grid.voxel_size.xyz;
+    vec3 straight[3];
+    for (int k = 0; k < 3; ++k) straight[k] = (x[k] + farthest * d[k]) / voxel;
+    float width = longest_edge(straight[0], straight[1], straight[2]);
+    if (all_inside && corners_agree(p)) {
+        vec3 entry[3];
+        for (int k = 0; k < 3; ++k) entry[k] = (x[k] + max(grid_ray_interval(x[k], d[k]).x, 0.0f) * d[k]) / voxel;
+        width = max(longest_edge(entry[0], entry[1], entry[2]),
+                    longest_edge(p.corners[0].exit.xyz / voxel, p.corners[1].exit.xyz / voxel,
+                                 p.corners[2].exit.xyz / voxel));
+    }
+    if (width <= split_voxels) return false;
+    vec3 sourced = p.corners[0].source.rgb + p.corners[1].source.rgb + p.corners[2].source.rgb;
+    float share = max(sourced.r, max(sourced.g, sourced.b)) / 3.0f;
+    return share * 0.5f * length(cross(straight[1] - straight[0], straight[2] - straight[0])) >= min_power;
+}
+#endif
+
+bool wants_split(Patch p) {
+#if EIKON_STORE_FLUENCE > 0
+    if (wants_grid_split(p)) return true;
+#endif
+    return wants_receiver_split(p);
+}
+
 // A child patch whose corners are the parent's corners or, still to be
 // traced (mode 1), edge midpoints of the emission square.
 Corner untraced_corner(vec2 u) {
@@ -233,6 +319,7 @@ Corner untraced_corner(vec2 u) {
     corner.power = vec4(0.0f);
     corner.absorbed = vec4(0.0f);
     corner.source = vec4(0.0f);
+    corner.exit = vec4(0.0f);
     return corner;
 }
 

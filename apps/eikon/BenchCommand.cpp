@@ -88,13 +88,12 @@ int benchCommand(const BenchOptions& options) {
     const FieldSet& fields = sceneFields.fields();
     const auto context = gl::createHeadlessContext();
 
-    // The wavefront lights receivers only: no fluence, and no bare march to compare with.
+    // The wavefront has no bare march to compare with.
     const bool byWavefront = scene.tracer.estimator == TracerDesc::Estimator::Wavefront;
-    std::vector<Measurement> measurements = {measure("tracer", scene, fields, {}, options.repeats)};
-    if (!byWavefront) {
-        measurements.push_back(measure("tracer+fluence", storing, fields, {}, options.repeats));
+    std::vector<Measurement> measurements = {measure("tracer", scene, fields, {}, options.repeats),
+                                             measure("tracer+fluence", storing, fields, {}, options.repeats)};
+    if (!byWavefront)
         measurements.push_back(measure("bare march", scene, fields, {.photons = {.bareMarch = true}}, options.repeats));
-    }
     nlohmann::json summary = {{"scene", options.scenePath},
                               {"resolution", options.resolution},
                               {"photons", options.photons},
@@ -121,12 +120,15 @@ int benchCommand(const BenchOptions& options) {
                                    {"deposits_per_second", depositsPerSecond}});
     }
     if (byWavefront) {
-        const render::WavefrontCounts& w = measurements[0].stats.wavefront;
-        std::printf("wavefront: %llu patches (%llu at the limit), %llu splits, %llu rays\n",
-                    static_cast<unsigned long long>(w.patches), static_cast<unsigned long long>(w.atLimit),
-                    static_cast<unsigned long long>(w.splits), static_cast<unsigned long long>(w.rays));
-        summary["wavefront"] = {{"patches", w.patches}, {"patches_at_limit", w.atLimit}, {"splits", w.splits},
-                                {"rays", w.rays}};
+        for (const Measurement& m : measurements) {
+            const render::WavefrontCounts& w = m.stats.wavefront;
+            std::printf("%s wavefront: %llu patches (%llu at the limit), %llu splits, %llu rays, %llu tubes\n",
+                        m.name.c_str(), static_cast<unsigned long long>(w.patches),
+                        static_cast<unsigned long long>(w.atLimit), static_cast<unsigned long long>(w.splits),
+                        static_cast<unsigned long long>(w.rays), static_cast<unsigned long long>(w.tubes));
+            summary["wavefront"][m.name] = {{"patches", w.patches}, {"patches_at_limit", w.atLimit},
+                                            {"splits", w.splits}, {"rays", w.rays}, {"tubes", w.tubes}};
+        }
     } else {
         const double ratio = static_cast<double>(measurements[0].stats.steps) / measurements[0].medianMs /
                              (static_cast<double>(measurements[2].stats.steps) / measurements[2].medianMs);

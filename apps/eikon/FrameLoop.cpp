@@ -54,7 +54,8 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
         json["wavefront"] = {{"patches", p.wavefront.patches},
                              {"splits", p.wavefront.splits},
                              {"patches_at_limit", p.wavefront.atLimit},
-                             {"rays", p.wavefront.rays}};
+                             {"rays", p.wavefront.rays},
+                             {"tubes", p.wavefront.tubes}};
     return json;
 }
 

@@ -79,7 +79,6 @@ int runCommand(const RunOptions& options) {
         }
         if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
         fields = std::make_unique<sim::SceneFields>(scene);
-        render::requireEstimatorFits(scene, fields->fields().hasScattering() || fields->scatteringChangesOverTime());
         distribution = chooseDistribution(options, scene, *fields, ranks);
         outDir = options.outDir.empty()
                      ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()

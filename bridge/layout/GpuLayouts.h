@@ -206,16 +206,17 @@ struct GpuWavefrontCorner {
     glm::vec4 power;     // rgb: power arriving, per unit of the light's power density there; w: history (uint bits)
     glm::vec4 absorbed;  // rgb: power absorbed on the way, same unit; w: fate | (receiver + 1) << 4 (uint bits)
     glm::vec4 source;    // rgb: power the ray starts its wavefront with: emitted, or reflected into its branch
+    glm::vec4 exit;      // xyz: the last point in the grid the ray reached; w: 1 if it reached the grid
 };
-static_assert(sizeof(GpuWavefrontCorner) == 64);
+static_assert(sizeof(GpuWavefrontCorner) == 80);
 
 // A triangle of one face of a light's emission domain whose corners are traced rays.
 struct GpuWavefrontPatch {
     GpuWavefrontCorner corners[3];
     glm::uvec4 info;  // x: emitter, y: refinement depth, z: face of the emission domain; w unused
 };
-static_assert(sizeof(GpuWavefrontPatch) == 208);
-static_assert(offsetof(GpuWavefrontPatch, info) == 192);
+static_assert(sizeof(GpuWavefrontPatch) == 256);
+static_assert(offsetof(GpuWavefrontPatch, info) == 240);
 
 // The wavefront pass's counters (std430, scalar members as in GLSL).
 struct GpuWavefrontCounters {
@@ -223,8 +224,9 @@ struct GpuWavefrontCounters {
     std::uint32_t finished;  // patches deposited
     std::uint32_t splits;    // patches split in four
     std::uint32_t atLimit;   // patches deposited that wanted to split: at the depth or count limit
-    std::uint32_t rays;      // rays traced
-    std::uint32_t unused[3];
+    std::uint32_t rays;      // corner rays traced
+    std::uint32_t tubes;     // tube axes traced (fluence in the grid)
+    std::uint32_t unused[2];
 };
 static_assert(sizeof(GpuWavefrontCounters) == 32);
 

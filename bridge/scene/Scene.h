@@ -205,7 +205,8 @@ struct TracerDesc {
         int maxDepth = 10;            // times a patch may split in four
         double splitTexels = 1.5;     // a patch whose footprint has a longer edge (texels) splits
         double tearTexels = 0.25;     // a patch whose corners disagree splits while larger than this (texels)
-        double minPower = 0.01;       // a patch carrying less of a texel's unobstructed power does not split
+        double splitVoxels = 0.5;     // where fluence is stored, a patch whose tube is wider (voxels) splits
+        double minPower = 0.01;       // a patch carrying less of a texel's (voxel's) unobstructed power does not split
         long long maxPatches = 1 << 18;  // patches one refinement level holds; beyond, patches stop splitting
         int reflections = 1;          // Fresnel branches followed: reflected at the first, second, … Fresnel event
     } wavefront;

@@ -385,12 +385,13 @@ TracerDesc readTracer(const JsonReader& node) {
         tracer.lattice.maxIterations = static_cast<int>(cap->integer(1, 1000000));
     if (auto wavefront = fields.optional("wavefront")) {
         const auto keys = wavefront->object({"grid_cells", "max_depth", "split_texels", "tear_texels", "min_power", "max_patches",
-                                             "reflections"});
+                                             "reflections", "split_voxels"});
         TracerDesc::Wavefront& w = tracer.wavefront;
         if (auto cells = keys.optional("grid_cells")) w.gridCells = static_cast<int>(cells->integer(1, 1024));
         if (auto depth = keys.optional("max_depth")) w.maxDepth = static_cast<int>(depth->integer(0, 20));
         if (auto split = keys.optional("split_texels")) w.splitTexels = split->number(NumberRange::closed(0.05, 1e6));
         if (auto tear = keys.optional("tear_texels")) w.tearTexels = tear->number(NumberRange::closed(0.01, 1e6));
+        if (auto split = keys.optional("split_voxels")) w.splitVoxels = split->number(NumberRange::closed(0.05, 1e6));
         if (auto power = keys.optional("min_power")) w.minPower = power->number(NumberRange::closed(0.0, 1.0));
         if (auto reflections = keys.optional("reflections"))
             w.reflections = static_cast<int>(reflections->integer(0, 16));

@@ -54,6 +54,7 @@ void visitSummedCounters(layout::GpuPhotonStats& gpu, PhotonStats& host, Visit&&
     visit.host(host.wavefront.splits);
     visit.host(host.wavefront.atLimit);
     visit.host(host.wavefront.rays);
+    visit.host(host.wavefront.tubes);
 }
 
 struct PackCounters {
@@ -100,17 +101,8 @@ double PhotonStats::balanceError() const {
     return worst;
 }
 
-void requireEstimatorFits(const Scene& scene, bool scatters) {
-    if (scene.tracer.estimator == TracerDesc::Estimator::Wavefront && (scatters || scene.tracer.storeFluence))
-        throw InputError(scene.sourcePath + ": tracer.estimator",
-                         "\"photons\" in a scene that scatters light or stores fluence (the wavefront lights "
-                         "receivers only)",
-                         "\"wavefront\"");
-}
-
 bool feedsLattice(const Scene& scene, const FieldTextures& fields) {
-    return scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm && fields.hasScattering() &&
-           scene.tracer.estimator == TracerDesc::Estimator::Photons;
+    return scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm && fields.hasScattering();
 }
 
 unsigned defaultMaxSteps(const GridSpec& grid, double stepLength) {
@@ -129,7 +121,6 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
     const unsigned loopBudget = options.loopBudget.value_or(driverBudget);
     EIKON_CHECK_MSG(driverBudget == 0 || (loopBudget > 0 && loopBudget <= driverBudget),
                     "a loop budget within the driver's cap");
-    if (!options.bareMarch) requireEstimatorFits(scene, fields.hasScattering());
     // The march's options, which both estimators share (common/ray_march.glsl).
     gl::ShaderDefines defines{
         {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
@@ -137,14 +128,14 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_INTEGRATOR", std::to_string(integratorNumber(tracer.integrator))},
         {"EIKON_OCTREE_STEPS", tracer.stepPolicy == TracerDesc::StepPolicy::Octree ? "1" : "0"},
         {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
-        {"EIKON_LOOP_BUDGET", std::to_string(loopBudget)}};
+        {"EIKON_LOOP_BUDGET", std::to_string(loopBudget)},
+        {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
+        {"EIKON_LATTICE_SOURCE", feedsLattice(scene, fields) ? "1" : "0"}};
     if (byWavefront) {
-        wavefront_ = std::make_unique<WavefrontStage>(tracer, defines);
+        wavefront_ = std::make_unique<WavefrontStage>(tracer, defines, storeFluence_ > 0);
     } else {
         defines.insert({{"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
                         {"EIKON_DISPERSION", tracer.dispersive() ? "1" : "0"},
-                        {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
-                        {"EIKON_LATTICE_SOURCE", feedsLattice(scene, fields) ? "1" : "0"},
                         {"EIKON_BOUNCE", std::any_of(scene.receivers.begin(), scene.receivers.end(),
                                                      [](const ReceiverDesc& r) { return r.bounce; }) ? "1" : "0"},
                         {"EIKON_BARE_MARCH", options.bareMarch ? "1" : "0"},
@@ -331,6 +322,9 @@ void PhotonStage::smoothFluence(const FieldTextures& fields, const gl::Buffer& r
     smoothedDirection.bindStorage(layout::kFluenceDirection);
     fluenceSmoothProgram_.use();
     glUniform1f(fluenceSmoothProgram_.uniform("scale"), scale);
+    // The wavefront's fluence has no noise to smooth: its tubes are narrower
+    // than a voxel and already spread by cloud-in-cell weights.
+    glUniform1i(fluenceSmoothProgram_.uniform("reach"), wavefront_ ? 0 : 1);
     fluenceSmoothProgram_.dispatchOverCells(fields.grid().resolution);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }

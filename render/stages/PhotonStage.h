@@ -180,16 +180,9 @@ private:
     int resumeDispatches_ = 0;         // and the dispatches that resumed them
 };
 
-// Refuses a scene whose light pass its estimator cannot carry (InputError
-// naming the scene file and tracer.estimator): the wavefront lights
-// receivers only, not a medium that scatters (`scatters`) or a stored
-// fluence grid. The stage checks it; a caller checks it first where it must
-// refuse before writing anything.
-void requireEstimatorFits(const Scene& scene, bool scatters);
-
 // Whether the scene diffuses what its photons scatter on a lattice
-// (tracer.multiple_scattering "lbm" where some voxel scatters): the photon
-// pass then tallies the power it scatters per cell.
+// (tracer.multiple_scattering "lbm" where some voxel scatters): the light
+// pass (photons or wavefront) then tallies the power it scatters per cell.
 bool feedsLattice(const Scene& scene, const FieldTextures& fields);
 
 // Default trapped-ray cap: four crossings of the grid along all three axes

@@ -36,8 +36,8 @@ unsigned emissionFaces(const layout::GpuEmitter& emitter) {
     return cone && emitter.axis.w < 0.5f ? 6u : 1u;
 }
 
-WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines)
-    : settings_(tracer.wavefront), dispersive_(tracer.dispersive()) {
+WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines, bool storesFluence)
+    : settings_(tracer.wavefront), dispersive_(tracer.dispersive()), storesFluence_(storesFluence) {
     capacity_ = levelCapacity(settings_.maxPatches);
     program_ = gl::compileComputeProgram("wavefront_trace.comp", defines);
     for (gl::Buffer& level : levels_)
@@ -103,6 +103,7 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     glUniform1f(program_.uniform("split_texels"), static_cast<float>(settings_.splitTexels));
     glUniform1f(program_.uniform("tear_texels"), static_cast<float>(settings_.tearTexels));
     glUniform1f(program_.uniform("min_power"), static_cast<float>(settings_.minPower));
+    if (storesFluence_) glUniform1f(program_.uniform("split_voxels"), static_cast<float>(settings_.splitVoxels));
 
     const int channels = dispersive_ ? 3 : 1;
     const int branches = inputs.sharpSurfaceCount > 0 ? settings_.reflections : 0;
@@ -112,7 +113,7 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
                 traceWavefront(emitter, inputs.emissionFaces[emitter], dispersive_ ? channel : -1, branch, inputs.share);
     gl::checkpoint("wavefront stage");
     const auto counters = counters_.downloadAs<layout::GpuWavefrontCounters>();
-    return {counters.finished, counters.splits, counters.atLimit, counters.rays};
+    return {counters.finished, counters.splits, counters.atLimit, counters.rays, counters.tubes};
 }
 
 }  // namespace eikon::render

@@ -3,7 +3,9 @@
 // triangular patches whose corners are traced rays; level by level, patches
 // whose corners disagree or whose footprint is larger than split_texels
 // split in four, the rest deposit their power on the receivers by the
-// intensity law. Seeds go in chunks small enough that a chunk's levels fit
+// intensity law; where the pass stores fluence, patches also split while
+// their tube through the grid is wider than split_voxels, and each finished
+// one deposits its power along its tube's axis. Seeds go in chunks small enough that a chunk's levels fit
 // the level buffers; a level that would not fit stops splitting (its patches
 // are deposited and counted as at the limit). Deterministic: the same scene
 // gives the same bits. With dispersion each channel is traced on its own.
@@ -28,6 +30,7 @@ struct WavefrontCounts {
     std::uint64_t splits = 0;
     std::uint64_t atLimit = 0;  // finished though they wanted to split (depth or count limit)
     std::uint64_t rays = 0;     // rays traced (patch corners)
+    std::uint64_t tubes = 0;    // tube axes traced: fluence in the grid
 };
 
 // The uniforms the wavefront shares with the photon pass.
@@ -50,8 +53,9 @@ unsigned emissionFaces(const layout::GpuEmitter& emitter);
 
 class WavefrontStage {
 public:
-    // defines: the march's program options (common/ray_march.glsl).
-    WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines);
+    // defines: the march's program options (common/ray_march.glsl) and the
+    // fluence's (common/fluence_deposits.glsl).
+    WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines, bool storesFluence);
 
     // Traces every emitter's wavefront into the receivers' tallies and the
     // light pass's statistics; every binding of the light pass (fields,
@@ -67,6 +71,7 @@ private:
 
     TracerDesc::Wavefront settings_;
     bool dispersive_ = false;
+    bool storesFluence_ = false;
     unsigned capacity_ = 0;  // patches a level buffer holds (a multiple of 4)
     gl::Program program_;
     gl::Buffer levels_[2];

@@ -1,8 +1,10 @@
-// A wavefront corner ray (wavefront_trace.comp): its march from the light to
-// where it ends with the photons' march (common/ray_march.glsl), following
-// one branch of the Fresnel tree, and what it brings back (the Corner).
-// The includer declares Corner, `branch`, the counters and the statistics
-// blocks. GLSL only.
+// A wavefront ray (wavefront_trace.comp): its march from the light to where
+// it ends with the photons' march (common/ray_march.glsl), following one
+// branch of the Fresnel tree, and what it brings back (the Corner). A
+// patch's corners are such rays; so is the axis of a finished patch's tube
+// where the pass stores fluence, which deposits the patch's power along its
+// way (common/fluence_deposits.glsl). The includer declares Corner, `branch`
+// and the statistics blocks. GLSL only.
 // A ray's ledger at sharp surfaces. A Fresnel event is a crossing whose
 // reflectance is strictly between 0 and 1 (total internal reflection is not
 // one: it always reflects). Each wavefront follows one branch of the ray
@@ -81,8 +83,12 @@ void note_plane_crossing(vec3 a, vec3 b, INOUT(PlaneCrossing) crossing) {
     }
 }
 
-// Traces the ray of point u of face `face` of the emitter's domain to its end.
-Corner trace_corner(uint emitter_index, uint face, vec2 u) {
+// Traces the ray of point u of face `face` of the emitter's domain to its
+// end. A tube's axis carries tube_power (W per unit of the ray's power
+// factor: the patch's power) and deposits it as fluence once its branch has
+// begun; a corner (tube_power 0) deposits nothing.
+Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
+    bool tube = any(greaterThan(tube_power, vec3(0.0f)));
     Emitter emitter = emitters[emitter_index];
     vec3 x;
     vec3 direction;
@@ -106,6 +112,7 @@ Corner trace_corner(uint emitter_index, uint face, vec2 u) {
     float invariant_error_sum = 0.0f;
     int fate = kEscaped;
     ReceiverHit landed = ReceiverHit(-1, 0.0f, false, vec2(0.0f));
+    vec4 last_inside = vec4(x, grid_contains(x) ? 1.0f : 0.0f);  // xyz: the last point in the grid the march reached; w: 1 once there
     for (;;) {
         spend_loops(loops_per_pass());
         if (!loops_left()) {
@@ -129,6 +136,7 @@ Corner trace_corner(uint emitter_index, uint face, vec2 u) {
 #endif
             field = field_at(x);
             v = field.w * d;
+            last_inside = vec4(x, 1.0f);
             continue;
         }
         if (steps >= max_steps) {
@@ -151,7 +159,21 @@ Corner trace_corner(uint emitter_index, uint face, vec2 u) {
         max_invariant_error = max(max_invariant_error, invariant_error);
         invariant_error_sum += invariant_error;
         ReceiverHit hit = first_receiver_crossing(start, x);
-        vec3 transmitted = power * beer_lambert_transmittance(sample_extinction(start), hit.receiver >= 0 ? hit.fraction * ds : ds);
+        float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
+        if (!grid_contains(x)) {
+            // A step that leaves the grid overshoots its boundary, and
+            // outside the grid nothing absorbs: only the part inside counts.
+            vec3 chord = x - start;
+            float chord_length = length(chord);
+            if (chord_length > 0.0f)
+                travelled = min(travelled, max(grid_ray_interval(start, chord / chord_length).y, 0.0f) /
+                                               chord_length * ds);
+        }
+        vec3 kappa = sample_extinction(start);
+        last_inside = vec4(mix(start, x, ds > 0.0f ? travelled / ds : 0.0f), 1.0f);
+        if (tube && ledger.branched)
+            deposit_tube_segment(start, last_inside.xyz, tube_power * power, kappa, sample_scattering(start));
+        vec3 transmitted = power * beer_lambert_transmittance(kappa, travelled);
         absorbed += power - transmitted;
         power = transmitted;
         if (hit.receiver >= 0) {
@@ -170,9 +192,9 @@ Corner trace_corner(uint emitter_index, uint face, vec2 u) {
         landed.map_uv = outside.map_uv;
     }
     add_steps(steps, max_invariant_error, invariant_error_sum);
-    atomicAdd(traced_rays, 1u);
     Corner corner;
     corner.ends = vec4(u, landed.map_uv);
+    corner.exit = last_inside;
     uint history = min(ledger.transmissions, 4095u) | (min(ledger.reflections, 4095u) << 12);
     if (!ledger.branched) {  // the ray ended before this branch's reflection: none of its power is here
         power = vec3(0.0f);

@@ -33,8 +33,10 @@ Rung refinedRung(const Scene& scene, const std::string& knob, const Refinement& 
         if (byWavefront(scene)) {
             s.tracer.wavefront.splitTexels = std::max(0.05, scene.tracer.wavefront.splitTexels / refinement.photons);
             s.tracer.wavefront.tearTexels = std::max(0.05, scene.tracer.wavefront.tearTexels / refinement.photons);
+            s.tracer.wavefront.splitVoxels = std::max(0.05, scene.tracer.wavefront.splitVoxels / refinement.photons);
             changed.push_back("tracer.wavefront.split_texels=" + formatNumber(s.tracer.wavefront.splitTexels) +
-                              ", tear_texels=" + formatNumber(s.tracer.wavefront.tearTexels));
+                              ", tear_texels=" + formatNumber(s.tracer.wavefront.tearTexels) +
+                              ", split_voxels=" + formatNumber(s.tracer.wavefront.splitVoxels));
         } else {
             s.render.photons = std::max(1LL, std::llround(static_cast<double>(scene.render.photons) * refinement.photons));
             changed.push_back("render.photons=" + std::to_string(s.render.photons));
