@@ -1,10 +1,17 @@
-// The wavefront estimator in a graded medium with no surfaces: the mirage's
-// receiver map (verify/accuracy/MirageMap) against the reference tracer,
-// beside photons on the same sampled field.
+// The wavefront estimator in graded media with no surfaces, beside photons
+// on the same sampled fields: the mirage's receiver map
+// (verify/accuracy/MirageMap) against the reference tracer, and against
+// closed forms a linear slab's catenaries on a receiver
+// (verify/accuracy/CatenaryMap) and the map past a Luneburg lens's focus
+// (verify/accuracy/LuneburgMap).
 #include "render/graph/FrameRenderer.h"
 #include "tests/integration/GlTestContext.h"
 #include "verify/accuracy/AccuracyRun.h"
+#include "verify/accuracy/CatenaryMap.h"
+#include "verify/accuracy/LuneburgMap.h"
 #include "verify/accuracy/MirageMap.h"
+
+#include <functional>
 
 #include <gtest/gtest.h>
 
@@ -16,13 +23,15 @@ struct Comparison {
     double milliseconds = 0.0;
 };
 
-Comparison compare(const Scene& scene, const FieldSet& fields, const std::vector<double>& rows) {
+using MapError = std::function<double(const std::vector<float>&)>;
+
+Comparison compare(const Scene& scene, const FieldSet& fields, const MapError& error) {
     render::FrameRenderer renderer(scene, fields);
     renderer.render(fields);
     render::PhotonStats stats;
     const double ms = renderer.relight(stats).milliseconds;
     EXPECT_LE(stats.balanceError(), 1e-6);
-    return {accuracy::mirageMapError(renderer.receivers().download(0), rows), ms};
+    return {error(renderer.receivers().download(0)), ms};
 }
 
 // The wavefront within 1% of the reference tracer's map and closer to it
@@ -33,15 +42,64 @@ TEST(WavefrontGraded, MirageReceiverMatchesTheReferenceTracer) {
     Scene scene = accuracy::mirageMapScene();
     scene.tracer.stepPolicy = TracerDesc::StepPolicy::Uniform;
     const FieldSet fields = accuracy::sampleIndexField(accuracy::mirageMapField(), scene.grid.spec(), 1.05);
+    const MapError error = [&](const std::vector<float>& map) { return accuracy::mirageMapError(map, rows); };
     scene.tracer.estimator = TracerDesc::Estimator::Wavefront;
-    const Comparison wavefront = compare(scene, fields, rows);
+    const Comparison wavefront = compare(scene, fields, error);
     scene.tracer.estimator = TracerDesc::Estimator::Photons;
-    const Comparison photons = compare(scene, fields, rows);
+    const Comparison photons = compare(scene, fields, error);
     test::reportFigure("mirage_wavefront_relative_l1", wavefront.relativeL1);
     test::reportFigure("mirage_wavefront_ms", wavefront.milliseconds);
     test::reportFigure("mirage_photons_2m_relative_l1", photons.relativeL1);
     test::reportFigure("mirage_photons_2m_ms", photons.milliseconds);
     EXPECT_LE(wavefront.relativeL1, 0.01);
+    EXPECT_LT(wavefront.relativeL1, photons.relativeL1);
+}
+
+// The catenaries of n = 1 + 0.25·y on a receiver: the wavefront within 1%
+// of the closed form. Every row but the lowest lit one agrees to 1e-4; that
+// one is 7% short, where rays grazing the grid's floor turn up onto the
+// receiver beside rays that leave through it, and the patches torn there
+// give their escaping corners' thirds away. 2²¹ photons, at about nine
+// times the time, are closer there (both reported, neither asserted).
+TEST(WavefrontGraded, LinearSlabCatenariesMatchTheClosedForm) {
+    test::glContext();
+    const std::vector<double> rows = accuracy::catenaryReferenceRows();
+    Scene scene = accuracy::catenaryMapScene();
+    scene.tracer.stepPolicy = TracerDesc::StepPolicy::Uniform;
+    const FieldSet fields = accuracy::sampleIndexField(accuracy::catenaryMapField(), scene.grid.spec(), 1.0);
+    const MapError error = [&](const std::vector<float>& map) { return accuracy::catenaryMapError(map, rows); };
+    scene.tracer.estimator = TracerDesc::Estimator::Wavefront;
+    const Comparison wavefront = compare(scene, fields, error);
+    scene.tracer.estimator = TracerDesc::Estimator::Photons;
+    const Comparison photons = compare(scene, fields, error);
+    test::reportFigure("catenary_wavefront_relative_l1", wavefront.relativeL1);
+    test::reportFigure("catenary_wavefront_ms", wavefront.milliseconds);
+    test::reportFigure("catenary_photons_2m_relative_l1", photons.relativeL1);
+    test::reportFigure("catenary_photons_2m_ms", photons.milliseconds);
+    EXPECT_LE(wavefront.relativeL1, 0.01);
+}
+
+// Past the Luneburg lens's focus: both estimators against the closed form,
+// the wavefront closer to it than 2²¹ photons (which take about nine times
+// its time; reported, not asserted). Both stand on the floor of the 64³
+// sampled lens, 5% (1.7% at 128³: second order in the voxel), which the
+// wavefront adds nothing to and the photons add their noise to.
+TEST(WavefrontGraded, LuneburgFocusMatchesTheClosedForm) {
+    test::glContext();
+    const std::vector<double> means = accuracy::luneburgMapTexelMeans();
+    Scene scene = accuracy::luneburgMapScene();
+    scene.tracer.stepPolicy = TracerDesc::StepPolicy::Uniform;
+    const FieldSet fields = accuracy::sampleIndexField(accuracy::luneburgMapField(), scene.grid.spec(), 1.0);
+    const MapError error = [&](const std::vector<float>& map) { return accuracy::luneburgMapError(map, means); };
+    scene.tracer.estimator = TracerDesc::Estimator::Wavefront;
+    const Comparison wavefront = compare(scene, fields, error);
+    scene.tracer.estimator = TracerDesc::Estimator::Photons;
+    const Comparison photons = compare(scene, fields, error);
+    test::reportFigure("luneburg_wavefront_relative_l1", wavefront.relativeL1);
+    test::reportFigure("luneburg_wavefront_ms", wavefront.milliseconds);
+    test::reportFigure("luneburg_photons_2m_relative_l1", photons.relativeL1);
+    test::reportFigure("luneburg_photons_2m_ms", photons.milliseconds);
+    EXPECT_LE(wavefront.relativeL1, 0.06);
     EXPECT_LT(wavefront.relativeL1, photons.relativeL1);
 }
 

@@ -14,9 +14,11 @@ std::vector<std::unique_ptr<AccuracyCase>> allCases() {
     cases.push_back(makePointLightCase());
     cases.push_back(makeBeerLambertCase());
     cases.push_back(makeLinearSlabCase());
+    cases.push_back(makeCatenaryMapCase());
     cases.push_back(makeMirageCase());
     cases.push_back(makeMirageMapCase());
     cases.push_back(makeLuneburgCase());
+    cases.push_back(makeLuneburgMapCase());
     cases.push_back(makeFishEyeCase());
     cases.push_back(makeGlassSphereCase());
     cases.push_back(makeHeatShimmerCase());

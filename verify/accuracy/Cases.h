@@ -10,7 +10,9 @@ std::unique_ptr<AccuracyCase> makeBeerLambertCase();   // IrradianceCases.cpp
 std::unique_ptr<AccuracyCase> makeLinearSlabCase();    // LayeredCases.cpp
 std::unique_ptr<AccuracyCase> makeMirageCase();        // LayeredCases.cpp
 std::unique_ptr<AccuracyCase> makeMirageMapCase();     // LayeredCases.cpp
+std::unique_ptr<AccuracyCase> makeCatenaryMapCase();   // LayeredCases.cpp
 std::unique_ptr<AccuracyCase> makeLuneburgCase();      // LensCases.cpp
+std::unique_ptr<AccuracyCase> makeLuneburgMapCase();   // LensCases.cpp
 std::unique_ptr<AccuracyCase> makeFishEyeCase();       // LensCases.cpp
 std::unique_ptr<AccuracyCase> makeGlassSphereCase();   // LensCases.cpp
 std::unique_ptr<AccuracyCase> makeHeatShimmerCase();   // ShimmerCase.cpp
