@@ -10,8 +10,11 @@
 #include "verify/accuracy/CatenaryMap.h"
 #include "verify/accuracy/LuneburgMap.h"
 #include "verify/accuracy/MirageMap.h"
+#include "verify/accuracy/ReceiverCaseScene.h"
 
 #include <functional>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -34,23 +37,30 @@ Comparison compare(const Scene& scene, const FieldSet& fields, const MapError& e
     return {error(renderer.receivers().download(0)), ms};
 }
 
-// The wavefront within 1% of the reference tracer's map and closer to it
-// than 2²¹ photons; the times are reported beside the errors (not asserted).
-TEST(WavefrontGraded, MirageReceiverMatchesTheReferenceTracer) {
+// Both estimators on one scene and field, their errors and times reported
+// under `prefix` (photons: the scene's 2²¹).
+std::pair<Comparison, Comparison> compareEstimators(Scene scene, const FieldSet& fields, const MapError& error,
+                                                    const std::string& prefix) {
     test::glContext();
-    const std::vector<double> rows = accuracy::mirageReferenceRows();
-    Scene scene = accuracy::mirageMapScene();
     scene.tracer.stepPolicy = TracerDesc::StepPolicy::Uniform;
-    const FieldSet fields = accuracy::sampleIndexField(accuracy::mirageMapField(), scene.grid.spec(), 1.05);
-    const MapError error = [&](const std::vector<float>& map) { return accuracy::mirageMapError(map, rows); };
     scene.tracer.estimator = TracerDesc::Estimator::Wavefront;
     const Comparison wavefront = compare(scene, fields, error);
     scene.tracer.estimator = TracerDesc::Estimator::Photons;
     const Comparison photons = compare(scene, fields, error);
-    test::reportFigure("mirage_wavefront_relative_l1", wavefront.relativeL1);
-    test::reportFigure("mirage_wavefront_ms", wavefront.milliseconds);
-    test::reportFigure("mirage_photons_2m_relative_l1", photons.relativeL1);
-    test::reportFigure("mirage_photons_2m_ms", photons.milliseconds);
+    test::reportFigure((prefix + "_wavefront_relative_l1").c_str(), wavefront.relativeL1);
+    test::reportFigure((prefix + "_wavefront_ms").c_str(), wavefront.milliseconds);
+    test::reportFigure((prefix + "_photons_2m_relative_l1").c_str(), photons.relativeL1);
+    test::reportFigure((prefix + "_photons_2m_ms").c_str(), photons.milliseconds);
+    return {wavefront, photons};
+}
+
+// The wavefront within 1% of the reference tracer's map and closer to it
+// than 2²¹ photons; the times are reported beside the errors (not asserted).
+TEST(WavefrontGraded, MirageReceiverMatchesTheReferenceTracer) {
+    const std::vector<double> rows = accuracy::mirageReferenceRows();
+    const Scene scene = accuracy::mirageMapScene();
+    const FieldSet fields = accuracy::sampleIndexField(accuracy::mirageMapField(), scene.grid.spec(), 1.05);
+    const auto [wavefront, photons] = compareEstimators(scene, fields, [&](const std::vector<float>& map) { return accuracy::mirageMapError(map, rows); }, "mirage");
     EXPECT_LE(wavefront.relativeL1, 0.01);
     EXPECT_LT(wavefront.relativeL1, photons.relativeL1);
 }
@@ -62,20 +72,10 @@ TEST(WavefrontGraded, MirageReceiverMatchesTheReferenceTracer) {
 // give their escaping corners' thirds away. 2²¹ photons, at about nine
 // times the time, are closer there (both reported, neither asserted).
 TEST(WavefrontGraded, LinearSlabCatenariesMatchTheClosedForm) {
-    test::glContext();
     const std::vector<double> rows = accuracy::catenaryReferenceRows();
-    Scene scene = accuracy::catenaryMapScene();
-    scene.tracer.stepPolicy = TracerDesc::StepPolicy::Uniform;
+    const Scene scene = accuracy::catenaryMapScene();
     const FieldSet fields = accuracy::sampleIndexField(accuracy::catenaryMapField(), scene.grid.spec(), 1.0);
-    const MapError error = [&](const std::vector<float>& map) { return accuracy::catenaryMapError(map, rows); };
-    scene.tracer.estimator = TracerDesc::Estimator::Wavefront;
-    const Comparison wavefront = compare(scene, fields, error);
-    scene.tracer.estimator = TracerDesc::Estimator::Photons;
-    const Comparison photons = compare(scene, fields, error);
-    test::reportFigure("catenary_wavefront_relative_l1", wavefront.relativeL1);
-    test::reportFigure("catenary_wavefront_ms", wavefront.milliseconds);
-    test::reportFigure("catenary_photons_2m_relative_l1", photons.relativeL1);
-    test::reportFigure("catenary_photons_2m_ms", photons.milliseconds);
+    const auto [wavefront, photons] = compareEstimators(scene, fields, [&](const std::vector<float>& map) { return accuracy::catenaryMapError(map, rows); }, "catenary");
     EXPECT_LE(wavefront.relativeL1, 0.01);
 }
 
@@ -85,20 +85,10 @@ TEST(WavefrontGraded, LinearSlabCatenariesMatchTheClosedForm) {
 // sampled lens, 5% (1.7% at 128³: second order in the voxel), which the
 // wavefront adds nothing to and the photons add their noise to.
 TEST(WavefrontGraded, LuneburgFocusMatchesTheClosedForm) {
-    test::glContext();
     const std::vector<double> means = accuracy::luneburgMapTexelMeans();
-    Scene scene = accuracy::luneburgMapScene();
-    scene.tracer.stepPolicy = TracerDesc::StepPolicy::Uniform;
+    const Scene scene = accuracy::luneburgMapScene();
     const FieldSet fields = accuracy::sampleIndexField(accuracy::luneburgMapField(), scene.grid.spec(), 1.0);
-    const MapError error = [&](const std::vector<float>& map) { return accuracy::luneburgMapError(map, means); };
-    scene.tracer.estimator = TracerDesc::Estimator::Wavefront;
-    const Comparison wavefront = compare(scene, fields, error);
-    scene.tracer.estimator = TracerDesc::Estimator::Photons;
-    const Comparison photons = compare(scene, fields, error);
-    test::reportFigure("luneburg_wavefront_relative_l1", wavefront.relativeL1);
-    test::reportFigure("luneburg_wavefront_ms", wavefront.milliseconds);
-    test::reportFigure("luneburg_photons_2m_relative_l1", photons.relativeL1);
-    test::reportFigure("luneburg_photons_2m_ms", photons.milliseconds);
+    const auto [wavefront, photons] = compareEstimators(scene, fields, [&](const std::vector<float>& map) { return accuracy::texelMapError(map, means); }, "luneburg");
     EXPECT_LE(wavefront.relativeL1, 0.06);
     EXPECT_LT(wavefront.relativeL1, photons.relativeL1);
 }

@@ -20,7 +20,9 @@ std::vector<std::unique_ptr<AccuracyCase>> allCases() {
     cases.push_back(makeLuneburgCase());
     cases.push_back(makeLuneburgMapCase());
     cases.push_back(makeFishEyeCase());
+    cases.push_back(makeFishEyeMapCase());
     cases.push_back(makeGlassSphereCase());
+    cases.push_back(makeGlassSphereMapCase());
     cases.push_back(makeHeatShimmerCase());
     return cases;
 }

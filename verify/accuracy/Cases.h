@@ -9,12 +9,14 @@ std::unique_ptr<AccuracyCase> makePointLightCase();    // IrradianceCases.cpp
 std::unique_ptr<AccuracyCase> makeBeerLambertCase();   // IrradianceCases.cpp
 std::unique_ptr<AccuracyCase> makeLinearSlabCase();    // LayeredCases.cpp
 std::unique_ptr<AccuracyCase> makeMirageCase();        // LayeredCases.cpp
-std::unique_ptr<AccuracyCase> makeMirageMapCase();     // LayeredCases.cpp
-std::unique_ptr<AccuracyCase> makeCatenaryMapCase();   // LayeredCases.cpp
+std::unique_ptr<AccuracyCase> makeMirageMapCase();     // MapCases.cpp
+std::unique_ptr<AccuracyCase> makeCatenaryMapCase();   // MapCases.cpp
 std::unique_ptr<AccuracyCase> makeLuneburgCase();      // LensCases.cpp
-std::unique_ptr<AccuracyCase> makeLuneburgMapCase();   // LensCases.cpp
+std::unique_ptr<AccuracyCase> makeLuneburgMapCase();   // MapCases.cpp
 std::unique_ptr<AccuracyCase> makeFishEyeCase();       // LensCases.cpp
+std::unique_ptr<AccuracyCase> makeFishEyeMapCase();    // MapCases.cpp
 std::unique_ptr<AccuracyCase> makeGlassSphereCase();   // LensCases.cpp
+std::unique_ptr<AccuracyCase> makeGlassSphereMapCase();  // MapCases.cpp
 std::unique_ptr<AccuracyCase> makeHeatShimmerCase();   // ShimmerCase.cpp
 
 }  // namespace eikon::accuracy

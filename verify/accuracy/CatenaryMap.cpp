@@ -1,5 +1,7 @@
 #include "verify/accuracy/CatenaryMap.h"
 
+#include "verify/accuracy/ReceiverCaseScene.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -41,33 +43,11 @@ const reference::LinearSlabField& catenaryMapField() {
 }
 
 Scene catenaryMapScene() {
-    Scene scene;
-    scene.grid.boundsMin = glm::dvec3(0.0);
-    scene.grid.boundsMax = glm::dvec3(kLength, kHeight, kDepth);
-    scene.grid.resolution = glm::ivec3(128, 64, 16);
-    scene.grid.smoothingSigmaVoxels = 0.0;
-    scene.medium.index = kA;
-    scene.render.width = 8;
-    scene.render.height = 8;
-    scene.render.photons = 1 << 21;
-    LightDesc light;
-    light.kind = LightDesc::Kind::Directional;
-    light.direction = beam();
-    light.irradiance = Rgb(1.0);
-    scene.lights.push_back(light);
-    ReceiverDesc receiver;
-    receiver.point = glm::dvec3(kPlaneX, 0.5 * kHeight, 0.5 * kDepth);
-    receiver.normal = glm::dvec3(-1.0, 0.0, 0.0);
-    receiver.size = kHeight;
-    receiver.resolution = kRows;
-    receiver.filter = ReceiverDesc::Filter::None;
-    scene.receivers.push_back(receiver);
-    ObjectDesc cover;
-    cover.kind = ObjectDesc::Kind::Box;
-    cover.box = {scene.grid.boundsMin, scene.grid.boundsMax};
-    cover.material.index = kA;
-    cover.surface = ObjectDesc::Surface::Smooth;
-    scene.objects.push_back(cover);
+    Scene scene = receiverCaseScene(glm::dvec3(0.0), glm::dvec3(kLength, kHeight, kDepth), glm::ivec3(128, 64, 16), kA);
+    scene.lights.push_back(unitBeam(beam()));
+    scene.receivers.push_back(
+        unfilteredReceiver(glm::dvec3(kPlaneX, 0.5 * kHeight, 0.5 * kDepth), glm::dvec3(-1.0, 0.0, 0.0), kHeight, kRows));
+    scene.objects.push_back(coverBox(scene, kA));
     return scene;
 }
 
@@ -88,17 +68,7 @@ std::vector<double> catenaryReferenceRows() {
 }
 
 double catenaryMapError(const std::vector<float>& map, const std::vector<double>& rows) {
-    double difference = 0.0, total = 0.0;
-    for (int j = 0; j < kRows; ++j)
-        for (int i = 0; i < kRows; ++i) {
-            // Texel i along the receiver's u axis, −z.
-            const double z = kDepth - (0.5 * kDepth - 0.5 * kHeight + (i + 0.5) / kRows * kHeight);
-            if (z < 0.03 || z > kDepth - 0.03) continue;
-            const double measured = map[static_cast<std::size_t>(3 * (j * kRows + i) + 1)];
-            difference += std::abs(measured - rows[static_cast<std::size_t>(j)]);
-            total += rows[static_cast<std::size_t>(j)];
-        }
-    return difference / total;
+    return layeredRowsError(map, rows, kHeight, kDepth, 0.03);
 }
 
 }  // namespace eikon::accuracy

@@ -1,9 +1,7 @@
 // Layered media, where n·cosθ = C is invariant along a ray: the catenary of
-// a linear-gradient slab (its paths, and on a receiver) and the turning
-// height of an exponential mirage (and on a receiver).
+// a linear-gradient slab and the turning height of an exponential mirage
+// (their receiver maps are in MapCases.cpp).
 #include "verify/accuracy/Cases.h"
-#include "verify/accuracy/CatenaryMap.h"
-#include "verify/accuracy/MirageMap.h"
 
 #include "verify/reference/AnalyticFields.h"
 
@@ -169,54 +167,8 @@ public:
     }
 };
 
-// The same mirage on a receiver across its far end (verify/accuracy/MirageMap):
-// the irradiance of each row against the reference tracer's, for both
-// estimators. Error: relative L1 over the texels.
-class MirageMapCase final : public AccuracyCase {
-public:
-    std::string name() const override { return "mirage_map"; }
-    std::vector<RunSettings> sweep(bool quick) const override {
-        // The step's error is the path cases' to measure: here the estimators.
-        return standardSweep(quick, {.steps = false, .integrators = false, .octree = false, .grid = false,
-                                     .photons = true, .wavefront = true});
-    }
-    std::vector<RunRecord> run(const RunSettings& settings, bool) const override {
-        static const std::vector<double> rows = mirageReferenceRows();
-        Scene scene = mirageMapScene();
-        applySettings(scene, settings, scene.grid.resolution);
-        const GpuTrace trace = traceOnGpu(scene, sampleIndexField(mirageMapField(), scene.grid.spec(), 1.05));
-        Measurement m{name(), "relative L1 over the receiver against the reference tracer's rows",
-                      mirageMapError(trace.receiverMap, rows), -1.0, static_cast<int>(rows.size())};
-        return {makeRecord(scene, settings, trace, m)};
-    }
-};
-
-// The linear slab's catenaries on a receiver (verify/accuracy/CatenaryMap):
-// the irradiance of each row against the closed form's, for both estimators.
-// Error: relative L1 over the texels.
-class CatenaryMapCase final : public AccuracyCase {
-public:
-    std::string name() const override { return "catenary_map"; }
-    std::vector<RunSettings> sweep(bool quick) const override {
-        // The step's error is linear_slab's to measure: here the estimators.
-        return standardSweep(quick, {.steps = false, .integrators = false, .octree = false, .grid = false,
-                                     .photons = true, .wavefront = true});
-    }
-    std::vector<RunRecord> run(const RunSettings& settings, bool) const override {
-        static const std::vector<double> rows = catenaryReferenceRows();
-        Scene scene = catenaryMapScene();
-        applySettings(scene, settings, scene.grid.resolution);
-        const GpuTrace trace = traceOnGpu(scene, sampleIndexField(catenaryMapField(), scene.grid.spec(), 1.0));
-        Measurement m{name(), "relative L1 over the receiver against the closed-form catenaries' rows",
-                      catenaryMapError(trace.receiverMap, rows), -1.0, static_cast<int>(rows.size())};
-        return {makeRecord(scene, settings, trace, m)};
-    }
-};
-
 }  // namespace
 
-std::unique_ptr<AccuracyCase> makeCatenaryMapCase() { return std::make_unique<CatenaryMapCase>(); }
-std::unique_ptr<AccuracyCase> makeMirageMapCase() { return std::make_unique<MirageMapCase>(); }
 std::unique_ptr<AccuracyCase> makeLinearSlabCase() { return std::make_unique<LinearSlabCase>(); }
 std::unique_ptr<AccuracyCase> makeMirageCase() { return std::make_unique<MirageCase>(); }
 

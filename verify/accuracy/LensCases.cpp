@@ -1,9 +1,9 @@
-// Gradient-index lenses with closed-form foci: the Luneburg lens (its focus,
-// and the map on a receiver past it), Maxwell's fish-eye and a glass sphere
-// (paraxial focus, and against the reference tracer on the same smoothed field).
+// Gradient-index lenses with closed-form foci: the Luneburg lens, Maxwell's
+// fish-eye and a glass sphere (paraxial focus, and against the reference
+// tracer on the same smoothed field); their receiver maps are in
+// MapCases.cpp.
 #include "verify/accuracy/Cases.h"
 
-#include "verify/accuracy/LuneburgMap.h"
 
 #include "verify/reference/AnalyticFields.h"
 #include "verify/reference/ReferenceTracer.h"
@@ -98,28 +98,6 @@ public:
         Measurement m{name(), "distance of the exit ray from the focus (0,0,R) in the plane z = R, over R (RMS)",
                       rms(relative), rms(voxels), static_cast<int>(relative.size())};
         return {makeRecord(scene, settings, trace, m, 0.75)};
-    }
-};
-
-// The same lens on a receiver past its focus (verify/accuracy/LuneburgMap):
-// the irradiance of each texel against the closed form, for both
-// estimators. Error: relative L1 over the receiver.
-class LuneburgMapCase final : public AccuracyCase {
-public:
-    std::string name() const override { return "luneburg_map"; }
-    std::vector<RunSettings> sweep(bool quick) const override {
-        // The step's error is the path case's to measure: here the estimators.
-        return standardSweep(quick, {.steps = false, .integrators = false, .octree = false, .grid = false,
-                                     .photons = true, .wavefront = true});
-    }
-    std::vector<RunRecord> run(const RunSettings& settings, bool) const override {
-        static const std::vector<double> means = luneburgMapTexelMeans();
-        Scene scene = luneburgMapScene();
-        applySettings(scene, settings, scene.grid.resolution);
-        const GpuTrace trace = traceOnGpu(scene, sampleIndexField(luneburgMapField(), scene.grid.spec(), 1.0));
-        Measurement m{name(), "relative L1 over the receiver against the closed form R²D²/(ρ² + D²)²",
-                      luneburgMapError(trace.receiverMap, means), -1.0, static_cast<int>(means.size() / 3)};
-        return {makeRecord(scene, settings, trace, m)};
     }
 };
 
@@ -261,7 +239,6 @@ public:
 }  // namespace
 
 std::unique_ptr<AccuracyCase> makeLuneburgCase() { return std::make_unique<LuneburgCase>(); }
-std::unique_ptr<AccuracyCase> makeLuneburgMapCase() { return std::make_unique<LuneburgMapCase>(); }
 std::unique_ptr<AccuracyCase> makeFishEyeCase() { return std::make_unique<FishEyeCase>(); }
 std::unique_ptr<AccuracyCase> makeGlassSphereCase() { return std::make_unique<GlassSphereCase>(); }
 

@@ -22,11 +22,7 @@ const reference::LuneburgField& luneburgMapField();
 // unfiltered; an invisible sphere over the lens makes the light cover it.
 Scene luneburgMapScene();
 
-// E(ρ) averaged over each texel (RGB per texel as the receiver map, green
-// the same as the others), by an 8×8 midpoint rule.
+// E(ρ) averaged over each texel, j·resolution + i, by an 8×8 midpoint rule.
 std::vector<double> luneburgMapTexelMeans();
-
-// Relative L1 of a receiver map (green compared) against the texel means.
-double luneburgMapError(const std::vector<float>& map, const std::vector<double>& means);
 
 }  // namespace eikon::accuracy

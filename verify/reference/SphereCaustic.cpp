@@ -1,5 +1,7 @@
 #include "verify/reference/SphereCaustic.h"
 
+#include "verify/reference/CircleDeposit.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -110,66 +112,6 @@ double receiverConeCosine(const SphereCausticSetup& setup) {
     return cosCone;
 }
 
-// Spreads power landing on the circle of radius rho about the receiver's
-// centre over the texels the circle crosses, each by the fraction of the
-// circle's length inside it: the circle's arcs of the first octant
-// (0 ≤ φ ≤ π/4) between the grid lines it crosses, mirrored into the eight
-// octants (the texel grid is symmetric about the centre for an even
-// resolution).
-class CircleDeposit {
-public:
-    CircleDeposit(const SphereCausticSetup& setup, std::vector<double>& power)
-        : half_(setup.resolution / 2), texel_(setup.size / setup.resolution), power_(power) {}
-
-    void add(double rho, double weight) {
-        if (rho <= 0.0) {
-            for (int image = 0; image < 4; ++image) addTexel(0, 0, image, 0.25 * weight);
-            return;
-        }
-        // Crossings of the lines z = k·texel (φ rising from 0) and x = k·texel
-        // (φ rising toward π/4 as k falls), merged in order of φ.
-        const double diagonal = rho / std::sqrt(2.0);
-        int zLine = 1, xLine = static_cast<int>(std::floor(rho / texel_));
-        if (xLine * texel_ >= rho) --xLine;
-        const double lastZ = std::floor(diagonal / texel_);
-        double phi = 0.0;
-        for (;;) {
-            const double nextZ = zLine <= lastZ ? std::asin(std::min(1.0, zLine * texel_ / rho)) : kOctant;
-            const double nextX = xLine * texel_ > diagonal ? std::acos(std::min(1.0, xLine * texel_ / rho)) : kOctant;
-            const double next = std::min({nextZ, nextX, kOctant});
-            if (next > phi) {
-                const double middle = 0.5 * (phi + next);
-                const int i = static_cast<int>(rho * std::cos(middle) / texel_);
-                const int j = static_cast<int>(rho * std::sin(middle) / texel_);
-                const double share = weight * (next - phi) / (2.0 * std::numbers::pi);
-                for (int image = 0; image < 4; ++image) {
-                    addTexel(i, j, image, share);
-                    addTexel(j, i, image, share);
-                }
-            }
-            if (next >= kOctant) return;
-            phi = next;
-            if (nextZ <= nextX) ++zLine;
-            else --xLine;
-        }
-    }
-
-private:
-    static constexpr double kOctant = std::numbers::pi / 4.0;
-
-    // Texel (i, j) of the quadrant x, z ≥ 0, mirrored into quadrant `image`.
-    void addTexel(int i, int j, int image, double weight) {
-        if (i >= half_ || j >= half_) return;
-        const int x = (image & 1) ? half_ - 1 - i : half_ + i;
-        const int z = (image & 2) ? half_ - 1 - j : half_ + j;
-        power_[static_cast<std::size_t>(z) * (2 * half_) + x] += weight;
-    }
-
-    int half_;
-    double texel_;
-    std::vector<double>& power_;
-};
-
 IrradianceMap toIrradiance(const SphereCausticSetup& setup, const std::vector<std::vector<double>>& partial) {
     const std::size_t texels = static_cast<std::size_t>(setup.resolution) * setup.resolution;
     IrradianceMap map{setup.resolution, setup.size, std::vector<double>(texels, 0.0)};
@@ -229,7 +171,7 @@ IrradianceMap integrateSphereCaustic(const SphereCausticSetup& setup, long long 
     const double step = thetaMax / static_cast<double>(angles);
     const double intensity = setup.power / (4.0 * std::numbers::pi);  // W/sr
     const auto partial = inParallel(setup, [&](unsigned w, unsigned threads, std::vector<double>& power) {
-        CircleDeposit circles(setup, power);
+        CircleDeposit circles(setup.resolution, setup.size, power);
         Tracer tracer(setup, [&](const glm::dvec3& p, double rayWeight) {
             circles.add(std::hypot(p.x - setup.centre.x, p.z - setup.centre.z), rayWeight);
         });
