@@ -32,11 +32,13 @@ PhotonRange shareRange(std::size_t photons, const PassShare& share);
 
 // One share's raw tallies, flattened: what sums, what takes the maximum.
 struct LightPassTallies {
-    std::vector<std::uint64_t> sums;    // statistics, wavefront counters, receiver tallies (fixed point)
+    std::vector<std::uint64_t> sums;    // statistics, wavefront counters, receiver tallies, wavefront fluence (fixed point)
     std::vector<std::uint32_t> maxima;  // the largest invariant error, as float bits (non-negative floats order as their bits)
-    // Raw fluence and direction, recorded photon paths and their power:
-    // float, so the fluence of a scattering medium sums to within rounding,
-    // not bit for bit (recorded paths are exact: each is written by one share).
+    // The photons' raw fluence and direction, recorded photon paths and their
+    // power: float, so the photons' fluence of a scattering medium sums to
+    // within rounding, not bit for bit (recorded paths are exact: each is
+    // written by one share; the wavefront's fixed-point fluence goes with
+    // `sums`).
     std::vector<float> floatSums;
 };
 

@@ -75,6 +75,24 @@ struct UnpackCounters {
     template <typename T> void host(T& value) { value = static_cast<T>(sums[next++]); }
 };
 
+// A buffer of (low, high) 32-bit word pairs as 64-bit values, and back.
+std::vector<std::uint64_t> downloadWide(const gl::Buffer& buffer) {
+    std::vector<std::uint32_t> words(buffer.bytes() / sizeof(std::uint32_t));
+    if (!words.empty()) buffer.download(words.data(), words.size() * sizeof(std::uint32_t));
+    std::vector<std::uint64_t> values(words.size() / 2);
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = (std::uint64_t{words[2 * i + 1]} << 32) | words[2 * i];
+    return values;
+}
+
+void uploadWide(gl::Buffer& buffer, const std::vector<std::uint64_t>& values) {
+    std::vector<std::uint32_t> words(2 * values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        words[2 * i] = static_cast<std::uint32_t>(values[i]);
+        words[2 * i + 1] = static_cast<std::uint32_t>(values[i] >> 32);
+    }
+    if (!words.empty()) buffer.upload(words.data(), words.size() * sizeof(std::uint32_t));
+}
+
 std::vector<float> downloadFloats(const gl::Buffer& buffer) {
     std::vector<float> values(buffer.bytes() / sizeof(float));
     if (!values.empty()) buffer.download(values.data(), values.size() * sizeof(float));
@@ -131,7 +149,9 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_LOOP_BUDGET", std::to_string(loopBudget)},
         {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
         {"EIKON_LATTICE_SOURCE", feedsLattice(scene, fields) ? "1" : "0"}};
+    fixedFluence_ = byWavefront && storeFluence_ > 0;
     if (byWavefront) {
+        defines.insert({"EIKON_FIXED_FLUENCE", fixedFluence_ ? "1" : "0"});
         wavefront_ = std::make_unique<WavefrontStage>(tracer, defines, storeFluence_ > 0);
     } else {
         defines.insert({{"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
@@ -157,14 +177,19 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
     setEmitters(scene);
     if (storeFluence_ > 0) {
         const std::size_t bytes = 3 * fields.grid().cellCount() * sizeof(float);
+        const std::size_t rawBytes = fixedFluence_ ? 2 * bytes : bytes;  // two 32-bit words a value when fixed
         const glm::ivec3 r = fields.grid().resolution;
-        rawFluence_ = gl::Buffer(bytes, gl::gridResource("the photons' raw fluence", r.x, r.y, r.z));
-        rawDirection_ = gl::Buffer(bytes, gl::gridResource("the photons' raw fluence direction", r.x, r.y, r.z));
+        rawFluence_ = gl::Buffer(rawBytes, gl::gridResource("the light pass's raw fluence", r.x, r.y, r.z));
+        rawDirection_ = gl::Buffer(rawBytes, gl::gridResource("the light pass's raw fluence direction", r.x, r.y, r.z));
         fluence_ = gl::Buffer(bytes, gl::gridResource("the fluence", r.x, r.y, r.z));
         direction_ = gl::Buffer(bytes, gl::gridResource("the fluence direction", r.x, r.y, r.z));
-        fluenceSmoothProgram_ = gl::compileComputeProgram("fluence_smooth.comp");
-        if (feedsLattice(scene, fields))
-            rawScattered_ = gl::Buffer(bytes, gl::gridResource("the photons' scattered power", r.x, r.y, r.z));
+        fluenceSmoothProgram_ = gl::compileComputeProgram(
+            "fluence_smooth.comp", {{"EIKON_FIXED_FLUENCE", fixedFluence_ ? "1" : "0"},
+                                    {"EIKON_LATTICE_SOURCE", fixedFluence_ && feedsLattice(scene, fields) ? "1" : "0"}});
+        if (feedsLattice(scene, fields)) {
+            rawScattered_ = gl::Buffer(rawBytes, gl::gridResource("the light pass's scattered power", r.x, r.y, r.z));
+            if (fixedFluence_) scattered_ = gl::Buffer(bytes, gl::gridResource("the scattered power", r.x, r.y, r.z));
+        }
     }
     stats_ = gl::Buffer(sizeof(layout::GpuPhotonStats));
     const std::size_t recordedVertices =
@@ -244,7 +269,8 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
         stats.byWavefront = true;
         stats.wavefront = wavefront_->run({emissionFaces_, receivers_.count(), surfaces_.empty() ? 0u : surfaces_.count(),
                                            settings.maxSteps, settings.stepLength, dispersion_, powerUnit_,
-                                           settings.share});
+                                           settings.share, fixedFluence_ ? fluenceUnits(fields) : FluenceUnits{},
+                                           rawScattered_.id() != 0});
     } else if (settings.recordedOnly) {
         const std::size_t stride = static_cast<std::size_t>(std::max(1, options_.recordStride));
         const std::size_t count = std::min(static_cast<std::size_t>(options_.recordedPhotons),
@@ -313,6 +339,15 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     return stats;
 }
 
+FluenceUnits PhotonStage::fluenceUnits(const FieldTextures& fields) const {
+    const auto edge = static_cast<float>(fields.grid().smallestVoxelEdge());
+    FluenceUnits units;
+    units.fluence = powerUnit_ * edge;
+    units.direction = std::max({units.fluence.r, units.fluence.g, units.fluence.b});
+    units.scattered = powerUnit_;
+    return units;
+}
+
 void PhotonStage::smoothFluence(const FieldTextures& fields, const gl::Buffer& raw, const gl::Buffer& rawDirection,
                                 const gl::Buffer& smoothed, const gl::Buffer& smoothedDirection, float scale) {
     fields.gridBlock().bindUniform(layout::kGridBlock);
@@ -322,9 +357,22 @@ void PhotonStage::smoothFluence(const FieldTextures& fields, const gl::Buffer& r
     smoothedDirection.bindStorage(layout::kFluenceDirection);
     fluenceSmoothProgram_.use();
     glUniform1f(fluenceSmoothProgram_.uniform("scale"), scale);
-    // The wavefront's fluence has no noise to smooth: its tubes are narrower
-    // than a voxel and already spread by cloud-in-cell weights.
-    glUniform1i(fluenceSmoothProgram_.uniform("reach"), wavefront_ ? 0 : 1);
+    if (fixedFluence_) {
+        // The wavefront's fluence has no noise to smooth (its tubes are
+        // narrower than a voxel and already spread by spline weights): its
+        // fixed-point tallies are converted as they are.
+        const FluenceUnits units = fluenceUnits(fields);
+        glUniform3f(fluenceSmoothProgram_.uniform("fluence_unit"), units.fluence.r, units.fluence.g, units.fluence.b);
+        glUniform1f(fluenceSmoothProgram_.uniform("direction_unit"), units.direction);
+        if (scattered_.id()) {
+            glUniform3f(fluenceSmoothProgram_.uniform("scattered_unit"), units.scattered.r, units.scattered.g,
+                        units.scattered.b);
+            rawScattered_.bindStorage(layout::kRawScattered);
+            scattered_.bindStorage(layout::kScatteredPower);
+        }
+    } else {
+        glUniform1i(fluenceSmoothProgram_.uniform("reach"), 1);
+    }
     fluenceSmoothProgram_.dispatchOverCells(fields.grid().resolution);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
@@ -374,8 +422,16 @@ void PhotonStage::combineShares(LightPassExchange& exchange, PhotonStats& stats)
     const std::size_t counters = tallies.sums.size();
     const std::vector<std::uint64_t> receiverTallies = receivers_.downloadTallies();
     tallies.sums.insert(tallies.sums.end(), receiverTallies.begin(), receiverTallies.end());
+    // The wavefront's fixed-point fluence sums as integers (modulo 2^64, so
+    // the direction's two's complement too), bit for bit; photons' as floats.
+    std::vector<gl::Buffer*> wideBuffers, floatBuffers = {&paths_, &pathPower_};
+    for (gl::Buffer* buffer : {&rawFluence_, &rawDirection_, &rawScattered_})
+        (fixedFluence_ ? wideBuffers : floatBuffers).push_back(buffer);
+    for (const gl::Buffer* buffer : wideBuffers) {
+        const std::vector<std::uint64_t> values = downloadWide(*buffer);
+        tallies.sums.insert(tallies.sums.end(), values.begin(), values.end());
+    }
     tallies.maxima = {gpu.steps.z};
-    gl::Buffer* floatBuffers[] = {&rawFluence_, &rawDirection_, &rawScattered_, &paths_, &pathPower_};
     for (const gl::Buffer* buffer : floatBuffers) {
         const std::vector<float> values = downloadFloats(*buffer);
         tallies.floatSums.insert(tallies.floatSums.end(), values.begin(), values.end());
@@ -387,7 +443,14 @@ void PhotonStage::combineShares(LightPassExchange& exchange, PhotonStats& stats)
     visitSummedCounters(gpu, stats, UnpackCounters{tallies.sums});
     gpu.steps.z = tallies.maxima.at(0);
     stats_.upload(&gpu, sizeof gpu);
-    receivers_.uploadTallies({tallies.sums.begin() + static_cast<std::ptrdiff_t>(counters), tallies.sums.end()});
+    const auto receiverEnd = tallies.sums.begin() + static_cast<std::ptrdiff_t>(counters + receiverTallies.size());
+    receivers_.uploadTallies({tallies.sums.begin() + static_cast<std::ptrdiff_t>(counters), receiverEnd});
+    auto wide = receiverEnd;
+    for (gl::Buffer* buffer : wideBuffers) {
+        const auto end = wide + static_cast<std::ptrdiff_t>(buffer->bytes() / sizeof(std::uint64_t));
+        uploadWide(*buffer, {wide, end});
+        wide = end;
+    }
     std::size_t offset = 0;
     for (gl::Buffer* buffer : floatBuffers) {
         const std::size_t bytes = buffer->bytes();

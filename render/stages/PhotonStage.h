@@ -122,7 +122,7 @@ public:
     // The power (W, RGB per cell) the photons lost to scattering, by the
     // σs/κ their attenuation used: the multiple-scattering lattice's source.
     // Empty unless the scene has a lattice (tracer.multiple_scattering).
-    const gl::Buffer& scatteredPower() const { return rawScattered_; }
+    const gl::Buffer& scatteredPower() const { return fixedFluence_ ? scattered_ : rawScattered_; }
     std::vector<float> downloadFluence() const;
     std::vector<float> downloadFluenceDirection() const;
     // Recorded vertices (xyz, w = 1 where written) of the recorded photons,
@@ -143,6 +143,11 @@ private:
     void tracePhotons(const PhotonSettings& settings, std::size_t first, std::size_t stride, std::size_t count,
                       bool checkerboard = false);
     // The fluence smoothing of raw into smoothed, times scale.
+    // The fixed-point fluence's units: the light pass's power unit times the
+    // smallest voxel edge for track (a deposit of any tube fits 64 bits with
+    // 2^14 times all the power crossing a voxel to spare), the largest of
+    // them for the direction sums, the power unit for scattered power.
+    FluenceUnits fluenceUnits(const FieldTextures& fields) const;
     void smoothFluence(const FieldTextures& fields, const gl::Buffer& raw, const gl::Buffer& rawDirection,
                        const gl::Buffer& smoothed, const gl::Buffer& smoothedDirection, float scale);
     // Sums the raw tallies of every share of the pass into this one's
@@ -156,6 +161,10 @@ private:
     SharpSurfaceBuffer surfaces_;
     Rgb dispersion_{1.0};
     int storeFluence_ = 0;  // 0 none, 1 where σs > 0, 2 everywhere
+    // The wavefront's fluence tallies are 64-bit fixed point (deterministic),
+    // converted to floats by fluence_smooth.comp; photons' are float sums.
+    bool fixedFluence_ = false;
+    gl::Buffer scattered_;  // the fixed-point scattered power as floats, for the lattice
     gl::Program program_;                        // photons
     std::unique_ptr<WavefrontStage> wavefront_;  // or the wavefront
     gl::Program fluenceSmoothProgram_;

@@ -103,7 +103,14 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     glUniform1f(program_.uniform("split_texels"), static_cast<float>(settings_.splitTexels));
     glUniform1f(program_.uniform("tear_texels"), static_cast<float>(settings_.tearTexels));
     glUniform1f(program_.uniform("min_power"), static_cast<float>(settings_.minPower));
-    if (storesFluence_) glUniform1f(program_.uniform("split_voxels"), static_cast<float>(settings_.splitVoxels));
+    if (storesFluence_) {
+        const FluenceUnits& units = inputs.fluenceUnits;
+        glUniform1f(program_.uniform("split_voxels"), static_cast<float>(settings_.splitVoxels));
+        glUniform3f(program_.uniform("fluence_unit"), units.fluence.r, units.fluence.g, units.fluence.b);
+        glUniform1f(program_.uniform("direction_unit"), units.direction);
+        if (inputs.latticeSource)
+            glUniform3f(program_.uniform("scattered_unit"), units.scattered.r, units.scattered.g, units.scattered.b);
+    }
 
     const int channels = dispersive_ ? 3 : 1;
     const int branches = inputs.sharpSurfaceCount > 0 ? settings_.reflections : 0;

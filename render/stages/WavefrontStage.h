@@ -33,6 +33,14 @@ struct WavefrontCounts {
     std::uint64_t tubes = 0;    // tube axes traced: fluence in the grid
 };
 
+// The units of the wavefront's fixed-point fluence tallies
+// (common/fluence_deposits.glsl, EIKON_FIXED_FLUENCE).
+struct FluenceUnits {
+    glm::vec3 fluence{0.0f};    // W·m of track per unit, per channel
+    float direction = 0.0f;     // W·m per unit of the direction sums
+    glm::vec3 scattered{0.0f};  // W of scattered power per unit, per channel
+};
+
 // The uniforms the wavefront shares with the photon pass.
 struct WavefrontInputs {
     std::vector<unsigned> emissionFaces;  // per emitter (emissionFaces)
@@ -43,6 +51,8 @@ struct WavefrontInputs {
     Rgb dispersion{1.0};
     glm::vec3 powerUnit{0.0f};  // W per fixed-point unit, per channel
     PassShare share{};          // the seed chunks this process traces
+    FluenceUnits fluenceUnits{};  // where the pass stores fluence
+    bool latticeSource = false;   // it also tallies the power scattered per cell
 };
 
 // Faces of an emitter's emission domain (shaders/wavefront_trace.comp,

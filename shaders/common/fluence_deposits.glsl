@@ -9,25 +9,48 @@
 //                         by smooth cloud weights, so that tubes whose axes
 //                         fall anywhere in a voxel give it a smooth share
 //                         instead of all or nothing.
-// Includes grid_sampling.glsl, loop_budget.glsl and attenuation.glsl first.
-// GLSL only.
+// Includes grid_sampling.glsl, loop_budget.glsl and attenuation.glsl first,
+// and wide_units.glsl itself. GLSL only.
 //
 // Program options (#defines set by the stage):
 //   EIKON_STORE_FLUENCE    0 none, 1 where σs > 0, 2 everywhere
 //   EIKON_LATTICE_SOURCE   1: also the power scattered per cell (the multiple-scattering lattice's source)
+//   EIKON_FIXED_FLUENCE    1: the tallies are 64-bit fixed point (the wavefront's: integer sums do not
+//                          depend on the order deposits arrive in, so a relight gives the same bits),
+//                          converted to floats by fluence_smooth.comp; 0: float sums (photons')
 #ifndef EIKON_STORE_FLUENCE
 #define EIKON_STORE_FLUENCE 0
 #endif
 #ifndef EIKON_LATTICE_SOURCE
 #define EIKON_LATTICE_SOURCE 0
 #endif
+#ifndef EIKON_FIXED_FLUENCE
+#define EIKON_FIXED_FLUENCE 0
+#endif
+
+#include "common/wide_units.glsl"
 
 #if EIKON_STORE_FLUENCE > 0
+#if EIKON_FIXED_FLUENCE
+// Per cell and channel (axis) a 64-bit sum as (low, high) words: track
+// length in units of fluence_unit (W·m) per channel, the power-weighted
+// direction (two's complement) in units of direction_unit, the scattered
+// power in units of scattered_unit (W).
+layout(std430, binding = kRawFluence) buffer RawFluence { uint raw_fluence[]; };
+#if EIKON_LATTICE_SOURCE
+layout(std430, binding = kRawScattered) buffer RawScattered { uint raw_scattered[]; };
+#endif
+layout(std430, binding = kRawFluenceDirection) buffer RawFluenceDirection { uint raw_fluence_direction[]; };
+uniform vec3 fluence_unit;
+uniform float direction_unit;
+uniform vec3 scattered_unit;
+#else
 layout(std430, binding = kRawFluence) buffer RawFluence { float raw_fluence[]; };  // RGB per cell, W/m²
 #if EIKON_LATTICE_SOURCE
 layout(std430, binding = kRawScattered) buffer RawScattered { float raw_scattered[]; };  // RGB per cell, W
 #endif
 layout(std430, binding = kRawFluenceDirection) buffer RawFluenceDirection { float raw_fluence_direction[]; };  // xyz per cell
+#endif
 #endif
 
 uint deposits = 0u;  // cells this invocation added fluence to
@@ -46,6 +69,15 @@ bool stores_fluence(ivec3 cell) {
 // `track` (W·m, per channel) spent in `cell` going along `direction`.
 void add_fluence(ivec3 cell, vec3 track, vec3 direction) {
     if (!stores_fluence(cell)) return;
+#if EIKON_FIXED_FLUENCE
+    uint words = 6u * uint(grid_linear_index(cell));
+    vec3 weighted = (track.r + track.g + track.b) * direction / direction_unit;
+    for (int c = 0; c < 3; ++c) {
+        ADD_WIDE_UNITS(raw_fluence, words + uint(2 * c), wide_units(track[c] / fluence_unit[c]));
+        ADD_WIDE_UNITS(raw_fluence_direction, words + uint(2 * c), signed_wide_units(weighted[c]));
+    }
+    ++deposits;
+#else
     uint index = 3u * uint(grid_linear_index(cell));
     vec3 value = track / grid.voxel_size.w;
     atomicAdd(raw_fluence[index + 0u], value.r);
@@ -56,6 +88,7 @@ void add_fluence(ivec3 cell, vec3 track, vec3 direction) {
     atomicAdd(raw_fluence_direction[index + 1u], weighted.y);
     atomicAdd(raw_fluence_direction[index + 2u], weighted.z);
     ++deposits;
+#endif
 }
 #endif
 
@@ -65,10 +98,16 @@ void add_scattered(ivec3 cell, vec3 track, vec3 sigma_s) {
 #if EIKON_STORE_FLUENCE > 0 && EIKON_LATTICE_SOURCE
     vec3 scattered = track * sigma_s;
     if (!any(greaterThan(scattered, vec3(0.0f)))) return;
+#if EIKON_FIXED_FLUENCE
+    uint words = 6u * uint(grid_linear_index(cell));
+    for (int c = 0; c < 3; ++c)
+        ADD_WIDE_UNITS(raw_scattered, words + uint(2 * c), wide_units(scattered[c] / scattered_unit[c]));
+#else
     uint index = 3u * uint(grid_linear_index(cell));
     atomicAdd(raw_scattered[index + 0u], scattered.r);
     atomicAdd(raw_scattered[index + 1u], scattered.g);
     atomicAdd(raw_scattered[index + 2u], scattered.b);
+#endif
 #endif
 }
 

@@ -4,37 +4,18 @@
 // (common/footprint_coverage.glsl). The includer declares `power_unit` and
 // the tally blocks. GLSL only.
 
-// A non-negative number of units as (low, high) words.
-uvec2 wide_units(float units) {
-    float high = floor(units / 4294967296.0f);
-    float low = min(units - high * 4294967296.0f + 0.5f, 4294967040.0f);
-    return uvec2(uint(max(low, 0.0f)), uint(high));
-}
+#include "common/wide_units.glsl"
 
 void add_stat(int tally, vec3 watts) {
-    for (int c = 0; c < 3; ++c) {
-        uvec2 value = wide_units(watts[c] / power_unit[c]);
-        uint low_word = uint(2 * (3 * tally + c));
-        if (value.x != 0u) {
-            uint before = atomicAdd(power_tallies[low_word], value.x);
-            if (before + value.x < before) atomicAdd(power_tallies[low_word + 1u], 1u);
-        }
-        if (value.y != 0u) atomicAdd(power_tallies[low_word + 1u], value.y);
-    }
+    for (int c = 0; c < 3; ++c)
+        ADD_WIDE_UNITS(power_tallies, uint(2 * (3 * tally + c)), wide_units(watts[c] / power_unit[c]));
 }
 
 void deposit_in_texel(int r, ivec2 texel, vec3 watts) {
     uint resolution = receivers[r].map.y;
     uint base = 6u * (receivers[r].map.x + uint(texel.y) * resolution + uint(texel.x));
-    for (int c = 0; c < 3; ++c) {
-        uvec2 value = wide_units(watts[c] / power_unit[c]);
-        uint low_word = base + uint(2 * c);
-        if (value.x != 0u) {
-            uint before = atomicAdd(receiver_tallies[low_word], value.x);
-            if (before + value.x < before) atomicAdd(receiver_tallies[low_word + 1u], 1u);
-        }
-        if (value.y != 0u) atomicAdd(receiver_tallies[low_word + 1u], value.y);
-    }
+    for (int c = 0; c < 3; ++c)
+        ADD_WIDE_UNITS(receiver_tallies, base + uint(2 * c), wide_units(watts[c] / power_unit[c]));
 }
 
 ivec2 texel_of(int r, vec2 map_uv) {

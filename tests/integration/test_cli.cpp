@@ -223,7 +223,8 @@ TEST_F(Cli, WavefrontLightsAScatteringMedium) {
                                R"("medium": {"index": 1.0, "extinction": 0.5, "scattering": 0.4})"));
     const fs::path out = dir_ / "out";
     const Outcome outcome =
-        runEikon("run " + scene + " --out " + out.string() + " --quiet --set 'tracer.estimator=\"wavefront\"'");
+        runEikon("run " + scene + " --out " + out.string() + " --quiet --set 'tracer.estimator=\"wavefront\"'" +
+                 " --set tracer.wavefront.split_voxels=2");
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
     std::ifstream report(out / "report.jsonl");
     std::string first;

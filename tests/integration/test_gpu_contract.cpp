@@ -74,6 +74,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"MultipleFluence", {layout::kMultipleFluence, 0, sizeof(float)}},
         {"LatticeTallies", {layout::kLatticeTallies, 0, sizeof(glm::vec4)}},
         {"RawScattered", {layout::kRawScattered, 0, sizeof(float)}},
+        {"ScatteredPower", {layout::kScatteredPower, 0, sizeof(float)}},
         {"LatticeGrey", {layout::kLatticeGrey, sizeof(std::uint32_t), 0}},
     };
     return rows;
@@ -124,6 +125,7 @@ std::vector<Variant> productionVariants() {
         {"octree_label.comp", {}},
         {"receiver_filter.comp", {}},
         {"fluence_smooth.comp", {}},
+        {"fluence_smooth.comp", {{"EIKON_FIXED_FLUENCE", "1"}, {"EIKON_LATTICE_SOURCE", "1"}}},
         {"tonemap.comp", {}},
         {"photon_trace.comp", {}},
         {"photon_trace.comp",
@@ -145,6 +147,7 @@ std::vector<Variant> productionVariants() {
           {"EIKON_OCTREE_STEPS", "1"},
           {"EIKON_SHARP_SURFACES", "1"},
           {"EIKON_STORE_FLUENCE", "1"},
+          {"EIKON_FIXED_FLUENCE", "1"},
           {"EIKON_LATTICE_SOURCE", "1"}}},
         {"view_rays.comp", {}},
         {"view_rays.comp",
