@@ -111,6 +111,13 @@ void add_scattered(ivec3 cell, vec3 track, vec3 sigma_s) {
 #endif
 }
 
+// The power-weighted length (W·m) of a piece `piece` long that starts
+// `travelled` along a segment entered with `power` at extinction κ: the
+// power there times the length it spends decaying across the piece.
+vec3 piece_track(vec3 power, vec3 kappa, float travelled, float piece) {
+    return power * beer_lambert_transmittance(kappa, travelled) * attenuated_track_length(kappa, piece);
+}
+
 // Track-length estimator over the segment a → b: a 3D DDA visits every voxel
 // the segment crosses and adds the power-weighted length spent in it, with
 // Beer–Lambert decay along the way at the segment's extinction κ.
@@ -136,8 +143,7 @@ void deposit_segment(vec3 a, vec3 b, vec3 power, vec3 kappa, vec3 sigma_s) {
         float t_next = min(1.0f, min(t_max.x, min(t_max.y, t_max.z)));
         float piece = (t_next - t) * length_;
         if (piece > 0.0f) {
-            vec3 entering = power * beer_lambert_transmittance(kappa, t * length_);
-            vec3 track = entering * attenuated_track_length(kappa, piece);  // W·m
+            vec3 track = piece_track(power, kappa, t * length_, piece);
             add_fluence(cell, track, direction);
             add_scattered(cell, track, sigma_s);
         }
@@ -183,8 +189,7 @@ void deposit_tube_segment(vec3 a, vec3 b, vec3 power, vec3 kappa, vec3 sigma_s) 
     spend_loops(uint(27 * pieces));
     float piece = length_ / float(pieces);
     for (int i = 0; i < pieces; ++i) {
-        vec3 entering = power * beer_lambert_transmittance(kappa, float(i) * piece);
-        vec3 track = entering * attenuated_track_length(kappa, piece);  // W·m
+        vec3 track = piece_track(power, kappa, float(i) * piece, piece);
         vec3 middle = p + (float(i) + 0.5f) / float(pieces) * span;
         add_scattered(clamp(ivec3(floor(middle)), ivec3(0), grid.resolution.xyz - 1), track, sigma_s);
         vec3 nearest = floor(middle);  // the cell whose centre is nearest
