@@ -32,7 +32,7 @@
 // channels differ anywhere (medium, or source by more than float rounding):
 // where they do not, one channel is solved and its densities copied to the
 // other two.
-// Program options: EIKON_LATTICE_DIRECTIONS (6 or 18), EIKON_LATTICE_PASS,
+// Program options: EIKON_LATTICE_DIRECTIONS (6, 14 or 18), EIKON_LATTICE_PASS,
 // EIKON_HAS_ANISOTROPY.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
@@ -111,13 +111,16 @@ Collision collide(ivec3 cell) {
     c.source = raw_scattered[3 * index + channel];
     // Per length class (common/lattice_directions.glsl): a link's
     // transmittance, its mean transmittance, and those of half a link.
-    float transmittance[6], track_per_length[6], half_transmittance[6], half_track_per_length[6], link_length[6];
-    for (int k = 0; k < 6; ++k) {
-        ivec3 offset = lattice_offset(k < 3 ? 2 * k : 6 + 4 * (k - 3));
+    const int K = LATTICE_LENGTH_CLASSES;
+    float transmittance[K], track_per_length[K], half_transmittance[K], half_track_per_length[K], link_length[K];
+    for (int k = 0; k < K; ++k) {
+        bool used = k < 3 || (DIRECTIONS == 18 && k < 6) || (DIRECTIONS == 14 && k == 6);
+        if (!used) continue;
+        ivec3 offset = lattice_offset(lattice_class_direction(k));
         link_length[k] = length(vec3(offset) * grid.voxel_size.xyz);
         float depth = sigma_t * link_length[k];
-        transmittance[k] = exp(-depth);
         half_transmittance[k] = exp(-0.5f * depth);
+        transmittance[k] = half_transmittance[k] * half_transmittance[k];
         track_per_length[k] = mean_transmittance(depth);
         half_track_per_length[k] = mean_transmittance(0.5f * depth);
     }
@@ -128,13 +131,14 @@ Collision collide(ivec3 cell) {
     float half_link[DIRECTIONS];  // transmittance of each half link, weighted
     int cells = cell_count();
     for (int i = 0; i < DIRECTIONS; ++i) {
-        int k = lattice_length_class(i);
-        ivec3 from = linked_cell(cell, -lattice_offset(i));
+        int d = lattice_link(i, DIRECTIONS);
+        int k = lattice_length_class(d);
+        ivec3 from = linked_cell(cell, -lattice_offset(d));
         float arriving = from.x < 0 ? 0.0f : density_in[i * cells + grid_linear_index(from)];
         c.outgoing[i] = arriving * transmittance[k];
         interactions += arriving * (1.0f - transmittance[k]);
         track += arriving * link_length[k] * track_per_length[k];
-        float weight = lattice_weight(i, DIRECTIONS);
+        float weight = lattice_weight(d, DIRECTIONS);
         half_link[i] = weight * half_transmittance[k];
         escape += half_link[i];
         half_track += weight * 0.5f * link_length[k] * half_track_per_length[k];
@@ -188,7 +192,7 @@ void main() {
         values[0] = c.source;
         values[1] = c.absorbed;
         for (int i = 0; i < DIRECTIONS; ++i) {
-            ivec3 offset = lattice_offset(i);
+            ivec3 offset = lattice_offset(lattice_link(i, DIRECTIONS));
             if (linked_cell(cell, offset).x >= 0) continue;
             // The first axis on which the link leaves names the face.
             ivec3 next = cell + offset;

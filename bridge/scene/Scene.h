@@ -214,7 +214,7 @@ struct TracerDesc {
     // or diffused on a lattice ([Bernabei12] §III-C; render/stages/LatticeScattering).
     enum class MultipleScattering { None, Lbm } multipleScattering = MultipleScattering::None;
     struct Lattice {
-        int directions = 18;       // links per voxel: 6 ([Bernabei12]'s) or 18 (with the face diagonals)
+        int directions = 14;       // links per voxel: 6 ([Bernabei12]'s), 14 (axes and body diagonals) or 18 (axes and face diagonals)
         double tolerance = 1e-3;   // converged below this estimated remaining relative change at the probes, > 0
         int maxIterations = 4000;  // steps per channel and frame, >= 1
     } lattice;

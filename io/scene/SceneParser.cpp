@@ -376,7 +376,7 @@ TracerDesc readTracer(const JsonReader& node) {
                                                                               : TracerDesc::MultipleScattering::None;
     if (auto directions = fields.optional("lbm_directions")) {
         const long long count = directions->integer(6, 18);
-        if (count != 6 && count != 18) directions->fail("6 or 18", std::to_string(count));
+        if (count != 6 && count != 14 && count != 18) directions->fail("6, 14 or 18", std::to_string(count));
         tracer.lattice.directions = static_cast<int>(count);
     }
     if (auto tolerance = fields.optional("lbm_tolerance"))

@@ -51,7 +51,8 @@ double LatticeStats::balanceError() const {
 
 LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings)
     : grid_(grid), settings_(settings) {
-    EIKON_CHECK_MSG(settings.directions == 6 || settings.directions == 18, "a lattice of 6 or 18 links (io/scene)");
+    EIKON_CHECK_MSG(settings.directions == 6 || settings.directions == 14 || settings.directions == 18,
+                    "a lattice of 6, 14 or 18 links (io/scene)");
     EIKON_CHECK_MSG(fields.hasScattering(), "a lattice only where some voxel scatters (FrameRenderer)");
     const glm::ivec3 r = grid.resolution;
     const int stride = std::max(1, std::min(settings.probeStride, std::min(r.x, std::min(r.y, r.z)) / 2));

@@ -1,6 +1,6 @@
 // Multiple scattering by lattice-Boltzmann lighting ([Bernabei12] §III-C;
 // shaders/lattice_scattering.comp): the power the light pass's photons lose
-// to scattering is born on a lattice of 6 or 18 links per voxel, which
+// to scattering is born on a lattice of 6, 14 or 18 links per voxel, which
 // collides and streams it until the flow is steady; the view pass then adds
 // σs·φ_ms/(4π), the fluence φ_ms of light scattered at least once scattered
 // again (isotropically: the lattice keeps no finer angular detail).
@@ -30,7 +30,7 @@
 namespace eikon::render {
 
 struct LatticeSettings {
-    int directions = 18;       // 6 or 18
+    int directions = 14;       // 6, 14 or 18 (common/lattice_directions.glsl)
     double tolerance = 1e-3;   // on the estimated remaining relative change at the probes
     int maxIterations = 4000;  // per channel
     int checkInterval = 16;    // steps between probe read-backs

@@ -1,32 +1,50 @@
 // The direction sets of the lattice that carries multiply scattered light
-// ([Bernabei12] §III-C, eqs. 4–5): D3Q6, the six principal directions the
-// paper uses, and D3Q18, which adds the twelve face diagonals of the
-// original lattice-Boltzmann lighting ([Geist04]'s 18 links, here without
-// the rest particle). A link moves a photon density to the
-// neighbour at offset c_i in one lattice step.
+// ([Bernabei12] §III-C, eqs. 4–5). A link moves a photon density to the
+// neighbour at offset c_d in one lattice step. Directions are numbered once
+// for all lattices: d in [0, 6) the principal axes ±x, ±y, ±z (even d
+// positive); [6, 18) the face diagonals, plane by plane (xy, yz, zx), each
+// with the sign pairs (+,+), (−,+), (+,−), (−,−); [18, 26) the body
+// diagonals, bit b of d − 18 set where axis b is negative. A lattice of
+// `directions` links uses a subset (lattice_link):
+// - 6: the principal directions, as the paper;
+// - 18: axes and face diagonals ([Geist04]'s 18 links, here without the
+//   rest particle);
+// - 14: axes and body diagonals.
 //
-// Weights w_i are the share of isotropically scattered power each link
-// takes. D3Q6: 1/6 each. D3Q18: 1/30 per axis and 1/15 per diagonal, the
-// only split of the sphere that also integrates the fourth moments
-// (⟨μ⁴⟩ = 1/5, ⟨μx²μy²⟩ = 1/15) — any split of the two gives ⟨μ²⟩ = 1/3, the
-// diffusion limit's moment, so both lattices diffuse alike in the bulk and
-// differ where transport is not yet diffusive (thin layers, near edges).
+// Weights w_d are the share of isotropically scattered power each link
+// takes. Every lattice here integrates ⟨μ²⟩ = 1/3, the diffusion limit's
+// moment, so all diffuse alike in the bulk; they differ where transport is
+// not yet diffusive — next to a boundary and within a mean free path of
+// where light is born:
+// - 6 links: 1/6 each.
+// - 18 links: 1/30 per axis, 1/15 per face diagonal, the only split that
+//   also integrates the fourth moments (⟨μ⁴⟩ = 1/5, ⟨μx²μy²⟩ = 1/15).
+// - 14 links: (3 − √3)/24 per axis, (1 + √3)/32 per body diagonal, the
+//   split whose half-range flux Σ_{μ>0} w μ is 1/4, the continuum's
+//   (Marshak's condition): an isotropic density leaves through a face at the
+//   continuum's rate φ/4 (18 links: 0.222 φ; 6 links: φ/6), and no link runs
+//   parallel to a face (18 links: 40% of the weight; 6 links: 2/3), where
+//   light near the face cannot leave before it scatters again.
 // Shared by GLSL and C++ (cpp_shim.h).
 
-// Direction i in [0, 6): ±x, ±y, ±z (even i positive); in [6, 18): the face
-// diagonals, plane by plane (xy, yz, zx), each with the sign pairs
-// (+,+), (−,+), (+,−), (−,−).
-ivec3 lattice_offset(int i) {
-    if (i < 6) {
+// The global direction of link `slot` of a lattice of `directions` links.
+int lattice_link(int slot, int directions) { return (directions == 14 && slot >= 6) ? slot + 12 : slot; }
+
+ivec3 lattice_offset(int d) {
+    if (d < 6) {
         ivec3 offset = ivec3(0);
-        int axis = i / 2;
-        int sign_ = (i % 2 == 0) ? 1 : -1;
+        int axis = d / 2;
+        int sign_ = (d % 2 == 0) ? 1 : -1;
         if (axis == 0) offset.x = sign_;
         if (axis == 1) offset.y = sign_;
         if (axis == 2) offset.z = sign_;
         return offset;
     }
-    int k = i - 6;
+    if (d >= 18) {
+        int bits = d - 18;
+        return ivec3((bits & 1) != 0 ? -1 : 1, (bits & 2) != 0 ? -1 : 1, (bits & 4) != 0 ? -1 : 1);
+    }
+    int k = d - 6;
     int plane = k / 4;
     int first = (k % 2 == 0) ? 1 : -1;
     int second = ((k / 2) % 2 == 0) ? 1 : -1;
@@ -35,19 +53,26 @@ ivec3 lattice_offset(int i) {
     return ivec3(second, 0, first);
 }
 
-float lattice_weight(int i, int directions) {
+float lattice_weight(int d, int directions) {
     if (directions == 6) return 1.0f / 6.0f;
-    return i < 6 ? 1.0f / 30.0f : 1.0f / 15.0f;
+    if (directions == 14) return d < 6 ? (3.0f - 1.7320508f) / 24.0f : (1.0f + 1.7320508f) / 32.0f;
+    return d < 6 ? 1.0f / 30.0f : 1.0f / 15.0f;
 }
 
 // The links' length classes: 0–2 along x, y, z; 3–5 the diagonals of the
-// xy, yz and zx planes (each class one length on any box voxel).
-int lattice_length_class(int i) { return i < 6 ? i / 2 : 3 + (i - 6) / 4; }
+// xy, yz and zx planes; 6 the body diagonals (each class one length on any
+// box voxel).
+const int LATTICE_LENGTH_CLASSES = 7;
+int lattice_length_class(int d) { return d < 6 ? d / 2 : (d < 18 ? 3 + (d - 6) / 4 : 6); }
+
+// A direction of length class k.
+int lattice_class_direction(int k) { return k < 3 ? 2 * k : (k < 6 ? 6 + 4 * (k - 3) : 18); }
 
 // The direction with the opposite offset.
-int lattice_opposite(int i) {
-    if (i < 6) return (i % 2 == 0) ? i + 1 : i - 1;
-    int k = i - 6;
+int lattice_opposite(int d) {
+    if (d < 6) return (d % 2 == 0) ? d + 1 : d - 1;
+    if (d >= 18) return 18 + (7 - (d - 18));
+    int k = d - 6;
     return 6 + (k / 4) * 4 + (3 - k % 4);
 }
 

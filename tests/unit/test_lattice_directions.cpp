@@ -1,7 +1,8 @@
 // shaders/common/lattice_directions.glsl compiled as C++: the lattices' links
 // are distinct, come in opposite pairs, and their weights are a quadrature
 // of the sphere — total 1, no mean direction, second moments δ/3 (the
-// diffusion limit's), and on 18 links the fourth moments too.
+// diffusion limit's), on 18 links the fourth moments too, and on 14 links
+// the continuum's half-range flux.
 #include "shaders/common/cpp_shim.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,8 @@
 namespace eikon {
 namespace {
 
+using shader::lattice_length_class;
+using shader::lattice_link;
 using shader::lattice_offset;
 using shader::lattice_opposite;
 using shader::lattice_weight;
@@ -21,31 +24,52 @@ using shader::lattice_weight;
 double moment(int directions, glm::ivec3 powers) {
     double sum = 0.0;
     for (int i = 0; i < directions; ++i) {
-        const glm::dvec3 u = glm::normalize(glm::dvec3(lattice_offset(i)));
-        sum += lattice_weight(i, directions) * std::pow(u.x, powers.x) * std::pow(u.y, powers.y) * std::pow(u.z, powers.z);
+        const int d = lattice_link(i, directions);
+        const glm::dvec3 u = glm::normalize(glm::dvec3(lattice_offset(d)));
+        sum += lattice_weight(d, directions) * std::pow(u.x, powers.x) * std::pow(u.y, powers.y) * std::pow(u.z, powers.z);
+    }
+    return sum;
+}
+
+// Σ_{u_z > 0} w u_z: the share of an isotropic density's fluence φ that
+// crosses a z face per unit time, in units of φ.
+double halfRangeFlux(int directions) {
+    double sum = 0.0;
+    for (int i = 0; i < directions; ++i) {
+        const int d = lattice_link(i, directions);
+        const glm::dvec3 u = glm::normalize(glm::dvec3(lattice_offset(d)));
+        if (u.z > 0.0) sum += lattice_weight(d, directions) * u.z;
     }
     return sum;
 }
 
 TEST(LatticeDirections, LinksAreDistinctNeighboursInOppositePairs) {
-    for (int directions : {6, 18}) {
+    for (int directions : {6, 14, 18}) {
         std::set<std::tuple<int, int, int>> seen;
-        for (int i = 0; i < directions; ++i) {
-            const glm::ivec3 c = lattice_offset(i);
+        std::set<int> links;
+        for (int i = 0; i < directions; ++i) links.insert(lattice_link(i, directions));
+        for (int d : links) {
+            const glm::ivec3 c = lattice_offset(d);
             const int length2 = c.x * c.x + c.y * c.y + c.z * c.z;
-            EXPECT_EQ(length2, i < 6 ? 1 : 2) << i;
-            EXPECT_TRUE(seen.insert({c.x, c.y, c.z}).second) << i;
-            const int j = lattice_opposite(i);
-            ASSERT_GE(j, 0);
-            ASSERT_LT(j, directions);
-            EXPECT_EQ(lattice_offset(j), -c) << i;
-            EXPECT_EQ(lattice_opposite(j), i);
+            const int lengthClass = lattice_length_class(d);
+            EXPECT_EQ(length2, lengthClass < 3 ? 1 : (lengthClass < 6 ? 2 : 3)) << d;
+            if (lengthClass < 3) {
+                EXPECT_NE(c[lengthClass], 0) << d;
+            } else if (lengthClass < 6) {
+                EXPECT_EQ(c[(lengthClass - 1) % 3], 0) << d;
+            }
+            EXPECT_TRUE(seen.insert({c.x, c.y, c.z}).second) << d;
+            const int j = lattice_opposite(d);
+            EXPECT_TRUE(links.count(j)) << directions << " links lack the opposite of " << d;
+            EXPECT_EQ(lattice_offset(j), -c) << d;
+            EXPECT_EQ(lattice_opposite(j), d);
         }
+        EXPECT_EQ(static_cast<int>(links.size()), directions);
     }
 }
 
 TEST(LatticeDirections, WeightsIntegrateTheSphere) {
-    for (int directions : {6, 18}) {
+    for (int directions : {6, 14, 18}) {
         EXPECT_NEAR(moment(directions, {0, 0, 0}), 1.0, 1e-7);
         for (int axis = 0; axis < 3; ++axis) {
             glm::ivec3 first(0), second(0);
@@ -61,6 +85,14 @@ TEST(LatticeDirections, WeightsIntegrateTheSphere) {
     EXPECT_NEAR(moment(18, {2, 2, 0}), 1.0 / 15.0, 1e-7);
     EXPECT_NEAR(moment(18, {0, 2, 2}), 1.0 / 15.0, 1e-7);
     EXPECT_NEAR(moment(6, {4, 0, 0}), 1.0 / 3.0, 1e-7);
+}
+
+// Marshak's condition: the continuum's half-range flux of an isotropic
+// radiance is φ/4; 14 links meet it, 18 and 6 fall short.
+TEST(LatticeDirections, FourteenLinksLeaveAFaceAtTheContinuumsRate) {
+    EXPECT_NEAR(halfRangeFlux(14), 0.25, 1e-7);
+    EXPECT_NEAR(halfRangeFlux(18), 1.0 / 30.0 + 4.0 / 15.0 / std::sqrt(2.0), 1e-7);
+    EXPECT_NEAR(halfRangeFlux(6), 1.0 / 6.0, 1e-7);
 }
 
 TEST(LatticeDirections, MeanTransmittanceIsContinuousAtItsSeries) {

@@ -144,7 +144,7 @@ TEST(SceneParser, NewKeysTakeDefaults) {
         EXPECT_FALSE(tracer.storeFluence);
         EXPECT_EQ(tracer.maxStepVoxels, defaults.tracer.maxStepVoxels);
         EXPECT_EQ(tracer.multipleScattering, TracerDesc::MultipleScattering::None);
-        EXPECT_EQ(tracer.lattice.directions, 18);
+        EXPECT_EQ(tracer.lattice.directions, 14);
         EXPECT_DOUBLE_EQ(tracer.lattice.tolerance, 1e-3);
         EXPECT_EQ(tracer.lattice.maxIterations, 4000);
     }
@@ -152,11 +152,11 @@ TEST(SceneParser, NewKeysTakeDefaults) {
 
 TEST(SceneParser, MultipleScatteringKeys) {
     json scene = validScene();
-    scene["tracer"] = json::parse(R"({"multiple_scattering": "lbm", "lbm_directions": 6, "lbm_tolerance": 1e-5,
+    scene["tracer"] = json::parse(R"({"multiple_scattering": "lbm", "lbm_directions": 14, "lbm_tolerance": 1e-5,
                                       "lbm_max_iterations": 250})");
     const TracerDesc tracer = parseScene(scene, "test.json").tracer;
     EXPECT_EQ(tracer.multipleScattering, TracerDesc::MultipleScattering::Lbm);
-    EXPECT_EQ(tracer.lattice.directions, 6);
+    EXPECT_EQ(tracer.lattice.directions, 14);
     EXPECT_DOUBLE_EQ(tracer.lattice.tolerance, 1e-5);
     EXPECT_EQ(tracer.lattice.maxIterations, 250);
 }
@@ -164,7 +164,7 @@ TEST(SceneParser, MultipleScatteringKeys) {
 TEST(SceneParserErrors, MultipleScatteringValuesAreRefusedAtTheirPath) {
     for (const auto& [key, value, detail] :
          {std::tuple<const char*, json, const char*>{"multiple_scattering", "diffusion", "\"lbm\""},
-          {"lbm_directions", 12, "6 or 18"},
+          {"lbm_directions", 12, "6, 14 or 18"},
           {"lbm_directions", 26, "18"},
           {"lbm_tolerance", 0, "(0, 1)"},
           {"lbm_tolerance", 1, "(0, 1)"},
