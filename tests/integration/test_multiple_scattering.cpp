@@ -110,7 +110,7 @@ TEST(MultipleScattering, TheLatticeCarriesWhatThePhotonsScattered) {
     }
     EXPECT_LT(frame.lattice->balanceError(), 1e-4);
     EXPECT_FALSE(frame.lattice->capped());
-    EXPECT_EQ(frame.lattice->directions, 18);
+    EXPECT_EQ(frame.lattice->directions, 14);
     const Rendered coarse = renderScene(sphereScene(albedo), {"tracer.multiple_scattering=\"lbm\"",
                                                               "tracer.lbm_directions=6"});
     EXPECT_EQ(coarse.lattice->directions, 6);
