@@ -17,13 +17,27 @@
 // interacts on the way being born again in the same voxel (a geometric
 // series, summed in closed form). In the limit of thin voxels this is the
 // paper's Θ. Absorbed light leaves the lattice (the paper's rest density
-// Θ_0j = σa, which this lattice tallies instead of keeping). The lattice
-// ignores refraction: light diffuses straight through index changes, sharp
-// or smooth. Anisotropic media scatter by the similarity relation
+// Θ_0j = σa, which this lattice tallies instead of keeping).
+//
+// Sharp surfaces (EIKON_LATTICE_INTERFACES): a link whose two cell centres
+// lie inside different sharp objects of different index crosses an
+// interface. Of the density it carries the diffuse Fresnel reflectance
+// R_d(n_from → n_to) (common/fresnel.glsl; its total-internal-reflection
+// part alone where the object's Fresnel reflection is off) returns to the
+// cell it left along the opposite link, and the rest goes on: the lattice
+// keeps no finer angular detail than an isotropic radiance, so each link
+// takes the hemispherical average, which lets the continuum's flux through
+// the interface on a lattice whose half-range flux is the continuum's
+// (14 links). The reflection is bounce-back, not a mirror (a lattice has
+// the mirror direction only for axis-aligned faces); the refraction of the
+// transmitted part is not followed. Smooth index changes are not
+// interfaces: light diffuses straight through them.
+// Anisotropic media scatter by the similarity relation
 // σs′ = σs(1 − g), σt′ = σt − σs + σs′ (the 6- or 18-link lattice scatters
 // isotropically by construction).
 //
-// Passes (EIKON_LATTICE_PASS): 0 one collide-and-stream step of one channel
+// Passes (EIKON_LATTICE_PASS): 4 once a frame, each cell's interface
+// links and index (LatticeInterfaces); 0 one collide-and-stream step of one channel
 // from LatticeIn to LatticeOut; 1 the fluence at the convergence probes
 // (every probe_stride-th cell on each axis); 2 the fluence of every cell
 // into MultipleFluence and per work group the power ledger (source,
@@ -33,7 +47,7 @@
 // where they do not, one channel is solved and its densities copied to the
 // other two.
 // Program options: EIKON_LATTICE_DIRECTIONS (6, 14 or 18), EIKON_LATTICE_PASS,
-// EIKON_HAS_ANISOTROPY.
+// EIKON_HAS_ANISOTROPY, EIKON_LATTICE_INTERFACES.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "common/grid_sampling.glsl"
@@ -47,6 +61,24 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #endif
 #ifndef EIKON_HAS_ANISOTROPY
 #define EIKON_HAS_ANISOTROPY 0
+#endif
+#ifndef EIKON_LATTICE_INTERFACES
+#define EIKON_LATTICE_INTERFACES 0
+#endif
+#if EIKON_LATTICE_INTERFACES
+// Per cell: x the slots of its links that cross an interface; y, z (float
+// bits) the reflectance of light leaving the cell across it and of light
+// entering it (a cell whose links cross into two different indices takes
+// the last one's, and the exchange between it and the other is not quite
+// conservative).
+#if EIKON_LATTICE_PASS == 4
+#include "common/fresnel.glsl"
+#include "common/sharp_surfaces.glsl"
+#include "common/sharp_surface_blocks.glsl"
+layout(std430, binding = kLatticeInterfaces) buffer LatticeInterfaces { uvec4 interfaces[]; };
+#else
+layout(std430, binding = kLatticeInterfaces) readonly buffer LatticeInterfaces { uvec4 interfaces[]; };
+#endif
 #endif
 const int DIRECTIONS = EIKON_LATTICE_DIRECTIONS;
 
@@ -85,6 +117,13 @@ ivec3 linked_cell(ivec3 cell, ivec3 offset) {
     }
     return next;
 }
+
+#if EIKON_LATTICE_INTERFACES && EIKON_LATTICE_PASS == 4
+float interface_reflectance(float n_i, float n_t, bool fresnel) {
+    if (fresnel) return diffuse_fresnel_reflectance(n_i, n_t);
+    return n_i > n_t ? 1.0f - (n_t / n_i) * (n_t / n_i) : 0.0f;  // total internal reflection alone
+}
+#endif
 
 struct Collision {
     float outgoing[DIRECTIONS];  // W along each link
@@ -130,11 +169,23 @@ Collision collide(ivec3 cell) {
     float half_track = 0.0f;    // m: the mean track of that half link
     float half_link[DIRECTIONS];  // transmittance of each half link, weighted
     int cells = cell_count();
+#if EIKON_LATTICE_INTERFACES
+    uvec4 here = interfaces[index];
+#endif
     for (int i = 0; i < DIRECTIONS; ++i) {
         int d = lattice_link(i, DIRECTIONS);
         int k = lattice_length_class(d);
         ivec3 from = linked_cell(cell, -lattice_offset(d));
         float arriving = from.x < 0 ? 0.0f : density_in[i * cells + grid_linear_index(from)];
+#if EIKON_LATTICE_INTERFACES
+        // Across an interface: what the neighbour sent and the interface
+        // transmits, plus what this cell sent toward it last step and the
+        // interface reflects.
+        int back = lattice_slot(lattice_opposite(d), DIRECTIONS);  // this cell's link toward `from`
+        if (((here.x >> uint(back)) & 1u) != 0u)
+            arriving = (1.0f - uintBitsToFloat(here.z)) * arriving +
+                       uintBitsToFloat(here.y) * density_in[back * cells + index];
+#endif
         c.outgoing[i] = arriving * transmittance[k];
         interactions += arriving * (1.0f - transmittance[k]);
         track += arriving * link_length[k] * track_per_length[k];
@@ -154,8 +205,36 @@ Collision collide(ivec3 cell) {
     return c;
 }
 
+#if EIKON_LATTICE_PASS == 4
+vec3 cell_centre(ivec3 cell) { return grid.bounds_min.xyz + (vec3(cell) + 0.5f) * grid.voxel_size.xyz; }
+#endif
+
 void main() {
-#if EIKON_LATTICE_PASS == 3
+#if EIKON_LATTICE_PASS == 4
+    ivec3 cell = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(cell, grid.resolution.xyz))) return;
+    vec3 x = cell_centre(cell);
+    uint mask = inside_mask_at(x);
+    float n_here = reference_index() + sample_gradient_and_delta(x).w + sharp_index_offset(mask);
+    uvec4 record = uvec4(0u);
+    for (int i = 0; i < DIRECTIONS; ++i) {
+        ivec3 next = linked_cell(cell, lattice_offset(lattice_link(i, DIRECTIONS)));
+        if (next.x < 0) continue;
+        vec3 y = cell_centre(next);
+        uint beyond = inside_mask_at(y);
+        if (beyond == mask) continue;
+        float n_beyond = reference_index() + sample_gradient_and_delta(y).w + sharp_index_offset(beyond);
+        if (n_beyond == n_here) continue;
+        record.x |= 1u << uint(i);
+        uint crossed = mask ^ beyond;
+        bool fresnel = false;
+        for (uint k = 0u; k < sharp_surface_count; ++k)
+            if (((crossed >> k) & 1u) != 0u && sharp_surfaces[k].optics.y > 0.5f) fresnel = true;
+        record.y = floatBitsToUint(interface_reflectance(n_here, n_beyond, fresnel));
+        record.z = floatBitsToUint(interface_reflectance(n_beyond, n_here, fresnel));
+    }
+    interfaces[grid_linear_index(cell)] = record;
+#elif EIKON_LATTICE_PASS == 3
     ivec3 cell = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(cell, grid.resolution.xyz))) return;
     int index = 3 * grid_linear_index(cell);

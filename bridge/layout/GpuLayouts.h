@@ -61,7 +61,8 @@
     X(kLatticeGrey, 28)         /* buffer LatticeGrey { uint differ; }: 1 where the channels' media or sources differ (grey pass) */ \
     X(kRawScattered, 29)        /* buffer RawScattered { float scattered[]; }: RGB per cell, W the photons lost to scattering */ \
     X(kMultipleFluence, 30)     /* buffer MultipleFluence { float fluence[]; }: RGB per cell, W/m², light scattered ≥ once */ \
-    X(kScatteredPower, 31)      /* buffer ScatteredPower { float scattered[]; }: RGB per cell, W, from the wavefront's fixed-point tallies */
+    X(kScatteredPower, 31)      /* buffer ScatteredPower { float scattered[]; }: RGB per cell, W, from the wavefront's fixed-point tallies */ \
+    X(kLatticeInterfaces, 31)   /* buffer LatticeInterfaces { uvec4 interfaces[]; }: per cell the lattice's links across sharp surfaces */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into

@@ -46,7 +46,8 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     // The lattice diffuses what the photons scattered, on the share that holds the whole pass.
     const bool holdsWholePass = !options.exchange || options.exchange->receivesTotals();
     if (photons_ && feedsLattice(scene, fields_) && holdsWholePass)
-        lattice_ = std::make_unique<LatticeScattering>(fields.grid, fields_, LatticeSettings::of(scene.tracer));
+        lattice_ = std::make_unique<LatticeScattering>(fields.grid, fields_, LatticeSettings::of(scene.tracer),
+                                                       buildSharpSurfaces(scene));
     if (options.drawsImage)
         view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr,
                                             lattice_ != nullptr, options.recordViewExits);

@@ -49,8 +49,9 @@ double LatticeStats::balanceError() const {
     return worst;
 }
 
-LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings)
-    : grid_(grid), settings_(settings) {
+LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings,
+                                     std::vector<layout::GpuSharpSurface> surfaces)
+    : grid_(grid), settings_(settings), surfaces_(std::move(surfaces)) {
     EIKON_CHECK_MSG(settings.directions == 6 || settings.directions == 14 || settings.directions == 18,
                     "a lattice of 6, 14 or 18 links (io/scene)");
     EIKON_CHECK_MSG(fields.hasScattering(), "a lattice only where some voxel scatters (FrameRenderer)");
@@ -79,19 +80,35 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     probeValues_ = gl::Buffer(static_cast<std::size_t>(probes_.x) * probes_.y * probes_.z * sizeof(float));
     tallies_ = gl::Buffer(static_cast<std::size_t>(groupCount(r)) * 2 * sizeof(glm::vec4));
 
+    const bool interfaces = !surfaces_.empty();
+    if (interfaces)
+        interfaces_ = gl::Buffer(cells * sizeof(glm::uvec4), gl::gridResource("the lattice's interface links", r.x, r.y, r.z));
     auto compile = [&](int pass) {
         return gl::compileComputeProgram(
             "lattice_scattering.comp", {{"EIKON_HAS_EXTINCTION", "1"},
                                         {"EIKON_HAS_SCATTERING", "1"},
                                         {"EIKON_HAS_ANISOTROPY", fields.hasAnisotropy() ? "1" : "0"},
                                         {"EIKON_LATTICE_DIRECTIONS", std::to_string(settings.directions)},
+                                        {"EIKON_LATTICE_INTERFACES", interfaces ? "1" : "0"},
                                         {"EIKON_LATTICE_PASS", std::to_string(pass)}});
     };
     step_ = compile(0);
     probe_ = compile(1);
     result_ = compile(2);
     grey_ = compile(3);
+    if (interfaces) interfacePass_ = compile(4);
     greyFlag_ = gl::Buffer(sizeof(std::uint32_t));
+}
+
+// Which links cross a sharp surface, once a frame (a mesh may move).
+void LatticeScattering::findInterfaces() {
+    surfaces_.bind();
+    interfacePass_.use();
+    glUniform1ui(interfacePass_.uniform("sharp_surface_count"), surfaces_.count());
+    glUniform3i(interfacePass_.uniform("periodic"), settings_.periodic.x, settings_.periodic.y, settings_.periodic.z);
+    interfaces_.bindStorage(layout::kLatticeInterfaces);
+    interfacePass_.dispatchOverCells(grid_.resolution);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 bool LatticeScattering::channelsDiffer() {
@@ -108,6 +125,7 @@ LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffe
     stats.directions = settings_.directions;
     stats.warmStart = warm_;
     fields.bindForTracing();
+    if (!surfaces_.empty()) findInterfaces();
     scatteredPower.bindStorage(layout::kRawScattered);
     stats.grey = !channelsDiffer();
     if (stats.grey) {

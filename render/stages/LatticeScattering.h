@@ -21,6 +21,7 @@
 #include "bridge/scene/Scene.h"
 #include "render/gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
+#include "render/stages/SharpSurfaceBuffer.h"
 
 #include <glm/vec3.hpp>
 
@@ -70,7 +71,11 @@ struct LatticeStats {
 
 class LatticeScattering {
 public:
-    LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings);
+    // `surfaces`: the scene's sharp surfaces (buildSharpSurfaces), whose
+    // interfaces reflect the lattice's light by their diffuse Fresnel
+    // reflectance; none: light diffuses through every index change.
+    LatticeScattering(const GridSpec& grid, const FieldTextures& fields, const LatticeSettings& settings,
+                      std::vector<layout::GpuSharpSurface> surfaces = {});
 
     // Diffuses the light the light pass scattered: `scatteredPower` holds,
     // RGB per cell in W, what the photons lost to scattering there
@@ -92,7 +97,10 @@ private:
     LatticeSettings settings_;
     glm::ivec3 probes_{0};
     bool channelsDiffer();
-    gl::Program step_, probe_, result_, grey_;
+    void findInterfaces();
+    gl::Program step_, probe_, result_, grey_, interfacePass_;
+    SharpSurfaceBuffer surfaces_;
+    gl::Buffer interfaces_;  // per cell uvec4 (lattice_scattering.comp); empty without sharp surfaces
     std::array<std::array<gl::Buffer, 2>, 3> states_;  // per channel, ping-pong
     std::array<int, 3> current_{0, 0, 0};              // which of the pair holds the densities
     gl::Buffer probeValues_, tallies_, fluence_, greyFlag_;

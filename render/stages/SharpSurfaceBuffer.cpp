@@ -2,6 +2,8 @@
 
 #include "bridge/core/Error.h"
 
+#include <utility>
+
 namespace eikon::render {
 
 std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene) {
@@ -29,7 +31,9 @@ std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene) {
     return surfaces;
 }
 
-SharpSurfaceBuffer::SharpSurfaceBuffer(const Scene& scene) : surfaces_(buildSharpSurfaces(scene)) {
+SharpSurfaceBuffer::SharpSurfaceBuffer(const Scene& scene) : SharpSurfaceBuffer(buildSharpSurfaces(scene)) {}
+
+SharpSurfaceBuffer::SharpSurfaceBuffer(std::vector<layout::GpuSharpSurface> surfaces) : surfaces_(std::move(surfaces)) {
     if (!surfaces_.empty())
         buffer_ = gl::Buffer(surfaces_.size() * sizeof(layout::GpuSharpSurface), surfaces_.data());
 }

@@ -25,6 +25,7 @@ std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene);
 class SharpSurfaceBuffer {
 public:
     explicit SharpSurfaceBuffer(const Scene& scene);
+    explicit SharpSurfaceBuffer(std::vector<layout::GpuSharpSurface> surfaces);
 
     unsigned count() const { return static_cast<unsigned>(surfaces_.size()); }
     bool empty() const { return surfaces_.empty(); }

@@ -30,6 +30,10 @@
 // The global direction of link `slot` of a lattice of `directions` links.
 int lattice_link(int slot, int directions) { return (directions == 14 && slot >= 6) ? slot + 12 : slot; }
 
+// The link slot of global direction d in a lattice of `directions` links
+// (the inverse of lattice_link).
+int lattice_slot(int d, int directions) { return (directions == 14 && d >= 18) ? d - 12 : d; }
+
 ivec3 lattice_offset(int d) {
     if (d < 6) {
         ivec3 offset = ivec3(0);

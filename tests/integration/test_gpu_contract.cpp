@@ -76,6 +76,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"RawScattered", {layout::kRawScattered, 0, sizeof(float)}},
         {"ScatteredPower", {layout::kScatteredPower, 0, sizeof(float)}},
         {"LatticeGrey", {layout::kLatticeGrey, sizeof(std::uint32_t), 0}},
+        {"LatticeInterfaces", {layout::kLatticeInterfaces, 0, sizeof(glm::uvec4)}},
     };
     return rows;
 }
@@ -169,6 +170,16 @@ std::vector<Variant> productionVariants() {
           {"EIKON_LATTICE_PASS", "1"}}},
         {"lattice_scattering.comp",
          {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}, {"EIKON_LATTICE_PASS", "3"}}},
+        {"lattice_scattering.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"},
+          {"EIKON_HAS_SCATTERING", "1"},
+          {"EIKON_LATTICE_INTERFACES", "1"},
+          {"EIKON_LATTICE_PASS", "4"}}},
+        {"lattice_scattering.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"},
+          {"EIKON_HAS_SCATTERING", "1"},
+          {"EIKON_LATTICE_INTERFACES", "1"},
+          {"EIKON_LATTICE_PASS", "0"}}},
         {"lattice_scattering.comp",
          {{"EIKON_HAS_EXTINCTION", "1"},
           {"EIKON_HAS_SCATTERING", "1"},

@@ -24,6 +24,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eikon {
@@ -56,17 +57,21 @@ struct LatticeRun {
     std::vector<float> fluence;  // φ_ms, RGB per cell
 };
 
-LatticeRun runLattice(const LatticeCase& lattice, const LatticeSettings& settings) {
+LatticeRun runLattice(const FieldSet& set, const std::vector<float>& sourcePower, const LatticeSettings& settings,
+                      std::vector<layout::GpuSharpSurface> surfaces = {}) {
     test::glContext();
-    const FieldSet set = lattice.fields();
     render::FieldTextures textures;
     textures.upload(render::hostUpload(set));
-    const gl::Buffer source(lattice.sourcePower.size() * sizeof(float), lattice.sourcePower.data());
-    LatticeScattering stage(set.grid, textures, settings);
+    const gl::Buffer source(sourcePower.size() * sizeof(float), sourcePower.data());
+    LatticeScattering stage(set.grid, textures, settings, std::move(surfaces));
     LatticeRun run;
     run.stats = stage.run(textures, source);
     run.fluence = stage.downloadFluence();
     return run;
+}
+
+LatticeRun runLattice(const LatticeCase& lattice, const LatticeSettings& settings) {
+    return runLattice(lattice.fields(), lattice.sourcePower, settings);
 }
 
 // ---- Diffusion theory ------------------------------------------------------
@@ -207,11 +212,13 @@ SlabResult latticeSlab(double tau, double albedo, int directions, double toleran
             slabExitance(run.fluence, n, tau, albedo, false), slabExitance(run.fluence, n, tau, albedo, true), run.stats};
 }
 
+constexpr long long kSlabPhotons = 400000;
+
 reference::SlabFractions monteCarloSlab(double tau, double albedo) {
     reference::SlabSetup setup;
     setup.opticalThickness = tau;
     setup.albedo = albedo;
-    setup.photons = 400000;
+    setup.photons = kSlabPhotons;
     return reference::traceSlab(setup);
 }
 
@@ -240,20 +247,22 @@ TEST(LatticeScattering, SlabLedgerCloses) {
 // too little reflectance, and its fluence piles up beneath the face, which
 // renders 10–20% too bright at albedo 0.9–0.99. It is bounded here at what
 // it measures (15% on the ledger, 21% rendered). The paper's 6 links are
-// worse again (reflectance 38–40% low at albedo 0.5) and are not run here.
-// Where the reference has fewer than 100 transmitted photons (τ = 20 below
-// albedo 0.99) its binomial error is added to the bound; at τ = 20, albedo
-// 0.5 (T ≈ 1e-8) it has none and transmittance is not compared.
+// worse again, two thirds of their weight parallel to the face: reflectance
+// 38–40% low at albedo 0.5 on the ledger, up to 85% too bright rendered
+// (bounded at 42% and 87%).
+// Where the reference saw fewer than 100 transmitted photons (τ = 20 below
+// albedo 0.99: T of 1.5e-5 ± 0.6e-5 and none) transmittance is not
+// compared; elsewhere three binomial errors are added to the bound.
 TEST(LatticeScattering, SlabsAgainstMonteCarlo) {
     for (double tau : {1.0, 5.0, 20.0})
         for (double albedo : {0.5, 0.9, 0.99}) {
             const reference::SlabFractions mc = monteCarloSlab(tau, albedo);
             const std::string label = "tau " + std::to_string(tau) + " albedo " + std::to_string(albedo);
-            for (int directions : {14, 18}) {
+            for (int directions : {14, 18, 6}) {
                 const SlabResult slab = latticeSlab(tau, albedo, directions);
                 EXPECT_FALSE(slab.stats.capped()) << label;
-                const double ledgerBound = directions == 14 ? 0.10 : 0.15;
-                const double renderedBound = directions == 14 ? 0.10 : 0.21;
+                const double ledgerBound = directions == 14 ? 0.10 : (directions == 18 ? 0.15 : 0.42);
+                const double renderedBound = directions == 14 ? 0.10 : (directions == 18 ? 0.21 : 0.87);
                 const std::string name = label + " d3q" + std::to_string(directions);
                 const auto expectWithin = [&](const char* what, double value, double reference, double error,
                                               double bound) {
@@ -264,7 +273,7 @@ TEST(LatticeScattering, SlabsAgainstMonteCarlo) {
                 expectWithin("reflectance", slab.reflected, mc.reflected, mc.reflectedError, ledgerBound);
                 expectWithin("rendered_reflectance", slab.renderedReflected, mc.reflected, mc.reflectedError,
                              renderedBound);
-                if (mc.diffuselyTransmitted > 0.0) {
+                if (mc.diffuselyTransmitted * kSlabPhotons >= 100) {
                     expectWithin("transmittance", slab.transmitted, mc.diffuselyTransmitted,
                                  mc.diffuselyTransmittedError, ledgerBound);
                     expectWithin("rendered_transmittance", slab.renderedTransmitted, mc.diffuselyTransmitted,
@@ -272,6 +281,85 @@ TEST(LatticeScattering, SlabsAgainstMonteCarlo) {
                 }
             }
         }
+}
+
+// A slab of relative index m (a sharp box, its faces two cells in from the
+// grid's, clear cells between) lit as above: the beam that entered bounces
+// between the faces (reflectance R0 = ((m − 1)/(m + 1))² at normal
+// incidence), so each cell's source sums its forward passes, weight
+// 1/(1 − R0²e^{−2τ}), and its backward ones, R0·e^{−τ} times that. R and T
+// are fractions of the power that entered.
+SlabResult fresnelSlab(double tau, double albedo, double relativeIndex, int directions) {
+    const int n = std::max(40, static_cast<int>(4 * tau)), clear = 2, cells = n + 2 * clear;
+    const double h = 1.0 / n;
+    FieldSet set;
+    set.grid = {glm::ivec3(1, 1, cells), glm::dvec3(0.0, 0.0, -clear * h), glm::dvec3(h, h, 1.0 + clear * h)};
+    set.deltaIndex.assign(cells, 0.0f);
+    set.extinction.assign(3 * cells, 0.0f);
+    set.scattering.assign(3 * cells, 0.0f);
+    std::vector<float> source(3 * static_cast<std::size_t>(cells), 0.0f);
+    const double dtau = tau * h, r0 = std::pow((relativeIndex - 1.0) / (relativeIndex + 1.0), 2);
+    const double forward = 1.0 / (1.0 - r0 * r0 * std::exp(-2.0 * tau)), backward = r0 * std::exp(-tau) * forward;
+    for (int k = 0; k < n; ++k) {
+        const double down = std::exp(-k * dtau) - std::exp(-(k + 1) * dtau);
+        const double up = std::exp(-(tau - (k + 1) * dtau)) - std::exp(-(tau - k * dtau));
+        for (int c = 0; c < 3; ++c) {
+            const std::size_t at = 3 * static_cast<std::size_t>(k + clear) + c;
+            set.extinction[at] = static_cast<float>(tau);
+            set.scattering[at] = static_cast<float>(albedo * tau);
+            source[at] = static_cast<float>(albedo * h * h * (forward * down + backward * up));
+        }
+    }
+    layout::GpuSharpSurface box{};
+    box.shapeA = glm::vec4(-1e3f, -1e3f, 0.0f, static_cast<float>(layout::kSharpBox));
+    box.shapeB = glm::vec4(1e3f, 1e3f, 1.0f, 0.0f);
+    box.optics = glm::vec4(static_cast<float>(relativeIndex - 1.0), 1.0f, 0.0f, 0.0f);
+    LatticeSettings settings;
+    settings.directions = directions;
+    settings.tolerance = 1e-6;
+    settings.maxIterations = 400000;
+    settings.periodic = glm::ivec3(1, 1, 0);
+    const LatticeRun run = runLattice(set, source, settings, {box});
+    const double incident = h * h;
+    return {run.stats.channels[0].escaped[4] / incident, run.stats.channels[0].escaped[5] / incident, 0.0, 0.0, run.stats};
+}
+
+// Fresnel slabs of water and glass (m = 1.33, 1.5), τ = 1 and 5, albedo
+// 0.5, 0.9, 0.99, against the Monte Carlo with the same faces, on the
+// default 14 links. Where light scatters many times before it meets a face
+// (albedo 0.99) its radiance there is nearly isotropic and the diffuse
+// reflectance R_d is the right average: R and T within 2% (bound 3%).
+// Where it meets the face after few scatterings its radiance is not
+// isotropic, and the lattice's links, each reflected by R_d where the
+// continuum reflects the directions inside the escape cone (μ > 0.745 in
+// glass) by 4% and traps the rest, let the wrong share out: measured up to
+// 13% at albedo 0.9 (bound 15%) and 27% at 0.5 (bound 30%). The 18-link
+// lattice errs less at albedo 0.5 (at most 26% and 11% in R) and more at
+// 0.99 (3.5%). The ledger closes either way.
+TEST(LatticeScattering, FresnelSlabsAgainstMonteCarlo) {
+    for (double index : {1.33, 1.5})
+        for (double tau : {1.0, 5.0})
+            for (double albedo : {0.5, 0.9, 0.99}) {
+                reference::SlabSetup setup;
+                setup.opticalThickness = tau;
+                setup.albedo = albedo;
+                setup.relativeIndex = index;
+                setup.photons = kSlabPhotons;
+                const reference::SlabFractions mc = reference::traceSlab(setup);
+                const SlabResult slab = fresnelSlab(tau, albedo, index, 14);
+                const std::string label = "index " + std::to_string(index) + " tau " + std::to_string(tau) +
+                                          " albedo " + std::to_string(albedo);
+                const double bound = albedo > 0.95 ? 0.03 : (albedo > 0.7 ? 0.15 : 0.30);
+                EXPECT_FALSE(slab.stats.capped()) << label;
+                EXPECT_LT(slab.stats.balanceError(), 1e-4) << label;
+                EXPECT_LT(std::abs(slab.reflected - mc.reflected), bound * mc.reflected + 3.0 * mc.reflectedError) << label;
+                EXPECT_LT(std::abs(slab.transmitted - mc.diffuselyTransmitted),
+                          bound * mc.diffuselyTransmitted + 3.0 * mc.diffuselyTransmittedError)
+                    << label;
+                test::reportFigure(("fresnel_reflectance_error_" + label).c_str(), slab.reflected / mc.reflected - 1.0);
+                test::reportFigure(("fresnel_transmittance_error_" + label).c_str(),
+                                   slab.transmitted / mc.diffuselyTransmitted - 1.0);
+            }
 }
 
 // Albedo 1: nothing is absorbed, so everything born leaves through the two

@@ -91,6 +91,33 @@ TEST(SlabTransport, SemiInfiniteReflectanceIsChandrasekharsPlaneAlbedo) {
     }
 }
 
+// Fresnel's equations at the two angles with closed values: normal
+// incidence ((n − 1)/(n + 1))², and total reflection past the critical
+// angle asin(1/n); the same from either side at normal incidence.
+TEST(SlabTransport, FresnelReflectanceAtNormalIncidenceAndPastTheCriticalAngle) {
+    EXPECT_NEAR(fresnelReflectance(1.0, 1.5, 1.0), 0.04, 1e-12);
+    EXPECT_NEAR(fresnelReflectance(1.0, 1.0, 1.5), 0.04, 1e-12);
+    const double critical = std::asin(1.0 / 1.5);
+    EXPECT_EQ(fresnelReflectance(std::cos(critical + 1e-6), 1.5, 1.0), 1.0);
+    EXPECT_LT(fresnelReflectance(std::cos(critical - 1e-3), 1.5, 1.0), 1.0);
+}
+
+// Fresnel faces without scattering: the beam bounces between them, losing
+// e^{−τ} a crossing and R0 = 0.04 (n = 1.5) a reflection, so directly
+// T = (1 − R0)e^{−τ}/(1 − R0²e^{−2τ}) and R = (1 − R0)R0·e^{−2τ}/(1 − R0²e^{−2τ}),
+// within 4σ; every photon is accounted for.
+TEST(SlabTransport, FresnelFacesWithoutScatteringBounceTheBeam) {
+    const long long photons = 400000;
+    const SlabFractions f =
+        traceSlab({.opticalThickness = 0.5, .albedo = 0.0, .relativeIndex = 1.5, .photons = photons, .seed = 5});
+    const double r0 = 0.04, e = std::exp(-0.5), denominator = 1.0 - r0 * r0 * e * e;
+    const double transmitted = (1.0 - r0) * e / denominator, reflected = (1.0 - r0) * r0 * e * e / denominator;
+    EXPECT_NEAR(f.directlyTransmitted, transmitted, 4.0 * std::sqrt(transmitted * (1.0 - transmitted) / photons));
+    EXPECT_NEAR(f.directlyReflected, reflected, 4.0 * std::sqrt(reflected * (1.0 - reflected) / photons));
+    EXPECT_EQ(f.reflected + f.diffuselyTransmitted, 0.0);
+    EXPECT_DOUBLE_EQ(f.directlyReflected + f.directlyTransmitted + f.absorbed, 1.0);
+}
+
 // The same seed gives the same fractions; another seed other ones.
 TEST(SlabTransport, IsSeeded) {
     const SlabSetup setup{.opticalThickness = 5.0, .albedo = 0.9, .anisotropy = 0.5, .photons = 5000, .seed = 3};

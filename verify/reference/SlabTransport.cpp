@@ -21,13 +21,25 @@ double binomialError(double fraction, long long n) { return std::sqrt(fraction *
 
 }  // namespace
 
+double fresnelReflectance(double cosIncidence, double nFrom, double nTo) {
+    const double cosI = std::min(1.0, std::abs(cosIncidence));
+    const double sinT = nFrom / nTo * std::sqrt(std::max(0.0, 1.0 - cosI * cosI));
+    if (sinT >= 1.0) return 1.0;
+    const double cosT = std::sqrt(1.0 - sinT * sinT);
+    const double s = (nFrom * cosI - nTo * cosT) / (nFrom * cosI + nTo * cosT);
+    const double p = (nFrom * cosT - nTo * cosI) / (nFrom * cosT + nTo * cosI);
+    return 0.5 * (s * s + p * p);
+}
+
 SlabFractions traceSlab(const SlabSetup& setup) {
     EIKON_CHECK_MSG(setup.opticalThickness > 0.0 && setup.albedo >= 0.0 && setup.albedo <= 1.0 &&
-                        std::abs(setup.anisotropy) < 1.0 && setup.photons > 0,
-                    "a slab of τ > 0, albedo in [0, 1], |g| < 1 and some photons");
+                        std::abs(setup.anisotropy) < 1.0 && setup.relativeIndex > 0.0 && setup.photons > 0,
+                    "a slab of τ > 0, albedo in [0, 1], |g| < 1, index > 0 and some photons");
+    const bool fresnel = setup.relativeIndex != 1.0;
+    const double tau = setup.opticalThickness;
     std::mt19937_64 random(setup.seed * 0x9E3779B97F4A7C15ull + 1);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    long long reflected = 0, diffuse = 0, direct = 0, absorbed = 0, collisions = 0;
+    long long reflected = 0, diffuse = 0, direct = 0, directBack = 0, absorbed = 0, collisions = 0;
     for (long long p = 0; p < setup.photons; ++p) {
         // Depth in optical units and direction cosine to the slab's normal;
         // in a plane-parallel slab only μ = cos θ matters, the azimuth
@@ -36,12 +48,22 @@ SlabFractions traceSlab(const SlabSetup& setup) {
         bool scattered = false;
         for (;;) {
             depth += mu * -std::log(1.0 - uniform(random));
-            if (depth < 0.0) {
-                ++reflected;
-                break;
+            // A face met: left through, or mirrored back into the slab (the
+            // rest of the free path folded back), perhaps more than once.
+            bool left = false;
+            while (!left && (depth < 0.0 || depth > tau)) {
+                if (fresnel && uniform(random) < fresnelReflectance(mu, setup.relativeIndex, 1.0)) {
+                    depth = depth < 0.0 ? -depth : 2.0 * tau - depth;
+                    mu = -mu;
+                    continue;
+                }
+                left = true;
             }
-            if (depth > setup.opticalThickness) {
-                ++(scattered ? diffuse : direct);
+            if (left) {
+                if (depth < 0.0)
+                    ++(scattered ? reflected : directBack);
+                else
+                    ++(scattered ? diffuse : direct);
                 break;
             }
             ++collisions;
@@ -62,6 +84,7 @@ SlabFractions traceSlab(const SlabSetup& setup) {
     result.reflected = static_cast<double>(reflected) / n;
     result.diffuselyTransmitted = static_cast<double>(diffuse) / n;
     result.directlyTransmitted = static_cast<double>(direct) / n;
+    result.directlyReflected = static_cast<double>(directBack) / n;
     result.absorbed = static_cast<double>(absorbed) / n;
     result.reflectedError = binomialError(result.reflected, setup.photons);
     result.diffuselyTransmittedError = binomialError(result.diffuselyTransmitted, setup.photons);
