@@ -17,6 +17,9 @@
 // (common/sharp_surfaces.glsl) a step ends exactly there and the ray splits
 // into its Fresnel-weighted reflection and refraction, both traced, until
 // `surface_depth` surface events; past that it follows the stronger branch.
+// A preview (pixel_stride k > 1, the viewer while the camera moves) traces
+// one ray per k×k block of pixels, through the pixel nearest the block's
+// centre, and fills the block with it; k = 1 is the image itself.
 //
 // Program options: EIKON_HAS_EXTINCTION, EIKON_HAS_SCATTERING,
 // EIKON_HAS_ANISOTROPY, EIKON_HAS_EMISSION, EIKON_MULTIPLE_SCATTERING (1: add the
@@ -129,6 +132,7 @@ layout(std430, binding = kViewExit) writeonly buffer ViewExit { vec4 view_exit[]
 uniform float step_length;
 uniform uint max_steps;
 uniform float interface_half_width;  // m: beyond the smoothing kernel, where n is the bulk value
+uniform uint pixel_stride;           // 1: a ray per pixel; k: a ray per k×k block (preview)
 
 // σs·φ·p toward the camera (d: the ray's direction of travel). The radiance
 // stored per voxel is its fluence φ and the power-weighted mean direction
@@ -255,8 +259,9 @@ void split_at_sharp_surface(SurfaceCrossing crossing, INOUT(ViewRay) ray) {
 #include "common/pass_loops.glsl"
 
 void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, camera.image.xy))) return;
+    uvec2 block = gl_GlobalInvocationID.xy * pixel_stride;
+    if (any(greaterThanEqual(block, camera.image.xy))) return;
+    uvec2 pixel = min(block + pixel_stride / 2u, camera.image.xy - 1u);
     vec2 ndc = (vec2(pixel) + 0.5f) / vec2(camera.image.xy) * 2.0f - 1.0f;
     vec3 direction = normalize(camera.forward.xyz + ndc.x * camera.position.w * camera.forward.w * camera.right.xyz -
                                ndc.y * camera.position.w * camera.up.xyz);
@@ -367,9 +372,10 @@ void main() {
         sharp_offset = sharp_index_offset(ray.inside_mask);
 #endif
     }
-    uint index = pixel.y * camera.image.x + pixel.x;
-    hdr_radiance[index] = vec4(radiance, 1.0f);
+    uvec2 block_end = min(block + pixel_stride, camera.image.xy);
+    for (uint y = block.y; y < block_end.y; ++y)
+        for (uint x = block.x; x < block_end.x; ++x) hdr_radiance[y * camera.image.x + x] = vec4(radiance, 1.0f);
 #if EIKON_RECORD_EXIT
-    view_exit[index] = vec4(exit_direction, exit_kind);
+    view_exit[pixel.y * camera.image.x + pixel.x] = vec4(exit_direction, exit_kind);
 #endif
 }

@@ -55,6 +55,10 @@ void drawSolver(SimDesc& sim) {
 
 void drawFigures(const render::FrameResult& last, const ViewerStatus& status) {
     ImGui::Text("%.1f frames/s, %lld photons", status.framesPerSecond, status.photonsInUse);
+    if (status.pixelStride > 1)
+        ImGui::Text("preview: a ray per %d×%d pixels", status.pixelStride, status.pixelStride);
+    else
+        ImGui::Text("full image");
     if (status.simulated) ImGui::Text("simulated time %.3f s", status.simulatedTime);
     for (const auto& stage : last.stages)
         ImGui::Text("%-15s %s %8.1f ms", stage.name.c_str(), stage.ran ? "ran " : "kept", stage.milliseconds);

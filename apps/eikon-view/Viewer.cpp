@@ -3,6 +3,7 @@
 #include "apps/eikon-view/CameraControls.h"
 #include "apps/eikon-view/ControlPanel.h"
 #include "apps/eikon-view/ImagePresenter.h"
+#include "apps/eikon-view/ViewPreview.h"
 #include "apps/eikon-view/ViewerSession.h"
 #include "bridge/core/Error.h"
 #include "io/image/ImageIo.h"
@@ -27,9 +28,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double photonMilliseconds(const render::FrameResult& result) {
+// The time of stage `name` in the frame, 0 where it did not run.
+double stageMilliseconds(const render::FrameResult& result, const char* name) {
     for (const auto& stage : result.stages)
-        if (stage.name == "photons" && stage.ran) return stage.milliseconds;
+        if (stage.name == name && stage.ran) return stage.milliseconds;
     return 0.0;
 }
 
@@ -46,6 +48,7 @@ public:
           scene_(loadSceneFile(options.scenePath, options.overrides)),
           window_(gl::createWindowContext(options.width, options.height, "eikon-view — " + options.scenePath)),
           panel_(scene_),
+          preview_(PreviewSettings{options.previewViewMs}),
           sceneTime_(modificationTime(options.scenePath)) {
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
@@ -64,18 +67,27 @@ public:
     }
 
     int run() {
-        int rendered = 0;
-        auto runStart = Clock::now();  // from the end of the first frame: steady state
+        const auto viewerStart = Clock::now();
+        auto runStart = viewerStart;  // from the end of the first frame: steady state
+        double scriptedSeconds = 0.0;
         while (!window_->shouldClose()) {
             window_->pollEvents();
             const auto frameStart = Clock::now();
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
-            handleInput();
+            const bool cameraMoved = handleInput();
+            const double now = std::chrono::duration<double>(frameStart - viewerStart).count();
+            session_->renderer().setPixelStride(preview_.strideFor(cameraMoved, now));
             const bool advance = session_->simulated() && (!paused_ || stepOnce_);
             stepOnce_ = false;
             last_ = session_->renderFrame(advance, pipelined_);
+            const double viewMs = stageMilliseconds(last_, "view");
+            preview_.measured(last_.pixelStride, viewMs);
+            if (viewMs > 0.0 && last_.pixelStride > 1 && scripted()) {
+                ++previewFrames_;
+                largestStride_ = std::max(largestStride_, last_.pixelStride);
+            }
             adaptPhotons();
             if (!last_.image.rgba.empty()) image_ = last_.image;
             int width = 0, height = 0;
@@ -84,25 +96,33 @@ public:
             status_.simulated = session_->simulated();
             status_.simulatedTime = session_->simulatedTime();
             status_.photonsInUse = photons_;
+            status_.pixelStride = last_.pixelStride;
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);
             act(requests);
             ImGui::Render();
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            const bool lastFrame = options_.frames > 0 && rendered + 1 >= options_.frames;
+            // A scripted run ends on its full image: after its frames, and
+            // back at the scene's camera with orbit-return, it waits for the
+            // preview to refine.
+            const bool lastFrame = options_.frames > 0 && rendered_ + 1 >= options_.frames &&
+                                   last_.pixelStride == 1 && (options_.animate != "orbit-return" || returned_);
             if (lastFrame && !options_.windowShotPath.empty()) saveWindow(options_.windowShotPath, width, height);
             window_->swapBuffers();
             reloadIfChanged();
             const double ms = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
             status_.framesPerSecond = 0.9 * status_.framesPerSecond + 0.1 * 1000.0 / std::max(ms, 1e-3);
-            if (++rendered == 1) runStart = Clock::now();
-            if (options_.frames > 0 && rendered >= options_.frames) {
+            if (rendered_ < std::max(options_.frames, 1)) {
+                if (++rendered_ == 1) runStart = Clock::now();
+                if (rendered_ == options_.frames)
+                    scriptedSeconds = std::chrono::duration<double>(Clock::now() - runStart).count();
+            }
+            if (lastFrame) {
                 if (!options_.screenshotPath.empty()) saveImage(options_.screenshotPath);
-                if (!options_.animate.empty()) {
-                    const double seconds = std::chrono::duration<double>(Clock::now() - runStart).count();
+                if (!options_.animate.empty())
                     std::printf("eikon-view: %s: %d frames after the first in %.2f s, %.2f frames/s, last photon "
-                                "count %lld\n",
-                                options_.animate.c_str(), rendered - 1, seconds, (rendered - 1) / seconds, photons_);
-                }
+                                "count %lld, %d previews (pixel stride up to %d)\n",
+                                options_.animate.c_str(), rendered_ - 1, scriptedSeconds,
+                                (rendered_ - 1) / scriptedSeconds, photons_, previewFrames_, largestStride_);
                 break;
             }
         }
@@ -119,17 +139,31 @@ private:
         panel_.reset(scene);
     }
 
-    void handleInput() {
+    // Whether scripted input (--animate) still runs: for --frames frames, or for ever.
+    bool scripted() const { return !options_.animate.empty() && (options_.frames == 0 || rendered_ < options_.frames); }
+
+    // Mouse, keys and scripted input; returns whether the camera moved.
+    bool handleInput() {
         const ImGuiIO& io = ImGui::GetIO();
         int width = 0, height = 0;
         window_->framebufferSize(width, height);
         render::FrameRenderer& renderer = session_->renderer();
         const CameraDesc& camera = renderer.scene().camera;
         draggingLight_ = false;
+        bool cameraMoved = false;
+        const bool orbiting = scripted() && (options_.animate == "orbit" || options_.animate == "orbit-return");
+        if (!scripted() && options_.animate == "orbit-return" && !returned_) {
+            // Back to the scene's own camera, exactly (tests compare the
+            // refined frame with the headless render).
+            returned_ = true;
+            renderer.setCamera(session_->scene().camera);
+            orbit_ = orbitOf(session_->scene().camera);
+            cameraMoved = true;
+        }
         if (!io.WantCaptureMouse) {
             Orbit orbit = orbit_;
             if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) orbit = orbitDrag(orbit, io.MouseDelta.x, io.MouseDelta.y);
-            if (options_.animate == "orbit") orbit = orbitDrag(orbit, 6.0, 0.0);
+            if (orbiting) orbit = orbitDrag(orbit, 6.0, 0.0);
             if (ImGui::IsMouseDragging(ImGuiMouseButton_Middle))
                 orbit = panDrag(orbit, camera, io.MouseDelta.x, io.MouseDelta.y, height);
             if (io.MouseWheel != 0.0f) orbit = zoom(orbit, io.MouseWheel);
@@ -137,6 +171,7 @@ private:
                 orbit.azimuthDeg != orbit_.azimuthDeg || orbit.elevationDeg != orbit_.elevationDeg) {
                 orbit_ = orbit;
                 renderer.setCamera(cameraOn(orbit_, camera));
+                cameraMoved = true;
             }
             if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) && !renderer.scene().lights.empty()) {
                 draggingLight_ = true;
@@ -144,7 +179,7 @@ private:
                     renderer.setLight(0, lightDrag(renderer.scene().lights[0], camera, io.MouseDelta.x,
                                                    io.MouseDelta.y, height));
             }
-            if (options_.animate == "light" && !renderer.scene().lights.empty()) {
+            if (scripted() && options_.animate == "light" && !renderer.scene().lights.empty()) {
                 draggingLight_ = true;
                 renderer.setLight(0, lightDrag(renderer.scene().lights[0], camera, 6.0, 0.0, height));
             }
@@ -156,6 +191,7 @@ private:
             if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) screenshot();
         }
         renderer.setExposure(exposure_);
+        return cameraMoved;
     }
 
     // While photons are retraced every frame — a light dragged, or a scene
@@ -167,7 +203,7 @@ private:
         long long wanted = fullPhotons_;
         const bool retracingEveryFrame = draggingLight_ || (session_->simulated() && !paused_);
         if (retracingEveryFrame) {
-            const double ms = photonMilliseconds(last_);
+            const double ms = stageMilliseconds(last_, "photons");
             if (ms > 0.0) {
                 const double scale = std::clamp(options_.targetFrameMs / ms, 0.25, 2.0);
                 wanted = std::clamp(static_cast<long long>(static_cast<double>(photons_) * scale), 4096LL, fullPhotons_);
@@ -253,6 +289,7 @@ private:
     std::unique_ptr<gl::WindowContext> window_;
     ImagePresenter presenter_;
     ControlPanel panel_;
+    ViewPreview preview_;
     std::unique_ptr<ViewerSession> session_;
     render::FrameResult last_;
     render::Image8 image_;
@@ -262,6 +299,9 @@ private:
     long long fullPhotons_ = 0, photons_ = 0;
     bool paused_ = false, stepOnce_ = false, pipelined_ = false, draggingLight_ = false;
     int screenshots_ = 0;
+    int rendered_ = 0;  // frames drawn, counted up to options_.frames
+    int previewFrames_ = 0, largestStride_ = 1;  // previews among the scripted frames
+    bool returned_ = false;  // orbit-return: back at the scene's camera
     std::filesystem::file_time_type sceneTime_;
     Clock::time_point lastReloadCheck_ = Clock::now();
 };

@@ -1,7 +1,8 @@
 // eikon-view: a window in which the scene runs — the same frame loop as
 // `eikon run` — while the user orbits the camera, drags the light and edits
 // settings. Only the stages whose inputs changed run, so orbiting costs a
-// view pass; while a light is dragged or the scene moves, the photon count
+// view pass, drawn as a preview while the camera moves (ViewPreview.h);
+// while a light is dragged or the scene moves, the photon count
 // drops to keep the target frame time and returns to the scene's count when
 // the drag ends or the scene is paused.
 #pragma once
@@ -19,9 +20,12 @@ struct ViewerOptions {
     std::string screenshotPath;          // with frames: the last frame's image goes here
     std::string windowShotPath;          // with frames: the whole window, panel included
     double targetFrameMs = 100.0;        // while dragging a light
+    double previewViewMs = 40.0;         // view-pass time to keep while the camera moves (ViewPreview.h)
     // Scripted input for benchmarks and demos: "orbit" turns the camera 1.8°
-    // per frame, "light" drags the first light 6 pixels per frame; with
-    // frames, the mean frames per second is printed at the end.
+    // per frame, "light" drags the first light 6 pixels per frame,
+    // "orbit-return" orbits and then returns to the scene's camera; with
+    // frames, the mean frames per second over them is printed at the end,
+    // which waits for the full image (the preview refined).
     std::string animate;
 };
 

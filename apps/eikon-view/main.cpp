@@ -21,9 +21,13 @@ int main(int argc, char** argv) {
     app.add_option("--window-shot", options.windowShotPath,
                    "With --frames: write the whole window, panel included, here (PNG)");
     app.add_option("--animate", options.animate,
-                   "Scripted input: orbit (turn the camera each frame) or light (drag the light each frame)")
-        ->check(CLI::IsMember({"orbit", "light"}));
+                   "Scripted input: orbit (turn the camera each frame), orbit-return (orbit, then back to the "
+                   "scene's camera) or light (drag the light each frame)")
+        ->check(CLI::IsMember({"orbit", "orbit-return", "light"}));
     app.add_option("--target-ms", options.targetFrameMs, "Frame time to keep while a light is dragged")
         ->check(CLI::Range(5.0, 10000.0));
+    app.add_option("--preview-ms", options.previewViewMs,
+                   "View-pass time to keep while the camera moves: a preview of one ray per k×k pixels")
+        ->check(CLI::Range(0.01, 10000.0));
     return eikon::app::parseAndRun(app, argc, argv, "eikon-view", [&] { return eikon::view::runViewer(options); });
 }

@@ -88,6 +88,12 @@ void FrameRenderer::setCamera(const CameraDesc& camera) {
     cameraChanged_ = true;
 }
 
+void FrameRenderer::setPixelStride(int stride) {
+    if (!view_ || stride == view_->pixelStride()) return;
+    view_->setPixelStride(stride);
+    cameraChanged_ = true;
+}
+
 void FrameRenderer::setLight(std::size_t index, const LightDesc& light) {
     EIKON_CHECK_MSG(index < scene_.lights.size(), "no such light");
     scene_.lights[index] = light;
@@ -152,7 +158,8 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
     }));
-    if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded, [&] {
+    // The estimate is of the full image, not of a preview.
+    if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded && view_->pixelStride() == 1, [&] {
         const StepStructureStage& reference = referenceSteps_ ? *referenceSteps_ : *stepStructure_;
         last_.errorEstimate = errorEstimate_->run(
             fields_, {photons_.get(), stepTexture(), &reference.referenceStepTexture(), photonSettings_});
@@ -168,6 +175,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.photons = last_.photons;
     result.lattice = last_.lattice;
     result.errorEstimate = last_.errorEstimate;
+    result.pixelStride = view_ ? view_->pixelStride() : 1;
     return result;
 }
 

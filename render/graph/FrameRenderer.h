@@ -41,6 +41,7 @@ struct FrameResult {
     std::vector<StageReport> stages;
     UploadBytes copied;           // host bytes the driver read, bytes copied on the GPU
     std::optional<ErrorEstimate> errorEstimate;  // with RendererOptions::estimateErrors
+    int pixelStride = 1;  // of the image: 1 the full image, k a preview of one ray per k×k pixels
 };
 
 struct RendererOptions {
@@ -79,6 +80,9 @@ public:
     void setPhotonCount(long long photons);
     // Exposure of the tone map: post runs again.
     void setExposure(double exposureEv);
+    // 1: the full image; k > 1: a preview of one camera ray per k×k pixels
+    // (the viewer while the camera moves). A changed stride draws anew.
+    void setPixelStride(int stride);
     const Scene& scene() const { return scene_; }
     // Traces the photons of the last rendered fields again (a relight, as
     // when a light moves), timed to completion; for benchmarks.

@@ -108,6 +108,11 @@ void ViewStage::setCamera(const CameraDesc& camera) {
     camera_.upload(&block, sizeof block);
 }
 
+void ViewStage::setPixelStride(int stride) {
+    EIKON_CHECK_MSG(stride >= 1, "a pixel stride of at least 1");
+    pixelStride_ = stride;
+}
+
 void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     fields.bindForTracing();
     receivers_.bind();
@@ -134,7 +139,9 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength_));
     glUniform1ui(program_.uniform("max_steps"), maxSteps_);
     glUniform1f(program_.uniform("interface_half_width"), interfaceHalfWidth_);
-    program_.dispatchCovering(static_cast<std::size_t>(width_), static_cast<std::size_t>(height_), 1, 8, 8, 1);
+    glUniform1ui(program_.uniform("pixel_stride"), static_cast<GLuint>(pixelStride_));
+    const auto blocks = [&](int pixels) { return static_cast<std::size_t>((pixels + pixelStride_ - 1) / pixelStride_); };
+    program_.dispatchCovering(blocks(width_), blocks(height_), 1, 8, 8, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     gl::checkpoint("view stage");
 }

@@ -33,6 +33,11 @@ public:
 
     void run(const FieldTextures& fields, const ViewInputs& inputs);
     void setCamera(const CameraDesc& camera);
+    // 1: a ray per pixel. k > 1: a preview, one ray per k×k block of pixels
+    // filling the block (the viewer while the camera moves), about k² times
+    // cheaper.
+    void setPixelStride(int stride);
+    int pixelStride() const { return pixelStride_; }
 
     const gl::Buffer& hdrImage() const { return hdr_; }
     std::vector<float> downloadHdr() const;  // RGBA per pixel, row 0 at the top
@@ -49,6 +54,7 @@ private:
     int width_, height_;
     double stepLength_;
     unsigned maxSteps_;
+    int pixelStride_ = 1;
     float interfaceHalfWidth_;
     gl::Program program_;
     gl::Buffer camera_;

@@ -196,6 +196,44 @@ TEST(ViewPass, DefaultPictureMatchesReference) {
     EXPECT_GT(distinct, static_cast<int>(differences.size() / 4)) << "a picture of one colour is blank";
 }
 
+// The viewer's preview (a pixel stride k): each k×k block of the image is
+// the full image's pixel at the block's centre, the blocks at the right and
+// bottom edges cut short; back at stride 1 the image is the full one again,
+// bit for bit, and only the view and post stages ran for either change.
+TEST(ViewPass, APreviewFillsBlocksWithTheFullImagesCentrePixel) {
+    glContext();
+    const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json",
+                                      {"grid.resolution=[48,40,48]", "render.photons=65536", "render.width=160",
+                                       "render.height=121", "receivers.0.resolution=96"});
+    const FieldSet fields = sim::voxelizeScene(scene);
+    render::FrameRenderer renderer(scene, fields);
+    const render::Image8 full = renderer.render(fields).image;
+    const std::vector<float> fullHdr = renderer.viewStage().downloadHdr();
+    const int width = scene.render.width, height = scene.render.height;
+    for (int stride : {3, 8}) {
+        renderer.setPixelStride(stride);
+        const render::FrameResult preview = renderer.render(fields);
+        EXPECT_EQ(preview.pixelStride, stride);
+        for (const render::StageReport& stage : preview.stages)
+            EXPECT_EQ(stage.ran, stage.name == "view" || stage.name == "post") << stage.name << ", stride " << stride;
+        const std::vector<float> hdr = renderer.viewStage().downloadHdr();
+        int mismatched = 0;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const int cx = std::min(x / stride * stride + stride / 2, width - 1);
+                const int cy = std::min(y / stride * stride + stride / 2, height - 1);
+                for (int c = 0; c < 4; ++c)
+                    mismatched += hdr[4 * (y * width + x) + c] != fullHdr[4 * (cy * width + cx) + c];
+            }
+        EXPECT_EQ(mismatched, 0) << "stride " << stride;
+    }
+    renderer.setPixelStride(1);
+    const render::FrameResult again = renderer.render(fields);
+    EXPECT_EQ(again.pixelStride, 1);
+    EXPECT_EQ(again.image.rgba, full.rgba);
+    EXPECT_EQ(renderer.viewStage().downloadHdr(), fullHdr);
+}
+
 // Wider than a 1D dispatch can cover (16 384 × 480 pixels: 122 880 groups of
 // 64, past the 65 535 OpenGL guarantees) the image still renders; larger
 // than the biggest storage buffer the context has, it is refused at its key

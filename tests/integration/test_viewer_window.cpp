@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <string>
 
@@ -16,8 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int run(const std::string& command) {
-    const int status = std::system((command + " > /dev/null 2>&1").c_str());
+// The command's exit code; what it prints goes to `output`.
+int run(const std::string& command, const std::string& output = "/dev/null") {
+    const int status = std::system((command + " > " + output + " 2>&1").c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
@@ -73,6 +75,38 @@ TEST_F(ViewerWindow, ShowsTheHeadlessFrameWithThePanel) {
     // panel's text at the top left has its own.
     EXPECT_GT(luminanceSpread(shown, 400, 100, 640, 480), 20.0);
     EXPECT_GT(luminanceSpread(shown, 10, 10, 300, 200), 20.0);
+}
+
+// Orbiting shows the preview (a view-pass target of 0.1 ms makes every
+// moving frame one; the viewer prints how many and their largest stride);
+// back at the scene's camera and at rest, the viewer refines to the
+// headless frame, pixel for pixel.
+TEST_F(ViewerWindow, OrbitingShowsThePreviewAndRestRefinesToTheHeadlessFrame) {
+    const fs::path frame = dir_ / "frame.png", headless = dir_ / "headless", log = dir_ / "viewer.txt";
+    ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
+                  kSmallDefault + " --frames 6 --animate orbit-return --preview-ms 0.1 --width 640 --height 480" +
+                  " --screenshot " + frame.string(),
+                  log.string()),
+              0);
+    std::FILE* file = std::fopen(log.c_str(), "r");
+    ASSERT_NE(file, nullptr);
+    char line[512] = {};
+    bool found = false;  // the summary line, among whatever else the run printed
+    while (!found && std::fgets(line, sizeof line, file)) found = std::strstr(line, "previews") != nullptr;
+    std::fclose(file);
+    ASSERT_TRUE(found);
+    int previews = 0, stride = 0;
+    ASSERT_EQ(std::sscanf(std::strrchr(line, ',') + 1, " %d previews (pixel stride up to %d)", &previews, &stride), 2)
+        << line;
+    EXPECT_GE(previews, 5) << line;  // every orbiting frame after the first, and the return
+    EXPECT_GT(stride, 1) << line;
+
+    ASSERT_EQ(run(std::string(EIKON_EXECUTABLE) + " run " + kSmallDefault + " --quiet --out " + headless.string()), 0);
+    const auto viewed = eikon::io::readImage(frame);
+    const auto rendered = eikon::io::readImage(headless / "frames" / "frame_00000.png");
+    ASSERT_EQ(viewed.width, rendered.width);
+    ASSERT_EQ(viewed.height, rendered.height);
+    EXPECT_EQ(viewed.rgba, rendered.rgba);
 }
 
 TEST_F(ViewerWindow, BadSceneIsExitCodeTwoWithoutAWindow) {

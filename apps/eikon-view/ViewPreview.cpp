@@ -1,0 +1,24 @@
+#include "apps/eikon-view/ViewPreview.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace eikon::view {
+
+int ViewPreview::strideFor(bool cameraMoved, double nowSeconds) {
+    if (cameraMoved) {
+        lastMoveSeconds_ = nowSeconds;
+        moved_ = true;
+    }
+    const bool resting = !moved_ || nowSeconds - lastMoveSeconds_ >= settings_.refineDelaySeconds;
+    if (resting || fullViewMs_ <= settings_.targetViewMs) return 1;
+    // A k×k stride traces 1/k² of the rays.
+    const int stride = static_cast<int>(std::ceil(std::sqrt(fullViewMs_ / settings_.targetViewMs)));
+    return std::clamp(stride, 1, settings_.largestStride);
+}
+
+void ViewPreview::measured(int stride, double viewMs) {
+    if (viewMs > 0.0) fullViewMs_ = viewMs * stride * stride;
+}
+
+}  // namespace eikon::view

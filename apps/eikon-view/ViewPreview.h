@@ -1,0 +1,35 @@
+// While the camera moves, the viewer draws a preview: one camera ray per
+// k×k block of pixels (FrameRenderer::setPixelStride), k chosen so that the
+// view pass keeps to a target time; once the camera has rested for the
+// refine delay it draws the full image, the same frame `eikon run` renders.
+// The policy is plain arithmetic on times, so it is tested without a window.
+#pragma once
+
+namespace eikon::view {
+
+struct PreviewSettings {
+    double targetViewMs = 40.0;       // view-pass time to keep while the camera moves
+    double refineDelaySeconds = 0.25;  // rest before the full image is drawn
+    int largestStride = 8;
+};
+
+class ViewPreview {
+public:
+    explicit ViewPreview(PreviewSettings settings = {}) : settings_(settings) {}
+
+    // Once a frame, before it is rendered: whether the camera moved for this
+    // frame, and the time now (s, any steady origin). Returns the pixel
+    // stride to draw with: 1 for the full image.
+    int strideFor(bool cameraMoved, double nowSeconds);
+    // After a frame whose view pass ran at `stride`, its time: the cost per
+    // ray it implies sets the next preview's stride.
+    void measured(int stride, double viewMs);
+
+private:
+    PreviewSettings settings_;
+    double fullViewMs_ = 0.0;  // estimated view-pass time of the full image; 0: not yet measured
+    double lastMoveSeconds_ = 0.0;
+    bool moved_ = false;  // the camera has moved at least once
+};
+
+}  // namespace eikon::view

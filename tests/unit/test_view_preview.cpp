@@ -1,0 +1,68 @@
+// The viewer's preview policy (apps/eikon-view/ViewPreview): the full image
+// at rest, a stride that keeps the view pass to its target while the camera
+// moves, the full image again once the camera has rested.
+#include "apps/eikon-view/ViewPreview.h"
+
+#include <gtest/gtest.h>
+
+namespace eikon::view {
+namespace {
+
+PreviewSettings settings() {
+    PreviewSettings s;
+    s.targetViewMs = 40.0;
+    s.refineDelaySeconds = 0.25;
+    s.largestStride = 8;
+    return s;
+}
+
+TEST(ViewPreview, FullImageUntilTheCameraMoves) {
+    ViewPreview preview(settings());
+    EXPECT_EQ(preview.strideFor(false, 0.0), 1);
+    preview.measured(1, 400.0);
+    EXPECT_EQ(preview.strideFor(false, 0.1), 1);
+}
+
+TEST(ViewPreview, StrideKeepsTheViewPassToItsTarget) {
+    ViewPreview preview(settings());
+    preview.measured(1, 400.0);  // full image: 400 ms, ten times the target
+    // k² ≥ 10: a 4×4 stride traces 1/16 of the rays, 25 ms.
+    EXPECT_EQ(preview.strideFor(true, 1.0), 4);
+    // A preview frame's time sets the next: 4×4 at 40 ms means 640 ms full, so 4.
+    preview.measured(4, 40.0);
+    EXPECT_EQ(preview.strideFor(true, 1.05), 4);
+    preview.measured(4, 60.0);  // 960 ms full: 5×5
+    EXPECT_EQ(preview.strideFor(true, 1.1), 5);
+}
+
+TEST(ViewPreview, RefinesOnceTheCameraHasRested) {
+    ViewPreview preview(settings());
+    preview.measured(1, 400.0);
+    EXPECT_EQ(preview.strideFor(true, 1.0), 4);
+    EXPECT_EQ(preview.strideFor(false, 1.2), 4);  // still within the refine delay
+    EXPECT_EQ(preview.strideFor(false, 1.25), 1);
+    EXPECT_EQ(preview.strideFor(true, 2.0), 4);  // moving again
+}
+
+TEST(ViewPreview, AFastViewNeedsNoPreviewAndStridesAreCapped) {
+    ViewPreview fast(settings());
+    fast.measured(1, 30.0);  // already within the target (a GPU)
+    EXPECT_EQ(fast.strideFor(true, 1.0), 1);
+
+    ViewPreview slow(settings());
+    slow.measured(1, 40.0 * 200.0);  // would want 15×15
+    EXPECT_EQ(slow.strideFor(true, 1.0), 8);
+
+    ViewPreview unmeasured(settings());
+    EXPECT_EQ(unmeasured.strideFor(true, 1.0), 1);  // no cost known yet: the full image
+}
+
+TEST(ViewPreview, AFrameWhoseViewDidNotRunKeepsTheEstimate) {
+    ViewPreview preview(settings());
+    preview.measured(1, 400.0);
+    preview.measured(1, 0.0);  // the view pass did not run (nothing changed)
+    EXPECT_EQ(preview.strideFor(true, 1.0), 4);
+}
+
+}  // namespace
+}  // namespace eikon::view
