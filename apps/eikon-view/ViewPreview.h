@@ -10,7 +10,7 @@ namespace eikon::view {
 struct PreviewSettings {
     double targetViewMs = 40.0;       // view-pass time to keep while the camera moves
     double refineDelaySeconds = 0.25;  // rest before the full image is drawn
-    int largestStride = 8;
+    int largestStride = 16;
 };
 
 class ViewPreview {
