@@ -286,6 +286,14 @@ void main() {
         vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
         vec3 v = ray.v;
         float branch_exit = 0.0f;
+#if EIKON_SHARP_SURFACES
+        // The first mesh facet along mesh_ahead_direction, searched from the
+        // point the ray has since travelled mesh_ahead_travelled beyond.
+        SurfaceCrossing mesh_ahead = no_surface_crossing(0.0f);
+        vec3 mesh_ahead_direction = vec3(0.0f);
+        float mesh_ahead_travelled = 0.0f;
+        bool mesh_ahead_valid = false;
+#endif
         for (;;) {
             // Where the driver caps loops, a ray out of budget keeps the
             // radiance it has gathered (docs/accuracy.md).
@@ -306,6 +314,9 @@ void main() {
                 }
                 x = grid_entry_point(x, d, flight);
                 x_lost = vec3(0.0f);
+#if EIKON_SHARP_SURFACES
+                mesh_ahead_valid = false;
+#endif
                 if (grid_contains(x)) {
 #if EIKON_SHARP_SURFACES
                     ray.inside_mask = inside_mask_at(x);
@@ -322,9 +333,25 @@ void main() {
             vec3 d = normalize(v);
             float ds = view_step(x, d);
 #if EIKON_SHARP_SURFACES
-            SurfaceCrossing crossing =
-                nearest_surface_crossing(x, d, ray.inside_mask, ds, 1e-4f * grid.voxel_size.x);
+            // Meshes are searched once per straight stretch: where the field
+            // has no gradient the ray keeps its direction, and the first
+            // facet ahead, found out to the grid's face, stays the first as
+            // the ray advances (a search per step through a water surface's
+            // tree cost 14 times the rest of the view pass).
+            if (!(mesh_ahead_valid && gradient == vec3(0.0f) && d == mesh_ahead_direction)) {
+                mesh_ahead = nearest_triangle_crossing(no_surface_crossing(max(grid_ray_interval(x, d).y, 0.0f)), x, d);
+                mesh_ahead_direction = d;
+                mesh_ahead_travelled = 0.0f;
+                mesh_ahead_valid = true;
+            }
+            SurfaceCrossing crossing = no_surface_crossing(ds);
+            if (mesh_ahead.surface >= 0 && mesh_ahead.distance - mesh_ahead_travelled < ds) {
+                crossing = mesh_ahead;
+                crossing.distance = max(mesh_ahead.distance - mesh_ahead_travelled, 0.0f);
+            }
+            crossing = nearest_shape_crossing(crossing, x, d, ray.inside_mask, 1e-4f * grid.voxel_size.x);
             ds = crossing.distance;
+            mesh_ahead_travelled += ds;
             if (!loops_left()) break;
 #endif
             vec3 start = x;
@@ -350,6 +377,7 @@ void main() {
             }
 #if EIKON_SHARP_SURFACES
             if (crossing.surface >= 0) {
+                mesh_ahead_valid = false;
                 ray.x = x;
                 ray.v = v;
                 split_at_sharp_surface(crossing, ray);

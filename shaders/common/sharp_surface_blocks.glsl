@@ -46,29 +46,40 @@ struct SurfaceCrossing {
     vec2 uv;
 };
 
-SurfaceCrossing nearest_surface_crossing(vec3 x, vec3 d, uint mask, float reach, float t_min) {
+SurfaceCrossing no_surface_crossing(float reach) {
     SurfaceCrossing crossing;
     crossing.surface = -1;
     crossing.distance = reach;
     crossing.triangle = -1;
     crossing.uv = vec2(0.0f);
+    return crossing;
+}
+
+// The nearer of `crossing` and the first facet of a mesh or water surface
+// along x + t·d before it.
+SurfaceCrossing nearest_triangle_crossing(SurfaceCrossing crossing, vec3 x, vec3 d) {
     for (uint k = 0u; k < sharp_surface_count; ++k) {
-        vec4 shape_a = sharp_surfaces[k].shape_a;
-        vec4 shape_b = sharp_surfaces[k].shape_b;
-        if (is_triangle_surface(k)) {
-            // No t_min: a ray leaves a facet a clearance off it, on the side it
-            // goes on to, so it cannot meet that facet again, and a neighbour
-            // may be nearer than any t_min at an edge.
-            TriangleTrace hit = triangle_surface_crossing(shape_b, x, d, crossing.distance, 0.0f);
-            if (hit.triangle >= 0) {
-                crossing.surface = int(k);
-                crossing.distance = hit.t;
-                crossing.triangle = hit.triangle;
-                crossing.uv = hit.uv;
-            }
-            continue;
+        if (!is_triangle_surface(k)) continue;
+        // No t_min: a ray leaves a facet a clearance off it, on the side it
+        // goes on to, so it cannot meet that facet again, and a neighbour
+        // may be nearer than any t_min at an edge.
+        TriangleTrace hit = triangle_surface_crossing(sharp_surfaces[k].shape_b, x, d, crossing.distance, 0.0f);
+        if (hit.triangle >= 0) {
+            crossing.surface = int(k);
+            crossing.distance = hit.t;
+            crossing.triangle = hit.triangle;
+            crossing.uv = hit.uv;
         }
-        float t = surface_crossing(shape_a, shape_b, x, d, (mask & (1u << k)) != 0u, t_min);
+    }
+    return crossing;
+}
+
+// The nearer of `crossing` and the first sphere or box along x + t·d.
+SurfaceCrossing nearest_shape_crossing(SurfaceCrossing crossing, vec3 x, vec3 d, uint mask, float t_min) {
+    for (uint k = 0u; k < sharp_surface_count; ++k) {
+        if (is_triangle_surface(k)) continue;
+        float t = surface_crossing(sharp_surfaces[k].shape_a, sharp_surfaces[k].shape_b, x, d,
+                                   (mask & (1u << k)) != 0u, t_min);
         if (t < crossing.distance) {
             crossing.surface = int(k);
             crossing.distance = t;
@@ -76,6 +87,10 @@ SurfaceCrossing nearest_surface_crossing(vec3 x, vec3 d, uint mask, float reach,
         }
     }
     return crossing;
+}
+
+SurfaceCrossing nearest_surface_crossing(vec3 x, vec3 d, uint mask, float reach, float t_min) {
+    return nearest_shape_crossing(nearest_triangle_crossing(no_surface_crossing(reach), x, d), x, d, mask, t_min);
 }
 
 // What a ray of unit direction d meets where a step ended at `crossing`:
