@@ -22,6 +22,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <string>
 #include <vector>
 
 namespace eikon {
@@ -209,6 +211,45 @@ TEST(SharpCaustic, SphereMeshMatchesTheExactSphereReference) {
     EXPECT_NEAR(error.peakRatio, 1.0, 0.10);
 }
 
+
+// The camera's view of the same two spheres: camera rays search a mesh once
+// per straight stretch (shaders/view_rays.comp), so each pixel's exit
+// direction through the 96-ring mesh must match the analytic sphere's but
+// for the facets' normal error; a crossing missed or found twice sends a
+// ray through the glass unbent or the wrong way, tens of degrees off.
+TEST(SharpCaustic, SphereMeshViewMatchesTheAnalyticSpheresView) {
+    test::glContext();
+    const std::vector<std::string> small = {"render.width=160", "render.height=120", "render.photons=65536",
+                                            "grid.resolution=[48,40,48]"};
+    const auto exits = [](const Scene& scene, const FieldSet& fields) {
+        render::FrameRenderer renderer(scene, fields, {.photons = {}, .recordViewExits = true});
+        renderer.render(fields);
+        return renderer.viewStage().downloadExits();
+    };
+    const Scene analytic = defaultScene(small);
+    Scene meshed = analytic;
+    const SphereShape sphere = meshed.objects[0].sphere;
+    meshed.objects[0] = test::meshObject(sim::sphereMesh(sphere.center, sphere.radius, 96, 192),
+                                         "default_sphere96.obj", meshed.objects[0].material.index);
+    Scene clear = analytic;  // the glass as index 1: every camera ray goes straight
+    clear.objects[0].material.index = 1.0;
+    const std::vector<glm::vec4> straight = exits(clear, sim::voxelizeScene(clear));
+    const std::vector<glm::vec4> exact = exits(analytic, sim::voxelizeScene(analytic));
+    const std::vector<glm::vec4> faceted = exits(meshed, sim::SceneFields(meshed).fields());
+    ASSERT_EQ(exact.size(), faceted.size());
+    ASSERT_EQ(exact.size(), straight.size());
+    int bent = 0, apart = 0;  // pixels the sphere turns; of those, exits more than 2° apart
+    for (std::size_t p = 0; p < exact.size(); ++p) {
+        const glm::dvec3 a(exact[p]), b(faceted[p]), unbent(straight[p]);
+        if (glm::dot(glm::normalize(a), glm::normalize(unbent)) > std::cos(0.02)) continue;  // not through the glass
+        ++bent;
+        apart += glm::dot(glm::normalize(a), glm::normalize(b)) < std::cos(2.0 * std::numbers::pi / 180.0);
+    }
+    test::reportFigure("sharp_mesh_view_pixels_bent", bent);
+    test::reportFigure("sharp_mesh_view_fraction_apart", static_cast<double>(apart) / bent);
+    EXPECT_GT(bent, 500);
+    EXPECT_LT(static_cast<double>(apart) / bent, 0.05);
+}
 
 // Relative L1 of `map` against `exact` over the whole receiver.
 double receiverError(const std::vector<double>& map, const std::vector<double>& exact) {
