@@ -287,12 +287,12 @@ void main() {
         vec3 v = ray.v;
         float branch_exit = 0.0f;
 #if EIKON_SHARP_SURFACES
-        // The first mesh facet along mesh_ahead_direction, searched from the
-        // point the ray has since travelled mesh_ahead_travelled beyond.
+        // The first mesh facet along mesh_ahead_direction (zero: none
+        // searched yet), searched from the point the ray has since travelled
+        // mesh_ahead_travelled beyond.
         SurfaceCrossing mesh_ahead = no_surface_crossing(0.0f);
         vec3 mesh_ahead_direction = vec3(0.0f);
         float mesh_ahead_travelled = 0.0f;
-        bool mesh_ahead_valid = false;
 #endif
         for (;;) {
             // Where the driver caps loops, a ray out of budget keeps the
@@ -315,7 +315,7 @@ void main() {
                 x = grid_entry_point(x, d, flight);
                 x_lost = vec3(0.0f);
 #if EIKON_SHARP_SURFACES
-                mesh_ahead_valid = false;
+                mesh_ahead_direction = vec3(0.0f);
 #endif
                 if (grid_contains(x)) {
 #if EIKON_SHARP_SURFACES
@@ -338,11 +338,10 @@ void main() {
             // facet ahead, found out to the grid's face, stays the first as
             // the ray advances (a search per step through a water surface's
             // tree cost 14 times the rest of the view pass).
-            if (!(mesh_ahead_valid && gradient == vec3(0.0f) && d == mesh_ahead_direction)) {
+            if (gradient != vec3(0.0f) || d != mesh_ahead_direction) {
                 mesh_ahead = nearest_triangle_crossing(no_surface_crossing(max(grid_ray_interval(x, d).y, 0.0f)), x, d);
                 mesh_ahead_direction = d;
                 mesh_ahead_travelled = 0.0f;
-                mesh_ahead_valid = true;
             }
             SurfaceCrossing crossing = no_surface_crossing(ds);
             if (mesh_ahead.surface >= 0 && mesh_ahead.distance - mesh_ahead_travelled < ds) {
@@ -377,7 +376,7 @@ void main() {
             }
 #if EIKON_SHARP_SURFACES
             if (crossing.surface >= 0) {
-                mesh_ahead_valid = false;
+                mesh_ahead_direction = vec3(0.0f);  // at normal incidence d stays as it was
                 ray.x = x;
                 ray.v = v;
                 split_at_sharp_surface(crossing, ray);

@@ -55,8 +55,8 @@ void drawSolver(SimDesc& sim) {
 
 void drawFigures(const render::FrameResult& last, const ViewerStatus& status) {
     ImGui::Text("%.1f frames/s, %lld photons", status.framesPerSecond, status.photonsInUse);
-    if (status.pixelStride > 1)
-        ImGui::Text("preview: a ray per %d×%d pixels", status.pixelStride, status.pixelStride);
+    if (last.pixelStride > 1)
+        ImGui::Text("preview: a ray per %d×%d pixels", last.pixelStride, last.pixelStride);
     else
         ImGui::Text("full image");
     if (status.simulated) ImGui::Text("simulated time %.3f s", status.simulatedTime);

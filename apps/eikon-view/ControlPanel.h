@@ -27,7 +27,6 @@ struct ViewerStatus {
     double simulatedTime = 0.0;
     double framesPerSecond = 0.0;
     long long photonsInUse = 0;
-    int pixelStride = 1;  // of the image on screen: 1 full, k a preview of one ray per k×k pixels
 };
 
 class ControlPanel {

@@ -96,7 +96,6 @@ public:
             status_.simulated = session_->simulated();
             status_.simulatedTime = session_->simulatedTime();
             status_.photonsInUse = photons_;
-            status_.pixelStride = last_.pixelStride;
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);
             act(requests);
             ImGui::Render();
