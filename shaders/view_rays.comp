@@ -72,19 +72,7 @@ uniform uint surface_depth;  // surface events that split a ray in two; at most 
 #define EIKON_RECORD_EXIT 0
 #endif
 
-layout(std140, binding = kCameraBlock) uniform CameraBlock {
-    vec4 position;    // w: tan(fov / 2)
-    vec4 forward;     // w: aspect
-    vec4 right;
-    vec4 up;
-    uvec4 image;      // width, height, environment kind
-    vec4 radiance;    // uniform: rgb; hdr: intensity, rotation
-    vec4 zenith;
-    vec4 horizon;
-    vec4 ground_a;
-    vec4 ground_b;
-    vec4 ground;      // height, checker size
-} camera;
+#include "common/camera_block.glsl"
 
 #include "common/environment.glsl"
 
@@ -262,9 +250,7 @@ void main() {
     uvec2 block = gl_GlobalInvocationID.xy * pixel_stride;
     if (any(greaterThanEqual(block, camera.image.xy))) return;
     uvec2 pixel = min(block + pixel_stride / 2u, camera.image.xy - 1u);
-    vec2 ndc = (vec2(pixel) + 0.5f) / vec2(camera.image.xy) * 2.0f - 1.0f;
-    vec3 direction = normalize(camera.forward.xyz + ndc.x * camera.position.w * camera.forward.w * camera.right.xyz -
-                               ndc.y * camera.position.w * camera.up.xyz);
+    vec3 direction = camera_ray_direction(pixel);
     ViewRay ray;
     ray.x = camera.position.xyz;
     ray.inside_mask = 0u;

@@ -88,7 +88,9 @@ void SharpMeshSurface::write(const TriangleMesh& mesh, std::size_t root, std::si
         float* out = triangles + (firstTriangle + slot) * kSurfaceTriangleFloats;
         for (int corner = 0; corner < 3; ++corner) {
             const auto v = static_cast<std::size_t>(corners[corner]);
-            put(out + 4 * corner, mesh.vertices[v], 0.0f);
+            // The first corner's w: the mesh's ordinal among the scene's
+            // meshes (its root node), for passes that draw the triangles.
+            put(out + 4 * corner, mesh.vertices[v], corner == 0 ? static_cast<float>(root) : 0.0f);
             // Orientation is not relied on: each neighbour's normal is turned
             // to this triangle's side before the crease test.
             glm::dvec3 sum(0.0);

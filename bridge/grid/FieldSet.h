@@ -18,7 +18,8 @@ namespace eikon {
 // layout the tracers read (shaders/common/sharp_triangle_surfaces.glsl):
 // a node is min xyz, then `first`, max xyz, then `count` (integers held
 // exactly as floats); a triangle is its three corners, each followed by a
-// padding float, then its three corner normals likewise (the normal
+// float (the first corner's: the mesh's ordinal, its root node; the others
+// padding), then its three corner normals each followed by padding (the normal
 // of the smooth surface the facets approximate, or the facet's own at a
 // crease).
 constexpr std::size_t kSurfaceNodeFloats = 8;

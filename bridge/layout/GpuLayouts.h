@@ -37,6 +37,7 @@
     X(kHdrImage, 7)             /* buffer HdrImage { vec4 radiance[]; } */                                                      \
     X(kLdrImage, 8)             /* buffer LdrImage { uint rgba8[]; } */                                                         \
     X(kPhotonPaths, 9)          /* buffer PhotonPaths { vec4 vertices[]; }: optional recording for tests and export */          \
+    X(kImageSpaceSurfaces, 9)   /* buffer ImageSpaceSurfaces { vec4 optics[]; }: per sharp surface (n, κ rgb), image space */    \
     X(kPhotonEnds, 10)          /* buffer PhotonEnds { vec4 ends[]; }: per recorded photon (end, fate), (power, receiver) */    \
     X(kReceiverTallies, 11)     /* buffer ReceiverTallies { uint units[]; }: per texel and channel a 64-bit fixed-point sum */  \
     X(kFluenceDirection, 12)    /* buffer FluenceDirection { float direction[]; }: xyz per cell, power-weighted */              \
@@ -76,7 +77,9 @@
     X(kStepTexture, 4)        /* rgba32f (octree level, step cap in m, 1 if the node is empty of extinction, 0) */ \
     X(kEnvironmentTexture, 5) /* rgba32f equirectangular environment */                                            \
     X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */                                                       \
-    X(kEmissionTexture, 7)    /* rgba32f (ε rgb in W/(m³·sr), 0) */
+    X(kEmissionTexture, 7)    /* rgba32f (ε rgb in W/(m³·sr), 0) */                                                 \
+    X(kNearLayerTexture, 8)   /* rgba32f (octahedral normal, distance, surface + 1): the nearest surfaces a viewpoint sees */ \
+    X(kFarLayerTexture, 9)    /* the same, the next surfaces behind them (image space, render/stages/SurfaceLayers) */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \

@@ -174,6 +174,15 @@ struct RenderDesc {
     // either exceeds warnError (relative, > 0).
     bool errorEstimate = true;
     double warnError = 0.05;
+    // How the image is formed: eikonal (curved rays through the fields, the
+    // default) or image space (the raster pipeline's two-interface
+    // refraction and light-space caustic maps, [Wyman06] and [Hu10];
+    // surfaces in a uniform medium only, bridge/scene/ImageSpaceScope.h).
+    enum class Method { Eikonal, ImageSpace } method = Method::Eikonal;
+    // What image space does with a scene it cannot show whole: refuse it
+    // (none), or draw the surfaces and drop the media, saying so once.
+    enum class MethodFallback { None, SurfacesOnly } methodFallback = MethodFallback::None;
+    int causticMapTexels = 512;  // image space: texels per edge of each light's caustic map (photons: its square)
 };
 
 // How photons are marched ([Sun08] §4.2–4.4 and §5.3).

@@ -9,6 +9,7 @@
 #include "io/scene/JsonReader.h"
 #include "io/scene/MeshObjectParser.h"
 #include "io/scene/PaintParser.h"
+#include "io/scene/RenderMethodParser.h"
 
 #include <glm/geometric.hpp>
 
@@ -304,7 +305,8 @@ EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& scene
 RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     RenderDesc render;
     const auto fields = node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background",
-                                     "environment", "write_hdr", "surface_depth", "error_estimate", "warn_error"});
+                                     "environment", "write_hdr", "surface_depth", "error_estimate", "warn_error",
+                                     "method", "method_fallback", "caustic_map_texels"});
     if (auto photons = fields.optional("photons")) render.photons = photons->integer(1, kMaxPhotons);
     if (auto width = fields.optional("width")) render.width = static_cast<int>(width->integer(1, kMaxImageEdge));
     if (auto height = fields.optional("height")) render.height = static_cast<int>(height->integer(1, kMaxImageEdge));
@@ -321,6 +323,7 @@ RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
         render.surfaceDepth = static_cast<int>(depth->integer(0, 8));
     if (auto estimate = fields.optional("error_estimate")) render.errorEstimate = estimate->boolean();
     if (auto warn = fields.optional("warn_error")) render.warnError = warn->number(kPositive);
+    readRenderMethod(fields, render);
     return render;
 }
 
@@ -661,6 +664,7 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const bool volumeLights = scene.volume && scene.volume->emissionLights;
     if (scene.lights.empty() && !volumeLights)
         fields.member("lights").fail("an array of at least one light (or a volume with emission_lights)");
+    checkRenderMethod(fields, scene);  // after everything image space might drop
     if (auto exports = fields.optional("export")) readExport(*exports, scene);  // last: it checks the fields exist
     return scene;
 }

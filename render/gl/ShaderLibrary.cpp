@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace eikon::gl {
@@ -114,8 +115,8 @@ std::string logOf(GLuint object, bool isProgram) {
     return std::string(log.data());
 }
 
-Program compileResolved(const std::string& name, const ResolvedShader& shader) {
-    const GLuint stage = glCreateShader(GL_COMPUTE_SHADER);
+GLuint compileStage(GLenum kind, const std::string& name, const ResolvedShader& shader) {
+    const GLuint stage = glCreateShader(kind);
     const char* text = shader.text.c_str();
     glShaderSource(stage, 1, &text, nullptr);
     glCompileShader(stage);
@@ -126,14 +127,31 @@ Program compileResolved(const std::string& name, const ResolvedShader& shader) {
         glDeleteShader(stage);
         throw std::runtime_error("compiling shader " + name + ":\n" + withFileNames(log, shader.files));
     }
+    return stage;
+}
+
+// Links the stages (each name with its resolved text) into one program named after the first.
+Program linkStages(const std::vector<std::pair<GLenum, std::pair<std::string, ResolvedShader>>>& stages) {
+    std::vector<GLuint> compiled;
+    try {
+        for (const auto& [kind, source] : stages) compiled.push_back(compileStage(kind, source.first, source.second));
+    } catch (...) {
+        for (GLuint stage : compiled) glDeleteShader(stage);
+        throw;
+    }
+    const std::string& name = stages.front().second.first;
     Program program(glCreateProgram(), name);
-    glAttachShader(program.id(), stage);
+    for (GLuint stage : compiled) glAttachShader(program.id(), stage);
     glLinkProgram(program.id());
-    glDeleteShader(stage);
+    for (GLuint stage : compiled) glDeleteShader(stage);
     GLint linked = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
     if (!linked) throw std::runtime_error("linking shader " + name + ":\n" + logOf(program.id(), true));
     return program;
+}
+
+Program compileResolved(const std::string& name, const ResolvedShader& shader) {
+    return linkStages({{GL_COMPUTE_SHADER, {name, shader}}});
 }
 
 }  // namespace
@@ -144,6 +162,12 @@ ResolvedShader resolveShader(const std::string& name, const ShaderDefines& defin
 
 Program compileComputeProgram(const std::string& name, const ShaderDefines& defines) {
     return compileResolved(name, resolveShader(name, defines));
+}
+
+Program compileRasterProgram(const std::string& vertexName, const std::string& fragmentName,
+                             const ShaderDefines& defines) {
+    return linkStages({{GL_VERTEX_SHADER, {vertexName, resolveShader(vertexName, defines)}},
+                       {GL_FRAGMENT_SHADER, {fragmentName, resolveShader(fragmentName, defines)}}});
 }
 
 Program compileComputeProgramFromSource(const std::string& name, std::string_view text,

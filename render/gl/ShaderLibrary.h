@@ -1,4 +1,4 @@
-// Compute programs from shaders/, with `#include "common/x.glsl"` resolved
+// Compute (and raster) programs from shaders/, with `#include "common/x.glsl"` resolved
 // (each file once) and `#line` markers so compiler messages name the real
 // file and line. Every program starts with `#version 450 core`, the
 // extensions eikon relies on, caller-supplied #defines, `const int`
@@ -33,6 +33,11 @@ ResolvedShader resolveShader(const std::string& name, const ShaderDefines& defin
 // compiler log (file names restored) on failure. The program carries `name`
 // for its errors (Program::uniform).
 Program compileComputeProgram(const std::string& name, const ShaderDefines& defines = {});
+
+// A vertex and a fragment shader linked into one raster program (the
+// image-space passes draw surfaces with the raster pipeline).
+Program compileRasterProgram(const std::string& vertexName, const std::string& fragmentName,
+                             const ShaderDefines& defines = {});
 
 // The same for source text that is not embedded (tests' probe shaders),
 // called `name` in messages; its includes resolve against shaders/ as usual.

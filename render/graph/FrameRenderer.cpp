@@ -33,6 +33,14 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     : scene_(scene), receivers_(scene.receivers), post_(scene.render.width, scene.render.height) {
     pendingUpload_ = fields_.upload(fields);  // before the stages: they compile for the fields present
     if (ring) ring->fenceCurrent();
+    if (scene.render.method == RenderDesc::Method::ImageSpace) {
+        raster_ = std::make_unique<SurfaceRaster>(scene_);
+        if (!scene.receivers.empty())
+            imageSpaceCaustics_ = std::make_unique<ImageSpaceCaustics>(scene_, receivers_, *raster_);
+        if (options.drawsImage)
+            imageSpaceView_ = std::make_unique<ImageSpaceView>(scene_, receivers_, *raster_, options.recordViewExits);
+        return;  // none of the eikonal stages
+    }
     prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
     if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree)
         stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
@@ -85,6 +93,7 @@ StageReport FrameRenderer::relight(PhotonStats& stats) {
 void FrameRenderer::setCamera(const CameraDesc& camera) {
     scene_.camera = camera;
     if (view_) view_->setCamera(camera);
+    if (imageSpaceView_) imageSpaceView_->setCamera(camera);
     cameraChanged_ = true;
 }
 
@@ -98,6 +107,7 @@ void FrameRenderer::setLight(std::size_t index, const LightDesc& light) {
     EIKON_CHECK_MSG(index < scene_.lights.size(), "no such light");
     scene_.lights[index] = light;
     if (photons_) photons_->setEmitters(scene_);
+    if (imageSpaceCaustics_) imageSpaceCaustics_->setLight(index, light);
     lightsChanged_ = true;
 }
 
@@ -118,7 +128,42 @@ FrameResult FrameRenderer::render(const FieldSet& fields) { return render(hostUp
 
 FrameResult FrameRenderer::render(FieldRing& ring) { return render(ring.current(), &ring); }
 
+FrameResult FrameRenderer::renderImageSpace(const FieldUpload& fields, FieldRing* ring) {
+    FrameResult result;
+    const bool fieldsChanged = fields.indexVersion != tracedIndexVersion_ ||
+                               fields.extinctionVersion != tracedExtinctionVersion_ ||
+                               fields.scatteringVersion != tracedScatteringVersion_ ||
+                               fields.surfaceVersion != tracedSurfaceVersion_;
+    result.stages.push_back(runStage("upload", fieldsChanged, [&] {
+        const UploadBytes bytes = fields_.upload(fields);
+        result.copied = {std::exchange(pendingUpload_, {}).host + bytes.host, bytes.gpu};
+    }));
+    if (ring) ring->fenceCurrent();
+    const bool lightChanged = fieldsChanged || lightsChanged_;
+    const bool causticsNeeded = imageSpaceCaustics_ && (lightChanged || imageSpaceCaustics_->refining());
+    if (imageSpaceCaustics_)
+        result.stages.push_back(runStage("image_space_caustics", causticsNeeded,
+                                         [&] { imageSpaceCaustics_->run(fields_, lightChanged); }));
+    const bool viewNeeded = imageSpaceView_ && (fieldsChanged || causticsNeeded || cameraChanged_);
+    if (imageSpaceView_) {
+        result.stages.push_back(runStage("image_space_view", viewNeeded, [&] { imageSpaceView_->run(fields_); }));
+        result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
+            last_.image = post_.run(imageSpaceView_->hdrImage(), scene_.render.exposureEv);
+        }));
+    }
+    tracedIndexVersion_ = fields.indexVersion;
+    tracedExtinctionVersion_ = fields.extinctionVersion;
+    tracedScatteringVersion_ = fields.scatteringVersion;
+    tracedSurfaceVersion_ = fields.surfaceVersion;
+    cameraChanged_ = lightsChanged_ = exposureChanged_ = false;
+    if (viewNeeded && scene_.render.writeHdr) last_.hdr = imageSpaceView_->downloadHdr();
+    result.image = last_.image;
+    result.hdr = last_.hdr;
+    return result;
+}
+
 FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
+    if (raster_) return renderImageSpace(fields, ring);
     FrameResult result;
     const bool indexChanged = fields.indexVersion != tracedIndexVersion_;
     const bool extinctionChanged = fields.extinctionVersion != tracedExtinctionVersion_;

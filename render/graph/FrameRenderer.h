@@ -1,5 +1,6 @@
 // One frame of the render half: upload → prepare → step structure → photons
-// → multiple scattering → view → post. A stage runs only when one of its inputs changed since it
+// → multiple scattering → view → post; in image space (render.method
+// "image_space") upload → caustic maps → image-space view → post. A stage runs only when one of its inputs changed since it
 // last ran (field versions, camera); stages the scene does not need are not
 // created (uniform steps → no step structure, no receivers → no maps, no
 // scattering → no fluence and no lattice, neither receivers nor scattering →
@@ -12,6 +13,8 @@
 #include "render/stages/ErrorEstimateStage.h"
 #include "render/stages/FieldRing.h"
 #include "render/stages/FieldTextures.h"
+#include "render/stages/ImageSpaceCaustics.h"
+#include "render/stages/ImageSpaceView.h"
 #include "render/stages/LatticeScattering.h"
 #include "render/stages/PhotonStage.h"
 #include "render/stages/PostStage.h"
@@ -91,7 +94,10 @@ public:
     const ReceiverMaps& receivers() const { return receivers_; }
     // Null when the scene has nothing for photons to light (no receivers, no scattering).
     const PhotonStage* photonStage() const { return photons_.get(); }
-    const ViewStage& viewStage() const { return *view_; }  // only where the renderer draws images
+    const ViewStage& viewStage() const { return *view_; }  // only where the renderer draws eikonal images
+    // Null unless the scene's render.method is image space and the renderer draws images.
+    const ImageSpaceView* imageSpaceView() const { return imageSpaceView_.get(); }
+    const ImageSpaceCaustics* imageSpaceCaustics() const { return imageSpaceCaustics_.get(); }
     // Null unless the scene asks for multiple scattering and something scatters.
     const LatticeScattering* latticeStage() const { return lattice_.get(); }
 
@@ -100,6 +106,8 @@ private:
     FrameRenderer(const Scene& scene, const FieldUpload& fields, FieldRing* ring, RendererOptions options);
     // Uploads, then the stages that depend on what changed.
     FrameResult render(const FieldUpload& fields, FieldRing* ring);
+    // The image-space frame (render.method "image_space"): layers, caustic maps, view, post.
+    FrameResult renderImageSpace(const FieldUpload& fields, FieldRing* ring);
 
     Scene scene_;
     FieldTextures fields_;
@@ -110,6 +118,10 @@ private:
     std::unique_ptr<LatticeScattering> lattice_;
     std::unique_ptr<ViewStage> view_;
     PostStage post_;
+    // Image space only: the raster passes' surfaces, the caustic maps, the view.
+    std::unique_ptr<SurfaceRaster> raster_;
+    std::unique_ptr<ImageSpaceCaustics> imageSpaceCaustics_;
+    std::unique_ptr<ImageSpaceView> imageSpaceView_;
     // With estimateErrors: the reference step labels (the scene's own step
     // structure's where it has one, else this one's) and the estimate.
     std::unique_ptr<StepStructureStage> referenceSteps_;

@@ -51,6 +51,9 @@ public:
     bool hasAnisotropy() const { return static_cast<bool>(anisotropy_.id()); }
     bool hasEmission() const { return static_cast<bool>(emission_.id()); }
     std::uint64_t surfaceVersion() const { return surfaceVersion_; }
+    // The sharp meshes' triangles (FieldSet.h's layout); no name when the scene has none.
+    const gl::Buffer& surfaceTriangles() const { return surfaceTriangles_; }
+    const gl::Buffer& surfaceNodes() const { return surfaceNodes_; }
     const GridSpec& grid() const { return grid_; }
     std::uint64_t indexVersion() const { return indexVersion_; }
 

@@ -68,17 +68,24 @@ EmitterGeometry pointEmitter(const LightDesc& light, const Box& region) {
     return geometry;
 }
 
-// A spot: intensity I0·profile(θ), profile = 1 inside the inner cone and a
-// smoothstep in cos θ down to 0 at the outer cone, with I0 such that the
-// power inside the cone is the light's power:
-//   Φ = I0 · 2π [(1 − cos θi) + (cos θi − cos θo)/2].
+}  // namespace
+
+Rgb spotPeakIntensity(const LightDesc& light) {
+    const double cosOuter = std::cos(glm::radians(light.coneAngleDeg));
+    const double cosInner = std::cos(glm::radians(light.coneAngleDeg - light.falloffDeg));
+    return light.power / (2.0 * std::numbers::pi * ((1.0 - cosInner) + 0.5 * (cosInner - cosOuter)));
+}
+
+namespace {
+
+// A spot (spotPeakIntensity):
 // Photons are sampled in the narrower of the spot's cone and the cone
 // toward the region.
 EmitterGeometry spotEmitter(const LightDesc& light, const Box& region) {
     EmitterGeometry geometry = pointEmitter(light, region);
     const double cosOuter = std::cos(glm::radians(light.coneAngleDeg));
     const double cosInner = std::cos(glm::radians(light.coneAngleDeg - light.falloffDeg));
-    const Rgb peakIntensity = light.power / (2.0 * std::numbers::pi * ((1.0 - cosInner) + 0.5 * (cosInner - cosOuter)));
+    const Rgb peakIntensity = spotPeakIntensity(light);
     if (cosOuter > geometry.shape) {
         geometry.axis = glm::normalize(light.direction);
         geometry.shape = cosOuter;

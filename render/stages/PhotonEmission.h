@@ -28,6 +28,12 @@ struct Box {
 // when there is nothing else.
 Box emissionRegion(const Scene& scene);
 
+// A spot's intensity I0 on its axis (W/sr per channel): its intensity is
+// I0·profile(θ), the profile 1 inside the inner cone and a smoothstep in
+// cos θ down to 0 at the outer cone, so that the power inside the cone is
+// the light's power: Φ = I0 · 2π [(1 − cos θi) + (cos θi − cos θo)/2].
+Rgb spotPeakIntensity(const LightDesc& light);
+
 // One emitter per light with non-zero power toward `region`, and one for a
 // glowing volume of power `glowPower` (render/stages/VolumeGlow.h) where it
 // is non-zero; photons are shared among them in proportion to that power

@@ -18,6 +18,8 @@ namespace {
 
 glm::vec4 rgb(const Rgb& value) { return glm::vec4(glm::vec3(value), 0.0f); }
 
+}  // namespace
+
 unsigned environmentKind(const EnvironmentDesc& environment) {
     switch (environment.kind) {
         case EnvironmentDesc::Kind::Uniform: return layout::kUniformEnvironment;
@@ -27,7 +29,34 @@ unsigned environmentKind(const EnvironmentDesc& environment) {
     return layout::kUniformEnvironment;
 }
 
-}  // namespace
+gl::Texture2D environmentTexture(const Scene& scene) {
+    if (scene.render.environment.kind != EnvironmentDesc::Kind::Hdr) return {};
+    const FloatImage* image = scene.render.environment.image.get();
+    EIKON_CHECK_MSG(image != nullptr, "an hdr environment arrives with its image read (io/scene)");
+    GLint largest = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+    if (image->width > largest || image->height > largest)
+        throw InputError(scene.sourcePath + ": render.environment.path",
+                         "an image at most " + std::to_string(largest) + " pixels a side (GL_MAX_TEXTURE_SIZE)",
+                         std::to_string(image->width) + " × " + std::to_string(image->height));
+    return gl::Texture2D(image->width, image->height, image->rgba.data(),
+                         {"render.environment.path", "the environment map"});
+}
+
+gl::Buffer pixelBuffer(const Scene& scene, const std::string& description) {
+    const std::size_t pixels =
+        static_cast<std::size_t>(scene.render.width) * static_cast<std::size_t>(scene.render.height);
+    GLint64 largestBlock = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largestBlock);
+    if (pixels * sizeof(glm::vec4) > static_cast<std::size_t>(largestBlock))
+        throw InputError(scene.sourcePath + ": render.width × render.height",
+                         "at most " + std::to_string(static_cast<std::size_t>(largestBlock) / sizeof(glm::vec4)) +
+                             " pixels (the linear image takes 16 bytes a pixel; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " +
+                             std::to_string(largestBlock) + " bytes)",
+                         std::to_string(scene.render.width) + " × " + std::to_string(scene.render.height) + " = " +
+                             std::to_string(pixels));
+    return gl::Buffer(pixels * sizeof(glm::vec4), gl::GpuResource{"render.width × render.height", description});
+}
 
 layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render) {
     const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
@@ -75,32 +104,11 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                            {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
                            {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"},
                            {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())}});
-    if (scene.render.environment.kind == EnvironmentDesc::Kind::Hdr) {
-        const FloatImage* image = scene.render.environment.image.get();
-        EIKON_CHECK_MSG(image != nullptr, "an hdr environment arrives with its image read (io/scene)");
-        GLint largest = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
-        if (image->width > largest || image->height > largest)
-            throw InputError(scene.sourcePath + ": render.environment.path",
-                             "an image at most " + std::to_string(largest) + " pixels a side (GL_MAX_TEXTURE_SIZE)",
-                             std::to_string(image->width) + " × " + std::to_string(image->height));
-        environment_ = gl::Texture2D(image->width, image->height, image->rgba.data(),
-                                     {"render.environment.path", "the environment map"});
-    }
+    environment_ = environmentTexture(scene);
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
-    const std::size_t pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
-    GLint64 largestBlock = 0;
-    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largestBlock);
-    if (pixels * sizeof(glm::vec4) > static_cast<std::size_t>(largestBlock))
-        throw InputError(scene.sourcePath + ": render.width × render.height",
-                         "at most " + std::to_string(static_cast<std::size_t>(largestBlock) / sizeof(glm::vec4)) +
-                             " pixels (the linear image takes 16 bytes a pixel; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " +
-                             std::to_string(largestBlock) + " bytes)",
-                         std::to_string(width_) + " × " + std::to_string(height_) + " = " + std::to_string(pixels));
-    const gl::GpuResource image{"render.width × render.height", "the linear image"};
-    hdr_ = gl::Buffer(pixels * sizeof(glm::vec4), image);
-    if (recordExit) exits_ = gl::Buffer(pixels * sizeof(glm::vec4), {image.keyPath, "the camera rays' exits"});
+    hdr_ = pixelBuffer(scene, "the linear image");
+    if (recordExit) exits_ = pixelBuffer(scene, "the camera rays' exits");
 }
 
 void ViewStage::setCamera(const CameraDesc& camera) {

@@ -11,11 +11,17 @@
 
 #include <glm/vec4.hpp>
 
+#include <string>
 #include <vector>
 
 namespace eikon::render {
 
 layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render);
+unsigned environmentKind(const EnvironmentDesc& environment);  // layout::EnvironmentKind
+// The hdr environment's map (no name for other environments), checked against GL_MAX_TEXTURE_SIZE.
+gl::Texture2D environmentTexture(const Scene& scene);
+// A vec4 per pixel of the scene's image, checked against GL_MAX_SHADER_STORAGE_BLOCK_SIZE.
+gl::Buffer pixelBuffer(const Scene& scene, const std::string& description);
 
 struct ViewInputs {
     const gl::Buffer* fluence = nullptr;           // smoothed φ, when the scene scatters

@@ -16,9 +16,14 @@ uniform uint emitter_count;
 
 // A spot light's intensity relative to its axis: 1 inside the inner cone,
 // smoothstep in cos θ to 0 at the outer cone.
+// axis: the spot's unit axis; cos_outer < −1.5: no spot (1 everywhere).
+float spot_profile_about(vec3 axis, float cos_outer, float cos_inner, vec3 direction) {
+    if (cos_outer < -1.5f) return 1.0f;
+    float cos_theta = dot(direction, axis);
+    if (cos_inner <= cos_outer) return cos_theta >= cos_outer ? 1.0f : 0.0f;  // hard edge
+    return smoothstep(cos_outer, cos_inner, cos_theta);
+}
+
 float spot_profile(Emitter emitter, vec3 direction) {
-    if (emitter.spot.w < -1.5f) return 1.0f;
-    float cos_theta = dot(direction, emitter.spot.xyz);
-    if (emitter.spot_edge.x <= emitter.spot.w) return cos_theta >= emitter.spot.w ? 1.0f : 0.0f;  // hard edge
-    return smoothstep(emitter.spot.w, emitter.spot_edge.x, cos_theta);
+    return spot_profile_about(emitter.spot.xyz, emitter.spot.w, emitter.spot_edge.x, direction);
 }

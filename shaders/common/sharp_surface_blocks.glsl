@@ -6,12 +6,7 @@
 // sets the index offset added to the graded field there.
 #include "common/sharp_triangle_surfaces.glsl"
 
-struct SharpSurface {
-    vec4 shape_a;  // xyz sphere centre, or box min; w kind (kSharpSphere, kSharpBox, kSharpTriangles)
-    vec4 shape_b;  // x sphere radius, or xyz box max; w a mesh's root node
-    vec4 optics;   // x n_object − n_ref; y 1 if Fresnel reflects
-};
-layout(std430, binding = kSharpSurfaces) readonly buffer SharpSurfaces { SharpSurface sharp_surfaces[]; };
+#include "common/sharp_surface_list.glsl"
 
 uniform uint sharp_surface_count;  // at most 32: one bit each in a ray's inside mask
 

@@ -1,0 +1,184 @@
+#include "render/stages/ImageSpaceCaustics.h"
+
+#include "bridge/core/Error.h"
+#include "bridge/grid/FieldSet.h"
+#include "render/gl/GlDebug.h"
+#include "render/gl/ShaderLibrary.h"
+#include "render/stages/ImageSpaceView.h"
+#include "render/stages/PhotonEmission.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace eikon::render {
+
+namespace {
+
+// A light farther than this from the refractors' bounding sphere (in its
+// radii) sees all of it in one frustum; nearer, the frustum opens to kWidestHalfAngle.
+constexpr double kWidestHalfAngleDeg = 80.0;
+
+// This frame's offset of the photons within their texels (a rotated 2×2 pattern).
+glm::vec2 jitterOf(int frame) {
+    static constexpr float offsets[kTemporalFrames][2] = {{0.0f, 0.0f}, {0.25f, 0.25f}, {-0.25f, 0.25f}, {0.25f, -0.25f}};
+    return {offsets[frame % kTemporalFrames][0], offsets[frame % kTemporalFrames][1]};
+}
+
+struct Bounds {
+    glm::dvec3 min{1e300}, max{-1e300};
+    void add(const glm::dvec3& low, const glm::dvec3& high) {
+        min = glm::min(min, low);
+        max = glm::max(max, high);
+    }
+};
+
+}  // namespace
+
+struct ImageSpaceCaustics::LightFrame {
+    Viewpoint view;
+    glm::vec3 right{0.0f}, up{0.0f};
+    double halfExtent = 1.0;  // perspective: tan of the half-angle; orthographic: half the width
+};
+
+ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receivers, SurfaceRaster& raster)
+    : scene_(scene), receivers_(receivers), raster_(raster), lights_(scene.lights),
+      extinction_(imageSpaceSurfaceExtinction(scene)),
+      directProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "0"}})),
+      photonProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "1"}})) {
+    const int texels = scene.render.causticMapTexels;
+    for (std::size_t i = 0; i < lights_.size(); ++i)
+        layers_.push_back(std::make_unique<SurfaceLayers>(
+            texels, texels, gl::GpuResource{"render.caustic_map_texels", "light " + std::to_string(i) + "'s layers"}));
+    // W per tally unit: 2^-40 of all the light, so a texel holds 2^24 times all of it.
+    Rgb total(0.0);
+    double receiverArea = 0.0;
+    for (const ReceiverDesc& receiver : scene.receivers) receiverArea += receiver.size * receiver.size;
+    for (const LightDesc& light : lights_)
+        total += light.kind == LightDesc::Kind::Directional ? light.irradiance * receiverArea : light.power;
+    for (int c = 0; c < 3; ++c) powerUnit_[c] = static_cast<float>(std::max(total[c], 1e-20) / std::ldexp(1.0, 40));
+    for (unsigned r = 0; r < receivers_.count(); ++r)
+        receiverTexels_ += receivers_.receiver(r).map.y * receivers_.receiver(r).map.y;
+}
+
+void ImageSpaceCaustics::setLight(std::size_t index, const LightDesc& light) {
+    EIKON_CHECK_MSG(index < lights_.size(), "no such light");
+    lights_[index] = light;
+}
+
+ImageSpaceCaustics::LightFrame ImageSpaceCaustics::frameOf(const LightDesc& light, const glm::dvec3& centre,
+                                                           double radius) const {
+    LightFrame frame;
+    const bool directional = light.kind == LightDesc::Kind::Directional;
+    glm::dvec3 axis;
+    glm::dvec3 eye;
+    if (directional) {
+        axis = glm::normalize(light.direction);
+        eye = centre - axis * (2.0 * radius);
+        frame.halfExtent = radius;
+    } else {
+        const glm::dvec3 toward = centre - light.position;
+        const double distance = glm::length(toward);
+        axis = distance > 0.0 ? toward / distance : glm::dvec3(0, -1, 0);
+        eye = light.position;
+        const double widest = std::tan(glm::radians(kWidestHalfAngleDeg));
+        frame.halfExtent = distance > radius ? std::min(std::tan(std::asin(radius / distance)), widest) : widest;
+    }
+    const glm::dvec3 hint = std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 right = glm::normalize(glm::cross(axis, hint));
+    const glm::dvec3 up = glm::cross(right, axis);
+    const glm::dmat4 view = glm::lookAt(eye, eye + axis, up);
+    const glm::dmat4 projection =
+        directional ? glm::ortho(-radius, radius, -radius, radius, 0.0, kRasterFarPlane)
+                    : glm::perspective(2.0 * std::atan(frame.halfExtent), 1.0, kRasterNearPlane, kRasterFarPlane);
+    frame.view.viewProjection = glm::mat4(projection * view);
+    frame.view.eye = glm::vec3(eye);
+    frame.view.axis = glm::vec3(axis);
+    frame.view.orthographic = directional;
+    frame.right = glm::vec3(right);
+    frame.up = glm::vec3(up);
+    return frame;
+}
+
+void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
+    if (changed || frames_ >= kTemporalFrames) {
+        receivers_.clearTallies();
+        frames_ = 0;
+    }
+    // The refractors' bounding sphere: shapes exactly, meshes by their trees' root boxes now.
+    Bounds bounds;
+    int meshes = 0;
+    for (const ObjectDesc& object : scene_.objects) {
+        if (!object.isSharp()) continue;
+        if (object.kind == ObjectDesc::Kind::Sphere)
+            bounds.add(object.sphere.center - object.sphere.radius, object.sphere.center + object.sphere.radius);
+        else if (object.kind == ObjectDesc::Kind::Box) bounds.add(object.box.min, object.box.max);
+        else ++meshes;
+    }
+    if (meshes > 0) {
+        std::vector<float> roots(static_cast<std::size_t>(meshes) * kSurfaceNodeFloats);
+        fields.surfaceNodes().download(roots.data(), roots.size() * sizeof(float));
+        for (int k = 0; k < meshes; ++k) {
+            const float* node = roots.data() + static_cast<std::size_t>(k) * kSurfaceNodeFloats;
+            bounds.add(glm::dvec3(node[0], node[1], node[2]), glm::dvec3(node[4], node[5], node[6]));
+        }
+    }
+    const bool anyRefractor = bounds.min.x <= bounds.max.x;
+    const glm::dvec3 centre = anyRefractor ? 0.5 * (bounds.min + bounds.max) : glm::dvec3(0.0);
+    const double radius = anyRefractor ? 0.5 * glm::length(bounds.max - bounds.min) * 1.01 + 1e-6 : 1e-6;
+    const glm::vec2 jitter = jitterOf(frames_);
+    for (std::size_t i = 0; i < lights_.size(); ++i) {
+        const LightDesc& light = lights_[i];
+        const LightFrame frame = frameOf(light, centre, radius);
+        SurfaceLayers& layers = *layers_[i];
+        raster_.draw(frame.view, layers, fields);
+        const bool spot = light.kind == LightDesc::Kind::Spot;
+        const Rgb intensity = light.kind == LightDesc::Kind::Directional ? light.irradiance
+                              : spot ? spotPeakIntensity(light)
+                                     : light.power / (4.0 * std::numbers::pi);
+        const glm::vec2 spotCosines =
+            spot ? glm::vec2(static_cast<float>(std::cos(glm::radians(light.coneAngleDeg))),
+                             static_cast<float>(std::cos(glm::radians(light.coneAngleDeg - light.falloffDeg))))
+                 : glm::vec2(-2.0f, 1.0f);
+        fields.bindForTracing();
+        receivers_.bind();
+        raster_.surfaces().bind();
+        layers.bind();
+        extinction_.bindStorage(layout::kImageSpaceSurfaces);
+        for (gl::Program* program : {&directProgram_, &photonProgram_}) {
+            program->use();
+            glUniformMatrix4fv(program->uniform("view_projection"), 1, GL_FALSE,
+                               glm::value_ptr(frame.view.viewProjection));
+            glUniform3fv(program->uniform("light_position"), 1, glm::value_ptr(frame.view.eye));
+            glUniform3fv(program->uniform("light_axis"), 1, glm::value_ptr(frame.view.axis));
+            glUniform1i(program->uniform("light_kind"), spot ? 1 : light.kind == LightDesc::Kind::Point ? 0 : 2);
+            glUniform3fv(program->uniform("light_intensity"), 1, glm::value_ptr(glm::vec3(intensity)));
+            glUniform3fv(program->uniform("spot_axis"), 1, glm::value_ptr(glm::vec3(glm::normalize(light.direction))));
+            glUniform2fv(program->uniform("spot_cosines"), 1, glm::value_ptr(spotCosines));
+            glUniform2i(program->uniform("layer_size"), layers.width(), layers.height());
+            glUniform3fv(program->uniform("power_unit"), 1, glm::value_ptr(powerUnit_));
+            glUniform1ui(program->uniform("receiver_count"), receivers_.count());
+        }
+        directProgram_.use();
+        glUniform1ui(directProgram_.uniform("texel_count"), receiverTexels_);
+        constexpr std::size_t kRow = 1024;  // texels per row of the dispatch
+        directProgram_.dispatchCovering(kRow, (receiverTexels_ + kRow - 1) / kRow, 1, 8, 8, 1);
+        photonProgram_.use();
+        glUniform3fv(photonProgram_.uniform("frame_right"), 1, glm::value_ptr(frame.right));
+        glUniform3fv(photonProgram_.uniform("frame_up"), 1, glm::value_ptr(frame.up));
+        glUniform1f(photonProgram_.uniform("frame_half_extent"), static_cast<float>(frame.halfExtent));
+        glUniform2fv(photonProgram_.uniform("jitter"), 1, glm::value_ptr(jitter));
+        photonProgram_.dispatchCovering(static_cast<std::size_t>(layers.width()),
+                                        static_cast<std::size_t>(layers.height()), 1, 8, 8, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    ++frames_;
+    receivers_.filter(powerUnit_ / static_cast<float>(frames_));
+    gl::checkpoint("image-space caustics");
+}
+
+}  // namespace eikon::render

@@ -1,0 +1,54 @@
+// The image-space camera view (shaders/image_space_view.comp, [Hu10] §2):
+// the camera's surface layers drawn with the raster pipeline, then per
+// pixel Fresnel reflection and two-interface refraction found in those
+// layers, into the same linear HDR image as the eikonal ViewStage. Runs when
+// the camera, the surfaces or the receivers' maps change.
+#pragma once
+
+#include "bridge/layout/GpuLayouts.h"
+#include "bridge/scene/Scene.h"
+#include "render/gl/GlObjects.h"
+#include "render/stages/FieldTextures.h"
+#include "render/stages/ReceiverMaps.h"
+#include "render/stages/SurfaceLayers.h"
+
+#include <glm/vec4.hpp>
+
+#include <vector>
+
+namespace eikon::render {
+
+// Per sharp surface, the extinction κ (rgb, 1/m) inside it, as the image-space passes read it.
+gl::Buffer imageSpaceSurfaceExtinction(const Scene& scene);
+
+// Near and far planes of the raster passes' projections, metres.
+constexpr double kRasterNearPlane = 1e-3;
+constexpr double kRasterFarPlane = 1e3;
+
+class ImageSpaceView {
+public:
+    ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers, SurfaceRaster& raster, bool recordExit = false);
+
+    void run(const FieldTextures& fields);
+    void setCamera(const CameraDesc& camera) { camera_ = camera; }
+
+    const gl::Buffer& hdrImage() const { return hdr_; }
+    std::vector<float> downloadHdr() const;  // RGBA per pixel, row 0 at the top
+    // Per pixel: the direction the refracted (else reflected) branch left in; w = 1 environment, 2 receiver.
+    std::vector<glm::vec4> downloadExits() const;
+
+private:
+    const ReceiverMaps& receivers_;
+    SurfaceRaster& raster_;
+    gl::Buffer extinction_;
+    RenderDesc render_;
+    CameraDesc camera_;
+    SurfaceLayers layers_;
+    gl::Program program_;
+    gl::Buffer cameraBlock_;
+    gl::Buffer hdr_;
+    gl::Buffer exits_;
+    gl::Texture2D environment_;
+};
+
+}  // namespace eikon::render

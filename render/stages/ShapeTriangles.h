@@ -1,0 +1,26 @@
+// The scene's sharp spheres and boxes as triangles for the raster pipeline
+// (the image-space passes), in the layout of the sharp meshes' triangles
+// (bridge/grid/FieldSet.h: three corners, then three corner normals, each a
+// vec4), the first corner's w holding the shape's number among the scene's
+// sharp surfaces (SharpSurfaceBuffer.h). A sphere is an octahedron
+// subdivided kSphereSubdivisions times with its corners pushed out to
+// kSphereHullScale radii, so that its facets hold the sphere (the raster
+// pass then meets the sphere itself in every fragment,
+// shaders/surface_layers.frag); a box is its twelve triangles with face
+// normals.
+#pragma once
+
+#include "bridge/scene/Scene.h"
+
+#include <vector>
+
+namespace eikon::render {
+
+// 8·4⁵ = 8192 triangles, each within 3.2° of its centre on the sphere.
+constexpr int kSphereSubdivisions = 5;
+// 1/cos 3.2°, rounded up: every facet's plane lies outside the sphere.
+constexpr double kSphereHullScale = 1.0016;
+
+std::vector<float> shapeTriangles(const Scene& scene);
+
+}  // namespace eikon::render

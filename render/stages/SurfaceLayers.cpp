@@ -1,0 +1,90 @@
+#include "render/stages/SurfaceLayers.h"
+
+#include "bridge/grid/FieldSet.h"
+#include "bridge/layout/GpuLayouts.h"
+#include "render/gl/GlDebug.h"
+#include "render/gl/ShaderLibrary.h"
+#include "render/stages/ShapeTriangles.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <numeric>
+
+namespace eikon::render {
+
+Viewpoint cameraViewpoint(const CameraDesc& camera, const RenderDesc& render, double nearPlane, double farPlane) {
+    const double aspect = static_cast<double>(render.width) / static_cast<double>(render.height);
+    const glm::dmat4 projection = glm::perspective(glm::radians(camera.fovDeg), aspect, nearPlane, farPlane);
+    const glm::dmat4 view = glm::lookAt(camera.position, camera.target, camera.up);
+    Viewpoint viewpoint;
+    viewpoint.viewProjection = glm::mat4(projection * view);
+    viewpoint.eye = glm::vec3(camera.position);
+    viewpoint.axis = glm::vec3(glm::normalize(camera.target - camera.position));
+    return viewpoint;
+}
+
+SurfaceLayers::SurfaceLayers(int width, int height, const gl::GpuResource& resource)
+    : near_(width, height, resource), far_(width, height, resource) {}
+
+void SurfaceLayers::bind() const {
+    near_.bindColour(layout::kNearLayerTexture);
+    far_.bindColour(layout::kFarLayerTexture);
+}
+
+SurfaceRaster::SurfaceRaster(const Scene& scene)
+    : surfaces_(scene), program_(gl::compileRasterProgram("surface_layers.vert", "surface_layers.frag",
+                                        {{"EIKON_MAX_SHARP_OBJECTS", std::to_string(kMaxSharpObjects)}})) {
+    const std::vector<float> shapes = shapeTriangles(scene);
+    if (!shapes.empty())
+        shapes_ = gl::Buffer(shapes.size() * sizeof(float), shapes.data(), GL_DYNAMIC_STORAGE_BIT,
+                             {"objects", "the spheres' and boxes' triangles"});
+    shapeSurfaces_.resize(kMaxSharpObjects);
+    std::iota(shapeSurfaces_.begin(), shapeSurfaces_.end(), 0);
+    meshSurfaces_.assign(kMaxSharpObjects, 0);
+    int surface = 0, meshes = 0;
+    for (const ObjectDesc& object : scene.objects) {
+        if (!object.isSharp()) continue;
+        if (object.hasTriangleSurface()) meshSurfaces_[static_cast<std::size_t>(meshes++)] = surface;
+        ++surface;
+    }
+}
+
+void SurfaceRaster::drawTriangles(const gl::Buffer& triangles, const std::vector<int>& surfaceOfOrdinal) const {
+    if (!triangles.id()) return;
+    triangles.bindStorage(layout::kSurfaceTriangles);
+    glUniform1iv(program_.uniform("surface_of_ordinal"), kMaxSharpObjects, surfaceOfOrdinal.data());
+    const auto corners = static_cast<GLsizei>(triangles.bytes() / (kSurfaceTriangleFloats * sizeof(float)) * 3);
+    glDrawArrays(GL_TRIANGLES, 0, corners);
+}
+
+void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const FieldTextures& fields) {
+    GLint previousFramebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+    program_.use();
+    vertexArray_.bind();
+    surfaces_.bind();
+    glUniformMatrix4fv(program_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
+    glUniform3fv(program_.uniform("view_eye"), 1, glm::value_ptr(view.eye));
+    glUniform3fv(program_.uniform("view_axis"), 1, glm::value_ptr(view.axis));
+    glUniform1i(program_.uniform("view_orthographic"), view.orthographic ? 1 : 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);  // orientation is not relied on: the peel finds front and back
+    glDisable(GL_BLEND);
+    for (int peel = 0; peel < 2; ++peel) {
+        gl::RasterTarget& target = peel == 0 ? layers.near_ : layers.far_;
+        target.beginDrawing(glm::vec4(0.0f));
+        glUniform1i(program_.uniform("peel"), peel);
+        if (peel == 1) layers.near_.bindColour(layout::kNearLayerTexture);
+        drawTriangles(shapes_, shapeSurfaces_);
+        drawTriangles(fields.surfaceTriangles(), meshSurfaces_);
+        glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    }
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+    gl::checkpoint("surface layers");
+}
+
+}  // namespace eikon::render

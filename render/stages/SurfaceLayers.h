@@ -1,0 +1,65 @@
+// What a viewpoint sees of the scene's sharp surfaces, drawn with the raster
+// pipeline ([Hu10] §2.1; [Wyman05]'s two-sided refraction): the nearest
+// surfaces, and by depth peeling the next surfaces behind them, each texel
+// holding normal, distance and surface number (shaders/common/
+// surface_layers.glsl). Spheres and boxes are drawn from their tessellation
+// (ShapeTriangles.h), meshes and the water surface from the triangles the
+// field buffers carry, frame by frame. The image-space camera view and
+// caustics read these layers to find where a ray leaves a refractor.
+#pragma once
+
+#include "bridge/scene/Scene.h"
+#include "render/gl/GlObjects.h"
+#include "render/gl/RasterTarget.h"
+#include "render/stages/FieldTextures.h"
+#include "render/stages/SharpSurfaceBuffer.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <vector>
+
+namespace eikon::render {
+
+struct Viewpoint {
+    glm::mat4 viewProjection{1.0f};
+    glm::vec3 eye{0.0f};   // perspective: the eye; orthographic: a point of the near plane
+    glm::vec3 axis{0.0f};  // orthographic: the direction of view
+    bool orthographic = false;
+};
+
+// The camera's viewpoint: the pinhole of ViewStage's cameraBlock, its
+// texel (x, H−1−y) the image's pixel (x, y).
+Viewpoint cameraViewpoint(const CameraDesc& camera, const RenderDesc& render, double nearPlane, double farPlane);
+
+class SurfaceLayers {
+public:
+    SurfaceLayers(int width, int height, const gl::GpuResource& resource);
+    int width() const { return near_.width(); }
+    int height() const { return near_.height(); }
+    void bind() const;  // near layer → kNearLayerTexture, far layer → kFarLayerTexture
+
+private:
+    friend class SurfaceRaster;
+    gl::RasterTarget near_, far_;
+};
+
+class SurfaceRaster {
+public:
+    explicit SurfaceRaster(const Scene& scene);
+    // Draws both layers of `layers` as `view` sees the surfaces now.
+    void draw(const Viewpoint& view, SurfaceLayers& layers, const FieldTextures& fields);
+    // The scene's sharp surfaces (their shapes and optics), which the passes reading the layers bind too.
+    const SharpSurfaceBuffer& surfaces() const { return surfaces_; }
+
+private:
+    void drawTriangles(const gl::Buffer& triangles, const std::vector<int>& surfaceOfOrdinal) const;
+
+    SharpSurfaceBuffer surfaces_;
+    gl::Program program_;
+    gl::EmptyVertexArray vertexArray_;
+    gl::Buffer shapes_;                     // the spheres' and boxes' triangles
+    std::vector<int> shapeSurfaces_;        // identity: a shape's w is its surface number
+    std::vector<int> meshSurfaces_;         // the k-th mesh's surface number
+};
+
+}  // namespace eikon::render

@@ -1,0 +1,152 @@
+// Two-interface refraction in image space ([Hu10] §2.1, after [Wyman05]): a
+// ray that entered a sharp surface is followed to where it leaves by
+// searching the viewpoint's surface layers (common/surface_layers.glsl)
+// instead of the geometry. A point is inside the surface it entered while
+// its texel shows that surface nearest and the point lies between the near
+// layer's distance and the far layer's, both read bilinearly between texel
+// centres (common/surface_layers.glsl). The ray marches in kLayerMarchSteps
+// steps across the surface's extent until a point is outside, bisects that
+// step kLayerBisections times ([Hu10] Fig. 7 bisects in the depth buffer),
+// and then meets the layer's tangent plane there twice (the iterative
+// lookup of [Hu10] §2.1.3), taking that layer's normal. It refracts out by
+// Snell's law with the Fresnel transmittance; a totally reflected ray is
+// followed inside again, up to kInternalBounces times. Inside, a receiver it
+// meets ends it (the pool floor under water), and the object's extinction
+// weighs it by Beer–Lambert along the chord. The partial reflection inside
+// is not followed (its power is lost), and a ray meets no second refractor
+// after it leaves. GLSL only; needs grid_sampling.glsl (none of its
+// textures), fresnel.glsl, receiver.glsl, receiver_blocks.glsl.
+#include "common/surface_layers.glsl"
+#include "common/sharp_surface_list.glsl"
+
+layout(std430, binding = kSurfaceNodes) readonly buffer SurfaceNodes { vec4 surface_nodes[]; };
+layout(std430, binding = kImageSpaceSurfaces) readonly buffer ImageSpaceSurfaces { vec4 surface_extinction[]; };
+layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
+layout(binding = kFarLayerTexture) uniform sampler2D far_layer;
+
+const int kLayerMarchSteps = 32;
+const int kLayerBisections = 12;
+const int kTangentPlaneSteps = 2;
+const int kInternalBounces = 2;
+
+float surface_index(int s) { return reference_index() + sharp_surfaces[s].optics.x; }
+bool surface_reflects(int s) { return sharp_surfaces[s].optics.y > 0.5f; }
+
+// The longest chord of surface s: a sphere's diameter, a box's or a mesh's
+// root box's diagonal.
+float surface_reach(int s) {
+    SharpSurface shape = sharp_surfaces[s];
+    int kind = int(shape.shape_a.w + 0.5f);
+    if (kind == kSharpSphere) return 2.0f * shape.shape_b.x;
+    if (kind == kSharpBox) return length(shape.shape_b.xyz - shape.shape_a.xyz);
+    int root = int(shape.shape_b.w + 0.5f);
+    return length(surface_nodes[2 * root + 1].xyz - surface_nodes[2 * root].xyz);
+}
+
+bool inside_layers(Viewpoint view, vec3 x, int s) {
+    vec2 coordinate;
+    if (!viewpoint_coordinate(view, x, coordinate)) return false;
+    LayerSample near_ = layer_sample_between(near_layer, coordinate, view.size);
+    if (near_.surface != s) return false;
+    LayerSample far_ = layer_sample_between(far_layer, coordinate, view.size);
+    float d = viewpoint_distance(view, x);
+    return d >= near_.distance && (far_.surface < 0 || d <= far_.distance);
+}
+
+// The point of the layer nearest in distance to x, on x's line of sight, and its normal.
+bool nearest_layer_point(Viewpoint view, vec3 x, out vec3 point, out vec3 normal) {
+    vec2 coordinate;
+    if (!viewpoint_coordinate(view, x, coordinate)) return false;
+    LayerSample near_ = layer_sample_between(near_layer, coordinate, view.size);
+    LayerSample far_ = layer_sample_between(far_layer, coordinate, view.size);
+    if (near_.surface < 0) return false;
+    float d = viewpoint_distance(view, x);
+    bool use_far = far_.surface >= 0 && abs(d - far_.distance) < abs(d - near_.distance);
+    LayerSample chosen = use_far ? far_ : near_;
+    point = view.orthographic ? x + (chosen.distance - d) * view.axis
+                              : view.eye + normalize(x - view.eye) * chosen.distance;
+    normal = chosen.normal;
+    return true;
+}
+
+struct LayerExit {
+    bool found;    // false: the ray is still inside after the surface's extent (an open surface)
+    float t;       // along the ray
+    vec3 normal;   // outward: along the ray
+};
+
+LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s) {
+    float reach = surface_reach(s);
+    float h = reach / float(kLayerMarchSteps);
+    float inside_t = 0.0f, outside_t = -1.0f;
+    for (int i = 1; i <= kLayerMarchSteps; ++i) {
+        float t = float(i) * h;
+        if (!inside_layers(view, x + t * d, s)) {
+            outside_t = t;
+            break;
+        }
+        inside_t = t;
+    }
+    if (outside_t < 0.0f) return LayerExit(false, reach, vec3(0.0f));
+    for (int i = 0; i < kLayerBisections; ++i) {
+        float middle = 0.5f * (inside_t + outside_t);
+        if (inside_layers(view, x + middle * d, s)) inside_t = middle;
+        else outside_t = middle;
+    }
+    float t = 0.5f * (inside_t + outside_t);
+    vec3 normal = vec3(0.0f);
+    vec3 point;
+    vec3 layer_normal;
+    for (int i = 0; i < kTangentPlaneSteps; ++i) {
+        if (!nearest_layer_point(view, x + t * d, point, layer_normal)) break;
+        normal = layer_normal;
+        float approach = dot(d, layer_normal);
+        if (abs(approach) < 1e-6f) break;
+        float on_plane = dot(point - x, layer_normal) / approach;
+        if (!(on_plane > 0.0f) || abs(on_plane - t) > 2.0f * h) break;  // a plane far off: keep the bisection's point
+        t = on_plane;
+    }
+    if (normal == vec3(0.0f)) normal = -d;  // no layer found: leave undeflected below
+    return LayerExit(true, t, dot(normal, d) < 0.0f ? -normal : normal);
+}
+
+struct RefractorPath {
+    vec3 x;           // where the ray left the surface, or where it ends inside
+    vec3 d;           // the direction it leaves in
+    vec3 throughput;  // Fresnel transmittance at the exit × Beer–Lambert inside
+    ReceiverHit hit;  // a receiver met inside (hit.receiver ≥ 0): the ray ends there
+    bool left;        // false: no way out was found (or the bounces ran out); the ray carries nothing on
+};
+
+// Follows a ray that entered surface s at x going d (already refracted into it).
+RefractorPath follow_through_refractor(Viewpoint view, vec3 x, vec3 d, int s) {
+    float n_inside = surface_index(s), n_outside = reference_index();
+    vec3 kappa = surface_extinction[s].rgb;
+    RefractorPath path = RefractorPath(x, d, vec3(1.0f), ReceiverHit(-1, 2.0f, false, vec2(0.0f)), false);
+    for (int bounce = 0; bounce <= kInternalBounces; ++bounce) {
+        LayerExit exit_ = find_layer_exit(view, x, d, s);
+        vec3 end = x + exit_.t * d;
+        ReceiverHit hit = first_receiver_crossing(x, end);
+        if (hit.receiver >= 0) {
+            path.x = mix(x, end, hit.fraction);
+            path.throughput *= exp(-kappa * hit.fraction * exit_.t);
+            path.hit = hit;
+            return path;
+        }
+        path.throughput *= exp(-kappa * exit_.t);
+        if (!exit_.found) return path;
+        float cos_i = dot(d, exit_.normal);
+        vec3 out_d = refract(d, -exit_.normal, n_inside / n_outside);
+        if (out_d != vec3(0.0f)) {
+            float reflectance = surface_reflects(s) ? fresnel_reflectance(cos_i, n_inside, n_outside) : 0.0f;
+            path.x = end;
+            path.d = normalize(out_d);
+            path.throughput *= 1.0f - reflectance;
+            path.left = true;
+            return path;
+        }
+        x = end;  // totally reflected: on inside
+        d = reflect(d, -exit_.normal);
+    }
+    return path;
+}

@@ -1,0 +1,97 @@
+// The image-space camera view ([Hu10] §2; render/stages/ImageSpaceView.h):
+// per pixel, the camera's surface layers give the first surface the ray
+// meets, exactly where the raster pipeline drew it. There the ray splits by
+// Fresnel into a reflection, which flies straight to a receiver or the
+// environment, and a refraction, followed through the object to where it
+// leaves (common/refractor_paths.glsl) and then straight on. A receiver
+// shows albedo/π × the irradiance of the image-space caustic maps; the
+// medium between surfaces is uniform (bridge/scene/ImageSpaceScope.h).
+//
+// Program options: EIKON_ENVIRONMENT (layout::EnvironmentKind),
+// EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "common/grid_sampling.glsl"
+#include "common/fresnel.glsl"
+#include "common/receiver.glsl"
+#include "common/receiver_blocks.glsl"
+#include "common/refractor_paths.glsl"
+#include "common/camera_block.glsl"
+#include "common/environment.glsl"
+
+#ifndef EIKON_RECORD_EXIT
+#define EIKON_RECORD_EXIT 0
+#endif
+
+layout(std430, binding = kHdrImage) writeonly buffer HdrImage { vec4 hdr_radiance[]; };
+#if EIKON_RECORD_EXIT
+layout(std430, binding = kViewExit) writeonly buffer ViewExit { vec4 view_exit[]; };  // xyz direction; w: 1 escaped, 2 receiver
+#endif
+
+uniform mat4 view_projection;  // the camera's, as its layers were drawn
+
+const float kFarAway = 1e4f;  // metres; farther than any scene
+
+vec3 receiver_radiance(ReceiverHit hit) {
+    if (!hit.lit_side) return vec3(0.0f);
+    return receivers[hit.receiver].albedo.rgb / 3.14159265358979f * receiver_irradiance_at(hit.receiver, hit.map_uv);
+}
+
+// What a ray from x along d sees in the uniform medium: the first receiver, or the environment.
+vec3 straight_radiance(vec3 x, vec3 d, out float kind) {
+    ReceiverHit hit = first_receiver_crossing(x, x + kFarAway * d);
+    kind = hit.receiver >= 0 ? 2.0f : 1.0f;
+    return hit.receiver >= 0 ? receiver_radiance(hit) : environment_radiance(x, d);
+}
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, camera.image.xy))) return;
+    Viewpoint view;
+    view.view_projection = view_projection;
+    view.eye = camera.position.xyz;
+    view.axis = camera.forward.xyz;
+    view.orthographic = false;
+    view.size = ivec2(camera.image.xy);
+    vec3 d = camera_ray_direction(pixel);
+    LayerSample first = layer_sample(near_layer, ivec2(pixel.x, camera.image.y - 1u - pixel.y));
+    float kind;
+    vec3 radiance;
+    vec3 exit_direction = d;
+    float exit_kind;
+    if (first.surface < 0) {
+        radiance = straight_radiance(view.eye, d, exit_kind);
+    } else {
+        vec3 x = view.eye + first.distance * d;
+        vec3 normal = dot(first.normal, d) > 0.0f ? -first.normal : first.normal;
+        float n_outside = reference_index(), n_inside = surface_index(first.surface);
+        float cos_i = -dot(d, normal);
+        vec3 refracted = refract(d, normal, n_outside / n_inside);
+        float reflectance = refracted == vec3(0.0f) ? 1.0f
+                            : surface_reflects(first.surface) ? fresnel_reflectance(cos_i, n_outside, n_inside)
+                                                              : 0.0f;
+        vec3 reflected = reflect(d, normal);
+        radiance = reflectance * straight_radiance(x + 1e-5f * normal, reflected, kind);
+        exit_direction = reflected;
+        exit_kind = kind;
+        if (reflectance < 1.0f) {
+            RefractorPath path = follow_through_refractor(view, x, normalize(refracted), first.surface);
+            vec3 through = vec3(0.0f);
+            if (path.hit.receiver >= 0) {
+                through = receiver_radiance(path.hit);
+                kind = 2.0f;
+            } else if (path.left) {
+                through = straight_radiance(path.x, path.d, kind);
+            } else {
+                kind = 0.0f;
+            }
+            radiance += (1.0f - reflectance) * path.throughput * through;
+            exit_direction = path.d;  // the refracted branch, for tests
+            exit_kind = kind;
+        }
+    }
+    hdr_radiance[pixel.y * camera.image.x + pixel.x] = vec4(radiance, 1.0f);
+#if EIKON_RECORD_EXIT
+    view_exit[pixel.y * camera.image.x + pixel.x] = vec4(exit_direction, exit_kind);
+#endif
+}

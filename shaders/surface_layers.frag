@@ -1,0 +1,47 @@
+// One layer of depth peeling (common/surface_layers.glsl): peel 0 keeps the
+// nearest surface of every texel; peel 1 the nearest one farther than the
+// first layer's by more than a rounding gap (the depth test keeps the
+// nearest of what passes). A sphere is exact, as everywhere in eikon: its
+// tessellation is drawn a little larger than the sphere (ShapeTriangles.h),
+// and each fragment meets the sphere itself along its texel's ray —
+// entering on peel 0, leaving on peel 1 — with the sphere's own normal, or
+// is discarded where that ray misses it.
+#include "common/surface_layers.glsl"
+#include "common/sharp_surface_list.glsl"
+#include "common/sharp_surfaces.glsl"
+
+in vec3 world_position;
+in vec3 corner_normal;
+flat in int surface;
+
+uniform vec3 view_eye;
+uniform vec3 view_axis;
+uniform int view_orthographic;
+uniform int peel;
+layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
+
+layout(location = 0) out vec4 layer;
+
+void main() {
+    Viewpoint view;
+    view.eye = view_eye;
+    view.axis = view_axis;
+    view.orthographic = view_orthographic != 0;
+    vec3 x = world_position;
+    vec3 normal = normalize(corner_normal);
+    SharpSurface shape = sharp_surfaces[surface];
+    if (surface_kind(shape.shape_a) == kSharpSphere) {
+        vec3 origin = view.orthographic ? x - dot(x - view.eye, view.axis) * view.axis : view.eye;
+        vec3 d = view.orthographic ? view.axis : normalize(x - view.eye);
+        float t = surface_crossing(shape.shape_a, shape.shape_b, origin, d, peel == 1, -1e30f);
+        if (t == EIKON_NO_CROSSING || (peel == 1 && t == 0.0f)) discard;
+        x = origin + t * d;
+        normal = surface_normal(shape.shape_a, shape.shape_b, x);
+    }
+    float distance = viewpoint_distance(view, x);
+    if (peel == 1) {
+        vec4 nearer = texelFetch(near_layer, ivec2(gl_FragCoord.xy), 0);
+        if (distance <= nearer.z * (1.0f + 1e-5f) + 1e-6f) discard;
+    }
+    layer = vec4(octahedral_encode(normal), distance, float(surface + 1));
+}
