@@ -10,7 +10,8 @@
 // not sampled: the direct pass (EIKON_PASS 0) gives each receiver texel its
 // exact irradiance I·cos θ/r² (E·cos θ for directional light), unless the
 // light's layers show a refractor in front of it (then it arrives as
-// photons) or another receiver shadows it.
+// photons) or another receiver shadows it, averaged over 4×4 points of the
+// texel (a shadow's edge crosses texels).
 //
 // Program options: EIKON_PASS (0: direct, one invocation per receiver texel;
 // 1: photons, one per light texel).
@@ -79,6 +80,29 @@ vec3 intensity_toward(vec3 direction) {
 }
 
 #if EIKON_PASS == 0
+const int kDirectSamples = 4;  // per texel edge: the shadow's edge is resolved to a sixteenth of a texel
+
+// The irradiance at x on receiver r straight from the light, 0 where a
+// refractor (its light arrives as photons) or another receiver is in the way.
+vec3 direct_irradiance(int r, vec3 x) {
+    vec3 normal = receivers[r].normal.xyz;
+    vec3 toward_light = light_kind == 2 ? -light_axis : normalize(light_position - x);
+    float cos_theta = dot(toward_light, normal);
+    if (cos_theta <= 0.0f) return vec3(0.0f);  // the light is behind this receiver
+    vec3 from = light_kind == 2 ? x + kFarAway * toward_light : light_position;
+    float distance = length(from - x);
+    ReceiverHit blocker = first_receiver_crossing(from, x + 1e-5f * normal);
+    if (blocker.receiver >= 0 && blocker.fraction * distance < distance * (1.0f - 1e-5f)) return vec3(0.0f);
+    ivec2 texel;
+    Viewpoint view = light_view();
+    if (viewpoint_texel(view, x, texel)) {
+        LayerSample first = layer_sample(near_layer, texel);
+        if (first.surface >= 0 && first.distance < viewpoint_distance(view, x)) return vec3(0.0f);
+    }
+    return light_kind == 2 ? light_intensity * cos_theta
+                           : intensity_toward(-toward_light) * cos_theta / (distance * distance);
+}
+
 void main() {
     uint index = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x;
     if (index >= texel_count) return;
@@ -86,28 +110,17 @@ void main() {
     while (r + 1 < int(receiver_count) && index >= receivers[r + 1].map.x) ++r;
     uint resolution = receivers[r].map.y;
     uint local = index - receivers[r].map.x;
-    vec2 uv = (vec2(local % resolution, local / resolution) + 0.5f) / float(resolution);
+    ivec2 texel = ivec2(local % resolution, local / resolution);
     float size = receivers[r].origin.w;
-    vec3 x = receivers[r].origin.xyz + (uv.x - 0.5f) * size * receivers[r].axis_u.xyz +
-             (uv.y - 0.5f) * size * receivers[r].axis_v.xyz;
-    vec3 normal = receivers[r].normal.xyz;
-    vec3 toward_light = light_kind == 2 ? -light_axis : normalize(light_position - x);
-    float cos_theta = dot(toward_light, normal);
-    if (cos_theta <= 0.0f) return;  // the light is behind this receiver
-    vec3 from = light_kind == 2 ? x + kFarAway * toward_light : light_position;
-    float distance = length(from - x);
-    vec3 nudged = x + 1e-5f * normal;
-    ReceiverHit blocker = first_receiver_crossing(from, nudged);
-    if (blocker.receiver >= 0 && blocker.fraction * distance < distance * (1.0f - 1e-5f)) return;
-    ivec2 texel;
-    Viewpoint view = light_view();
-    if (viewpoint_texel(view, x, texel)) {
-        LayerSample first = layer_sample(near_layer, texel);
-        if (first.surface >= 0 && first.distance < viewpoint_distance(view, x)) return;  // a refractor is in front
-    }
-    vec3 irradiance = light_kind == 2 ? light_intensity * cos_theta
-                                      : intensity_toward(-toward_light) * cos_theta / (distance * distance);
-    deposit_texel(r, ivec2(local % resolution, local / resolution), irradiance * receivers[r].normal.w);
+    vec3 sum = vec3(0.0f);
+    for (int j = 0; j < kDirectSamples; ++j)
+        for (int i = 0; i < kDirectSamples; ++i) {
+            vec2 uv = (vec2(texel) + (vec2(i, j) + 0.5f) / float(kDirectSamples)) / float(resolution);
+            vec3 x = receivers[r].origin.xyz + (uv.x - 0.5f) * size * receivers[r].axis_u.xyz +
+                     (uv.y - 0.5f) * size * receivers[r].axis_v.xyz;
+            sum += direct_irradiance(r, x);
+        }
+    deposit_texel(r, texel, sum / float(kDirectSamples * kDirectSamples) * receivers[r].normal.w);
 }
 #else
 void main() {

@@ -3,12 +3,13 @@
 // searching the viewpoint's surface layers (common/surface_layers.glsl)
 // instead of the geometry. A point is inside the surface it entered while
 // its texel shows that surface nearest and the point lies between the near
-// layer's distance and the far layer's, both read bilinearly between texel
-// centres (common/surface_layers.glsl). The ray marches in kLayerMarchSteps
+// layer's distance and the far layer's. The ray marches in kLayerMarchSteps
 // steps across the surface's extent until a point is outside, bisects that
 // step kLayerBisections times ([Hu10] Fig. 7 bisects in the depth buffer),
 // and then meets the layer's tangent plane there twice (the iterative
-// lookup of [Hu10] §2.1.3), taking that layer's normal. It refracts out by
+// lookup of [Hu10] §2.1.3), taking that layer's normal; the planes are read
+// bilinearly between texel centres (common/surface_layers.glsl), which puts
+// the exit within a pixel where the nearest texel's plane missed by several. It refracts out by
 // Snell's law with the Fresnel transmittance; a totally reflected ray is
 // followed inside again, up to kInternalBounces times. Inside, a receiver it
 // meets ends it (the pool floor under water), and the object's extinction
@@ -24,8 +25,8 @@ layout(std430, binding = kImageSpaceSurfaces) readonly buffer ImageSpaceSurfaces
 layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
 layout(binding = kFarLayerTexture) uniform sampler2D far_layer;
 
-const int kLayerMarchSteps = 32;
-const int kLayerBisections = 12;
+const int kLayerMarchSteps = 16;
+const int kLayerBisections = 10;
 const int kTangentPlaneSteps = 2;
 const int kInternalBounces = 2;
 
@@ -44,11 +45,11 @@ float surface_reach(int s) {
 }
 
 bool inside_layers(Viewpoint view, vec3 x, int s) {
-    vec2 coordinate;
-    if (!viewpoint_coordinate(view, x, coordinate)) return false;
-    LayerSample near_ = layer_sample_between(near_layer, coordinate, view.size);
+    ivec2 texel;
+    if (!viewpoint_texel(view, x, texel)) return false;
+    LayerSample near_ = layer_sample(near_layer, texel);
     if (near_.surface != s) return false;
-    LayerSample far_ = layer_sample_between(far_layer, coordinate, view.size);
+    LayerSample far_ = layer_sample(far_layer, texel);
     float d = viewpoint_distance(view, x);
     return d >= near_.distance && (far_.surface < 0 || d <= far_.distance);
 }
