@@ -1,9 +1,9 @@
-// Image-space caustic maps ([Wyman06] §3; [Hu10]'s caustic maps): a light's
+// Image-space caustic maps ([Wyman06] §3.1–3.2; [Hu07] §3's caustic maps): a light's
 // surface layers (common/surface_layers.glsl), drawn from the light over
 // the scene's refractors, turn each of their texels into a photon that
 // refracts through two interfaces (common/refractor_paths.glsl) and lands
 // on a receiver. A photon carries the light's power over the texel's solid
-// angle ([Wyman06] eq. 1: E_B = E_L·ω_B/4π; a directional light's over the
+// angle ([Wyman06] §3.2.1: E_B = E_L·ω_B/4π; a directional light's over the
 // texel's area); it is splatted bilinearly into the four nearest texels of
 // the receiver's 64-bit fixed-point tallies, which ReceiverMaps filters into
 // W/m² as it does the eikonal photons'. The light no refractor intercepts is

@@ -1,4 +1,4 @@
-// The image-space camera view ([Hu10] §2; render/stages/ImageSpaceView.h):
+// The image-space camera view ([Hu07] §2; render/stages/ImageSpaceView.h):
 // per pixel, the camera's surface layers give the first surface the ray
 // meets, exactly where the raster pipeline drew it. There the ray splits by
 // Fresnel into a reflection, which flies straight to a receiver or the

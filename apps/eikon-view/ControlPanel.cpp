@@ -55,7 +55,11 @@ void drawSolver(SimDesc& sim) {
 
 void drawFigures(const render::FrameResult& last, const ViewerStatus& status) {
     ImGui::Text("%.1f frames/s, %lld photons", status.framesPerSecond, status.photonsInUse);
-    if (last.pixelStride > 1)
+    if (status.imageSpacePreview)
+        ImGui::Text("preview: image space (raster refraction, caustic maps)");
+    else if (last.imageSpace)
+        ImGui::Text("image space (render.method)");
+    else if (last.pixelStride > 1)
         ImGui::Text("preview: a ray per %d×%d pixels", last.pixelStride, last.pixelStride);
     else
         ImGui::Text("full image");

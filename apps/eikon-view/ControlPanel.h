@@ -27,6 +27,7 @@ struct ViewerStatus {
     double simulatedTime = 0.0;
     double framesPerSecond = 0.0;
     long long photonsInUse = 0;
+    bool imageSpacePreview = false;  // on screen: the image-space preview of an eikonal scene
 };
 
 class ControlPanel {

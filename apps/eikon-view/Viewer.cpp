@@ -78,14 +78,23 @@ public:
             ImGui::NewFrame();
             const bool cameraMoved = handleInput();
             const double now = std::chrono::duration<double>(frameStart - viewerStart).count();
-            session_->renderer().setPixelStride(preview_.strideFor(cameraMoved, now));
+            const int stride = preview_.strideFor(cameraMoved, now);
             const bool advance = session_->simulated() && (!paused_ || stepOnce_);
             stepOnce_ = false;
-            last_ = session_->renderFrame(advance, pipelined_);
-            const double viewMs = stageMilliseconds(last_, "view");
-            preview_.measured(last_.pixelStride, viewMs);
-            if (viewMs > 0.0 && last_.pixelStride > 1 && scripted()) {
+            // While the camera moves, a scene of surfaces shows its image-space
+            // preview; others (and at rest, every scene) the eikonal frame.
+            const bool imageSpacePreview = stride > 1 && session_->hasImageSpacePreview() && !advance;
+            if (imageSpacePreview) {
+                last_ = session_->renderImageSpacePreview();
+            } else {
+                session_->renderer().setPixelStride(stride);
+                last_ = session_->renderFrame(advance, pipelined_);
+                preview_.measured(last_.pixelStride, stageMilliseconds(last_, "view"));
+            }
+            const double viewMs = stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : "view");
+            if (viewMs > 0.0 && (last_.pixelStride > 1 || imageSpacePreview) && scripted()) {
                 ++previewFrames_;
+                imageSpacePreviews_ += imageSpacePreview ? 1 : 0;
                 largestStride_ = std::max(largestStride_, last_.pixelStride);
             }
             adaptPhotons();
@@ -96,6 +105,7 @@ public:
             status_.simulated = session_->simulated();
             status_.simulatedTime = session_->simulatedTime();
             status_.photonsInUse = photons_;
+            status_.imageSpacePreview = imageSpacePreview;
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);
             act(requests);
             ImGui::Render();
@@ -103,7 +113,7 @@ public:
             // A scripted run ends on its full image: after its frames, and
             // back at the scene's camera with orbit-return, it waits for the
             // preview to refine.
-            const bool lastFrame = options_.frames > 0 && rendered_ + 1 >= options_.frames &&
+            const bool lastFrame = options_.frames > 0 && rendered_ + 1 >= options_.frames && !imageSpacePreview &&
                                    last_.pixelStride == 1 && (options_.animate != "orbit-return" || returned_);
             if (lastFrame && !options_.windowShotPath.empty()) saveWindow(options_.windowShotPath, width, height);
             window_->swapBuffers();
@@ -119,9 +129,10 @@ public:
                 if (!options_.screenshotPath.empty()) saveImage(options_.screenshotPath);
                 if (!options_.animate.empty())
                     std::printf("eikon-view: %s: %d frames after the first in %.2f s, %.2f frames/s, last photon "
-                                "count %lld, %d previews (pixel stride up to %d)\n",
+                                "count %lld, %d previews (%d in image space, pixel stride up to %d)\n",
                                 options_.animate.c_str(), rendered_ - 1, scriptedSeconds,
-                                (rendered_ - 1) / scriptedSeconds, photons_, previewFrames_, largestStride_);
+                                (rendered_ - 1) / scriptedSeconds, photons_, previewFrames_, imageSpacePreviews_,
+                                largestStride_);
                 break;
             }
         }
@@ -299,7 +310,7 @@ private:
     bool paused_ = false, stepOnce_ = false, pipelined_ = false, draggingLight_ = false;
     int screenshots_ = 0;
     int rendered_ = 0;  // frames drawn, counted up to options_.frames
-    int previewFrames_ = 0, largestStride_ = 1;  // previews among the scripted frames
+    int previewFrames_ = 0, imageSpacePreviews_ = 0, largestStride_ = 1;  // previews among the scripted frames
     bool returned_ = false;  // orbit-return: back at the scene's camera
     std::filesystem::file_time_type sceneTime_;
     Clock::time_point lastReloadCheck_ = Clock::now();

@@ -1,11 +1,29 @@
 #include "apps/eikon-view/ViewerSession.h"
 
+#include "bridge/scene/ImageSpaceScope.h"
+
 namespace eikon::view {
 
 ViewerSession::ViewerSession(const Scene& scene)
     : scene_(scene),
       fields_(std::make_unique<sim::SceneFields>(scene)),
-      source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{}, false, false)) {}
+      source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{}, false, false)) {
+    if (scene.render.method == RenderDesc::Method::Eikonal && imageSpaceOmissions(scene).empty()) {
+        Scene imageSpace = scene;
+        imageSpace.render.method = RenderDesc::Method::ImageSpace;
+        imageSpace_ = std::make_unique<render::FrameRenderer>(imageSpace, fields_->fields());
+    }
+}
+
+render::FrameResult ViewerSession::renderImageSpacePreview() {
+    const render::FrameRenderer& eikonal = renderer();
+    imageSpace_->setCamera(eikonal.scene().camera);
+    for (std::size_t i = 0; i < eikonal.scene().lights.size(); ++i)
+        if (eikonal.scene().lights[i] != imageSpace_->scene().lights[i])
+            imageSpace_->setLight(i, eikonal.scene().lights[i]);
+    imageSpace_->setExposure(eikonal.scene().render.exposureEv);
+    return imageSpace_->render(fields_->fields());
+}
 
 render::FrameResult ViewerSession::renderFrame(bool advance, bool pipelined) {
     if (!advance) return source_->render();

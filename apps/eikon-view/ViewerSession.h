@@ -2,7 +2,10 @@
 // the same frame source as `eikon run` (apps/common/FrameSource.h). The
 // viewer changes the camera, the lights, the photon count and the exposure in
 // place; anything else (a new scene file, panel edits of tracer, material or
-// solver settings) builds a new session.
+// solver settings) builds a new session. A scene of surfaces alone that
+// renders eikonally also gets an image-space renderer of itself
+// (render.method "image_space"), which the viewer draws while the camera
+// moves: a preview at raster speed, refined to the eikonal frame at rest.
 #pragma once
 
 #include "apps/common/FrameSource.h"
@@ -26,11 +29,16 @@ public:
     // Renders the current frame; with `advance`, a simulated scene moves on
     // one frame (simulated during the render when `pipelined`).
     render::FrameResult renderFrame(bool advance, bool pipelined);
+    // Whether the scene has an image-space preview (all surfaces, drawn eikonally).
+    bool hasImageSpacePreview() const { return imageSpace_ != nullptr; }
+    // The image-space frame of the current fields, seen by the eikonal renderer's camera under its lights.
+    render::FrameResult renderImageSpacePreview();
 
 private:
     Scene scene_;
     std::unique_ptr<sim::SceneFields> fields_;
     std::unique_ptr<app::FrameSource> source_;
+    std::unique_ptr<render::FrameRenderer> imageSpace_;
 };
 
 }  // namespace eikon::view

@@ -7,6 +7,7 @@
 #include "apps/eikon/PowerWarning.h"
 #include "apps/eikon/Ranks.h"
 #include "bridge/grid/FieldViews.h"
+#include "bridge/scene/ImageSpaceScope.h"
 
 #include <nlohmann/json.hpp>
 
@@ -197,6 +198,9 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
     });
     if (diffuses && result.lattice) report["multiple_scattering"] = latticeJson(*result.lattice);
     if (result.errorEstimate) report["error_estimate"] = errorEstimateJson(*result.errorEstimate);
+    if (result.imageSpace)
+        report["image_space"] = {{"frames_averaged", result.imageSpace->framesAveraged},
+                                 {"dropped", result.imageSpace->dropped}};
     if (distribution != Distribution::None)
         report["distribution"] = {{"mode", distributionName(distribution)}, {"ranks", Ranks::world().size()}};
     if (simulated) {
@@ -213,6 +217,10 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
 
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, const OpenOutput& openOutput,
                ProgressBar& progress, const LoopOptions& options) {
+    // Said once a run, by the first rank; each frame's report lists it too.
+    if (Ranks::world().first() && scene.render.method == RenderDesc::Method::ImageSpace &&
+        !imageSpaceOmissions(scene).empty())
+        std::cerr << "eikon: warning: " << describeImageSpaceOmissions(scene) << "\n";
     if (options.distribution == Distribution::Frames)
         renderFrameShare(scene, fields, frames, openOutput, progress, options.outputRoot);
     else

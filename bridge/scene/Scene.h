@@ -118,6 +118,8 @@ struct LightDesc {
     double coneAngleDeg = 30.0;      // spot: half-angle of the cone, in (0, 180)
     double falloffDeg = 5.0;         // spot: width of the soft edge inside the cone, in [0, coneAngleDeg]
     Rgb irradiance{0.0};             // directional: W/m² per channel on a plane ⟂ direction, ≥ 0
+
+    friend bool operator==(const LightDesc&, const LightDesc&) = default;
 };
 
 // A diffuse (Lambertian) plane that records photon irradiance on a square
@@ -176,7 +178,7 @@ struct RenderDesc {
     double warnError = 0.05;
     // How the image is formed: eikonal (curved rays through the fields, the
     // default) or image space (the raster pipeline's two-interface
-    // refraction and light-space caustic maps, [Wyman06] and [Hu10];
+    // refraction and light-space caustic maps, [Wyman06] and [Hu07];
     // surfaces in a uniform medium only, bridge/scene/ImageSpaceScope.h).
     enum class Method { Eikonal, ImageSpace } method = Method::Eikonal;
     // What image space does with a scene it cannot show whole: refuse it

@@ -1,6 +1,7 @@
 #include "render/graph/FrameRenderer.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/scene/ImageSpaceScope.h"
 
 #include <chrono>
 #include <utility>
@@ -159,6 +160,8 @@ FrameResult FrameRenderer::renderImageSpace(const FieldUpload& fields, FieldRing
     if (viewNeeded && scene_.render.writeHdr) last_.hdr = imageSpaceView_->downloadHdr();
     result.image = last_.image;
     result.hdr = last_.hdr;
+    result.imageSpace = ImageSpaceStats{imageSpaceCaustics_ ? imageSpaceCaustics_->framesAveraged() : 0,
+                                        imageSpaceOmissions(scene_)};
     return result;
 }
 

@@ -36,6 +36,12 @@ struct StageReport {
     double milliseconds = 0.0;  // wall time with glFinish (GPU timer queries read 0 on llvmpipe)
 };
 
+// Of an image-space frame (render.method "image_space").
+struct ImageSpaceStats {
+    int framesAveraged = 0;             // frames in the caustic maps' temporal mean (0: no receivers)
+    std::vector<std::string> dropped;   // what of the scene it does not show (bridge/scene/ImageSpaceScope.h)
+};
+
 struct FrameResult {
     Image8 image;
     std::vector<float> hdr;       // linear RGBA radiance, when the scene writes HDR
@@ -45,6 +51,7 @@ struct FrameResult {
     UploadBytes copied;           // host bytes the driver read, bytes copied on the GPU
     std::optional<ErrorEstimate> errorEstimate;  // with RendererOptions::estimateErrors
     int pixelStride = 1;  // of the image: 1 the full image, k a preview of one ray per k×k pixels
+    std::optional<ImageSpaceStats> imageSpace;  // where the scene renders in image space
 };
 
 struct RendererOptions {

@@ -1,5 +1,5 @@
 // Image-space caustics (shaders/image_space_caustics.comp; [Wyman06] §3,
-// [Hu10]'s caustic maps): for each light, its surface layers are drawn over
+// [Hu07]'s caustic maps): for each light, its surface layers are drawn over
 // the bounding sphere of the scene's refractors (a perspective frustum from
 // a point or spot light, an orthographic box along a directional light's
 // direction), every texel becomes a photon with the power of its solid angle,
@@ -7,7 +7,7 @@
 // light no refractor intercepts reaches each receiver texel in closed form.
 // The receivers' maps then hold W/m², like the eikonal photons'.
 //
-// Temporal filtering ([Wyman06] §4.3, four frames): while neither the
+// Temporal filtering ([Wyman06] §3.2.3, four frames): while neither the
 // surfaces nor the lights change, each frame adds photons offset by a
 // different quarter of a texel to the tallies, and the maps are their mean
 // over up to kTemporalFrames frames. A change starts the mean again, so a

@@ -1,4 +1,4 @@
-// The image-space camera view (shaders/image_space_view.comp, [Hu10] §2):
+// The image-space camera view (shaders/image_space_view.comp, [Hu07] §2):
 // the camera's surface layers drawn with the raster pipeline, then per
 // pixel Fresnel reflection and two-interface refraction found in those
 // layers, into the same linear HDR image as the eikonal ViewStage. Runs when

@@ -1,5 +1,5 @@
 // What a viewpoint sees of the scene's sharp surfaces, drawn with the raster
-// pipeline ([Hu10] §2.1; [Wyman05]'s two-sided refraction): the nearest
+// pipeline ([Hu07] §2.1; [Wyman05]'s two-sided refraction): the nearest
 // surfaces, and by depth peeling the next surfaces behind them, each texel
 // holding normal, distance and surface number (shaders/common/
 // surface_layers.glsl). Spheres and boxes are drawn from their tessellation

@@ -1,13 +1,13 @@
-// Two-interface refraction in image space ([Hu10] §2.1, after [Wyman05]): a
+// Two-interface refraction in image space ([Hu07] §2.1, after [Wyman05]): a
 // ray that entered a sharp surface is followed to where it leaves by
 // searching the viewpoint's surface layers (common/surface_layers.glsl)
 // instead of the geometry. A point is inside the surface it entered while
 // its texel shows that surface nearest and the point lies between the near
 // layer's distance and the far layer's. The ray marches in kLayerMarchSteps
 // steps across the surface's extent until a point is outside, bisects that
-// step kLayerBisections times ([Hu10] Fig. 7 bisects in the depth buffer),
+// step kLayerBisections times ([Hu07] Fig. 7 bisects in the depth buffer),
 // and then meets the layer's tangent plane there twice (the iterative
-// lookup of [Hu10] §2.1.3), taking that layer's normal; the planes are read
+// lookup of [Hu07] §2.1.3), taking that layer's normal; the planes are read
 // bilinearly between texel centres (common/surface_layers.glsl), which puts
 // the exit within a pixel where the nearest texel's plane missed by several. It refracts out by
 // Snell's law with the Fresnel transmittance; a totally reflected ray is

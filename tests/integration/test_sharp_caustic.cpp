@@ -24,6 +24,7 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eikon {
@@ -314,6 +315,49 @@ TEST(SharpCaustic, WavefrontMatchesTheNoiseFreeReference) {
     EXPECT_LE(disk.relativeL1, 0.06);
     EXPECT_NEAR(edge, shadow, texel);
     EXPECT_EQ(floorIrradianceOf(scene, fields), map) << "the wavefront is deterministic";
+}
+
+// Image space (render.method "image_space": light-space caustic maps through
+// two rasterized interfaces, render/stages/ImageSpaceCaustics.h) on the
+// default scene against the same noise-free reference through the same
+// binomial filter: the baseline that says what the approximation costs,
+// after one frame and after the four-frame temporal mean. Measured: 0.2%
+// over the receiver, 1.2% in the caustic disk, the peak 2% low, the shadow's
+// edge 1.5 mm inside the closed form; bounded at 1%, 3%, 5% and a texel.
+TEST(SharpCaustic, ImageSpaceCausticAgainstTheNoiseFreeReference) {
+    test::glContext();
+    const Scene scene = defaultScene({"render.method=\"image_space\""});
+    const reference::SphereCausticSetup setup = sphereCausticSetupOf(scene);
+    const std::vector<double> exact =
+        reference::binomialFilter(reference::integrateSphereCaustic(setup).irradiance, kResolution);
+    const double shadow = reference::shadowRadius(setup), texel = setup.size / kResolution;
+    const FieldSet fields = sim::voxelizeScene(scene);
+    render::FrameRenderer renderer(scene, fields);
+    const auto floor = [&] {
+        const std::vector<float> rgb = renderer.receivers().download(0);
+        std::vector<double> green(rgb.size() / 3);
+        for (std::size_t t = 0; t < green.size(); ++t) green[t] = rgb[3 * t + 1];
+        return green;
+    };
+    renderer.render(fields);
+    const std::vector<double> first = floor();
+    for (int frame = 1; frame < render::kTemporalFrames; ++frame) renderer.render(fields);
+    const std::vector<double> averaged = floor();
+    for (const auto& [name, map] : {std::pair<const char*, const std::vector<double>&>{"one_frame", first},
+                                    {"four_frames", averaged}}) {
+        const DiskError disk = diskError(map, exact, shadow, setup.size);
+        const double edge = shadowEdge(radialProfile(map, setup.size, kResolution), setup);
+        test::reportFigure((std::string("image_space_") + name + "_receiver_relative_l1").c_str(),
+                           receiverError(map, exact));
+        test::reportFigure((std::string("image_space_") + name + "_disk_relative_l1").c_str(), disk.relativeL1);
+        test::reportFigure((std::string("image_space_") + name + "_peak_ratio").c_str(), disk.peakRatio);
+        test::reportFigure((std::string("image_space_") + name + "_shadow_edge_error_m").c_str(), edge - shadow);
+    }
+    const DiskError disk = diskError(averaged, exact, shadow, setup.size);
+    EXPECT_LE(receiverError(averaged, exact), 0.01);
+    EXPECT_LE(disk.relativeL1, 0.03);
+    EXPECT_NEAR(disk.peakRatio, 1.0, 0.05);
+    EXPECT_NEAR(shadowEdge(radialProfile(averaged, setup.size, kResolution), setup), shadow, texel);
 }
 
 }  // namespace

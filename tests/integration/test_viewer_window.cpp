@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -77,36 +78,61 @@ TEST_F(ViewerWindow, ShowsTheHeadlessFrameWithThePanel) {
     EXPECT_GT(luminanceSpread(shown, 10, 10, 300, 200), 20.0);
 }
 
-// Orbiting shows the preview (a view-pass target of 0.1 ms makes every
-// moving frame one; the viewer prints how many and their largest stride);
-// back at the scene's camera and at rest, the viewer refines to the
-// headless frame, pixel for pixel.
-TEST_F(ViewerWindow, OrbitingShowsThePreviewAndRestRefinesToTheHeadlessFrame) {
-    const fs::path frame = dir_ / "frame.png", headless = dir_ / "headless", log = dir_ / "viewer.txt";
-    ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
-                  kSmallDefault + " --frames 6 --animate orbit-return --preview-ms 0.1 --width 640 --height 480" +
-                  " --screenshot " + frame.string(),
-                  log.string()),
-              0);
+// The viewer's summary of a scripted run: previews, of them in image space, and the largest pixel stride.
+struct PreviewCounts {
+    int previews = -1, imageSpace = -1, stride = -1;
+};
+
+PreviewCounts previewCounts(const fs::path& log) {
+    PreviewCounts counts;
     std::FILE* file = std::fopen(log.c_str(), "r");
-    ASSERT_NE(file, nullptr);
+    if (!file) return counts;
     char line[512] = {};
     bool found = false;  // the summary line, among whatever else the run printed
     while (!found && std::fgets(line, sizeof line, file)) found = std::strstr(line, "previews") != nullptr;
     std::fclose(file);
-    ASSERT_TRUE(found);
-    int previews = 0, stride = 0;
-    ASSERT_EQ(std::sscanf(std::strrchr(line, ',') + 1, " %d previews (pixel stride up to %d)", &previews, &stride), 2)
-        << line;
-    EXPECT_GE(previews, 5) << line;  // every orbiting frame after the first, and the return
-    EXPECT_GT(stride, 1) << line;
+    const char* tail = found ? std::strstr(line, "photon count") : nullptr;
+    if (tail)
+        std::sscanf(tail, "photon count %*d, %d previews (%d in image space, pixel stride up to %d)", &counts.previews,
+                    &counts.imageSpace, &counts.stride);
+    return counts;
+}
 
-    ASSERT_EQ(run(std::string(EIKON_EXECUTABLE) + " run " + kSmallDefault + " --quiet --out " + headless.string()), 0);
-    const auto viewed = eikon::io::readImage(frame);
-    const auto rendered = eikon::io::readImage(headless / "frames" / "frame_00000.png");
-    ASSERT_EQ(viewed.width, rendered.width);
-    ASSERT_EQ(viewed.height, rendered.height);
-    EXPECT_EQ(viewed.rgba, rendered.rgba);
+// Orbiting shows the preview (a view-pass target of 0.1 ms makes every
+// moving frame one; the viewer prints how many and of which kind): for the
+// default scene, all surfaces, the image-space preview; for the same scene
+// with smoothed (graded) glass, one camera ray per k×k pixels. Back at the
+// scene's camera and at rest, the viewer refines to the headless frame,
+// pixel for pixel.
+TEST_F(ViewerWindow, OrbitingShowsThePreviewAndRestRefinesToTheHeadlessFrame) {
+    for (const auto& [overrides, imageSpace] : {std::pair<std::string, bool>{"", true},
+                                                {" --set objects.0.surface=smooth", false}}) {
+        const fs::path frame = dir_ / "frame.png", headless = dir_ / "headless", log = dir_ / "viewer.txt";
+        fs::remove_all(headless);
+        ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
+                          kSmallDefault + overrides +
+                          " --frames 6 --animate orbit-return --preview-ms 0.1 --width 640 --height 480" +
+                          " --screenshot " + frame.string(),
+                      log.string()),
+                  0);
+        const PreviewCounts counts = previewCounts(log);
+        EXPECT_GE(counts.previews, 5) << overrides;  // every orbiting frame after the first, and the return
+        if (imageSpace) {
+            EXPECT_EQ(counts.imageSpace, counts.previews);
+            EXPECT_EQ(counts.stride, 1);
+        } else {
+            EXPECT_EQ(counts.imageSpace, 0);
+            EXPECT_GT(counts.stride, 1);
+        }
+        ASSERT_EQ(run(std::string(EIKON_EXECUTABLE) + " run " + kSmallDefault + overrides + " --quiet --out " +
+                      headless.string()),
+                  0);
+        const auto viewed = eikon::io::readImage(frame);
+        const auto rendered = eikon::io::readImage(headless / "frames" / "frame_00000.png");
+        ASSERT_EQ(viewed.width, rendered.width);
+        ASSERT_EQ(viewed.height, rendered.height);
+        EXPECT_EQ(viewed.rgba, rendered.rgba) << overrides;
+    }
 }
 
 TEST_F(ViewerWindow, BadSceneIsExitCodeTwoWithoutAWindow) {
