@@ -7,9 +7,20 @@
 // shows albedo/π × the irradiance of the image-space caustic maps; the
 // medium between surfaces is uniform (bridge/scene/ImageSpaceScope.h).
 //
-// Program options: EIKON_ENVIRONMENT (layout::EnvironmentKind),
-// EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
+// Two passes, since a CPU rasterizer runs every branch of a work group
+// under a mask: pass 0 (a work group per 8×8 pixels) draws every pixel that
+// sees no surface and lists those that do; pass 1 (64 listed pixels per
+// work group, dispatched indirectly) follows those through the surfaces.
+// A GPU gains too: its work groups no longer mix short and long rays.
+//
+// Program options: EIKON_PASS (0 or 1), EIKON_ENVIRONMENT
+// (layout::EnvironmentKind), EIKON_RECORD_EXIT (1: write each pixel's exit
+// direction, for tests).
+#if EIKON_PASS == 0
 layout(local_size_x = 8, local_size_y = 8) in;
+#else
+layout(local_size_x = 64) in;
+#endif
 
 #include "common/grid_sampling.glsl"
 #include "common/fresnel.glsl"
@@ -28,6 +39,11 @@ layout(std430, binding = kHdrImage) writeonly buffer HdrImage { vec4 hdr_radianc
 layout(std430, binding = kViewExit) writeonly buffer ViewExit { vec4 view_exit[]; };  // xyz direction; w: 1 escaped, 2 receiver
 #endif
 
+layout(std430, binding = kSurfacePixels) buffer SurfacePixels { uint surface_pixels[]; };  // y·width + x
+layout(std430, binding = kSurfacePixelCount) buffer SurfacePixelCount {
+    uvec4 surface_pixel_groups;  // x: work groups of pass 1 (y = z = 1); w: pixels listed
+};
+
 uniform mat4 view_projection;  // the camera's, as its layers were drawn
 
 const float kFarAway = 1e4f;  // metres; farther than any scene
@@ -44,9 +60,37 @@ vec3 straight_radiance(vec3 x, vec3 d, out float kind) {
     return hit.receiver >= 0 ? receiver_radiance(hit) : environment_radiance(x, d);
 }
 
+void write_pixel(uvec2 pixel, vec3 radiance, vec3 exit_direction, float exit_kind) {
+    hdr_radiance[pixel.y * camera.image.x + pixel.x] = vec4(radiance, 1.0f);
+#if EIKON_RECORD_EXIT
+    view_exit[pixel.y * camera.image.x + pixel.x] = vec4(exit_direction, exit_kind);
+#endif
+}
+
+LayerSample first_surface(uvec2 pixel) {
+    return layer_sample(near_layer, ivec2(pixel.x, camera.image.y - 1u - pixel.y));
+}
+
+#if EIKON_PASS == 0
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, camera.image.xy))) return;
+    if (first_surface(pixel).surface >= 0) {
+        uint slot = atomicAdd(surface_pixel_groups.w, 1u);
+        if (slot % gl_WorkGroupSize.x == 0u) atomicAdd(surface_pixel_groups.x, 1u);  // pass 1's groups cover the list
+        surface_pixels[slot] = pixel.y * camera.image.x + pixel.x;
+        return;
+    }
+    vec3 d = camera_ray_direction(pixel);
+    float kind;
+    vec3 radiance = straight_radiance(camera.position.xyz, d, kind);
+    write_pixel(pixel, radiance, d, kind);
+}
+#else
+void main() {
+    if (gl_GlobalInvocationID.x >= surface_pixel_groups.w) return;
+    uint index = surface_pixels[gl_GlobalInvocationID.x];
+    uvec2 pixel = uvec2(index % camera.image.x, index / camera.image.x);
     Viewpoint view;
     view.view_projection = view_projection;
     view.eye = camera.position.xyz;
@@ -54,44 +98,35 @@ void main() {
     view.orthographic = false;
     view.size = ivec2(camera.image.xy);
     vec3 d = camera_ray_direction(pixel);
-    LayerSample first = layer_sample(near_layer, ivec2(pixel.x, camera.image.y - 1u - pixel.y));
+    LayerSample first = first_surface(pixel);
+    vec3 x = view.eye + first.distance * d;
+    vec3 normal = dot(first.normal, d) > 0.0f ? -first.normal : first.normal;
+    float n_outside = reference_index(), n_inside = surface_index(first.surface);
+    float cos_i = -dot(d, normal);
+    vec3 refracted = refract(d, normal, n_outside / n_inside);
+    float reflectance = refracted == vec3(0.0f) ? 1.0f
+                        : surface_reflects(first.surface) ? fresnel_reflectance(cos_i, n_outside, n_inside)
+                                                          : 0.0f;
+    vec3 reflected = reflect(d, normal);
     float kind;
-    vec3 radiance;
-    vec3 exit_direction = d;
-    float exit_kind;
-    if (first.surface < 0) {
-        radiance = straight_radiance(view.eye, d, exit_kind);
-    } else {
-        vec3 x = view.eye + first.distance * d;
-        vec3 normal = dot(first.normal, d) > 0.0f ? -first.normal : first.normal;
-        float n_outside = reference_index(), n_inside = surface_index(first.surface);
-        float cos_i = -dot(d, normal);
-        vec3 refracted = refract(d, normal, n_outside / n_inside);
-        float reflectance = refracted == vec3(0.0f) ? 1.0f
-                            : surface_reflects(first.surface) ? fresnel_reflectance(cos_i, n_outside, n_inside)
-                                                              : 0.0f;
-        vec3 reflected = reflect(d, normal);
-        radiance = reflectance * straight_radiance(x + 1e-5f * normal, reflected, kind);
-        exit_direction = reflected;
-        exit_kind = kind;
-        if (reflectance < 1.0f) {
-            RefractorPath path = follow_through_refractor(view, x, normalize(refracted), first.surface);
-            vec3 through = vec3(0.0f);
-            if (path.hit.receiver >= 0) {
-                through = receiver_radiance(path.hit);
-                kind = 2.0f;
-            } else if (path.left) {
-                through = straight_radiance(path.x, path.d, kind);
-            } else {
-                kind = 0.0f;
-            }
-            radiance += (1.0f - reflectance) * path.throughput * through;
-            exit_direction = path.d;  // the refracted branch, for tests
-            exit_kind = kind;
+    vec3 radiance = reflectance * straight_radiance(x + 1e-5f * normal, reflected, kind);
+    vec3 exit_direction = reflected;
+    float exit_kind = kind;
+    if (reflectance < 1.0f) {
+        RefractorPath path = follow_through_refractor(view, x, normalize(refracted), first.surface);
+        vec3 through = vec3(0.0f);
+        if (path.hit.receiver >= 0) {
+            through = receiver_radiance(path.hit);
+            kind = 2.0f;
+        } else if (path.left) {
+            through = straight_radiance(path.x, path.d, kind);
+        } else {
+            kind = 0.0f;
         }
+        radiance += (1.0f - reflectance) * path.throughput * through;
+        exit_direction = path.d;  // the refracted branch, for tests
+        exit_kind = kind;
     }
-    hdr_radiance[pixel.y * camera.image.x + pixel.x] = vec4(radiance, 1.0f);
-#if EIKON_RECORD_EXIT
-    view_exit[pixel.y * camera.image.x + pixel.x] = vec4(exit_direction, exit_kind);
-#endif
+    write_pixel(pixel, radiance, exit_direction, exit_kind);
 }
+#endif

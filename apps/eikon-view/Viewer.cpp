@@ -83,9 +83,9 @@ public:
             stepOnce_ = false;
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
-            const bool imageSpacePreview = stride > 1 && session_->hasImageSpacePreview() && !advance;
+            const bool imageSpacePreview = stride > 1 && session_->hasImageSpacePreview();
             if (imageSpacePreview) {
-                last_ = session_->renderImageSpacePreview();
+                last_ = session_->renderImageSpacePreview(advance);
             } else {
                 session_->renderer().setPixelStride(stride);
                 last_ = session_->renderFrame(advance, pipelined_);

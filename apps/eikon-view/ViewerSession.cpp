@@ -15,14 +15,20 @@ ViewerSession::ViewerSession(const Scene& scene)
     }
 }
 
-render::FrameResult ViewerSession::renderImageSpacePreview() {
+render::FrameResult ViewerSession::renderImageSpacePreview(bool advance) {
     const render::FrameRenderer& eikonal = renderer();
     imageSpace_->setCamera(eikonal.scene().camera);
     for (std::size_t i = 0; i < eikonal.scene().lights.size(); ++i)
         if (eikonal.scene().lights[i] != imageSpace_->scene().lights[i])
             imageSpace_->setLight(i, eikonal.scene().lights[i]);
     imageSpace_->setExposure(eikonal.scene().render.exposureEv);
-    return imageSpace_->render(fields_->fields());
+    render::FrameResult result = imageSpace_->render(fields_->fields());
+    if (advance) {  // host fields only: a scene of surfaces has no fluid solver
+        source_->beginNext();
+        source_->waitNext();
+        source_->publishNext();
+    }
+    return result;
 }
 
 render::FrameResult ViewerSession::renderFrame(bool advance, bool pipelined) {

@@ -31,8 +31,10 @@ public:
     render::FrameResult renderFrame(bool advance, bool pipelined);
     // Whether the scene has an image-space preview (all surfaces, drawn eikonally).
     bool hasImageSpacePreview() const { return imageSpace_ != nullptr; }
-    // The image-space frame of the current fields, seen by the eikonal renderer's camera under its lights.
-    render::FrameResult renderImageSpacePreview();
+    // The image-space frame of the current fields, seen by the eikonal
+    // renderer's camera under its lights; with `advance`, a moving scene
+    // then moves on one frame.
+    render::FrameResult renderImageSpacePreview(bool advance);
 
 private:
     Scene scene_;

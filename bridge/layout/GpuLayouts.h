@@ -39,8 +39,10 @@
     X(kPhotonPaths, 9)          /* buffer PhotonPaths { vec4 vertices[]; }: optional recording for tests and export */          \
     X(kImageSpaceSurfaces, 9)   /* buffer ImageSpaceSurfaces { vec4 optics[]; }: per sharp surface (n, κ rgb), image space */    \
     X(kPhotonEnds, 10)          /* buffer PhotonEnds { vec4 ends[]; }: per recorded photon (end, fate), (power, receiver) */    \
+    X(kSurfacePixels, 10)       /* buffer SurfacePixels { uint pixels[]; }: image space, the pixels that see a surface */    \
     X(kReceiverTallies, 11)     /* buffer ReceiverTallies { uint units[]; }: per texel and channel a 64-bit fixed-point sum */  \
     X(kFluenceDirection, 12)    /* buffer FluenceDirection { float direction[]; }: xyz per cell, power-weighted */              \
+    X(kSurfacePixelCount, 12)   /* buffer SurfacePixelCount { uvec4 }: work groups (x, 1, 1) for them, and their count */ \
     X(kRawFluence, 13)          /* buffer RawFluence: the light pass's unsmoothed fluence, RGB per cell (float, or 64-bit units) */ \
     X(kRawFluenceDirection, 14) /* buffer RawFluenceDirection: and its unsmoothed direction sums */                             \
     X(kViewExit, 15)            /* buffer ViewExit { vec4 exit[]; }: per pixel, direction leaving the scene, w: how (tests) */  \

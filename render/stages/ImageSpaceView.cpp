@@ -5,6 +5,9 @@
 #include "render/stages/ViewStage.h"
 
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/vec4.hpp>
+
+#include <string>
 
 namespace eikon::render {
 
@@ -17,14 +20,27 @@ gl::Buffer imageSpaceSurfaceExtinction(const Scene& scene) {
                       {"objects", "the surfaces' extinction"});
 }
 
+namespace {
+
+gl::Program viewProgram(const Scene& scene, int pass, bool recordExit) {
+    return gl::compileComputeProgram("image_space_view.comp",
+                                     {{"EIKON_PASS", std::to_string(pass)},
+                                      {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
+                                      {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"}});
+}
+
+}  // namespace
+
 ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers, SurfaceRaster& raster,
                                bool recordExit)
     : receivers_(receivers), raster_(raster), extinction_(imageSpaceSurfaceExtinction(scene)),
       render_(scene.render), camera_(scene.camera),
       layers_(scene.render.width, scene.render.height, {"render.width × render.height", "the camera's surface layers"}),
-      program_(gl::compileComputeProgram(
-          "image_space_view.comp", {{"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
-                                    {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"}})),
+      backgroundProgram_(viewProgram(scene, 0, recordExit)), surfaceProgram_(viewProgram(scene, 1, recordExit)),
+      surfacePixels_(static_cast<std::size_t>(scene.render.width) * static_cast<std::size_t>(scene.render.height) *
+                         sizeof(GLuint),
+                     {"render.width × render.height", "the list of pixels that see a surface"}),
+      surfacePixelCount_(sizeof(glm::uvec4), {"render", "the count of pixels that see a surface"}),
       hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)) {
     if (recordExit) exits_ = pixelBuffer(scene, "the camera rays' exits");
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
@@ -45,11 +61,21 @@ void ImageSpaceView::run(const FieldTextures& fields) {
     if (environment_.id()) environment_.bindSampler(layout::kEnvironmentTexture);
     hdr_.bindStorage(layout::kHdrImage);
     if (exits_.id()) exits_.bindStorage(layout::kViewExit);
-    program_.use();
-    glUniformMatrix4fv(program_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
-    glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
-    program_.dispatchCovering(static_cast<std::size_t>(render_.width), static_cast<std::size_t>(render_.height), 1, 8,
-                              8, 1);
+    const glm::uvec4 noPixels(0u, 1u, 1u, 0u);  // pass 1's work groups (x, y, z) and the pixels listed
+    surfacePixelCount_.upload(&noPixels, sizeof noPixels);
+    surfacePixels_.bindStorage(layout::kSurfacePixels);
+    surfacePixelCount_.bindStorage(layout::kSurfacePixelCount);
+    backgroundProgram_.use();
+    glUniform1ui(backgroundProgram_.uniform("receiver_count"), receivers_.count());
+    backgroundProgram_.dispatchCovering(static_cast<std::size_t>(render_.width),
+                                        static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    surfaceProgram_.use();
+    glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
+    glUniform1ui(surfaceProgram_.uniform("receiver_count"), receivers_.count());
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, surfacePixelCount_.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     gl::checkpoint("image-space view");
 }

@@ -44,7 +44,8 @@ private:
     RenderDesc render_;
     CameraDesc camera_;
     SurfaceLayers layers_;
-    gl::Program program_;
+    gl::Program backgroundProgram_, surfaceProgram_;  // image_space_view.comp's passes 0 and 1
+    gl::Buffer surfacePixels_, surfacePixelCount_;
     gl::Buffer cameraBlock_;
     gl::Buffer hdr_;
     gl::Buffer exits_;
