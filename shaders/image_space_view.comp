@@ -72,13 +72,30 @@ LayerSample first_surface(uvec2 pixel) {
 }
 
 #if EIKON_PASS == 0
+shared uint group_listed;  // this work group's pixels that see a surface
+shared uint group_first;   // where they go in the list
+
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, camera.image.xy))) return;
-    if (first_surface(pixel).surface >= 0) {
-        uint slot = atomicAdd(surface_pixel_groups.w, 1u);
-        if (slot % gl_WorkGroupSize.x == 0u) atomicAdd(surface_pixel_groups.x, 1u);  // pass 1's groups cover the list
-        surface_pixels[slot] = pixel.y * camera.image.x + pixel.x;
+    bool inside_image = all(lessThan(pixel, camera.image.xy));
+    bool listed = inside_image && first_surface(pixel).surface >= 0;
+    // One atomic on the list's count per work group, not one per pixel
+    // (every pixel of pool_caustics sees the water).
+    if (gl_LocalInvocationIndex == 0u) group_listed = 0u;
+    barrier();
+    uint local_slot = listed ? atomicAdd(group_listed, 1u) : 0u;
+    barrier();
+    if (gl_LocalInvocationIndex == 0u && group_listed > 0u) {
+        uint first = atomicAdd(surface_pixel_groups.w, group_listed);
+        group_first = first;
+        uint size = gl_WorkGroupSize.x * gl_WorkGroupSize.y;  // pass 1's work group, 64
+        // Pass 1's work groups start at each multiple of 64 this range holds.
+        atomicAdd(surface_pixel_groups.x, (first + group_listed + size - 1u) / size - (first + size - 1u) / size);
+    }
+    barrier();
+    if (!inside_image) return;
+    if (listed) {
+        surface_pixels[group_first + local_slot] = pixel.y * camera.image.x + pixel.x;
         return;
     }
     vec3 d = camera_ray_direction(pixel);

@@ -11,7 +11,9 @@ ViewerSession::ViewerSession(const Scene& scene)
     if (scene.render.method == RenderDesc::Method::Eikonal && imageSpaceOmissions(scene).empty()) {
         Scene imageSpace = scene;
         imageSpace.render.method = RenderDesc::Method::ImageSpace;
-        imageSpace_ = std::make_unique<render::FrameRenderer>(imageSpace, fields_->fields());
+        render::RendererOptions options;
+        options.temporalMean = false;  // shown only while the camera moves: one frame's maps are enough
+        imageSpace_ = std::make_unique<render::FrameRenderer>(imageSpace, fields_->fields(), options);
     }
 }
 

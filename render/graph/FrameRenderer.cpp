@@ -35,6 +35,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     pendingUpload_ = fields_.upload(fields);  // before the stages: they compile for the fields present
     if (ring) ring->fenceCurrent();
     if (scene.render.method == RenderDesc::Method::ImageSpace) {
+        temporalMean_ = options.temporalMean;
         raster_ = std::make_unique<SurfaceRaster>(scene_);
         if (!scene.receivers.empty())
             imageSpaceCaustics_ = std::make_unique<ImageSpaceCaustics>(scene_, receivers_, *raster_);
@@ -141,7 +142,7 @@ FrameResult FrameRenderer::renderImageSpace(const FieldUpload& fields, FieldRing
     }));
     if (ring) ring->fenceCurrent();
     const bool lightChanged = fieldsChanged || lightsChanged_;
-    const bool causticsNeeded = imageSpaceCaustics_ && (lightChanged || imageSpaceCaustics_->refining());
+    const bool causticsNeeded = imageSpaceCaustics_ && (lightChanged || (temporalMean_ && imageSpaceCaustics_->refining()));
     if (imageSpaceCaustics_)
         result.stages.push_back(runStage("image_space_caustics", causticsNeeded,
                                          [&] { imageSpaceCaustics_->run(fields_, lightChanged); }));

@@ -70,6 +70,10 @@ struct RendererOptions {
     // from render.error_estimate. Where the light pass is shared among
     // processes, the noise is not estimated.
     bool estimateErrors = false;
+    // Image space: while nothing changes, refine the caustic maps over
+    // kTemporalFrames frames (ImageSpaceCaustics.h); false keeps the first
+    // (the viewer's preview, drawn only while the camera moves).
+    bool temporalMean = true;
 };
 
 class FrameRenderer {
@@ -141,6 +145,7 @@ private:
     bool lightsChanged_ = false;
     bool exposureChanged_ = false;
     UploadBytes pendingUpload_;  // uploaded while constructing, reported with the first frame
+    bool temporalMean_ = true;
     FrameResult last_;
 };
 

@@ -25,7 +25,7 @@ layout(std430, binding = kImageSpaceSurfaces) readonly buffer ImageSpaceSurfaces
 layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
 layout(binding = kFarLayerTexture) uniform sampler2D far_layer;
 
-const int kLayerMarchSteps = 16;
+const int kLayerMarchSteps = 8;
 const int kLayerBisections = 10;
 const int kTangentPlaneSteps = 2;
 const int kInternalBounces = 2;
@@ -76,8 +76,8 @@ struct LayerExit {
     vec3 normal;   // outward: along the ray
 };
 
-LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s) {
-    float reach = surface_reach(s);
+// The exit within `reach` of x (found false: still inside there).
+LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
     float h = reach / float(kLayerMarchSteps);
     float inside_t = 0.0f, outside_t = -1.0f;
     for (int i = 1; i <= kLayerMarchSteps; ++i) {
@@ -125,15 +125,18 @@ RefractorPath follow_through_refractor(Viewpoint view, vec3 x, vec3 d, int s) {
     vec3 kappa = surface_extinction[s].rgb;
     RefractorPath path = RefractorPath(x, d, vec3(1.0f), ReceiverHit(-1, 2.0f, false, vec2(0.0f)), false);
     for (int bounce = 0; bounce <= kInternalBounces; ++bounce) {
-        LayerExit exit_ = find_layer_exit(view, x, d, s);
-        vec3 end = x + exit_.t * d;
-        ReceiverHit hit = first_receiver_crossing(x, end);
-        if (hit.receiver >= 0) {
-            path.x = mix(x, end, hit.fraction);
-            path.throughput *= exp(-kappa * hit.fraction * exit_.t);
+        // A receiver inside ends the search there: the march covers only the way to it.
+        float reach = surface_reach(s);
+        ReceiverHit hit = first_receiver_crossing(x, x + reach * d);
+        float to_receiver = hit.receiver >= 0 ? hit.fraction * reach : reach;
+        LayerExit exit_ = find_layer_exit(view, x, d, s, to_receiver);
+        if (hit.receiver >= 0 && !exit_.found) {
+            path.x = x + to_receiver * d;
+            path.throughput *= exp(-kappa * to_receiver);
             path.hit = hit;
             return path;
         }
+        vec3 end = x + exit_.t * d;
         path.throughput *= exp(-kappa * exit_.t);
         if (!exit_.found) return path;
         float cos_i = dot(d, exit_.normal);
