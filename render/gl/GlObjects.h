@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace eikon::gl {
 
@@ -66,6 +67,14 @@ public:
     void copyFrom(const Buffer& source);
     void bindStorage(GLuint binding) const { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id()); }
     void bindUniform(GLuint binding) const { glBindBufferBase(GL_UNIFORM_BUFFER, binding, id()); }
+
+    // The whole buffer as values of T.
+    template <typename T>
+    std::vector<T> downloadAll() const {
+        std::vector<T> values(bytes_ / sizeof(T));
+        if (!values.empty()) download(values.data(), values.size() * sizeof(T));
+        return values;
+    }
 
     template <typename T>
     T downloadAs(std::size_t offset = 0) const {

@@ -130,6 +130,14 @@ FrameResult FrameRenderer::render(const FieldSet& fields) { return render(hostUp
 
 FrameResult FrameRenderer::render(FieldRing& ring) { return render(ring.current(), &ring); }
 
+void FrameRenderer::markRendered(const FieldUpload& fields) {
+    tracedIndexVersion_ = fields.indexVersion;
+    tracedExtinctionVersion_ = fields.extinctionVersion;
+    tracedScatteringVersion_ = fields.scatteringVersion;
+    tracedSurfaceVersion_ = fields.surfaceVersion;
+    cameraChanged_ = lightsChanged_ = exposureChanged_ = false;
+}
+
 FrameResult FrameRenderer::renderImageSpace(const FieldUpload& fields, FieldRing* ring) {
     FrameResult result;
     const bool fieldsChanged = fields.indexVersion != tracedIndexVersion_ ||
@@ -153,11 +161,7 @@ FrameResult FrameRenderer::renderImageSpace(const FieldUpload& fields, FieldRing
             last_.image = post_.run(imageSpaceView_->hdrImage(), scene_.render.exposureEv);
         }));
     }
-    tracedIndexVersion_ = fields.indexVersion;
-    tracedExtinctionVersion_ = fields.extinctionVersion;
-    tracedScatteringVersion_ = fields.scatteringVersion;
-    tracedSurfaceVersion_ = fields.surfaceVersion;
-    cameraChanged_ = lightsChanged_ = exposureChanged_ = false;
+    markRendered(fields);
     if (viewNeeded && scene_.render.writeHdr) last_.hdr = imageSpaceView_->downloadHdr();
     result.image = last_.image;
     result.hdr = last_.hdr;
@@ -213,11 +217,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         last_.errorEstimate = errorEstimate_->run(
             fields_, {photons_.get(), stepTexture(), &reference.referenceStepTexture(), photonSettings_});
     }));
-    tracedIndexVersion_ = fields.indexVersion;
-    tracedExtinctionVersion_ = fields.extinctionVersion;
-    tracedScatteringVersion_ = fields.scatteringVersion;
-    tracedSurfaceVersion_ = fields.surfaceVersion;
-    cameraChanged_ = lightsChanged_ = exposureChanged_ = false;
+    markRendered(fields);
     if (viewNeeded && scene_.render.writeHdr) last_.hdr = view_->downloadHdr();
     result.image = last_.image;
     result.hdr = last_.hdr;

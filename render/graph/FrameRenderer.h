@@ -119,6 +119,8 @@ private:
     FrameResult render(const FieldUpload& fields, FieldRing* ring);
     // The image-space frame (render.method "image_space"): layers, caustic maps, view, post.
     FrameResult renderImageSpace(const FieldUpload& fields, FieldRing* ring);
+    // After a frame: its fields' versions are the ones traced, and no input is pending.
+    void markRendered(const FieldUpload& fields);
 
     Scene scene_;
     FieldTextures fields_;

@@ -81,15 +81,11 @@ void ImageSpaceView::run(const FieldTextures& fields) {
 }
 
 std::vector<float> ImageSpaceView::downloadHdr() const {
-    std::vector<float> rgba(hdr_.bytes() / sizeof(float));
-    hdr_.download(rgba.data(), rgba.size() * sizeof(float));
-    return rgba;
+    return hdr_.downloadAll<float>();
 }
 
 std::vector<glm::vec4> ImageSpaceView::downloadExits() const {
-    std::vector<glm::vec4> exits(exits_.bytes() / sizeof(glm::vec4));
-    if (!exits.empty()) exits_.download(exits.data(), exits.size() * sizeof(glm::vec4));
-    return exits;
+    return exits_.downloadAll<glm::vec4>();
 }
 
 }  // namespace eikon::render

@@ -504,9 +504,7 @@ std::vector<PhotonEnd> PhotonStage::downloadEnds() const {
 }
 
 std::vector<glm::vec4> PhotonStage::downloadPaths() const {
-    std::vector<glm::vec4> vertices(paths_.bytes() / sizeof(glm::vec4));
-    if (!vertices.empty()) paths_.download(vertices.data(), vertices.size() * sizeof(glm::vec4));
-    return vertices;
+    return paths_.downloadAll<glm::vec4>();
 }
 
 }  // namespace eikon::render

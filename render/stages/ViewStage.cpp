@@ -155,15 +155,11 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
 }
 
 std::vector<float> ViewStage::downloadHdr() const {
-    std::vector<float> rgba(hdr_.bytes() / sizeof(float));
-    hdr_.download(rgba.data(), rgba.size() * sizeof(float));
-    return rgba;
+    return hdr_.downloadAll<float>();
 }
 
 std::vector<glm::vec4> ViewStage::downloadExits() const {
-    std::vector<glm::vec4> exits(exits_.bytes() / sizeof(glm::vec4));
-    if (!exits.empty()) exits_.download(exits.data(), exits.size() * sizeof(glm::vec4));
-    return exits;
+    return exits_.downloadAll<glm::vec4>();
 }
 
 }  // namespace eikon::render
