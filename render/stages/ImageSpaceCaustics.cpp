@@ -19,8 +19,9 @@ namespace eikon::render {
 
 namespace {
 
-// A light farther than this from the refractors' bounding sphere (in its
-// radii) sees all of it in one frustum; nearer, the frustum opens to kWidestHalfAngle.
+// A point or spot light's frustum holds the refractors' bounding sphere,
+// but opens no wider than this (a light inside or close to the sphere sees
+// the part of it within 80° of the axis).
 constexpr double kWidestHalfAngleDeg = 80.0;
 
 // This frame's offset of the photons within their texels (a rotated 2×2 pattern).
