@@ -36,6 +36,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     if (ring) ring->fenceCurrent();
     if (scene.render.method == RenderDesc::Method::ImageSpace) {
         temporalMean_ = options.temporalMean;
+        imageSpaceDropped_ = imageSpaceOmissions(scene_);
         raster_ = std::make_unique<SurfaceRaster>(scene_);
         if (!scene.receivers.empty())
             imageSpaceCaustics_ = std::make_unique<ImageSpaceCaustics>(scene_, receivers_, *raster_);
@@ -166,7 +167,7 @@ FrameResult FrameRenderer::renderImageSpace(const FieldUpload& fields, FieldRing
     result.image = last_.image;
     result.hdr = last_.hdr;
     result.imageSpace = ImageSpaceStats{imageSpaceCaustics_ ? imageSpaceCaustics_->framesAveraged() : 0,
-                                        imageSpaceOmissions(scene_)};
+                                        imageSpaceDropped_};
     return result;
 }
 

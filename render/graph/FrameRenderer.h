@@ -148,6 +148,7 @@ private:
     bool exposureChanged_ = false;
     UploadBytes pendingUpload_;  // uploaded while constructing, reported with the first frame
     bool temporalMean_ = true;
+    std::vector<std::string> imageSpaceDropped_;  // what of the scene image space does not show
     FrameResult last_;
 };
 

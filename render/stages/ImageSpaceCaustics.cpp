@@ -48,7 +48,6 @@ struct ImageSpaceCaustics::LightFrame {
 
 ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receivers, SurfaceRaster& raster)
     : scene_(scene), receivers_(receivers), raster_(raster), lights_(scene.lights),
-      extinction_(imageSpaceSurfaceExtinction(scene)),
       directProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "0"}})),
       photonProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "1"}})) {
     const int texels = scene.render.causticMapTexels;
@@ -147,9 +146,8 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
                  : glm::vec2(-2.0f, 1.0f);
         fields.bindForTracing();
         receivers_.bind();
-        raster_.surfaces().bind();
+        raster_.bindSurfaces();
         layers.bind();
-        extinction_.bindStorage(layout::kImageSpaceSurfaces);
         for (gl::Program* program : {&directProgram_, &photonProgram_}) {
             program->use();
             glUniformMatrix4fv(program->uniform("view_projection"), 1, GL_FALSE,

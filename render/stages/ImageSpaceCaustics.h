@@ -48,7 +48,6 @@ private:
     ReceiverMaps& receivers_;
     SurfaceRaster& raster_;
     std::vector<LightDesc> lights_;
-    gl::Buffer extinction_;
     std::vector<std::unique_ptr<SurfaceLayers>> layers_;  // one per light
     gl::Program directProgram_, photonProgram_;
     glm::vec3 powerUnit_{1.0f};

@@ -11,15 +11,6 @@
 
 namespace eikon::render {
 
-gl::Buffer imageSpaceSurfaceExtinction(const Scene& scene) {
-    std::vector<glm::vec4> extinction;
-    for (const ObjectDesc& object : scene.objects)
-        if (object.isSharp()) extinction.emplace_back(glm::vec3(object.material.extinction), 0.0f);
-    if (extinction.empty()) extinction.emplace_back(0.0f);  // a buffer of one for a scene without surfaces
-    return gl::Buffer(extinction.size() * sizeof(glm::vec4), extinction.data(), GL_DYNAMIC_STORAGE_BIT,
-                      {"objects", "the surfaces' extinction"});
-}
-
 namespace {
 
 gl::Program viewProgram(const Scene& scene, int pass, bool recordExit) {
@@ -33,7 +24,7 @@ gl::Program viewProgram(const Scene& scene, int pass, bool recordExit) {
 
 ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers, SurfaceRaster& raster,
                                bool recordExit)
-    : receivers_(receivers), raster_(raster), extinction_(imageSpaceSurfaceExtinction(scene)),
+    : receivers_(receivers), raster_(raster),
       render_(scene.render), camera_(scene.camera),
       layers_(scene.render.width, scene.render.height, {"render.width × render.height", "the camera's surface layers"}),
       backgroundProgram_(viewProgram(scene, 0, recordExit)), surfaceProgram_(viewProgram(scene, 1, recordExit)),
@@ -54,9 +45,8 @@ void ImageSpaceView::run(const FieldTextures& fields) {
     cameraBlock_.upload(&block, sizeof block);
     fields.bindForTracing();
     receivers_.bind();
-    raster_.surfaces().bind();
+    raster_.bindSurfaces();
     layers_.bind();
-    extinction_.bindStorage(layout::kImageSpaceSurfaces);
     cameraBlock_.bindUniform(layout::kCameraBlock);
     if (environment_.id()) environment_.bindSampler(layout::kEnvironmentTexture);
     hdr_.bindStorage(layout::kHdrImage);

@@ -18,9 +18,6 @@
 
 namespace eikon::render {
 
-// Per sharp surface, the extinction κ (rgb, 1/m) inside it, as the image-space passes read it.
-gl::Buffer imageSpaceSurfaceExtinction(const Scene& scene);
-
 // Near and far planes of the raster passes' projections, metres.
 constexpr double kRasterNearPlane = 1e-3;
 constexpr double kRasterFarPlane = 1e3;
@@ -40,7 +37,6 @@ public:
 private:
     const ReceiverMaps& receivers_;
     SurfaceRaster& raster_;
-    gl::Buffer extinction_;
     RenderDesc render_;
     CameraDesc camera_;
     SurfaceLayers layers_;

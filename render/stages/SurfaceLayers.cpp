@@ -10,6 +10,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <glm/vec4.hpp>
+
 #include <numeric>
 
 namespace eikon::render {
@@ -33,8 +35,26 @@ void SurfaceLayers::bind() const {
     far_.bindColour(layout::kFarLayerTexture);
 }
 
+namespace {
+
+gl::Buffer surfaceExtinction(const Scene& scene) {
+    std::vector<glm::vec4> extinction;
+    for (const ObjectDesc& object : scene.objects)
+        if (object.isSharp()) extinction.emplace_back(glm::vec3(object.material.extinction), 0.0f);
+    if (extinction.empty()) extinction.emplace_back(0.0f);  // a buffer of one for a scene without surfaces
+    return gl::Buffer(extinction.size() * sizeof(glm::vec4), extinction.data(), GL_DYNAMIC_STORAGE_BIT,
+                      {"objects", "the surfaces' extinction"});
+}
+
+}  // namespace
+
+void SurfaceRaster::bindSurfaces() const {
+    surfaces_.bind();
+    extinction_.bindStorage(layout::kImageSpaceSurfaces);
+}
+
 SurfaceRaster::SurfaceRaster(const Scene& scene)
-    : surfaces_(scene), program_(gl::compileRasterProgram("surface_layers.vert", "surface_layers.frag",
+    : surfaces_(scene), extinction_(surfaceExtinction(scene)), program_(gl::compileRasterProgram("surface_layers.vert", "surface_layers.frag",
                                         {{"EIKON_MAX_SHARP_OBJECTS", std::to_string(kMaxSharpObjects)}})) {
     const std::vector<float> shapes = shapeTriangles(scene);
     if (!shapes.empty())

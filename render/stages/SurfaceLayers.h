@@ -48,13 +48,16 @@ public:
     explicit SurfaceRaster(const Scene& scene);
     // Draws both layers of `layers` as `view` sees the surfaces now.
     void draw(const Viewpoint& view, SurfaceLayers& layers, const FieldTextures& fields);
-    // The scene's sharp surfaces (their shapes and optics), which the passes reading the layers bind too.
-    const SharpSurfaceBuffer& surfaces() const { return surfaces_; }
+    // Binds what the passes reading the layers need of the surfaces: their
+    // shapes and optics (kSharpSurfaces) and the extinction inside each
+    // (kImageSpaceSurfaces).
+    void bindSurfaces() const;
 
 private:
     void drawTriangles(const gl::Buffer& triangles, const std::vector<int>& surfaceOfOrdinal) const;
 
     SharpSurfaceBuffer surfaces_;
+    gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it
     gl::Program program_;
     gl::EmptyVertexArray vertexArray_;
     gl::Buffer shapes_;                     // the spheres' and boxes' triangles
