@@ -108,7 +108,6 @@ public:
     const ViewStage& viewStage() const { return *view_; }  // only where the renderer draws eikonal images
     // Null unless the scene's render.method is image space and the renderer draws images.
     const ImageSpaceView* imageSpaceView() const { return imageSpaceView_.get(); }
-    const ImageSpaceCaustics* imageSpaceCaustics() const { return imageSpaceCaustics_.get(); }
     // Null unless the scene asks for multiple scattering and something scatters.
     const LatticeScattering* latticeStage() const { return lattice_.get(); }
 
