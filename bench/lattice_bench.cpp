@@ -8,8 +8,8 @@
 // is solved (LatticeStats::grey). [Bernabei12]'s Table I: 70–86 ms per frame
 // at 128³ on a GTX 465.
 #include "bridge/grid/FieldSet.h"
-#include "render/gl/GlContext.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlContext.h"
+#include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/LatticeScattering.h"
 

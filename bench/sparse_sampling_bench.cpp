@@ -5,8 +5,8 @@
 // directions, half-voxel steps, periodic in the domain) and take one trilinear
 // sample per step; their sums are compared so both do the same work. The scene
 // is a few smooth δn blobs in an N³ domain, built with OpenVDB.
-#include "render/gl/GlContext.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlContext.h"
+#include "gl/GlObjects.h"
 
 #include <benchmark/benchmark.h>
 #include <nanovdb/util/OpenToNanoVDB.h>

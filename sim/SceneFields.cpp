@@ -3,6 +3,7 @@
 #include "sim/SharpMeshSurfaces.h"
 #include "sim/deform/AnimatedMesh.h"
 #include "sim/fluid/SolverExport.h"
+#include "sim/gpu/GpuFluidBackend.h"
 #include "sim/voxelize/Compositor.h"
 #include "sim/voxelize/MeshCoverage.h"
 #include "sim/voxelize/VolumePainter.h"
@@ -83,6 +84,14 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
 }
 
 SceneFields::~SceneFields() = default;
+
+std::string SceneFields::placeFluidSolver(bool hardwareGpu) {
+    if (!fluid_) return "";
+    const SimDesc::Device device = scene_.sim->device;
+    if (device == SimDesc::Device::Gpu || (device == SimDesc::Device::Auto && hardwareGpu))
+        fluid_->attachDevice(std::make_unique<gpu::GpuFluidBackend>(*fluid_));
+    return fluid_->deviceName();
+}
 
 bool SceneFields::changesOverTime() const {
     if (fluid_ || (volume_ && volume_->isSequence())) return true;

@@ -54,6 +54,16 @@ public:
     // has the layout of fields() (same grid, same fields present), and
     // validates them. Both may run on a thread other than the renderer's.
     bool simulatesFluid() const { return fluid_ != nullptr; }
+    // Moves the fluid solver onto the GPU where sim.device asks for it:
+    // "gpu", or "auto" when `hardwareGpu` (the renderer's context is not a
+    // software rasterizer). Call once, with that context current on the
+    // thread that will advance the frames. Returns where the solver runs:
+    // "cpu", "gpu", or "" without a solver.
+    std::string placeFluidSolver(bool hardwareGpu);
+    // Where the solver runs, and the bytes it moved between host and GPU
+    // since the last call.
+    std::string fluidDevice() const { return fluid_ ? fluid_->deviceName() : ""; }
+    std::uint64_t takeFluidBusBytes() { return fluid_ ? fluid_->takeBusBytes() : 0; }
     void simulateFrame();
     void writeFrameInto(const FieldViews& target) const;
     // Whether κ (σs) values change from frame to frame (dye in the solver).

@@ -40,6 +40,10 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     frame.surfaceVersion = fields_.fields().surfaceVersion;
     frame.phases = fields_.lastTimings();
     if (captureExportArrays_) captureForExport(fields_, frame);
+    frame.simulationDevice = fields_.fluidDevice();
+    const std::size_t ringFloats = slot.deltaIndex.size() + slot.extinction.size() + slot.scattering.size() +
+                                   slot.anisotropy.size() + slot.surfaceNodes.size() + slot.surfaceTriangles.size();
+    frame.busBytes = fields_.takeFluidBusBytes() + ringFloats * sizeof(float);  // after the export's reads, which count too
     return frame;
 }
 

@@ -2,7 +2,7 @@
 // that is blitted, scaled to fit and centred, onto the default framebuffer.
 #pragma once
 
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 #include "render/stages/PostStage.h"
 
 namespace eikon::view {

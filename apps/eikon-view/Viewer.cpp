@@ -8,7 +8,7 @@
 #include "bridge/core/Error.h"
 #include "io/image/ImageIo.h"
 #include "io/scene/SceneParser.h"
-#include "render/gl/GlContext.h"
+#include "gl/GlContext.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -142,7 +142,7 @@ public:
 private:
     void start(const Scene& scene) {
         session_.reset();
-        session_ = std::make_unique<ViewerSession>(scene);
+        session_ = std::make_unique<ViewerSession>(scene, !window_->info().rendersOnCpu());
         orbit_ = orbitOf(scene.camera);
         exposure_ = scene.render.exposureEv;
         fullPhotons_ = photons_ = scene.render.photons;

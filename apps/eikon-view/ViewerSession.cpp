@@ -4,10 +4,11 @@
 
 namespace eikon::view {
 
-ViewerSession::ViewerSession(const Scene& scene)
+ViewerSession::ViewerSession(const Scene& scene, bool hardwareGpu)
     : scene_(scene),
       fields_(std::make_unique<sim::SceneFields>(scene)),
       source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{}, false, false)) {
+    fields_->placeFluidSolver(hardwareGpu);
     if (scene.render.method == RenderDesc::Method::Eikonal && imageSpaceOmissions(scene).empty()) {
         Scene imageSpace = scene;
         imageSpace.render.method = RenderDesc::Method::ImageSpace;
@@ -35,7 +36,8 @@ render::FrameResult ViewerSession::renderImageSpacePreview(bool advance) {
 
 render::FrameResult ViewerSession::renderFrame(bool advance, bool pipelined) {
     if (!advance) return source_->render();
-    source_->setPipelined(pipelined);
+    // A solver on the GPU queues its passes on this context: nothing to overlap on a thread.
+    source_->setPipelined(pipelined && fields_->fluidDevice() != "gpu");
     source_->beginNext();
     render::FrameResult result = source_->render();
     source_->waitNext();

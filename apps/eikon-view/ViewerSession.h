@@ -19,7 +19,9 @@ namespace eikon::view {
 
 class ViewerSession {
 public:
-    explicit ViewerSession(const Scene& scene);
+    // `hardwareGpu`: the window's context is not a software rasterizer, so
+    // sim.device "auto" runs the fluid solver there (SceneFields::placeFluidSolver).
+    ViewerSession(const Scene& scene, bool hardwareGpu);
 
     const Scene& scene() const { return scene_; }
     render::FrameRenderer& renderer() { return source_->renderer(); }

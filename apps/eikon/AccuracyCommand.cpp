@@ -5,7 +5,7 @@
 #include "verify/accuracy/AccuracyReport.h"
 #include "verify/accuracy/AccuracySuite.h"
 #include "verify/accuracy/ErrorPlot.h"
-#include "render/gl/GlContext.h"
+#include "gl/GlContext.h"
 
 #include <chrono>
 #include <cstdio>

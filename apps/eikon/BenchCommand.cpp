@@ -2,7 +2,7 @@
 
 #include "io/files/AtomicFile.h"
 #include "io/scene/SceneParser.h"
-#include "render/gl/GlContext.h"
+#include "gl/GlContext.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
 

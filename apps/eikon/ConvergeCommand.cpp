@@ -5,7 +5,7 @@
 #include "io/files/AtomicFile.h"
 #include "io/files/OutputFolder.h"
 #include "io/scene/SceneParser.h"
-#include "render/gl/GlContext.h"
+#include "gl/GlContext.h"
 #include "verify/converge/ConvergeReport.h"
 #include "verify/converge/ConvergeStudy.h"
 

@@ -211,7 +211,11 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
                               {"iterations", phase.iterations},
                               {"residual", phase.residual}});
         report["simulation"] = phases;
+        report["simulation_device"] = produced.simulationDevice;
     }
+    // Everything that crossed between host and GPU memory for this frame:
+    // uploads, the fields written into the mapped ring, what the solver moved.
+    report["bus_bytes"] = result.copied.host + produced.busBytes;
     return report.dump();
 }
 

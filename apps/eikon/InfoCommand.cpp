@@ -1,7 +1,7 @@
 #include "apps/eikon/InfoCommand.h"
 
 #include "apps/eikon/Ranks.h"
-#include "render/gl/GlContext.h"
+#include "gl/GlContext.h"
 
 #include <iostream>
 #include <string>

@@ -7,8 +7,8 @@
 #include "io/files/OutputFolder.h"
 #include "io/scene/ExportParser.h"
 #include "io/scene/SceneParser.h"
-#include "render/gl/GlContext.h"
-#include "render/gl/GpuMemory.h"
+#include "gl/GlContext.h"
+#include "gl/GpuMemory.h"
 #include "render/stages/PhotonStage.h"
 #include "sim/SceneFields.h"
 
@@ -87,12 +87,15 @@ int runCommand(const RunOptions& options) {
         // Before the folder: a machine without GL leaves nothing behind. A
         // rank takes the GPU of its local rank where a machine has several.
         context = gl::createHeadlessContext(static_cast<unsigned>(ranks.localRank()));
+        fields->placeFluidSolver(!context->info().rendersOnCpu());
     });
     const int ownFrames =
         distribution == Distribution::Frames ? (options.frames + ranks.size() - 1) / ranks.size() : options.frames;
     ProgressBar progress(ownFrames, options.quiet || !ranks.first());
-    const bool pipelined =
-        options.pipelining == "on" || (options.pipelining == "auto" && !context->info().rendersOnCpu());
+    // A solver on the GPU queues its passes on the renderer's context: there is
+    // no host work to overlap with the render on a thread of its own.
+    const bool pipelined = fields->fluidDevice() != "gpu" &&
+                           (options.pipelining == "on" || (options.pipelining == "auto" && !context->info().rendersOnCpu()));
     std::optional<io::OutputFolder> output;
     try {
         runFrames(scene, *fields, options.frames,

@@ -121,13 +121,43 @@
     X(kSharpBox, 1)                         \
     X(kSharpTriangles, 2)
 
+// Binding points of the fluid solver's GPU passes (sim/gpu, shaders/sim).
+// Every pass binds what it reads right before its dispatch, so these may
+// share numbers with the renderer's bindings. Fields are float32 in
+// GridField order (x fastest); the Krylov vectors and reduction results are
+// float64 (docs/architecture.md, "The fluid solver on the GPU").
+#define EIKON_LAYOUT_SOLVER_BINDINGS(X)                                                                        \
+    X(kSolverVelocityX, 0)   /* buffer VelocityX { float u[]; }: faces normal to x, m/s */                     \
+    X(kSolverVelocityY, 1)   /* buffer VelocityY { float v[]; } */                                             \
+    X(kSolverVelocityZ, 2)   /* buffer VelocityZ { float w[]; } */                                             \
+    X(kSolverField, 3)       /* buffer Field { float values[]; }: the field a pass updates in place */         \
+    X(kSolverSource, 4)      /* buffer Source { float values[]; }: a pass's input field, read */               \
+    X(kSolverTarget, 5)      /* buffer Target { float values[]; }: a pass's output field, written */           \
+    X(kSolverBoundsLow, 6)   /* buffer BoundsLow { float low[]; }: the MacCormack limiter's lower bounds */    \
+    X(kSolverBoundsHigh, 7)  /* buffer BoundsHigh { float high[]; }: and its upper bounds */                   \
+    X(kSolverCells, 8)       /* buffer Cells { uint flags[]; }: per sample, the solver's flags for a pass */   \
+    X(kSolverVectorX, 9)     /* buffer VectorX { double x[]; }: a linear solve's unknowns */                   \
+    X(kSolverVectorB, 10)    /* buffer VectorB { double b[]; }: its right-hand side */                         \
+    X(kSolverVectorR, 11)    /* buffer VectorR { double r[]; }: its residual */                                \
+    X(kSolverVectorP, 12)    /* buffer VectorP { double p[]; }: CG's search direction */                       \
+    X(kSolverVectorQ, 13)    /* buffer VectorQ { double q[]; }: A·p, or the preconditioned residual */         \
+    X(kSolverPartials, 14)   /* buffer Partials { double partials[]; }: per work group, a reduction's part */  \
+    X(kSolverResults, 15)    /* buffer Results { double results[]; }: reductions and solver scalars */         \
+    X(kSolverBackward, 16)   /* buffer Backward { vec4 ends[]; }: per cell and wall face, its characteristic over −Δt */ \
+    X(kSolverForward, 17)    /* buffer Forward { vec4 ends[]; }: and over +Δt, in cells */                     \
+    X(kSolverCoarse, 18)     /* buffer Coarse { float values[]; }: multigrid, the coarser level's vector */    \
+    X(kSolverFine, 19)       /* buffer Fine { float values[]; }: multigrid, the finer level's vector */        \
+    X(kSolverSourceCells, 20) /* buffer SourceCells { vec4 held[]; }: per cell, the scalars sources hold */    \
+    X(kSolverSourceFaces, 21) /* buffer SourceFaces { float velocity[]; }: per face, a jet's velocity or NaN */
+
 // Every list above: the constants each shader program is given.
 #define EIKON_LAYOUT_SHADER_CONSTANTS(X) \
     EIKON_LAYOUT_BINDINGS(X)             \
     EIKON_LAYOUT_TEXTURE_UNITS(X)        \
     EIKON_LAYOUT_IMAGE_UNITS(X)          \
     EIKON_LAYOUT_POWER_TALLIES(X)        \
-    EIKON_LAYOUT_SHARP_SURFACE_KINDS(X)
+    EIKON_LAYOUT_SHARP_SURFACE_KINDS(X)  \
+    EIKON_LAYOUT_SOLVER_BINDINGS(X)
 
 namespace eikon::layout {
 
@@ -137,6 +167,7 @@ enum TextureUnit : unsigned { EIKON_LAYOUT_TEXTURE_UNITS(EIKON_LAYOUT_ENUMERATOR
 enum ImageUnit : unsigned { EIKON_LAYOUT_IMAGE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
 enum PowerTally : unsigned { EIKON_LAYOUT_POWER_TALLIES(EIKON_LAYOUT_ENUMERATOR) };
 enum SharpSurfaceKind : int { EIKON_LAYOUT_SHARP_SURFACE_KINDS(EIKON_LAYOUT_ENUMERATOR) };
+enum SolverBinding : unsigned { EIKON_LAYOUT_SOLVER_BINDINGS(EIKON_LAYOUT_ENUMERATOR) };
 #undef EIKON_LAYOUT_ENUMERATOR
 static_assert(kTallyCount == kUnfollowed + 1, "kTallyCount counts the tallies");
 

@@ -491,7 +491,7 @@ void readSimOptics(const JsonReader& node, SimDesc& sim) {
 // keys left out.
 SimDesc readSim(const JsonReader& node) {
     SimDesc sim;
-    const auto fields = node.object({"fluid", "resolution", "bounds", "frame_time", "substeps", "cfl", "gravity",
+    const auto fields = node.object({"fluid", "device", "resolution", "bounds", "frame_time", "substeps", "cfl", "gravity",
                                      "thermal_expansion", "concentration_expansion", "viscosity",
                                      "thermal_diffusivity", "concentration_diffusivity", "dye_diffusivity",
                                      "pressure_tolerance", "boundaries", "obstacles", "sources",
@@ -503,6 +503,10 @@ SimDesc readSim(const JsonReader& node) {
         sim.viscosity = 1.0e-6;
         sim.thermalDiffusivity = 1.43e-7;
         sim.concentrationDiffusivity = 5.2e-10;  // sucrose in water
+    }
+    if (auto device = fields.optional("device")) {
+        const std::string name = device->oneOf({"auto", "cpu", "gpu"});
+        sim.device = name == "cpu" ? SimDesc::Device::Cpu : name == "gpu" ? SimDesc::Device::Gpu : SimDesc::Device::Auto;
     }
     if (auto resolution = fields.optional("resolution")) {
         sim.resolution = resolution->ivec3(1, static_cast<int>(kMaxGridCells));

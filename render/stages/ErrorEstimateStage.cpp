@@ -2,7 +2,7 @@
 
 #include "bridge/core/PrimeStride.h"
 #include "bridge/layout/GpuLayouts.h"
-#include "render/gl/GlContext.h"
+#include "gl/GlContext.h"
 
 #include <glm/geometric.hpp>
 

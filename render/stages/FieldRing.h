@@ -2,7 +2,7 @@
 //
 // Sun et al. ([Sun08] §5.2) lost about a tenth of every frame copying volumes
 // between OpenGL and CUDA. Here each field the scene has (δn, κ, σs, g) lives
-// in a ring of persistently mapped GL buffers (render/gl/MappedBuffer.h): the
+// in a ring of persistently mapped GL buffers (gl/MappedBuffer.h): the
 // simulation writes frame k+1 straight into one slot, from any thread, while
 // the GPU copies frame k from another slot into the 3D textures the tracer
 // samples (a GPU-side copy: the shaders need hardware trilinear filtering,
@@ -13,7 +13,7 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/FieldViews.h"
-#include "render/gl/MappedBuffer.h"
+#include "gl/MappedBuffer.h"
 #include "render/stages/FieldTextures.h"
 
 #include <array>

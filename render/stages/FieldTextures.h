@@ -8,7 +8,7 @@
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 
 #include <cstdint>
 

@@ -2,8 +2,8 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/grid/FieldSet.h"
-#include "render/gl/GlDebug.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlDebug.h"
+#include "gl/ShaderLibrary.h"
 #include "render/stages/ImageSpaceView.h"
 #include "render/stages/PhotonEmission.h"
 

@@ -1,7 +1,7 @@
 #include "render/stages/ImageSpaceView.h"
 
-#include "render/gl/GlDebug.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlDebug.h"
+#include "gl/ShaderLibrary.h"
 #include "render/stages/ViewStage.h"
 
 #include <glm/gtc/type_ptr.hpp>

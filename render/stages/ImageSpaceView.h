@@ -7,7 +7,7 @@
 
 #include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SurfaceLayers.h"

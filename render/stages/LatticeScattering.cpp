@@ -2,9 +2,9 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
-#include "render/gl/GlDebug.h"
-#include "render/gl/GpuMemory.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlDebug.h"
+#include "gl/GpuMemory.h"
+#include "gl/ShaderLibrary.h"
 
 #include <algorithm>
 #include <cmath>

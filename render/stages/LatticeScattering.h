@@ -19,7 +19,7 @@
 #pragma once
 
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/SharpSurfaceBuffer.h"
 

@@ -1,9 +1,9 @@
 #include "render/stages/PhotonStage.h"
 
 #include "bridge/layout/GpuLayouts.h"
-#include "render/gl/GlContext.h"
-#include "render/gl/GlDebug.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlContext.h"
+#include "gl/GlDebug.h"
+#include "gl/ShaderLibrary.h"
 #include "render/stages/PhotonEmission.h"
 
 #include "bridge/core/Error.h"

@@ -7,7 +7,7 @@
 #pragma once
 
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/LightPassShare.h"
 #include "render/stages/ReceiverMaps.h"

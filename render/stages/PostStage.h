@@ -2,7 +2,7 @@
 // into 8-bit sRGB, read back for writing.
 #pragma once
 
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,8 +1,8 @@
 #include "render/stages/PrepareStage.h"
 
 #include "bridge/layout/GpuLayouts.h"
-#include "render/gl/GlDebug.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlDebug.h"
+#include "gl/ShaderLibrary.h"
 #include "render/stages/GaussianKernel.h"
 
 namespace eikon::render {

@@ -1,8 +1,8 @@
 #include "render/stages/ReceiverMaps.h"
 
 #include "bridge/core/Error.h"
-#include "render/gl/GlDebug.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlDebug.h"
+#include "gl/ShaderLibrary.h"
 
 #include <glm/geometric.hpp>
 

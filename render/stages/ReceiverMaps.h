@@ -6,7 +6,7 @@
 
 #include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 
 #include <cstdint>
 #include <vector>

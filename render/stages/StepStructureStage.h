@@ -9,7 +9,7 @@
 
 #include "bridge/grid/GridSpec.h"
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 
 namespace eikon::render {

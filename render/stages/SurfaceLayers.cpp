@@ -2,8 +2,8 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/layout/GpuLayouts.h"
-#include "render/gl/GlDebug.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlDebug.h"
+#include "gl/ShaderLibrary.h"
 #include "render/stages/ShapeTriangles.h"
 
 #include <glm/geometric.hpp>

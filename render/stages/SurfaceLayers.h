@@ -9,8 +9,8 @@
 #pragma once
 
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
-#include "render/gl/RasterTarget.h"
+#include "gl/GlObjects.h"
+#include "gl/RasterTarget.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/SharpSurfaceBuffer.h"
 

@@ -13,7 +13,7 @@
 #include "bridge/grid/GridSpec.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
-#include "render/gl/GlDebug.h"
+#include "gl/GlDebug.h"
 
 #include <algorithm>
 #include <string>

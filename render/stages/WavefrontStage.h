@@ -13,8 +13,8 @@
 
 #include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
-#include "render/gl/GlObjects.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlObjects.h"
+#include "gl/ShaderLibrary.h"
 #include "render/stages/LightPassShare.h"
 
 #include <glm/vec3.hpp>

@@ -19,7 +19,7 @@ namespace eikon::shader {
 
 using namespace glm;
 using uint = glm::uint;
-// Constants GLSL is given (render/gl/ShaderLibrary prepends them).
+// Constants GLSL is given (gl/ShaderLibrary prepends them).
 using layout::kSharpBox;
 using layout::kSharpTriangles;
 using layout::kSharpSphere;

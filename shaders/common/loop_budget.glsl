@@ -1,5 +1,5 @@
 // The loop iterations an invocation may still run where the driver caps
-// them (render/gl/GlContext.h, loopBudgetForRenderer, given as
+// them (gl/GlContext.h, loopBudgetForRenderer, given as
 // EIKON_LOOP_BUDGET; 0: no cap, and nothing is counted). Every loop that may
 // run long spends from it, and a tracer whose budget is gone ends its ray —
 // a photon as cut off, counted in the energy balance — before the driver

@@ -9,21 +9,16 @@
 
 namespace eikon::sim {
 
-namespace {
-
-constexpr double kGaussSeidelBelow = 0.5;  // Jacobi contraction per sweep under which Gauss–Seidel beats CG
-
-}  // namespace
-
-ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, const std::vector<DiffusionRole>& roles) {
-    a_.size = size;
-    a_.identity = 1.0;
-    a_.diagonalClass.assign(roles.size(), SevenPointOperator::kNotUnknown);
-    a_.coupled.assign(roles.size(), 0);
+SevenPointOperator diffusionOperator(glm::ivec3 size, const std::vector<DiffusionRole>& roles) {
+    SevenPointOperator a;
+    a.size = size;
+    a.identity = 1.0;
+    a.diagonalClass.assign(roles.size(), SevenPointOperator::kNotUnknown);
+    a.coupled.assign(roles.size(), 0);
     tbb::parallel_for(0, size.z, [&](int k) {
         for (int j = 0; j < size.y; ++j)
             for (int i = 0; i < size.x; ++i) {
-                const std::size_t c = a_.index(i, j, k);
+                const std::size_t c = a.index(i, j, k);
                 if (roles[c] != DiffusionRole::Free) continue;
                 std::uint8_t exchanging = 0;
                 const glm::ivec3 cell(i, j, k);
@@ -32,15 +27,20 @@ ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, const std::vector<Diffusio
                         glm::ivec3 m = cell;
                         m[axis] += side == 0 ? -1 : 1;
                         if (m[axis] < 0 || m[axis] >= size[axis]) continue;
-                        const DiffusionRole role = roles[a_.index(m.x, m.y, m.z)];
+                        const DiffusionRole role = roles[a.index(m.x, m.y, m.z)];
                         if (role == DiffusionRole::Excluded) continue;
                         exchanging |= SevenPointOperator::bit(axis, side);
-                        if (role == DiffusionRole::Free) a_.coupled[c] |= SevenPointOperator::bit(axis, side);
+                        if (role == DiffusionRole::Free) a.coupled[c] |= SevenPointOperator::bit(axis, side);
                     }
-                a_.diagonalClass[c] = exchanging;
+                a.diagonalClass[c] = exchanging;
             }
     });
-    a_.setWeight(glm::dvec3(0.0));
+    a.setWeight(glm::dvec3(0.0));
+    return a;
+}
+
+ImplicitDiffusion::ImplicitDiffusion(glm::ivec3 size, const std::vector<DiffusionRole>& roles)
+    : a_(diffusionOperator(size, roles)) {
     a_.classifyRows();
     increment_.assign(roles.size(), 0.0);
     rhs_.assign(roles.size(), 0.0);

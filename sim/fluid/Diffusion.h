@@ -21,6 +21,17 @@ namespace eikon::sim {
 // Edges of the lattice are Neumann: no flux leaves the grid.
 enum class DiffusionRole : std::uint8_t { Free, Fixed, Excluded };
 
+// The Jacobi contraction per sweep under which red–black Gauss–Seidel
+// reaches the tolerance in fewer bytes moved than CG.
+constexpr double kGaussSeidelBelow = 0.5;
+
+// The operator I + Δt·D·L of a lattice with these roles: a Free sample is an
+// unknown coupled to its Free neighbours, its diagonal gaining the weight of
+// every neighbour it exchanges with (Free or Fixed); Fixed and Excluded
+// samples are no unknowns; the lattice's edges are Neumann. Weights are 0
+// until a solve sets Δt·D/h² (SevenPointOperator::setWeight).
+SevenPointOperator diffusionOperator(glm::ivec3 size, const std::vector<DiffusionRole>& roles);
+
 // Backward-Euler diffusion of the fields of one lattice with fixed roles. The
 // operator's structure depends only on the roles, so it is built once; a solve
 // only retabulates the diagonal when Δt·D/h² changes, and reuses its scratch.

@@ -24,12 +24,17 @@ void requireFinite(const GridField& field, const std::string& name, const std::s
         },
         [](std::size_t a, std::size_t b) { return std::min(a, b); });
     if (first == none) return;
-    const auto nx = static_cast<std::size_t>(field.size.x);
-    const auto ny = static_cast<std::size_t>(field.size.y);
-    const std::string where = "sim: field " + name + ", " + sample + " (" + std::to_string(first % nx) + ", " +
-                              std::to_string((first / nx) % ny) + ", " + std::to_string(first / (nx * ny)) +
+    throwNotFinite(name, sample, field.size, first, field.values[first], when);
+}
+
+void throwNotFinite(const std::string& name, const std::string& sample, glm::ivec3 size, std::size_t index,
+                    double value, const std::string& when) {
+    const auto nx = static_cast<std::size_t>(size.x);
+    const auto ny = static_cast<std::size_t>(size.y);
+    const std::string where = "sim: field " + name + ", " + sample + " (" + std::to_string(index % nx) + ", " +
+                              std::to_string((index / nx) % ny) + ", " + std::to_string(index / (nx * ny)) +
                               ") " + when;
-    throw InputError(where, "a finite value", formatNumber(field.values[first]));
+    throw InputError(where, "a finite value", formatNumber(value));
 }
 
 }  // namespace eikon::sim

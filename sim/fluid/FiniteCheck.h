@@ -17,4 +17,9 @@ namespace eikon::sim {
 void requireFinite(const GridField& field, const std::string& name, const std::string& sample,
                    const std::string& when);
 
+// The same error for sample `index` of a lattice of `size` holding `value`
+// (a backend that found it elsewhere: sim/gpu/GpuFiniteCheck.h).
+[[noreturn]] void throwNotFinite(const std::string& name, const std::string& sample, glm::ivec3 size,
+                                 std::size_t index, double value, const std::string& when);
+
 }  // namespace eikon::sim

@@ -1,9 +1,11 @@
 #include "sim/fluid/FluidSimulation.h"
 
 #include "bridge/core/Error.h"
+#include "sim/fluid/DiffusionRoles.h"
 #include "sim/fluid/FiniteCheck.h"
 #include "sim/fluid/MassCorrection.h"
 #include "sim/fluid/ParallelOps.h"
+#include "sim/fluid/SolverLimits.h"
 
 #include <algorithm>
 #include <chrono>
@@ -14,9 +16,6 @@ namespace eikon::sim {
 namespace {
 
 enum Phase { kSources, kAdvection, kDiffusion, kProjection };
-
-constexpr double kDiffusionTolerance = 1e-8;  // relative max-norm residual of each implicit diffusion solve
-constexpr int kMaxSolverIterations = 1000;
 
 GridSpec solverGridOf(const SimDesc& desc, const GridSpec& renderGrid) {
     GridSpec grid{desc.resolution, renderGrid.boundsMin, renderGrid.boundsMax};
@@ -68,28 +67,18 @@ FluidSimulation::FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid
 }
 
 void FluidSimulation::rebuildRoles() {
-    std::vector<DiffusionRole> scalarRoles(domain_.solid.size(), DiffusionRole::Free);
-    for (std::size_t c = 0; c < scalarRoles.size(); ++c)
-        if (domain_.solid[c]) scalarRoles[c] = DiffusionRole::Excluded;
-    std::vector<DiffusionRole> temperatureRoles = scalarRoles;
-    sources_.holdTemperature(temperatureRoles);
+    const DiffusionRoles roles = diffusionRoles(domain_, sources_, state_.flow);
     const glm::ivec3 cells = state_.flow.grid.resolution;
-    temperatureDiffusion_ = ImplicitDiffusion(cells, temperatureRoles);
-    concentrationDiffusion_ = ImplicitDiffusion(cells, scalarRoles);
-    dyeDiffusion_ = ImplicitDiffusion(cells, scalarRoles);
-    for (int axis = 0; axis < 3; ++axis) {
-        const GridField& u = state_.flow.velocity[axis];
-        std::vector<DiffusionRole> roles(u.count(), DiffusionRole::Free);
-        for (int k = 0; k < u.size.z; ++k)
-            for (int j = 0; j < u.size.y; ++j)
-                for (int i = 0; i < u.size.x; ++i)
-                    if (domain_.faceIsFixed(axis, i, j, k)) roles[u.index(i, j, k)] = DiffusionRole::Fixed;
-        velocityDiffusion_[axis] = ImplicitDiffusion(u.size, roles);
-    }
+    temperatureDiffusion_ = ImplicitDiffusion(cells, roles.temperature);
+    concentrationDiffusion_ = ImplicitDiffusion(cells, roles.scalars);
+    dyeDiffusion_ = ImplicitDiffusion(cells, roles.scalars);
+    for (int axis = 0; axis < 3; ++axis)
+        velocityDiffusion_[axis] = ImplicitDiffusion(state_.flow.velocity[axis].size, roles.velocity[axis]);
 }
 
 void FluidSimulation::addSolidMask(const std::vector<std::uint8_t>& solid) {
     EIKON_CHECK(solid.size() == domain_.solid.size());
+    EIKON_CHECK_MSG(!device_, "solids are added before a device takes the solver");
     for (std::size_t c = 0; c < solid.size(); ++c)
         if (solid[c]) domain_.solid[c] = 1;
     pressure_ = std::make_unique<PressureSolver>(domain_, state_.flow.h);
@@ -97,15 +86,41 @@ void FluidSimulation::addSolidMask(const std::vector<std::uint8_t>& solid) {
     enforceVelocityBoundaries(state_.flow, domain_);
 }
 
+void FluidSimulation::attachDevice(std::unique_ptr<FluidDevice> device) {
+    device_ = std::move(device);
+    device_->upload(state_);
+    deviceAhead_ = hostAhead_ = false;
+}
+
+FluidState& FluidSimulation::state() {
+    static_cast<const FluidSimulation&>(*this).state();
+    if (device_) hostAhead_ = true;
+    return state_;
+}
+
+const FluidState& FluidSimulation::state() const {
+    if (deviceAhead_) {
+        device_->download(const_cast<FluidState&>(state_));
+        deviceAhead_ = false;
+    }
+    return state_;
+}
+
+double FluidSimulation::maxCellCrossingRate() {
+    if (!device_ || hostAhead_) return state_.flow.maxCellCrossingRate();
+    return device_->maxCellCrossingRate();
+}
+
 void FluidSimulation::advanceFrame() {
     for (PhaseTiming& t : timings_) t = {t.phase};
+
     double remaining = desc_.frameTime;
     int minimumLeft = desc_.substeps;
     lastSubsteps_ = 0;
     while (true) {
         // Substeps left: at least the requested count, and enough that the
         // fastest face crosses at most `cfl` cells in one.
-        const double needed = std::ceil(remaining * state_.flow.maxCellCrossingRate() / desc_.cfl);
+        const double needed = std::ceil(remaining * maxCellCrossingRate() / desc_.cfl);
         const int left = std::max(minimumLeft, static_cast<int>(std::min(needed, 1e9)));
         const double dt = left <= 1 ? remaining : remaining / left;
         substep(dt);
@@ -124,6 +139,7 @@ void FluidSimulation::updateTime() { time_ = static_cast<double>(frames_) * desc
 
 void FluidSimulation::step(double dt) {
     for (PhaseTiming& t : timings_) t = {t.phase};
+
     substep(dt);
     lastSubsteps_ = 1;
     steppedTime_ += dt;
@@ -131,6 +147,19 @@ void FluidSimulation::step(double dt) {
 }
 
 void FluidSimulation::substep(double dt) {
+    if (!device_) {
+        substepOnCpu(dt);
+        return;
+    }
+    if (hostAhead_) {
+        device_->upload(state_);
+        hostAhead_ = false;
+    }
+    device_->substep(dt, timings_);
+    deviceAhead_ = true;
+}
+
+void FluidSimulation::substepOnCpu(double dt) {
     checkFinite("at the start of a substep", kScalars | kVelocity | kPressure);  // what was handed in from outside
     {
         PhaseClock clock(timing(kSources));
@@ -204,6 +233,7 @@ void FluidSimulation::checkFinite(const std::string& phase, unsigned fields) con
 }
 
 SolverScalars FluidSimulation::scalars() const {
+    state();
     return {solverGrid(), state_.temperature, state_.concentration, state_.dye, desc_.ambientTemperature};
 }
 

@@ -11,6 +11,8 @@
 // Every field is checked for NaN/Inf after every phase (FiniteCheck.h).
 // A frame advances SimDesc::frameTime in at least SimDesc::substeps equal
 // substeps, more where the fastest face would cross more than SimDesc::cfl cells.
+// The substeps run here on the CPU, or on an attached FluidDevice (the GPU,
+// sim/gpu/GpuFluidBackend.h), which runs the same phases.
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
@@ -18,7 +20,9 @@
 #include "sim/fluid/Advection.h"
 #include "sim/fluid/Boundaries.h"
 #include "sim/fluid/Diffusion.h"
+#include "sim/fluid/FluidDevice.h"
 #include "sim/fluid/FluidState.h"
+#include "sim/fluid/PhaseTiming.h"
 #include "sim/fluid/PressureSolver.h"
 #include "sim/fluid/Sources.h"
 #include "sim/field/SolverScalars.h"
@@ -30,17 +34,6 @@
 #include <vector>
 
 namespace eikon::sim {
-
-// Wall time of one phase summed over the substeps of the last frame, with the
-// solver iterations it took (diffusion: Gauss–Seidel sweeps or CG iterations,
-// summed over the fields; pressure: PCG iterations) and the worst relative
-// residual they reached.
-struct PhaseTiming {
-    std::string phase;  // "sources", "advection", "diffusion", "projection"
-    double milliseconds = 0.0;
-    int iterations = 0;
-    double residual = 0.0;
-};
 
 class FluidSimulation {
 public:
@@ -59,6 +52,16 @@ public:
     // Temperature, concentration and dye on the solver grid, for the optical mapping.
     SolverScalars scalars() const;
 
+    // From now on the substeps run on `device`, which takes the current state.
+    // Attach after the last addSolidMask.
+    void attachDevice(std::unique_ptr<FluidDevice> device);
+    // "cpu", or the attached device's name.
+    std::string deviceName() const { return device_ ? device_->name() : "cpu"; }
+    // Bytes moved between host and device since the last call (0 on the CPU).
+    std::uint64_t takeBusBytes() { return device_ ? device_->takeBusBytes() : 0; }
+    const SimDesc& desc() const { return desc_; }
+    const SceneSources& sources() const { return sources_; }
+
     double time() const { return time_; }
     int lastSubsteps() const { return lastSubsteps_; }
     const std::vector<PhaseTiming>& lastTimings() const { return timings_; }
@@ -69,11 +72,15 @@ public:
 
     const GridSpec& solverGrid() const { return state_.flow.grid; }
     const FluidDomain& domain() const { return domain_; }
-    FluidState& state() { return state_; }
-    const FluidState& state() const { return state_; }
+    // The state on the host, brought up to date from an attached device
+    // first; the mutable one is taken back to the device before the next substep.
+    FluidState& state();
+    const FluidState& state() const;
 
 private:
     void substep(double dt);
+    void substepOnCpu(double dt);
+    double maxCellCrossingRate();
     // Advection of the scalars and the velocity in a closed domain, with each
     // scalar's total restored (MassCorrection.h).
     void advectConserving(const std::vector<GridField*>& scalars, double dt);
@@ -99,6 +106,10 @@ private:
     long long frames_ = 0;      // advanceFrame calls
     double steppedTime_ = 0.0;  // Σ dt of step() calls
     int lastSubsteps_ = 0;
+    std::unique_ptr<FluidDevice> device_;
+    // Which copy is newer, while a device is attached.
+    mutable bool deviceAhead_ = false;
+    bool hostAhead_ = false;
 };
 
 }  // namespace eikon::sim

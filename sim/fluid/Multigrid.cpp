@@ -7,13 +7,6 @@
 
 namespace eikon::sim {
 
-namespace {
-
-constexpr int kSmoothingSweeps = 2;  // red–black pairs before and after the coarse correction
-constexpr int kMinCoarsenSize = 4;   // an axis shorter than this is not coarsened
-
-}  // namespace
-
 MultigridPreconditioner::AxisTransfer MultigridPreconditioner::makeTransfer(int fine, bool coarsen) {
     AxisTransfer t;
     const int coarse = coarsen ? (fine + 1) / 2 : fine;

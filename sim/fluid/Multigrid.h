@@ -15,6 +15,9 @@
 
 namespace eikon::sim {
 
+constexpr int kSmoothingSweeps = 2;  // red–black pairs before and after the coarse correction
+constexpr int kMinCoarsenSize = 4;   // an axis shorter than this is not coarsened
+
 class MultigridPreconditioner {
 public:
     // The fine operator is poissonOperator(size, h, active, openFaces).

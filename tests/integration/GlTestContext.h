@@ -2,7 +2,7 @@
 // without a GPU), made current on first use.
 #pragma once
 
-#include "render/gl/GlContext.h"
+#include "gl/GlContext.h"
 
 namespace eikon::test {
 

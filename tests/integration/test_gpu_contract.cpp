@@ -6,10 +6,10 @@
 // resource whose name the tables below do not know fails the test: a new
 // block, sampler or image needs its row here.
 #include "bridge/layout/GpuLayouts.h"
-#include "render/gl/EmbeddedShaders.h"
-#include "render/gl/GlContext.h"
-#include "render/gl/GlObjects.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/EmbeddedShaders.h"
+#include "gl/GlContext.h"
+#include "gl/GlObjects.h"
+#include "gl/ShaderLibrary.h"
 #include "tests/integration/GlTestContext.h"
 
 #include <gtest/gtest.h>
@@ -406,7 +406,7 @@ TEST(GpuContract, CompilerMessagesNameTheShadersOwnLine) {
 }
 
 // llvmpipe caps the loop iterations of each SIMD vector of invocations,
-// all loops together (render/gl/GlContext.h); the budget a lane may spend
+// all loops together (gl/GlContext.h); the budget a lane may spend
 // is 65 535 over its lane count, and no cap elsewhere.
 TEST(GpuContract, LoopBudgetKeepsUnderTheDriversCap) {
     EXPECT_EQ(gl::loopBudgetForRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"), 65535u / 8u);

@@ -10,7 +10,7 @@
 // - its ledger: source = absorbed + escaped at convergence; albedo 1 (no
 //   blow-up), warm starts, the same bits every run.
 #include "bridge/grid/FieldSet.h"
-#include "render/gl/GlObjects.h"
+#include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/LatticeScattering.h"
 #include "sim/field/GridField.h"

@@ -1,8 +1,8 @@
 // The physics math of shaders/common is written once and compiled both as
 // GLSL and as C++ (shaders/common/cpp_shim.h). This runs the same functions
 // on random inputs in a compute shader and on the CPU and compares.
-#include "render/gl/GlObjects.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlObjects.h"
+#include "gl/ShaderLibrary.h"
 #include "shaders/common/cpp_shim.h"
 #include "tests/integration/GlTestContext.h"
 

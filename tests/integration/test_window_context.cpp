@@ -1,8 +1,8 @@
 // The windowed OpenGL context (GLFW), run under Xvfb by ctest: it must give
 // OpenGL 4.5 core and run eikon's compute shaders like the headless one.
-#include "render/gl/GlContext.h"
-#include "render/gl/GlObjects.h"
-#include "render/gl/ShaderLibrary.h"
+#include "gl/GlContext.h"
+#include "gl/GlObjects.h"
+#include "gl/ShaderLibrary.h"
 
 #include <gtest/gtest.h>
 

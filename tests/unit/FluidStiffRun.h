@@ -4,6 +4,8 @@
 // of the explicit limit Δt·D/h² = 1/6, without gravity.
 #pragma once
 
+#include <functional>
+
 namespace eikon::sim {
 
 struct StiffRunResult {
@@ -14,6 +16,11 @@ struct StiffRunResult {
     bool finite = true;                // every velocity and temperature finite after every step
 };
 
-StiffRunResult runStiffVortex(int cells, double cfl, double diffusionOverExplicitLimit, int steps);
+class FluidSimulation;
+
+// `place` may attach a device to the solver once its initial state is set
+// (the GPU backend's tests); by default the run stays on the CPU.
+StiffRunResult runStiffVortex(int cells, double cfl, double diffusionOverExplicitLimit, int steps,
+                              const std::function<void(FluidSimulation&)>& place = {});
 
 }  // namespace eikon::sim

@@ -28,7 +28,7 @@ const char* const kValidSim = R"({
   "frame_time": 0.02, "substeps": 3, "cfl": 1.5, "gravity": [0, -9.8, 0],
   "thermal_expansion": 3e-4, "concentration_expansion": 0.2, "viscosity": 2e-6,
   "thermal_diffusivity": 1.5e-7, "concentration_diffusivity": 1e-9, "dye_diffusivity": 1e-8,
-  "pressure_tolerance": 1e-5,
+  "pressure_tolerance": 1e-5, "device": "gpu",
   "boundaries": {"y_max": "open", "x_min": "closed"},
   "obstacles": [{"type": "box", "min": [-0.05, 0, -0.05], "max": [0.05, 0.1, 0.05]},
                 {"type": "sphere", "center": [0, 0.3, 0], "radius": 0.04}],
@@ -47,6 +47,7 @@ TEST(SceneParserSim, ParsesEverySimKey) {
     const SimDesc& sim = *scene.sim;
     EXPECT_EQ(sim.fluid, SimDesc::Fluid::Liquid);
     EXPECT_EQ(sim.resolution, glm::ivec3(24, 32, 16));
+    EXPECT_EQ(sim.device, SimDesc::Device::Gpu);
     ASSERT_TRUE(sim.bounds.has_value());
     EXPECT_EQ(sim.bounds->min, glm::dvec3(-0.2, 0, -0.1));
     EXPECT_EQ(sim.bounds->max, glm::dvec3(0.2, 0.5, 0.1));
@@ -119,6 +120,7 @@ TEST(SceneParserSim, BadValuesNameTheirJsonPath) {
     };
     const Case cases[] = {
         {"fluid", "water", "sim.fluid", "one of"},
+        {"device", "cuda", "sim.device", "one of"},
         {"resolution", json::array({0, 8, 8}), "sim.resolution[0]", "an integer in [1, "},
         {"frame_time", 0, "sim.frame_time", "a number > 0"},
         {"substeps", 2.5, "sim.substeps", "an integer in [1, 10000]"},

@@ -1,0 +1,164 @@
+// The fluid solver's GPU backend (sim/gpu/GpuFluidBackend.h) against its
+// CPU backend: the same plume stepped on both, the same NaN/Inf reports,
+// the same phase records, and what crosses the bus.
+#include "sim/fluid/FluidSimulation.h"
+
+#include "bridge/core/Error.h"
+#include "sim/gpu/GpuFluidBackend.h"
+#include "tests/integration/GlTestContext.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+namespace eikon::sim {
+namespace {
+
+// The heat-shimmer scene's solver (scenes/heat_shimmer.json: air over a
+// 450 K plate, open top, frame 0.04 s in 2 substeps) at `cells`³ over a 0.4 m box.
+SimDesc shimmerPlume(int cells) {
+    SimDesc desc;
+    desc.resolution = glm::ivec3(cells);
+    desc.bounds = BoxShape{glm::dvec3(-0.2, 0.0, -0.2), glm::dvec3(0.2, 0.4, 0.2)};
+    desc.boundaries[faceIndex(1, 1)] = SimDesc::Boundary::Open;
+    SimDesc::Source plate;
+    plate.region = {glm::dvec3(-0.08, 0.0, -0.08), glm::dvec3(0.08, 0.012, 0.08)};
+    plate.temperature = 450.0;
+    desc.sources.push_back(plate);
+    return desc;
+}
+
+const GridSpec kRenderGrid{glm::ivec3(16), glm::dvec3(-0.2, 0.0, -0.2), glm::dvec3(0.2, 0.4, 0.2)};
+
+void placeOnGpu(FluidSimulation& sim) {
+    test::glContext();
+    sim.attachDevice(std::make_unique<gpu::GpuFluidBackend>(sim));
+}
+
+// ‖a − b‖₂ / ‖b − reference‖₂ over the samples of one field.
+double relativeL2(const GridField& a, const GridField& b, double reference = 0.0) {
+    double difference = 0.0, norm = 0.0;
+    for (std::size_t s = 0; s < a.count(); ++s) {
+        difference += (a.values[s] - b.values[s]) * (a.values[s] - b.values[s]);
+        norm += (b.values[s] - reference) * (b.values[s] - reference);
+    }
+    return std::sqrt(difference / norm);
+}
+
+// Acceptance: the plume after 50 substeps at 32³ on both backends. The
+// temperature is compared as its excess over ambient (relative to T itself
+// every difference would look 10⁴× smaller), the velocity over all faces.
+// Bound 1e-3; float32 storage alone rounds each sample by 6e-8 relative, and
+// what separates the runs further is the solvers' tolerances (pressure 1e-6,
+// each iteration's float32 rounding of the fields).
+TEST(GpuFluid, PlumeMatchesTheCpuBackendAfterFiftySteps) {
+    const SimDesc desc = shimmerPlume(32);
+    FluidSimulation cpu(desc, kRenderGrid);
+    FluidSimulation gpu(desc, kRenderGrid);
+    placeOnGpu(gpu);
+    EXPECT_EQ(gpu.deviceName(), "gpu");
+    for (int step = 0; step < 50; ++step) {
+        cpu.step(0.02);
+        gpu.step(0.02);
+    }
+    const FluidState& a = static_cast<const FluidSimulation&>(gpu).state();
+    const FluidState& b = static_cast<const FluidSimulation&>(cpu).state();
+    const double temperature = relativeL2(a.temperature, b.temperature, desc.ambientTemperature);
+    double velocityDifference = 0.0, velocityNorm = 0.0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (std::size_t s = 0; s < a.flow.velocity[axis].count(); ++s) {
+            const double d = a.flow.velocity[axis].values[s] - b.flow.velocity[axis].values[s];
+            velocityDifference += d * d;
+            velocityNorm += b.flow.velocity[axis].values[s] * b.flow.velocity[axis].values[s];
+        }
+    const double velocity = std::sqrt(velocityDifference / velocityNorm);
+    test::reportFigure("plume_temperature_relative_l2", temperature);
+    test::reportFigure("plume_velocity_relative_l2", velocity);
+    EXPECT_LT(temperature, 1e-3);
+    EXPECT_LT(velocity, 1e-3);
+    EXPECT_GT(std::sqrt(velocityNorm / 3.0), 0.0) << "the plate should have set the air moving";
+}
+
+// The phases are recorded alike: same names, iterations of the same order.
+TEST(GpuFluid, PhaseRecordsMatchTheCpuBackend) {
+    const SimDesc desc = shimmerPlume(24);
+    FluidSimulation cpu(desc, kRenderGrid);
+    FluidSimulation gpu(desc, kRenderGrid);
+    placeOnGpu(gpu);
+    for (int step = 0; step < 5; ++step) {
+        cpu.step(0.02);
+        gpu.step(0.02);
+    }
+    ASSERT_EQ(gpu.lastTimings().size(), cpu.lastTimings().size());
+    for (std::size_t p = 0; p < cpu.lastTimings().size(); ++p) {
+        const PhaseTiming& g = gpu.lastTimings()[p];
+        const PhaseTiming& c = cpu.lastTimings()[p];
+        EXPECT_EQ(g.phase, c.phase);
+        EXPECT_GT(g.milliseconds, 0.0) << g.phase;
+        EXPECT_NEAR(g.iterations, c.iterations, 0.5 * c.iterations + 3) << g.phase;
+        EXPECT_LE(g.residual, 1e-5) << g.phase;
+    }
+    EXPECT_GT(gpu.lastTimings()[3].iterations, 0) << "the projection iterates";
+}
+
+std::string messageOf(FluidSimulation& sim) {
+    try {
+        sim.step(0.01);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+// NaN/Inf on the GPU is reported as the CPU reports it: field, sample and
+// phase — values handed in at the start of a substep, and a buoyancy that
+// overflows after sources.
+TEST(GpuFluid, NonFiniteValuesAreCaughtWithFieldAndCell) {
+    SimDesc desc;
+    desc.resolution = glm::ivec3(12);
+    desc.bounds = BoxShape{glm::dvec3(-0.2, 0.0, -0.2), glm::dvec3(0.2, 0.4, 0.2)};
+    {
+        FluidSimulation sim(desc, kRenderGrid);
+        placeOnGpu(sim);
+        sim.state().temperature(3, 4, 5) = std::numeric_limits<double>::quiet_NaN();
+        EXPECT_EQ(messageOf(sim),
+                  "sim: field temperature, cell (3, 4, 5) at the start of a substep: expected a finite value, found nan");
+    }
+    {
+        FluidSimulation sim(desc, kRenderGrid);
+        placeOnGpu(sim);
+        sim.state().flow.velocity[1](2, 7, 1) = std::numeric_limits<double>::infinity();
+        EXPECT_EQ(messageOf(sim),
+                  "sim: field velocity_y, face (2, 7, 1) at the start of a substep: expected a finite value, found inf");
+    }
+    {
+        SimDesc hot = desc;
+        hot.thermalExpansion = 1e30;  // overflows float32 at the one hot cell
+        FluidSimulation sim(hot, kRenderGrid);
+        placeOnGpu(sim);
+        sim.state().temperature(1, 2, 3) += 1e10;
+        EXPECT_EQ(messageOf(sim), "sim: field velocity_y, face (1, 2, 3) after sources: expected a finite value, found inf");
+    }
+}
+
+// After the first frame's upload, a frame moves only what the host decides
+// on: the CFL count's three largest speeds, the stopping tests' residuals
+// and the NaN checks' slots — a few kilobytes, not a field.
+TEST(GpuFluid, FramesMoveNoFieldAcrossTheBus) {
+    SimDesc desc = shimmerPlume(24);
+    FluidSimulation sim(desc, kRenderGrid);
+    placeOnGpu(sim);
+    sim.advanceFrame();
+    sim.takeBusBytes();  // the first upload
+    sim.advanceFrame();
+    const std::uint64_t bytes = sim.takeBusBytes();
+    test::reportFigure("bus_bytes_per_frame", static_cast<double>(bytes));
+    EXPECT_GT(bytes, 0u);
+    EXPECT_LT(bytes, 24u * 24u * 24u * sizeof(float)) << "less than one field";
+}
+
+}  // namespace
+}  // namespace eikon::sim
