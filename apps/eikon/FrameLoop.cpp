@@ -211,7 +211,7 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
                               {"iterations", phase.iterations},
                               {"residual", phase.residual}});
         report["simulation"] = phases;
-        report["simulation_device"] = produced.simulationDevice;
+        if (!produced.simulationDevice.empty()) report["simulation_device"] = produced.simulationDevice;
     }
     // Everything that crossed between host and GPU memory for this frame:
     // uploads, the fields written into the mapped ring, what the solver moved.

@@ -64,11 +64,12 @@ Distribution chooseDistribution(const RunOptions& options, const Scene& scene, c
 
 int runCommand(const RunOptions& options) {
     Ranks& ranks = Ranks::world();
+    // The context outlives the fields: a solver on the GPU holds GL objects.
+    std::unique_ptr<gl::GlContext> context;
     Scene scene;
     std::unique_ptr<sim::SceneFields> fields;
     std::filesystem::path outDir;
     Distribution distribution = Distribution::None;
-    std::unique_ptr<gl::GlContext> context;
     // Everything the user supplied is checked before anything is written,
     // by every rank alike (Ranks::checkInputsTogether).
     ranks.checkInputsTogether([&] {

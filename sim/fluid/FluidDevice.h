@@ -23,6 +23,8 @@ public:
     virtual void upload(const FluidState& state) = 0;
     // Writes the current state into `state`.
     virtual void download(FluidState& state) = 0;
+    // Only temperature, concentration and dye (what the optical mapping reads).
+    virtual void downloadScalars(FluidState& state) = 0;
     // max over faces and axes of |u_a| / h_a (MacGrid::maxCellCrossingRate).
     virtual double maxCellCrossingRate() = 0;
     // One substep of dt seconds, the phases of FluidSimulation.h in their

@@ -102,6 +102,7 @@ const FluidState& FluidSimulation::state() const {
     if (deviceAhead_) {
         device_->download(const_cast<FluidState&>(state_));
         deviceAhead_ = false;
+        hostScalarsCurrent_ = true;
     }
     return state_;
 }
@@ -157,6 +158,7 @@ void FluidSimulation::substep(double dt) {
     }
     device_->substep(dt, timings_);
     deviceAhead_ = true;
+    hostScalarsCurrent_ = false;
 }
 
 void FluidSimulation::substepOnCpu(double dt) {
@@ -233,7 +235,10 @@ void FluidSimulation::checkFinite(const std::string& phase, unsigned fields) con
 }
 
 SolverScalars FluidSimulation::scalars() const {
-    state();
+    if (!hostScalarsCurrent_) {
+        device_->downloadScalars(const_cast<FluidState&>(state_));
+        hostScalarsCurrent_ = true;
+    }
     return {solverGrid(), state_.temperature, state_.concentration, state_.dye, desc_.ambientTemperature};
 }
 

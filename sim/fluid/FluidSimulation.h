@@ -107,8 +107,10 @@ private:
     double steppedTime_ = 0.0;  // Σ dt of step() calls
     int lastSubsteps_ = 0;
     std::unique_ptr<FluidDevice> device_;
-    // Which copy is newer, while a device is attached.
+    // Which copy is newer, while a device is attached; the host's scalars
+    // may be current while the rest of its state is not (scalars()).
     mutable bool deviceAhead_ = false;
+    mutable bool hostScalarsCurrent_ = true;
     bool hostAhead_ = false;
 };
 

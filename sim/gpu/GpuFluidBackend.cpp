@@ -84,19 +84,28 @@ void GpuFluidBackend::upload(const FluidState& state) {
 }
 
 void GpuFluidBackend::download(FluidState& state) {
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    downloadScalars(state);
     for (int axis = 0; axis < 3; ++axis) velocity_[axis].download(state.flow.velocity[axis]);
+    pressure_.download(state.pressure);
+    busBytes_ += fieldBytes() - scalarBytes();
+}
+
+void GpuFluidBackend::downloadScalars(FluidState& state) {
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     temperature_.download(state.temperature);
     concentration_.download(state.concentration);
     dye_.download(state.dye);
-    pressure_.download(state.pressure);
-    busBytes_ += fieldBytes();
+    busBytes_ += scalarBytes();
+}
+
+std::uint64_t GpuFluidBackend::scalarBytes() const {
+    return (temperature_.count() + concentration_.count() + dye_.count()) * sizeof(float);
 }
 
 std::uint64_t GpuFluidBackend::fieldBytes() const {
-    std::uint64_t samples = temperature_.count() + concentration_.count() + dye_.count() + pressure_.count();
+    std::uint64_t samples = pressure_.count();
     for (const GpuField& u : velocity_) samples += u.count();
-    return samples * sizeof(float);
+    return samples * sizeof(float) + scalarBytes();
 }
 
 std::uint64_t GpuFluidBackend::takeBusBytes() { return std::exchange(busBytes_, 0); }

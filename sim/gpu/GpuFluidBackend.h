@@ -34,6 +34,7 @@ public:
     std::string name() const override { return "gpu"; }
     void upload(const FluidState& state) override;
     void download(FluidState& state) override;
+    void downloadScalars(FluidState& state) override;
     double maxCellCrossingRate() override;
     void substep(double dt, std::vector<PhaseTiming>& timings) override;
     std::uint64_t takeBusBytes() override;
@@ -44,6 +45,7 @@ private:
     void checkScalars(const std::string& when);
     void checkVelocity(const std::string& when);
     std::uint64_t fieldBytes() const;  // of every field: one upload or download
+    std::uint64_t scalarBytes() const;  // of temperature, concentration and dye
 
     SimDesc desc_;
     FluidDomain domain_;
