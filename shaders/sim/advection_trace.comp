@@ -9,6 +9,8 @@
 // backward and forward steps start from the same velocity.
 layout(local_size_x = 64) in;
 
+#include "sim/entry_index.glsl"
+
 #include "sim/advection_lattice.glsl"
 
 layout(std430, binding = kSolverVelocityX) readonly buffer VelocityX { float u[]; };
@@ -56,7 +58,7 @@ vec3 cellCentreVelocity(ivec3 cell) {
 }
 
 void main() {
-    uint record = gl_GlobalInvocationID.x;
+    uint record = entryIndex();
     if (record >= recordCount(cells)) return;
     uint cellCount = uint(cells.x * cells.y * cells.z);
     vec3 start;

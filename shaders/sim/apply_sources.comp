@@ -4,13 +4,15 @@
 // sample once (sim/gpu/GpuSources.h), so the entries never race.
 layout(local_size_x = 64) in;
 
+#include "sim/entry_index.glsl"
+
 layout(std430, binding = kSolverSourceCells) readonly buffer Held { uvec2 held[]; };
 layout(std430, binding = kSolverField) buffer Field { float values[]; };
 
 uniform uint count;
 
 void main() {
-    uint e = gl_GlobalInvocationID.x;
+    uint e = entryIndex();
     if (e >= count) return;
     values[held[e].x] = uintBitsToFloat(held[e].y);
 }

@@ -14,6 +14,8 @@
 
 layout(local_size_x = 256) in;
 
+#include "sim/entry_index.glsl"
+
 layout(std430, binding = kSolverResults) readonly buffer Results { double results[]; };
 #if UPDATE == UPDATE_STEP
 layout(std430, binding = kSolverVectorX) buffer VectorX { double x[]; };
@@ -38,7 +40,7 @@ uniform uint unknowns;
 uniform uint count;
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = entryIndex();
     if (i >= count) return;
 #if UPDATE == UPDATE_STEP
     double alpha = results[rhoSlot] / results[curvatureSlot];

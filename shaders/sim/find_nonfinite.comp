@@ -7,6 +7,8 @@
 //           before a later pass can overwrite it.
 layout(local_size_x = 256) in;
 
+#include "sim/entry_index.glsl"
+
 layout(std430, binding = kSolverField) readonly buffer Field { float values[]; };
 layout(std430, binding = kSolverPartials) buffer FirstBad { uint first[]; };  // uint here, not double
 
@@ -14,7 +16,7 @@ uniform uint count;  // FIND: samples; RECORD: the slots a substep has
 uniform uint slot;
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = entryIndex();
 #ifdef FIND
     if (i >= count) return;
     if ((floatBitsToUint(values[i]) & 0x7f800000u) == 0x7f800000u) atomicMin(first[slot], i);

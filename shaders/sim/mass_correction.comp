@@ -16,6 +16,8 @@
 //   STAGE_RESTORE:        φ_c += scale · w_c, one invocation per sample.
 layout(local_size_x = 256) in;
 
+#include "sim/entry_index.glsl"
+
 const int STAGE_RECORD = 0;
 const int STAGE_MEASURE = 1;
 const int STAGE_RESTORE = 2;
@@ -50,7 +52,7 @@ void combine(inout double a[3], double b[3]) {
 }
 
 void restore() {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = entryIndex();
     double scale = results[4u * field + 3u];
     // scale is 0 where restoreTotal returns early, and where nothing is owed.
     if (i >= count || scale == 0.0lf) return;

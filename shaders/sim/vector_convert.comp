@@ -10,13 +10,15 @@
 
 layout(local_size_x = 256) in;
 
+#include "sim/entry_index.glsl"
+
 layout(std430, binding = kSolverVectorX) buffer VectorX { double vector[]; };
 layout(std430, binding = kSolverField) buffer Field { float field[]; };
 
 uniform uint count;
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = entryIndex();
     if (i >= count) return;
 #if CONVERT == CONVERT_NARROW
     field[i] = float(vector[i]);

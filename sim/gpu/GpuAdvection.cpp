@@ -3,6 +3,7 @@
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/ShaderLibrary.h"
+#include "sim/gpu/GpuDispatch.h"
 
 #include <glm/vec4.hpp>
 
@@ -69,7 +70,7 @@ void GpuAdvection::trace(const std::array<GpuField, 3>& velocity, double dt) {
     glUniform3f(trace_.uniform("cellsPerMetre"), static_cast<float>(1.0 / h_.x), static_cast<float>(1.0 / h_.y),
                 static_cast<float>(1.0 / h_.z));
     glUniform1f(trace_.uniform("dt"), static_cast<float>(dt));
-    trace_.dispatchCovering(displacementRecords(cells_), 1, 1, 64, 1, 1);
+    dispatchOverEntries(trace_, displacementRecords(cells_), 64);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

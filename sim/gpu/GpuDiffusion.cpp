@@ -3,6 +3,7 @@
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/ShaderLibrary.h"
+#include "sim/gpu/GpuDispatch.h"
 
 #include <cstdint>
 

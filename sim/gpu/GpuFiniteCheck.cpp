@@ -3,6 +3,7 @@
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/ShaderLibrary.h"
+#include "sim/gpu/GpuDispatch.h"
 #include "sim/fluid/FiniteCheck.h"
 
 #include <array>
@@ -37,7 +38,7 @@ void GpuFiniteCheck::check(const GpuField& field, const std::string& name, const
     find_.use();
     glUniform1ui(find_.uniform("count"), static_cast<GLuint>(field.count()));
     glUniform1ui(find_.uniform("slot"), static_cast<GLuint>(checks_.size()));
-    find_.dispatchCovering(field.count(), 1, 1, 256, 1, 1);
+    dispatchOverEntries(find_, field.count());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     record_.use();
     glUniform1ui(record_.uniform("count"), static_cast<GLuint>(kSlots));

@@ -3,6 +3,7 @@
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/ShaderLibrary.h"
+#include "sim/gpu/GpuDispatch.h"
 
 #include <string>
 
@@ -63,7 +64,7 @@ void GpuMassCorrection::restore(const std::vector<GpuField*>& fields) {
         budgets_.bindStorage(layout::kSolverResults);
         glUniform1ui(apply.uniform("count"), static_cast<GLuint>(fields[f]->count()));
         glUniform1ui(apply.uniform("field"), static_cast<GLuint>(f));
-        apply.dispatchCovering(fields[f]->count(), 1, 1, 256, 1, 1);
+        dispatchOverEntries(apply, fields[f]->count());
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
 }

@@ -5,6 +5,7 @@
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/ShaderLibrary.h"
+#include "sim/gpu/GpuDispatch.h"
 
 #include <algorithm>
 #include <string>

@@ -2,6 +2,7 @@
 
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/ShaderLibrary.h"
+#include "sim/gpu/GpuDispatch.h"
 
 #include <bit>
 #include <cmath>
@@ -58,7 +59,7 @@ void GpuSources::apply(const HeldSamples& held, GpuField& field) const {
     held.entries.bindStorage(layout::kSolverSourceCells);
     field.bind(layout::kSolverField);
     glUniform1ui(program_.uniform("count"), static_cast<GLuint>(held.count));
-    program_.dispatchCovering(held.count, 1, 1, 64, 1, 1);
+    dispatchOverEntries(program_, held.count, 64);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -39,8 +39,4 @@ gl::Buffer GpuStencilOperator::newVector(const std::string& what, std::size_t el
     return vector;
 }
 
-void dispatchOverEntries(const gl::Program& program, std::size_t count) {
-    program.dispatchCovering(count, 1, 1, 256, 1, 1);
-}
-
 }  // namespace eikon::sim::gpu

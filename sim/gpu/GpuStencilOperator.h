@@ -48,8 +48,4 @@ private:
     gl::Buffer cells_;
 };
 
-// One invocation per entry of a vector of `count` entries, in groups of 256
-// (the local size of the solvers' pointwise passes).
-void dispatchOverEntries(const gl::Program& program, std::size_t count);
-
 }  // namespace eikon::sim::gpu

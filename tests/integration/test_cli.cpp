@@ -335,6 +335,37 @@ TEST_F(Cli, LiveSimulationCopiesNoHostBytesAndPipeliningChangesNoPixel) {
         << "the plume rises between frames";
 }
 
+// sim.device "gpu" runs the solver's substeps as compute passes (llvmpipe
+// here) and renders the same frames as the CPU backend, byte for byte at
+// this size; the report says where the solver ran and that no field but the
+// optical mapping's scalars crossed back (bus_bytes: the scalars' download
+// and the ring's δn, and a few hundred bytes of stopping tests).
+TEST_F(Cli, SolverOnTheGpuRendersTheCpuBackendsFrames) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string small = " --frames 3 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
+                              " --set render.width=48 --set render.height=36";
+    const fs::path cpu = dir_ / "cpu", gpu = dir_ / "gpu";
+    ASSERT_EQ(runEikon("run " + scene + " --out " + cpu.string() + small + " --set sim.device=cpu").exitCode, 0);
+    const Outcome onGpu = runEikon("run " + scene + " --out " + gpu.string() + small + " --set sim.device=gpu");
+    ASSERT_EQ(onGpu.exitCode, 0) << onGpu.output;
+    const auto cpuReport = readReport(cpu / "report.jsonl");
+    const auto gpuReport = readReport(gpu / "report.jsonl");
+    ASSERT_EQ(gpuReport.size(), 3u);
+    const std::size_t scalarBytes = 3u * 12u * 24u * 12u * sizeof(float);
+    const std::size_t ringBytes = 16u * 16u * 16u * sizeof(float);
+    for (std::size_t frame = 1; frame < gpuReport.size(); ++frame) {
+        EXPECT_EQ(gpuReport[frame]["simulation_device"], "gpu");
+        EXPECT_EQ(cpuReport[frame]["simulation_device"], "cpu");
+        EXPECT_EQ(cpuReport[frame]["bus_bytes"].get<std::size_t>(), ringBytes);
+        const auto bytes = gpuReport[frame]["bus_bytes"].get<std::size_t>();
+        EXPECT_GT(bytes, scalarBytes + ringBytes);
+        if (frame > 1) EXPECT_LT(bytes, scalarBytes + ringBytes + 4096u) << "frame 1 also uploads the initial state";
+        EXPECT_EQ(gpuReport[frame]["loop"]["pipelined"], false);
+    }
+    for (const char* frame : {"frame_00001.png", "frame_00002.png"})
+        EXPECT_EQ(fileBytes(cpu / "frames" / frame), fileBytes(gpu / "frames" / frame)) << frame;
+}
+
 TEST_F(Cli, RefusesEarlierRunUnlessForced) {
     const std::string scene = writeScene("ok.json", validScene());
     const std::string out = (dir_ / "out").string();

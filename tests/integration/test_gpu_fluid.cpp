@@ -4,6 +4,7 @@
 #include "sim/fluid/FluidSimulation.h"
 
 #include "bridge/core/Error.h"
+#include "sim/gpu/GpuFiniteCheck.h"
 #include "sim/gpu/GpuFluidBackend.h"
 #include "tests/integration/GlTestContext.h"
 
@@ -141,6 +142,26 @@ TEST(GpuFluid, NonFiniteValuesAreCaughtWithFieldAndCell) {
         placeOnGpu(sim);
         sim.state().temperature(1, 2, 3) += 1e10;
         EXPECT_EQ(messageOf(sim), "sim: field velocity_y, face (1, 2, 3) after sources: expected a finite value, found inf");
+    }
+}
+
+// A one-dimensional pass over more entries than 65 535 work groups of 256
+// hold (a 256³ grid has 16.8 million samples) reaches the last of them: a
+// NaN there is found and named.
+TEST(GpuFluid, PassesReachEntriesPastOneAxisOfWorkGroups) {
+    test::glContext();
+    GridField field(glm::ivec3(4097, 4096, 1), glm::dvec3(0.5), 1.0);
+    field(4096, 4095, 0) = std::numeric_limits<double>::quiet_NaN();
+    const gpu::GpuField onGpu(field, gpu::solverResource("dye", field.size));
+    gpu::GpuFiniteCheck check;
+    check.begin();
+    check.check(onGpu, "dye", "cell", "after a test");
+    try {
+        check.finish();
+        ADD_FAILURE() << "the NaN in the last sample was not found";
+    } catch (const InputError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "sim: field dye, cell (4096, 4095, 0) after a test: expected a finite value, found nan");
     }
 }
 
