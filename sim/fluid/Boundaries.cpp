@@ -20,6 +20,18 @@ bool FluidDomain::anyOpenFace() const {
                        [](SimDesc::Boundary b) { return b == SimDesc::Boundary::Open; });
 }
 
+std::array<bool, 6> FluidDomain::openFaces() const {
+    std::array<bool, 6> open{};
+    for (int face = 0; face < 6; ++face) open[face] = boundaries[face] == SimDesc::Boundary::Open;
+    return open;
+}
+
+std::vector<std::uint8_t> FluidDomain::fluidCells() const {
+    std::vector<std::uint8_t> fluid(solid.size());
+    for (std::size_t c = 0; c < fluid.size(); ++c) fluid[c] = solid[c] ? 0 : 1;
+    return fluid;
+}
+
 void addObstacles(FluidDomain& domain, const MacGrid& mac, const std::vector<SimDesc::Obstacle>& obstacles) {
     const glm::ivec3 n = domain.cells;
     tbb::parallel_for(0, n.z, [&](int k) {

@@ -31,6 +31,10 @@ struct FluidDomain {
     bool isSolid(int i, int j, int k) const { return solid[cellIndex(i, j, k)] != 0; }
     bool isOpen(int axis, int side) const { return boundaries[faceIndex(axis, side)] == SimDesc::Boundary::Open; }
     bool anyOpenFace() const;
+    // Per face of the box (faceIndex order), whether it is open.
+    std::array<bool, 6> openFaces() const;
+    // One byte per cell, 1 where the fluid is (the pressure's unknowns).
+    std::vector<std::uint8_t> fluidCells() const;
 
     // The face of axis `axis` with lattice index (i, j, k), between cells
     // (i, j, k) − e_axis and (i, j, k): true when its velocity is prescribed

@@ -4,26 +4,9 @@
 
 namespace eikon::sim {
 
-namespace {
-
-std::vector<std::uint8_t> fluidCells(const FluidDomain& domain) {
-    std::vector<std::uint8_t> fluid(domain.solid.size());
-    for (std::size_t c = 0; c < fluid.size(); ++c) fluid[c] = domain.solid[c] ? 0 : 1;
-    return fluid;
-}
-
-struct OpenFaces {
-    bool open[6];
-    explicit OpenFaces(const FluidDomain& domain) {
-        for (int face = 0; face < 6; ++face) open[face] = domain.isOpen(face / 2, face % 2);
-    }
-};
-
-}  // namespace
-
 PressureSolver::PressureSolver(const FluidDomain& domain, glm::dvec3 h)
     : domain_(domain),
-      multigrid_(domain.cells, h, fluidCells(domain), OpenFaces(domain).open),
+      multigrid_(domain.cells, h, domain.fluidCells(), domain.openFaces().data()),
       singular_(!domain.anyOpenFace()) {}
 
 SolveStats PressureSolver::project(MacGrid& mac, GridField& pressure, double tolerance, int maxIterations) const {

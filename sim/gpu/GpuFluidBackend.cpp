@@ -4,6 +4,7 @@
 #include "gl/ShaderLibrary.h"
 #include "sim/fluid/DiffusionRoles.h"
 #include "sim/fluid/SolverLimits.h"
+#include "sim/gpu/GpuDomain.h"
 
 #include <algorithm>
 #include <utility>
@@ -23,20 +24,6 @@ std::array<GpuField, 3> velocityFields(const MacGrid& mac) {
     return fields;
 }
 
-gl::Buffer solidFlags(const FluidDomain& domain) {
-    const std::vector<std::uint32_t> flags(domain.solid.begin(), domain.solid.end());
-    return gl::Buffer(flags.size() * sizeof(std::uint32_t), flags.data(), GL_DYNAMIC_STORAGE_BIT,
-                      solverResource("solid cells", domain.cells));
-}
-
-GLuint openFaceBits(const FluidDomain& domain) {
-    GLuint bits = 0;
-    for (int axis = 0; axis < 3; ++axis)
-        for (int side = 0; side < 2; ++side)
-            if (domain.isOpen(axis, side)) bits |= 1u << (2 * axis + side);
-    return bits;
-}
-
 void record(PhaseTiming& timing, const SolveStats& stats) {
     timing.iterations += stats.iterations;
     timing.residual = std::max(timing.residual, stats.relativeResidual);
@@ -54,7 +41,7 @@ GpuFluidBackend::GpuFluidBackend(const FluidSimulation& simulation)
       concentration_(simulation.state().concentration, solverResource("concentration", domain_.cells)),
       dye_(simulation.state().dye, solverResource("dye", domain_.cells)),
       pressure_(simulation.state().pressure, solverResource("pressure", domain_.cells)),
-      solid_(solidFlags(domain_)),
+      solid_(solidCellFlags(domain_)),
       openFaces_(openFaceBits(domain_)),
       sources_(simulation.sources(), simulation.state(), desc_.ambientTemperature),
       advection_(domain_.cells, h_),

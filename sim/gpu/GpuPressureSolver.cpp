@@ -1,5 +1,7 @@
 #include "sim/gpu/GpuPressureSolver.h"
 
+#include "sim/gpu/GpuDomain.h"
+
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/ShaderLibrary.h"
@@ -12,33 +14,6 @@ namespace eikon::sim::gpu {
 
 namespace {
 
-std::vector<std::uint8_t> fluidCells(const FluidDomain& domain) {
-    std::vector<std::uint8_t> fluid(domain.solid.size());
-    for (std::size_t c = 0; c < fluid.size(); ++c) fluid[c] = domain.solid[c] ? 0 : 1;
-    return fluid;
-}
-
-struct OpenFaces {
-    bool open[6];
-    explicit OpenFaces(const FluidDomain& domain) {
-        for (int face = 0; face < 6; ++face) open[face] = domain.isOpen(face / 2, face % 2);
-    }
-};
-
-GLuint openFaceBits(const FluidDomain& domain) {
-    GLuint bits = 0;
-    for (int face = 0; face < 6; ++face)
-        if (domain.isOpen(face / 2, face % 2)) bits |= 1u << face;
-    return bits;
-}
-
-gl::Buffer solidMask(const FluidDomain& domain) {
-    const std::vector<std::uint32_t> solid(domain.solid.begin(), domain.solid.end());
-    gl::Buffer mask(solid.size() * sizeof(std::uint32_t), solverResource("solid mask", domain.cells));
-    mask.upload(solid.data(), solid.size() * sizeof(std::uint32_t));
-    return mask;
-}
-
 void barrier() { glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT); }
 
 }  // namespace
@@ -48,9 +23,9 @@ GpuPressureSolver::GpuPressureSolver(const FluidDomain& domain, glm::dvec3 h)
       h_(h),
       openFaces_(openFaceBits(domain)),
       singular_(!domain.anyOpenFace()),
-      multigrid_(domain.cells, h, fluidCells(domain), OpenFaces(domain).open),
+      multigrid_(domain.cells, h, domain.fluidCells(), domain.openFaces().data()),
       cg_(multigrid_.fineOperator()),
-      solid_(solidMask(domain)),
+      solid_(solidCellFlags(domain)),
       rhs_(multigrid_.fineOperator().newVector("pressure right-hand side", sizeof(double))),
       solution_(multigrid_.fineOperator().newVector("pressure", sizeof(double))),
       divergence_(gl::compileComputeProgram("sim/pressure_divergence.comp")),

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The fluid solver's GPU-dependent figures in one run (docs/benchmarks-gpu-solver.md):
+# ms per step on both backends at 64³, 128³ and 256³ (bench_fluid_step), and
+# the live frame rate of heat_shimmer with its solver at 128³ and 256³ on
+# each backend and of pool_caustics. Run from the repository root after
+# `./dev.sh test` (or a release build); on a machine without a GPU it
+# measures llvmpipe, as the development machine's figures do.
+#   bench/gpu_solver.sh [BUILD_DIR] [OUT_DIR]
+set -euo pipefail
+build=${1:-build/release}
+out=${2:-out/gpu-solver}
+mkdir -p "$out"
+
+"$build/eikon" info | tee "$out/info.txt"
+"$build/bench_fluid_step" --benchmark_counters_tabular=true \
+    --benchmark_out="$out/fluid_step.json" --benchmark_out_format=json
+
+# frames/s over frames 2 … N−1 of a run's report (frame 0 compiles shaders, frame 1 uploads).
+frames_per_second() {
+    grep -o '"frame_ms":[0-9.e+-]*' "$1/report.jsonl" | tail -n +3 | cut -d: -f2 |
+        awk '{ total += $1; n += 1 } END { if (n) printf "%.1f frames/s (%.1f ms a frame over %d frames)\n", 1000 * n / total, total / n, n }'
+}
+
+for resolution in 128 256; do
+    for device in gpu cpu; do
+        run="$out/heat_shimmer_${device}_${resolution}"
+        "$build/eikon" run scenes/heat_shimmer.json --frames 12 --quiet --force --out "$run" \
+            --set sim.device="$device" --set "sim.resolution=[$resolution,$resolution,$resolution]" \
+            --set "grid.resolution=[128,128,128]"
+        echo "heat_shimmer, solver ${resolution}³ on the $device: $(frames_per_second "$run")" | tee -a "$out/summary.txt"
+    done
+done
+"$build/eikon" run scenes/pool_caustics.json --frames 12 --quiet --force --out "$out/pool_caustics"
+echo "pool_caustics: $(frames_per_second "$out/pool_caustics")" | tee -a "$out/summary.txt"
