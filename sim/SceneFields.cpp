@@ -3,7 +3,6 @@
 #include "sim/SharpMeshSurfaces.h"
 #include "sim/deform/AnimatedMesh.h"
 #include "sim/fluid/SolverExport.h"
-#include "sim/gpu/GpuFluidBackend.h"
 #include "sim/voxelize/Compositor.h"
 #include "sim/voxelize/MeshCoverage.h"
 #include "sim/voxelize/VolumePainter.h"
@@ -88,9 +87,19 @@ SceneFields::~SceneFields() = default;
 std::string SceneFields::placeFluidSolver(bool hardwareGpu) {
     if (!fluid_) return "";
     const SimDesc::Device device = scene_.sim->device;
-    if (device == SimDesc::Device::Gpu || (device == SimDesc::Device::Auto && hardwareGpu))
-        fluid_->attachDevice(std::make_unique<gpu::GpuFluidBackend>(*fluid_));
+    if (device == SimDesc::Device::Gpu || (device == SimDesc::Device::Auto && hardwareGpu)) {
+        auto backend = std::make_unique<gpu::GpuFluidBackend>(*fluid_);
+        gpuSolver_ = backend.get();
+        fluid_->attachDevice(std::move(backend));
+        gpuOptics_ = std::make_unique<gpu::GpuOpticalMapping>(*scene_.sim, fluid_->solverGrid(), fields_.grid,
+                                                              fields_.referenceIndex);
+    }
     return fluid_->deviceName();
+}
+
+void SceneFields::writeFrameOnGpu(const gpu::OpticalTargets& targets) const {
+    EIKON_CHECK_MSG(mapsOnGpu(), "the optical mapping runs on the GPU only with the solver there and nothing over it");
+    gpuOptics_->map(gpuSolver_->temperature(), gpuSolver_->concentration(), gpuSolver_->dye(), targets);
 }
 
 bool SceneFields::changesOverTime() const {

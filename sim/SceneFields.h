@@ -15,6 +15,8 @@
 #include "bridge/mesh/TriangleMesh.h"
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/FluidSimulation.h"
+#include "sim/gpu/GpuFluidBackend.h"
+#include "sim/gpu/GpuOpticalMapping.h"
 #include "sim/optics/OpticalMapping.h"
 #include "sim/volume/VolumeSequence.h"
 #include "sim/voxelize/Compositor.h"
@@ -64,6 +66,16 @@ public:
     // since the last call.
     std::string fluidDevice() const { return fluid_ ? fluid_->deviceName() : ""; }
     std::uint64_t takeFluidBusBytes() { return fluid_ ? fluid_->takeBusBytes() : 0; }
+    // Whether a frame's fields can be made on the GPU from the solver's own
+    // buffers: the solver runs there and nothing is composited over its
+    // fields on the host (no objects, no paint strokes).
+    bool mapsOnGpu() const { return gpuSolver_ != nullptr && scene_.objects.empty() && scene_.paint.empty(); }
+    // writeFrameInto for such a scene: the optical mapping on the GPU, into
+    // the buffers of `targets` (GL thread). The solver's scalars are checked
+    // finite after every phase, and map to a finite index > 0 (T stays
+    // within its sources' and initial range: the limiter and the implicit
+    // diffusion make no new extrema), so validateFields has nothing to find.
+    void writeFrameOnGpu(const gpu::OpticalTargets& targets) const;
     void simulateFrame();
     void writeFrameInto(const FieldViews& target) const;
     // Whether κ (σs) values change from frame to frame (dye in the solver).
@@ -91,6 +103,8 @@ private:
     FieldSet fields_;
     std::unique_ptr<FluidSimulation> fluid_;
     std::unique_ptr<OpticalModel> fluidOptics_;  // the solver's scalars → δn, κ, σs
+    gpu::GpuFluidBackend* gpuSolver_ = nullptr;  // the fluid's device, when it runs on the GPU
+    std::unique_ptr<gpu::GpuOpticalMapping> gpuOptics_;
     std::unique_ptr<VolumeSequence> volume_;
     std::vector<std::unique_ptr<MeshObject>> meshes_;
     double time_ = 0.0;  // without a fluid solver

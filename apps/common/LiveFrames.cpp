@@ -1,5 +1,9 @@
 #include "apps/common/LiveFrames.h"
 
+#include "bridge/core/Error.h"
+
+#include <array>
+
 namespace eikon::app {
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -13,9 +17,13 @@ void captureForExport(const sim::SceneFields& fields, ProducedFrame& frame) {
 }
 
 LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays)
-    : fields_(fields), pipelined_(pipelined), captureExportArrays_(captureExportArrays), ring_(fields.fields()) {
+    : fields_(fields),
+      pipelined_(pipelined),
+      captureExportArrays_(captureExportArrays),
+      fieldsOnGpu_(fields.mapsOnGpu() && !captureExportArrays),
+      ring_(fields.fields(), 2, fieldsOnGpu_ ? render::FieldRingMemory::Device : render::FieldRingMemory::Mapped) {
     const auto start = std::chrono::steady_clock::now();
-    fields_.writeFrameInto(ring_.acquire());
+    writeFields(ring_.acquire());
     current_.time = fields_.time();
     current_.surfaceVersion = fields_.fields().surfaceVersion;
     if (captureExportArrays_) captureForExport(fields_, current_);
@@ -27,6 +35,15 @@ LiveFrames::~LiveFrames() {
     if (pending_.valid()) pending_.wait();  // the thread writes into the ring: let it finish first
 }
 
+void LiveFrames::writeFields(const FieldViews& slot) {
+    if (!fieldsOnGpu_) {
+        fields_.writeFrameInto(slot);
+        return;
+    }
+    const std::array<GLuint, 3> buffers = ring_.acquiredDeviceBuffers();
+    fields_.writeFrameOnGpu({buffers[0], buffers[1], buffers[2]});
+}
+
 ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     ProducedFrame frame;
     frame.simulated = true;
@@ -34,7 +51,7 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     fields_.simulateFrame();
     frame.simulateMs = millisecondsSince(start);
     start = std::chrono::steady_clock::now();
-    fields_.writeFrameInto(slot);
+    writeFields(slot);
     frame.writeFieldsMs = millisecondsSince(start);
     frame.time = fields_.time();
     frame.surfaceVersion = fields_.fields().surfaceVersion;
@@ -48,6 +65,7 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
 }
 
 void LiveFrames::beginNext() {
+    EIKON_CHECK_MSG(!(pipelined_ && fieldsOnGpu_), "a solver on the GPU runs on the GL thread, not pipelined");
     next_ = ring_.acquire();
     if (pipelined_) pending_ = std::async(std::launch::async, [this, slot = next_] { return produce(slot); });
 }

@@ -2,7 +2,8 @@
 // the GPU field ring (render/stages/FieldRing.h). With pipelining, frame k+1
 // is simulated and written into its ring slot on a thread of its own while
 // the renderer traces and views frame k; without, it runs after frame k has
-// rendered. The images are the same either way.
+// rendered. The images are the same either way. A solver on the GPU writes
+// its frames into slots in GPU memory instead, on the GL thread.
 #pragma once
 
 #include "render/stages/FieldRing.h"
@@ -65,9 +66,15 @@ public:
 private:
     ProducedFrame produce(const FieldViews& slot);
 
+    // Writes the slot's fields: on the host, or on the GPU (writeFrameOnGpu).
+    void writeFields(const FieldViews& slot);
+
     sim::SceneFields& fields_;
     bool pipelined_;
     bool captureExportArrays_;
+    // The solver and its optical mapping run on the GPU and write the ring's
+    // device-memory slots; exports keep the mapped slots the host reads.
+    bool fieldsOnGpu_;
     render::FieldRing ring_;
     FieldViews next_;
     std::future<ProducedFrame> pending_;

@@ -4,11 +4,22 @@
 
 namespace eikon::view {
 
+namespace {
+
+// The scene's fields with its fluid solver placed (before the frame source
+// sizes its field ring for where the solver writes).
+std::unique_ptr<sim::SceneFields> placedFields(const Scene& scene, bool hardwareGpu) {
+    auto fields = std::make_unique<sim::SceneFields>(scene);
+    fields->placeFluidSolver(hardwareGpu);
+    return fields;
+}
+
+}  // namespace
+
 ViewerSession::ViewerSession(const Scene& scene, bool hardwareGpu)
     : scene_(scene),
-      fields_(std::make_unique<sim::SceneFields>(scene)),
+      fields_(placedFields(scene, hardwareGpu)),
       source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{}, false, false)) {
-    fields_->placeFluidSolver(hardwareGpu);
     if (scene.render.method == RenderDesc::Method::Eikonal && imageSpaceOmissions(scene).empty()) {
         Scene imageSpace = scene;
         imageSpace.render.method = RenderDesc::Method::ImageSpace;

@@ -147,8 +147,13 @@
     X(kSolverForward, 17)    /* buffer Forward { vec4 ends[]; }: and over +Δt, in cells */                     \
     X(kSolverCoarse, 18)     /* buffer Coarse { float values[]; }: multigrid, the coarser level's vector */    \
     X(kSolverFine, 19)       /* buffer Fine { float values[]; }: multigrid, the finer level's vector */        \
-    X(kSolverSourceCells, 20) /* buffer SourceCells { vec4 held[]; }: per cell, the scalars sources hold */    \
-    X(kSolverSourceFaces, 21) /* buffer SourceFaces { float velocity[]; }: per face, a jet's velocity or NaN */
+    X(kSolverSourceCells, 20) /* buffer Held { uvec2 held[]; }: (sample, float bits) of each sample a source holds */ \
+    X(kOpticsTemperature, 21) /* buffer OpticsTemperature { float theta[]; }: T − T_amb on the solver grid, read */ \
+    X(kOpticsConcentration, 22) /* buffer OpticsConcentration { float concentration[]; }: on the solver grid */ \
+    X(kOpticsDye, 23)         /* buffer OpticsDye { float dye[]; }: on the solver grid */                         \
+    X(kOpticsDeltaIndex, 24)  /* buffer OpticsDeltaIndex { float delta_index[]; }: δn on the render grid, written */ \
+    X(kOpticsExtinction, 25)  /* buffer OpticsExtinction { float extinction[]; }: κ RGB per render cell, written */ \
+    X(kOpticsScattering, 26)  /* buffer OpticsScattering { float scattering[]; }: σs RGB per render cell, written */
 
 // Every list above: the constants each shader program is given.
 #define EIKON_LAYOUT_SHADER_CONSTANTS(X) \

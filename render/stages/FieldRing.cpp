@@ -14,35 +14,41 @@ std::span<float> span(const gl::MappedBuffer& buffer, std::size_t floats) {
     return floats ? std::span<float>(buffer.floats(), floats) : std::span<float>();
 }
 
-FieldSource source(const gl::MappedBuffer& buffer, std::size_t floats) {
-    return floats ? FieldSource{nullptr, buffer.id(), floats} : FieldSource{};
-}
+FieldSource source(GLuint buffer, std::size_t floats) { return floats ? FieldSource{nullptr, buffer, floats} : FieldSource{}; }
+
+constexpr std::size_t kVolumeFields = 4;  // δn, κ, σs, g: those that may live in device memory
 
 }  // namespace
 
-FieldRing::FieldRing(const FieldSet& layout, int slots)
+FieldRing::FieldRing(const FieldSet& layout, int slots, FieldRingMemory memory)
     : grid_(layout.grid),
       referenceIndex_(layout.referenceIndex),
+      memory_(memory),
       floats_{layout.deltaIndex.size(),      layout.extinction.size(),    layout.scattering.size(),
               layout.anisotropy.size(),      layout.surfaceNodes.size(),    layout.surfaceTriangles.size()},
       slots_(static_cast<std::size_t>(slots)) {
     EIKON_CHECK_MSG(slots >= 2, "a field ring needs two slots or more");
     for (Slot& slot : slots_)
-        for (std::size_t field = 0; field < floats_.size(); ++field)
-            if (floats_[field])
-                slot.buffers[field] = gl::MappedBuffer(
-                    floats_[field] * sizeof(float),
-                    {field < 4 ? "grid.resolution" : "objects", "a slot of the live field ring"});
+        for (std::size_t field = 0; field < floats_.size(); ++field) {
+            if (!floats_[field]) continue;
+            const gl::GpuResource resource{field < kVolumeFields ? "grid.resolution" : "objects",
+                                           "a slot of the live field ring"};
+            if (memory_ == FieldRingMemory::Device && field < kVolumeFields)
+                slot.device[field] = gl::Buffer(floats_[field] * sizeof(float), nullptr, 0, resource);
+            else
+                slot.buffers[field] = gl::MappedBuffer(floats_[field] * sizeof(float), resource);
+        }
     stats_.slots = slots;
 }
 
 FieldViews FieldRing::views(const Slot& slot) const {
+    const bool mapped = memory_ == FieldRingMemory::Mapped;  // device memory has no host view
     return {grid_,
             referenceIndex_,
-            span(slot.buffers[kIndex], floats_[kIndex]),
-            span(slot.buffers[kExtinction], floats_[kExtinction]),
-            span(slot.buffers[kScattering], floats_[kScattering]),
-            span(slot.buffers[kAnisotropy], floats_[kAnisotropy]),
+            span(slot.buffers[kIndex], mapped ? floats_[kIndex] : 0),
+            span(slot.buffers[kExtinction], mapped ? floats_[kExtinction] : 0),
+            span(slot.buffers[kScattering], mapped ? floats_[kScattering] : 0),
+            span(slot.buffers[kAnisotropy], mapped ? floats_[kAnisotropy] : 0),
             span(slot.buffers[kSurfaceNodes], floats_[kSurfaceNodes]),
             span(slot.buffers[kSurfaceTriangles], floats_[kSurfaceTriangles])};
 }
@@ -72,19 +78,28 @@ void FieldRing::publish(std::uint64_t indexVersion, std::uint64_t extinctionVers
 FieldUpload FieldRing::current() const {
     EIKON_CHECK_MSG(current_ >= 0, "no field ring slot published yet");
     const Slot& slot = slots_[static_cast<std::size_t>(current_)];
+    auto volume = [&](std::size_t field) {
+        return memory_ == FieldRingMemory::Device ? slot.device[field].id() : slot.buffers[field].id();
+    };
     return {grid_,
             referenceIndex_,
-            source(slot.buffers[kIndex], floats_[kIndex]),
-            source(slot.buffers[kExtinction], floats_[kExtinction]),
-            source(slot.buffers[kScattering], floats_[kScattering]),
-            source(slot.buffers[kAnisotropy], floats_[kAnisotropy]),
-            source(slot.buffers[kSurfaceNodes], floats_[kSurfaceNodes]),
-            source(slot.buffers[kSurfaceTriangles], floats_[kSurfaceTriangles]),
+            source(volume(kIndex), floats_[kIndex]),
+            source(volume(kExtinction), floats_[kExtinction]),
+            source(volume(kScattering), floats_[kScattering]),
+            source(volume(kAnisotropy), floats_[kAnisotropy]),
+            source(slot.buffers[kSurfaceNodes].id(), floats_[kSurfaceNodes]),
+            source(slot.buffers[kSurfaceTriangles].id(), floats_[kSurfaceTriangles]),
             slot.indexVersion,
             slot.extinctionVersion,
             slot.scatteringVersion,
             slot.surfaceVersion,
             FieldSource{}};  // emission comes only from imported volumes, never through the ring
+}
+
+std::array<GLuint, 3> FieldRing::acquiredDeviceBuffers() const {
+    EIKON_CHECK_MSG(acquired_ >= 0 && memory_ == FieldRingMemory::Device, "no device-memory slot acquired");
+    const Slot& slot = slots_[static_cast<std::size_t>(acquired_)];
+    return {slot.device[kIndex].id(), slot.device[kExtinction].id(), slot.device[kScattering].id()};
 }
 
 ConstFieldViews FieldRing::currentViews() const {

@@ -29,10 +29,16 @@ struct FieldRingStats {
     double waitMilliseconds = 0.0;       // spent in those waits
 };
 
+// Where a slot's δn, κ, σs and g live: in persistently mapped buffers the
+// host writes (a simulation on the CPU), or in GPU memory only, written by
+// GPU passes (the solver and its optical mapping on the GPU: nothing crosses
+// the bus). The sharp surfaces' buffers are mapped either way.
+enum class FieldRingMemory { Mapped, Device };
+
 class FieldRing {
 public:
     // Slots shaped like `layout`: its grid and the fields it has. At least two.
-    explicit FieldRing(const FieldSet& layout, int slots = 2);
+    explicit FieldRing(const FieldSet& layout, int slots = 2, FieldRingMemory memory = FieldRingMemory::Mapped);
 
     // GL thread. Hands out the next slot once the GPU no longer reads it. Its
     // views stay valid for the ring's life; write them from any thread, then
@@ -49,10 +55,15 @@ public:
     void fenceCurrent();
 
     const FieldRingStats& stats() const { return stats_; }
+    FieldRingMemory memory() const { return memory_; }
+    // The GL buffers of the acquired slot's δn, κ, σs (0 where the scene
+    // lacks the field), for GPU passes to write. Device memory only.
+    std::array<GLuint, 3> acquiredDeviceBuffers() const;
 
 private:
     struct Slot {
         std::array<gl::MappedBuffer, 6> buffers;  // δn, κ, σs, g, surface nodes and triangles (empty when absent)
+        std::array<gl::Buffer, 4> device;         // δn, κ, σs, g in device memory, in place of the first four
         gl::Fence readByGpu;
         std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0, surfaceVersion = 0;
     };
@@ -60,6 +71,7 @@ private:
 
     GridSpec grid_;
     double referenceIndex_ = 1.0;
+    FieldRingMemory memory_;
     std::array<std::size_t, 6> floats_{};  // per field; 0 when the scene lacks it
     std::vector<Slot> slots_;
     int current_ = -1;

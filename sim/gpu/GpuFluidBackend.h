@@ -39,6 +39,12 @@ public:
     void substep(double dt, std::vector<PhaseTiming>& timings) override;
     std::uint64_t takeBusBytes() override;
 
+    // The current scalars where they live, for the optical mapping on the GPU
+    // (GpuOpticalMapping); the temperature as T − T_amb.
+    const GpuField& temperature() const { return temperature_; }
+    const GpuField& concentration() const { return concentration_; }
+    const GpuField& dye() const { return dye_; }
+
 private:
     void addBuoyancy(double dt);
     void enforceVelocityBoundaries();

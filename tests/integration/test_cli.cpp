@@ -335,14 +335,15 @@ TEST_F(Cli, LiveSimulationCopiesNoHostBytesAndPipeliningChangesNoPixel) {
         << "the plume rises between frames";
 }
 
-// sim.device "gpu" runs the solver's substeps as compute passes (llvmpipe
-// here) and renders the same frames as the CPU backend, byte for byte at
-// this size; the report says where the solver ran and that no field but the
-// optical mapping's scalars crossed back (bus_bytes: the scalars' download
-// and the ring's δn, and a few hundred bytes of stopping tests).
+// sim.device "gpu" runs the solver's substeps and its optical mapping as
+// compute passes (llvmpipe here), writing the field ring's slots in GPU
+// memory, and renders the same frames as the CPU backend, byte for byte at
+// this size. After the first frame (which uploads the initial state) only
+// the solver's stopping tests, CFL count and NaN checks cross the bus — a
+// few hundred bytes — where the CPU backend writes δn through the ring.
 TEST_F(Cli, SolverOnTheGpuRendersTheCpuBackendsFrames) {
     const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
-    const std::string small = " --frames 3 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
+    const std::string small = " --frames 4 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
                               " --set render.width=48 --set render.height=36";
     const fs::path cpu = dir_ / "cpu", gpu = dir_ / "gpu";
     ASSERT_EQ(runEikon("run " + scene + " --out " + cpu.string() + small + " --set sim.device=cpu").exitCode, 0);
@@ -350,21 +351,21 @@ TEST_F(Cli, SolverOnTheGpuRendersTheCpuBackendsFrames) {
     ASSERT_EQ(onGpu.exitCode, 0) << onGpu.output;
     const auto cpuReport = readReport(cpu / "report.jsonl");
     const auto gpuReport = readReport(gpu / "report.jsonl");
-    ASSERT_EQ(gpuReport.size(), 3u);
-    const std::size_t scalarBytes = 3u * 12u * 24u * 12u * sizeof(float);
+    ASSERT_EQ(gpuReport.size(), 4u);
     const std::size_t ringBytes = 16u * 16u * 16u * sizeof(float);
     for (std::size_t frame = 1; frame < gpuReport.size(); ++frame) {
         EXPECT_EQ(gpuReport[frame]["simulation_device"], "gpu");
         EXPECT_EQ(cpuReport[frame]["simulation_device"], "cpu");
         EXPECT_EQ(cpuReport[frame]["bus_bytes"].get<std::size_t>(), ringBytes);
-        const auto bytes = gpuReport[frame]["bus_bytes"].get<std::size_t>();
-        EXPECT_GT(bytes, scalarBytes + ringBytes);
-        if (frame > 1) {  // frame 1 also uploads the initial state
-            EXPECT_LT(bytes, scalarBytes + ringBytes + 4096u);
-        }
+        EXPECT_EQ(gpuReport[frame]["host_bytes_copied"].get<std::size_t>(), 0u);
         EXPECT_EQ(gpuReport[frame]["loop"]["pipelined"], false);
     }
-    for (const char* frame : {"frame_00001.png", "frame_00002.png"})
+    for (std::size_t frame = 2; frame < gpuReport.size(); ++frame) {
+        const auto bytes = gpuReport[frame]["bus_bytes"].get<std::size_t>();
+        EXPECT_GT(bytes, 0u) << "the stopping tests read their residuals back";
+        EXPECT_LT(bytes, 4096u) << "no field crosses the bus";
+    }
+    for (const char* frame : {"frame_00001.png", "frame_00002.png", "frame_00003.png"})
         EXPECT_EQ(fileBytes(cpu / "frames" / frame), fileBytes(gpu / "frames" / frame)) << frame;
 }
 

@@ -6,10 +6,13 @@
 #include "bridge/core/Error.h"
 #include "sim/gpu/GpuFiniteCheck.h"
 #include "sim/gpu/GpuFluidBackend.h"
+#include "sim/gpu/GpuOpticalMapping.h"
+#include "sim/optics/OpticalMapping.h"
 #include "tests/integration/GlTestContext.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -162,6 +165,79 @@ TEST(GpuFluid, PassesReachEntriesPastOneAxisOfWorkGroups) {
     } catch (const InputError& error) {
         EXPECT_EQ(std::string(error.what()),
                   "sim: field dye, cell (4096, 4095, 0) after a test: expected a finite value, found nan");
+    }
+}
+
+// The largest |a − b| over max |b|, for float fields.
+double relativeMaxDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    double difference = 0.0, largest = 0.0;
+    for (std::size_t s = 0; s < a.size(); ++s) {
+        difference = std::max(difference, std::abs(static_cast<double>(a[s]) - b[s]));
+        largest = std::max(largest, std::abs(static_cast<double>(b[s])));
+    }
+    return difference / largest;
+}
+
+// The optical mapping on the GPU against OpticalMapping.cpp on the same
+// scalars: a render grid finer than the solver's and reaching past its box
+// (cells outside see the ambient fluid), air by Gladstone–Dale and a liquid
+// by Lorentz–Lorenz mixing with a dye that absorbs and scatters. Bound 1e-6
+// of the largest value: both form the index in float64 and round δn, κ, σs
+// to float32 once; the GPU's trilinear weights come from float32 scalars.
+TEST(GpuFluid, OpticalMappingMatchesTheCpus) {
+    test::glContext();
+    SimDesc liquid;
+    liquid.fluid = SimDesc::Fluid::Liquid;
+    liquid.mixing = SimDesc::Mixing::LorentzLorenz;
+    liquid.dyeExtinction = Rgb{3.0, 2.0, 1.0};
+    liquid.dyeScattering = Rgb{1.0, 0.5, 0.25};
+    for (const SimDesc& base : {SimDesc{}, liquid}) {
+        SimDesc desc = base;
+        desc.resolution = glm::ivec3(10, 14, 8);
+        desc.bounds = BoxShape{glm::dvec3(-0.2, 0.0, -0.2), glm::dvec3(0.2, 0.4, 0.2)};
+        const GridSpec renderGrid{glm::ivec3(21, 17, 19), glm::dvec3(-0.25, -0.05, -0.25), glm::dvec3(0.25, 0.45, 0.25)};
+        FluidSimulation sim(desc, renderGrid);
+        FluidState& state = sim.state();
+        for (int k = 0; k < 8; ++k)
+            for (int j = 0; j < 14; ++j)
+                for (int i = 0; i < 10; ++i) {
+                    state.temperature(i, j, k) = desc.ambientTemperature + 40.0 * std::sin(0.5 * i + 0.3 * j) * std::cos(0.7 * k);
+                    state.concentration(i, j, k) = 0.5 + 0.5 * std::sin(0.4 * i - 0.6 * j + 0.2 * k);
+                    state.dye(i, j, k) = 1.0 + std::cos(0.3 * i + 0.2 * j - 0.5 * k);
+                }
+        const OpticalModel model(desc);
+        FieldSet cpu;
+        cpu.grid = renderGrid;
+        cpu.referenceIndex = base.fluid == SimDesc::Fluid::Liquid ? 1.333 : 1.0;
+        cpu.deltaIndex.resize(renderGrid.cellCount());
+        cpu.extinction.resize(model.absorbs() ? 3 * renderGrid.cellCount() : 0);
+        cpu.scattering.resize(model.scatters() ? 3 * renderGrid.cellCount() : 0);
+        mapOpticalFields(model, sim.scalars(), viewsOf(cpu));
+
+        const gpu::GpuField temperature(state.temperature, gpu::solverResource("temperature", desc.resolution),
+                                        desc.ambientTemperature);
+        const gpu::GpuField concentration(state.concentration, gpu::solverResource("concentration", desc.resolution));
+        const gpu::GpuField dye(state.dye, gpu::solverResource("dye", desc.resolution));
+        auto target = [](std::size_t floats) {
+            return floats ? gl::Buffer(floats * sizeof(float), gl::GpuResource{}) : gl::Buffer();
+        };
+        const gl::Buffer deltaIndex = target(cpu.deltaIndex.size());
+        const gl::Buffer extinction = target(cpu.extinction.size());
+        const gl::Buffer scattering = target(cpu.scattering.size());
+        const gpu::GpuOpticalMapping mapping(desc, sim.solverGrid(), renderGrid, cpu.referenceIndex);
+        mapping.map(temperature, concentration, dye, {deltaIndex.id(), extinction.id(), scattering.id()});
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        const double index = relativeMaxDifference(deltaIndex.downloadAll<float>(), cpu.deltaIndex);
+        test::reportFigure(base.fluid == SimDesc::Fluid::Liquid ? "liquid_delta_index" : "air_delta_index", index);
+        EXPECT_LT(index, 1e-6);
+        if (model.absorbs()) {
+            const double kappa = relativeMaxDifference(extinction.downloadAll<float>(), cpu.extinction);
+            const double sigma = relativeMaxDifference(scattering.downloadAll<float>(), cpu.scattering);
+            test::reportFigure("dye_extinction", kappa);
+            test::reportFigure("dye_scattering", sigma);
+            EXPECT_LT(kappa, 1e-6);
+            EXPECT_LT(sigma, 1e-6);
+        }
     }
 }
 
