@@ -4,6 +4,7 @@
 #include "sim/deform/AnimatedMesh.h"
 #include "sim/fluid/SolverExport.h"
 #include "sim/voxelize/Compositor.h"
+#include "sim/voxelize/HeightFieldCoverage.h"
 #include "sim/voxelize/MeshCoverage.h"
 #include "sim/voxelize/VolumePainter.h"
 
@@ -11,14 +12,34 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 namespace eikon::sim {
 
 struct SceneFields::MeshObject {
     std::size_t object;  // index into scene.objects
     AnimatedMesh shape;
-    MeshCoverage coverage;
+    // Its coverage: a mesh's from its narrow-band distance, a water body's
+    // in closed form from its height field.
+    std::optional<MeshCoverage> meshCoverage;
+    std::optional<HeightFieldCoverage> waterCoverage;
     CellBlocks changed;  // cells whose coverage the last update recomputed
+
+    const std::vector<float>& coverage() const {
+        return waterCoverage ? waterCoverage->values() : meshCoverage->values();
+    }
+    // Brings the coverage up to the shape's current frame.
+    void updateCoverage() {
+        if (const WaterSurface* water = shape.water()) {
+            const WaterDesc& desc = water->desc();
+            changed = waterCoverage->update({desc.basinMin, desc.basinMax, desc.cells, &water->heights()});
+        } else {
+            changed = meshCoverage->update(shape.mesh());
+        }
+    }
+    long long lastRecomputedCells() const {
+        return waterCoverage ? waterCoverage->lastRecomputedCells() : meshCoverage->lastRecomputedCells();
+    }
     // When its surface is sharp: its triangles for the tracers, and where
     // they go in fields().surfaceNodes and surfaceTriangles.
     std::unique_ptr<SharpMeshSurface> surface;
@@ -43,7 +64,9 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
         if (object.kind != ObjectDesc::Kind::Mesh && object.kind != ObjectDesc::Kind::Water) continue;
         const std::string where = scene.sourcePath + ": objects[" + std::to_string(o) + "]";
         meshes_.push_back(std::unique_ptr<MeshObject>(
-            new MeshObject{o, AnimatedMesh(object, where), MeshCoverage(fields_.grid), CellBlocks(fields_.grid), {}}));
+            new MeshObject{o, AnimatedMesh(object, where), std::nullopt, std::nullopt, CellBlocks(fields_.grid), {}}));
+        if (meshes_.back()->shape.water()) meshes_.back()->waterCoverage.emplace(fields_.grid);
+        else meshes_.back()->meshCoverage.emplace(fields_.grid);
         if (object.hasTriangleSurface())
             meshes_.back()->surface = std::make_unique<SharpMeshSurface>(meshes_.back()->shape.mesh());
     }
@@ -139,10 +162,10 @@ void SceneFields::updateMeshes() {
         mesh->shape.advanceTo(time());
         deformMs_ += millisecondsSince(start);
         start = std::chrono::steady_clock::now();
-        mesh->changed = mesh->coverage.update(mesh->shape.mesh());
+        mesh->updateCoverage();
         publishSurface(*mesh);
         voxelizeMs_ += millisecondsSince(start);
-        recomputedCells_ += mesh->coverage.lastRecomputedCells();
+        recomputedCells_ += mesh->lastRecomputedCells();
     }
 }
 
@@ -213,7 +236,7 @@ std::vector<NamedArray> SceneFields::exportArrays() const {
 
 CoverageGrids SceneFields::coverageGrids() const {
     CoverageGrids grids(scene_.objects.size(), nullptr);
-    for (const auto& mesh : meshes_) grids[mesh->object] = &mesh->coverage.values();
+    for (const auto& mesh : meshes_) grids[mesh->object] = &mesh->coverage();
     return grids;
 }
 

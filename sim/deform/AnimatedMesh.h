@@ -26,6 +26,8 @@ public:
     void advanceTo(double time);
     bool changesOverTime() const { return deformer_ != nullptr || water_ != nullptr; }
     const TriangleMesh& mesh() const { return current_; }
+    // The wave surface of a water object (its height field), or null.
+    const WaterSurface* water() const { return water_.get(); }
 
 private:
     TriangleMesh rest_;

@@ -39,6 +39,9 @@ public:
     glm::dvec2 nodePosition(int i, int k) const;  // (x, z)
     // Height above the rest level at node (i, k), m.
     double height(int i, int k) const { return height_[index(i, k)]; }
+    // Every node's height, x fastest, and the basin they span.
+    const std::vector<double>& heights() const { return height_; }
+    const WaterDesc& desc() const { return desc_; }
     void setHeight(int i, int k, double value) { height_[index(i, k)] = value; }
     // E^{n+½} of the last step, in m⁴/s² (per unit density).
     double energy() const;
