@@ -43,6 +43,8 @@ void drawMaterials(Scene& scene) {
 }
 
 void drawSolver(SimDesc& sim) {
+    int device = static_cast<int>(sim.device);  // SimDesc::Device: auto, cpu, gpu
+    if (ImGui::Combo("device", &device, "auto\0cpu\0gpu\0")) sim.device = static_cast<SimDesc::Device>(device);
     editDouble("frame time (s)", sim.frameTime, 0.005, 0.2, "%.3f", true);
     editDouble("viscosity (m2/s)", sim.viscosity, 0.0, 1e-2, "%.2e", true);
     for (std::size_t i = 0; i < sim.sources.size(); ++i) {
@@ -64,6 +66,7 @@ void drawFigures(const render::FrameResult& last, const ViewerStatus& status) {
     else
         ImGui::Text("full image");
     if (status.simulated) ImGui::Text("simulated time %.3f s", status.simulatedTime);
+    if (!status.solverDevice.empty()) ImGui::Text("fluid solver on the %s", status.solverDevice == "gpu" ? "GPU" : "CPU");
     for (const auto& stage : last.stages)
         ImGui::Text("%-15s %s %8.1f ms", stage.name.c_str(), stage.ran ? "ran " : "kept", stage.milliseconds);
     ImGui::Text("energy balance error %.2e", last.photons.balanceError());
@@ -89,7 +92,8 @@ PanelRequests ControlPanel::draw(const render::FrameResult& last, ViewerStatus& 
         requests.step = ImGui::Button("step (n)");
         ImGui::SameLine();
         requests.reset = ImGui::Button("reset (r)");
-        ImGui::Checkbox("pipelined", &pipelined);
+        // A solver on the GPU queues its passes on this context: nothing to pipeline.
+        if (status.solverDevice != "gpu") ImGui::Checkbox("pipelined", &pipelined);
     }
     if (ImGui::CollapsingHeader("tracer")) drawTracerSettings(edited_.tracer);
     if (!edited_.objects.empty() && ImGui::CollapsingHeader("materials")) drawMaterials(edited_);

@@ -104,6 +104,7 @@ public:
             presenter_.present(image_, width, height);
             status_.simulated = session_->simulated();
             status_.simulatedTime = session_->simulatedTime();
+            status_.solverDevice = session_->solverDevice();
             status_.photonsInUse = photons_;
             status_.imageSpacePreview = imageSpacePreview;
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);

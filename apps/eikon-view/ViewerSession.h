@@ -27,6 +27,7 @@ public:
     render::FrameRenderer& renderer() { return source_->renderer(); }
     bool simulated() const { return fields_->changesOverTime(); }
     double simulatedTime() const { return source_->current().time; }
+    std::string solverDevice() const { return fields_->fluidDevice(); }
 
     // Renders the current frame; with `advance`, a simulated scene moves on
     // one frame (simulated during the render when `pipelined`).
