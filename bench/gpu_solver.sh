@@ -15,9 +15,10 @@ mkdir -p "$out"
 "$build/bench_fluid_step" --benchmark_counters_tabular=true \
     --benchmark_out="$out/fluid_step.json" --benchmark_out_format=json
 
-# frames/s over frames 2 … N−1 of a run's report (frame 0 compiles shaders, frame 1 uploads).
+# frames/s over frames 2 … N−2 of a run's report (frame 0 compiles shaders,
+# frame 1 uploads, the last frame produces no next one).
 frames_per_second() {
-    grep -o '"frame_ms":[0-9.e+-]*' "$1/report.jsonl" | tail -n +3 | cut -d: -f2 |
+    grep -o '"frame_ms":[0-9.e+-]*' "$1/report.jsonl" | tail -n +3 | head -n -1 | cut -d: -f2 |
         awk '{ total += $1; n += 1 } END { if (n) printf "%.1f frames/s (%.1f ms a frame over %d frames)\n", 1000 * n / total, total / n, n }'
 }
 
