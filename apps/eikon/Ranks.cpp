@@ -177,13 +177,21 @@ int Ranks::runGuarded(const std::function<int()>& body) {
         throw;
     } catch (const InputError& error) {
         if (!inputsChecked_) throw;
-        std::cerr << "eikon: error (" << describe() << "): " << error.what() << "\n";
+        reportError(error.what());
         abort(2);
     } catch (const std::exception& error) {
         if (!inputsChecked_) throw;
-        std::cerr << "eikon: error (" << describe() << "): " << error.what() << "\n";
+        reportError(error.what());
         abort(1);
     }
+}
+
+// One write of the whole line: mpirun forwards a rank's stderr as it
+// arrives and prints its own abort notice, which used to land between the
+// pieces of a message written in parts.
+void Ranks::reportError(const std::string& what) const {
+    const std::string line = "eikon: error (" + describe() + "): " + what + "\n";
+    std::cerr.write(line.data(), static_cast<std::streamsize>(line.size()));
 }
 
 void Ranks::abort(int code) const {

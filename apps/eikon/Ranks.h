@@ -64,6 +64,8 @@ public:
     [[noreturn]] void abort(int code) const;
 
 private:
+    // "eikon: error (rank r of n): what" on stderr, in one write.
+    void reportError(const std::string& what) const;
     struct ThreadBudget;  // the cores of this machine shared among its ranks
     Ranks();
     bool mpi_ = false;
