@@ -114,7 +114,6 @@ double FluidSimulation::maxCellCrossingRate() {
 
 void FluidSimulation::advanceFrame() {
     for (PhaseTiming& t : timings_) t = {t.phase};
-
     double remaining = desc_.frameTime;
     int minimumLeft = desc_.substeps;
     lastSubsteps_ = 0;
@@ -140,7 +139,6 @@ void FluidSimulation::updateTime() { time_ = static_cast<double>(frames_) * desc
 
 void FluidSimulation::step(double dt) {
     for (PhaseTiming& t : timings_) t = {t.phase};
-
     substep(dt);
     lastSubsteps_ = 1;
     steppedTime_ += dt;

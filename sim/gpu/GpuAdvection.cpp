@@ -76,29 +76,28 @@ void GpuAdvection::trace(const std::array<GpuField, 3>& velocity, double dt) {
 
 void GpuAdvection::advectField(GpuField& field, int axis) {
     const glm::ivec3 size = field.size();
+    // Both passes cover the field's lattice, `axis` naming it.
+    auto runOverLattice = [&](const gl::Program& pass) {
+        glUniform3i(pass.uniform("cells"), cells_.x, cells_.y, cells_.z);
+        glUniform3i(pass.uniform("size"), size.x, size.y, size.z);
+        glUniform1i(pass.uniform("axis"), axis);
+        pass.dispatchOverCells(size);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    };
+    low_.bindStorage(layout::kSolverBoundsLow);
+    high_.bindStorage(layout::kSolverBoundsHigh);
+
     predict_.use();
     field.bind(layout::kSolverSource);
     predicted_.bindStorage(layout::kSolverTarget);
-    low_.bindStorage(layout::kSolverBoundsLow);
-    high_.bindStorage(layout::kSolverBoundsHigh);
     backward_.bindStorage(layout::kSolverBackward);
-    glUniform3i(predict_.uniform("cells"), cells_.x, cells_.y, cells_.z);
-    glUniform3i(predict_.uniform("size"), size.x, size.y, size.z);
-    glUniform1i(predict_.uniform("axis"), axis);
-    predict_.dispatchOverCells(size);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    runOverLattice(predict_);
 
     correct_.use();
     field.bind(layout::kSolverField);
     predicted_.bindStorage(layout::kSolverSource);
-    low_.bindStorage(layout::kSolverBoundsLow);
-    high_.bindStorage(layout::kSolverBoundsHigh);
     forward_.bindStorage(layout::kSolverForward);
-    glUniform3i(correct_.uniform("cells"), cells_.x, cells_.y, cells_.z);
-    glUniform3i(correct_.uniform("size"), size.x, size.y, size.z);
-    glUniform1i(correct_.uniform("axis"), axis);
-    correct_.dispatchOverCells(size);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    runOverLattice(correct_);
 }
 
 void GpuAdvection::advect(std::array<GpuField, 3>& velocity, const std::vector<GpuField*>& scalars, double dt) {
