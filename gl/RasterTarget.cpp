@@ -33,9 +33,13 @@ RasterTarget::RasterTarget(int width, int height, const GpuResource& resource)
                                  ") is incomplete: status " + std::to_string(status));
 }
 
-void RasterTarget::beginDrawing(const glm::vec4& clear) {
+void RasterTarget::continueDrawing() {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
     glViewport(0, 0, width_, height_);
+}
+
+void RasterTarget::beginDrawing(const glm::vec4& clear) {
+    continueDrawing();
     glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, glm::value_ptr(clear));
     const float farthest = 1.0f;
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &farthest);

@@ -24,6 +24,8 @@ public:
     int height() const { return height_; }
     // Binds the framebuffer and viewport and clears colour to `clear` and depth to 1.
     void beginDrawing(const glm::vec4& clear);
+    // Binds the framebuffer and viewport and keeps what it holds (drawing adds to it).
+    void continueDrawing();
     void bindColour(GLuint unit) const { glBindTextureUnit(unit, colour_.id()); }
 
 private:

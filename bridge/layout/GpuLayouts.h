@@ -53,6 +53,9 @@
     X(kWavefrontPatches, 20)    /* buffer Patches { GpuWavefrontPatch patches[]; }: one level of the wavefront, read */    \
     X(kWavefrontChildren, 21)   /* buffer Children { GpuWavefrontPatch children[]; }: the next level, written */           \
     X(kWavefrontCounters, 22)   /* buffer Counters (GpuWavefrontCounters) */                                   \
+    X(kCausticVertices, 20)     /* buffer CausticVertices { vec4 v[]; }: image space, per light texel and sheet, its photon's landing */ \
+    X(kCausticTriangles, 21)    /* buffer CausticTriangles { vec4 t[]; }: image space, the caustic triangles to draw */  \
+    X(kCausticDraw, 22)         /* buffer CausticDraw { uvec4 }: image space, the caustic triangles' indirect draw */   \
     X(kSuspendedIn, 23)         /* buffer SuspendedIn { GpuSuspendedPhoton[] }: photons a dispatch resumes */      \
     X(kSuspendedOut, 24)        /* buffer SuspendedOut { GpuSuspendedPhoton[] }: photons it suspends */           \
     X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */                                           \
@@ -81,7 +84,8 @@
     X(kAnisotropyTexture, 6)  /* r32f Henyey–Greenstein g */                                                       \
     X(kEmissionTexture, 7)    /* rgba32f (ε rgb in W/(m³·sr), 0) */                                                 \
     X(kNearLayerTexture, 8)   /* rgba32f (octahedral normal, distance, surface + 1): the nearest surfaces a viewpoint sees */ \
-    X(kFarLayerTexture, 9)    /* the same, the next surfaces behind them (image space, render/stages/SurfaceLayers) */
+    X(kFarLayerTexture, 9)    /* the same, the next surfaces behind them (image space, render/stages/SurfaceLayers) */ \
+    X(kCausticAtlasTexture, 10) /* rgba32f W per receiver texel, the receivers' maps stacked (image space, render/stages/CausticPolygons) */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \

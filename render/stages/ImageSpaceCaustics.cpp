@@ -49,7 +49,8 @@ struct ImageSpaceCaustics::LightFrame {
 ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receivers, SurfaceRaster& raster)
     : scene_(scene), receivers_(receivers), raster_(raster), lights_(scene.lights),
       directProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "0"}})),
-      photonProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "1"}})) {
+      photonProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "1"}})),
+      polygons_(scene.render.causticMapTexels, receivers) {
     const int texels = scene.render.causticMapTexels;
     for (std::size_t i = 0; i < lights_.size(); ++i)
         layers_.push_back(std::make_unique<SurfaceLayers>(
@@ -131,6 +132,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
     const glm::dvec3 centre = anyRefractor ? 0.5 * (bounds.min + bounds.max) : glm::dvec3(0.0);
     const double radius = anyRefractor ? 0.5 * glm::length(bounds.max - bounds.min) * 1.01 + 1e-6 : 1e-6;
     const glm::vec2 jitter = jitterOf(frames_);
+    polygons_.clear();
     for (std::size_t i = 0; i < lights_.size(); ++i) {
         const LightDesc& light = lights_[i];
         const LightFrame frame = frameOf(light, centre, radius);
@@ -167,6 +169,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         constexpr std::size_t kRow = 1024;  // texels per row of the dispatch
         directProgram_.dispatchCovering(kRow, (receiverTexels_ + kRow - 1) / kRow, 1, 8, 8, 1);
         photonProgram_.use();
+        polygons_.bindVertices();
         glUniform3fv(photonProgram_.uniform("frame_right"), 1, glm::value_ptr(frame.right));
         glUniform3fv(photonProgram_.uniform("frame_up"), 1, glm::value_ptr(frame.up));
         glUniform1f(photonProgram_.uniform("frame_half_extent"), static_cast<float>(frame.halfExtent));
@@ -174,7 +177,9 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         photonProgram_.dispatchCovering(static_cast<std::size_t>(layers.width()),
                                         static_cast<std::size_t>(layers.height()), 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        polygons_.drawLight({layers.width(), layers.height()}, powerUnit_);
     }
+    polygons_.addToTallies(powerUnit_);
     ++frames_;
     receivers_.filter(powerUnit_ / static_cast<float>(frames_));
     gl::checkpoint("image-space caustics");

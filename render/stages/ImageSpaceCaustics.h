@@ -3,8 +3,10 @@
 // the bounding sphere of the scene's refractors (a perspective frustum from
 // a point or spot light, an orthographic box along a directional light's
 // direction), every texel becomes a photon with the power of its solid angle,
-// refracts through two interfaces and is splatted onto the receivers; the
-// light no refractor intercepts reaches each receiver texel in closed form.
+// refracts through two interfaces and lands on a receiver; neighbouring
+// photons bound caustic polygons that carry the power between them onto the
+// receivers (CausticPolygons.h); the light no refractor intercepts reaches
+// each receiver texel in closed form.
 // The receivers' maps then hold W/m², like the eikonal photons'.
 //
 // Temporal filtering ([Wyman06] §3.2.3, four frames): while neither the
@@ -16,6 +18,7 @@
 
 #include "bridge/scene/Scene.h"
 #include "gl/GlObjects.h"
+#include "render/stages/CausticPolygons.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SurfaceLayers.h"
@@ -50,6 +53,7 @@ private:
     std::vector<LightDesc> lights_;
     std::vector<std::unique_ptr<SurfaceLayers>> layers_;  // one per light
     gl::Program directProgram_, photonProgram_;
+    CausticPolygons polygons_;
     glm::vec3 powerUnit_{1.0f};
     unsigned receiverTexels_ = 0;
     int frames_ = 0;

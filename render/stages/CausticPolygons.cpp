@@ -1,0 +1,105 @@
+#include "render/stages/CausticPolygons.h"
+
+#include "gl/GlDebug.h"
+#include "gl/ShaderLibrary.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace eikon::render {
+
+namespace {
+
+constexpr int kSheets = 2;  // refracted and reflected (common/caustic_vertices.glsl)
+constexpr std::size_t kVertexBytes = 2 * 4 * sizeof(float);
+constexpr std::size_t kTriangleBytes = 3 * 4 * sizeof(float);
+constexpr unsigned kNoTriangles[4] = {0u, 1u, 0u, 0u};  // glDrawArraysIndirect's count, instances, first, base
+
+// The atlas stacks the receivers' maps: as wide as the widest, as tall as all together.
+glm::ivec2 atlasSize(const ReceiverMaps& receivers) {
+    glm::ivec2 size(1, 0);
+    for (unsigned r = 0; r < receivers.count(); ++r) {
+        const auto edge = static_cast<int>(receivers.receiver(r).map.y);
+        size.x = std::max(size.x, edge);
+        size.y += edge;
+    }
+    return {size.x, std::max(size.y, 1)};
+}
+
+}  // namespace
+
+CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
+    : receivers_(receivers),
+      vertices_(static_cast<std::size_t>(texels) * static_cast<std::size_t>(texels) * kSheets * kVertexBytes,
+                gl::GpuResource{"render.caustic_map_texels", "the caustic maps' photon landings"}),
+      triangles_(static_cast<std::size_t>(std::max(texels - 1, 1)) * static_cast<std::size_t>(std::max(texels - 1, 1)) *
+                     kSheets * 2 * kTriangleBytes,
+                 gl::GpuResource{"render.caustic_map_texels", "the caustic triangles"}),
+      drawCommand_(sizeof kNoTriangles, kNoTriangles, GL_DYNAMIC_STORAGE_BIT),
+      atlas_(atlasSize(receivers).x, atlasSize(receivers).y,
+             gl::GpuResource{"receivers", "the atlas the caustic triangles are drawn into"}),
+      cellProgram_(gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "0"}})),
+      gatherProgram_(gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "1"}})),
+      drawProgram_(gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag")) {
+    for (unsigned r = 0; r < receivers_.count(); ++r)
+        receiverTexels_ += receivers_.receiver(r).map.y * receivers_.receiver(r).map.y;
+}
+
+void CausticPolygons::clear() {
+    GLint previousFramebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+    atlas_.beginDrawing(glm::vec4(0.0f));
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+}
+
+void CausticPolygons::drawLight(const glm::ivec2& grid, const glm::vec3& powerUnit) {
+    drawCommand_.upload(kNoTriangles, sizeof kNoTriangles);
+    receivers_.bind();
+    vertices_.bindStorage(layout::kCausticVertices);
+    triangles_.bindStorage(layout::kCausticTriangles);
+    drawCommand_.bindStorage(layout::kCausticDraw);
+    cellProgram_.use();
+    glUniform2i(cellProgram_.uniform("layer_size"), grid.x, grid.y);
+    glUniform3fv(cellProgram_.uniform("power_unit"), 1, glm::value_ptr(powerUnit));
+    cellProgram_.dispatchCovering(static_cast<std::size_t>(grid.x - 1), static_cast<std::size_t>(grid.y - 1), kSheets,
+                                  8, 8, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+
+    GLint previousFramebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
+    atlas_.continueDrawing();
+    drawProgram_.use();
+    glUniform2i(drawProgram_.uniform("atlas_size"), atlas_.width(), atlas_.height());
+    vertexArray_.bind();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);  // a fold of the caustic turns triangles over
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    for (GLenum plane = 0; plane < 4; ++plane) glEnable(GL_CLIP_DISTANCE0 + plane);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, drawCommand_.id());
+    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    for (GLenum plane = 0; plane < 4; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
+    glDisable(GL_BLEND);
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
+    gl::checkpoint("caustic polygons");
+}
+
+void CausticPolygons::addToTallies(const glm::vec3& powerUnit) {
+    receivers_.bind();
+    atlas_.bindColour(layout::kCausticAtlasTexture);
+    gatherProgram_.use();
+    glUniform1ui(gatherProgram_.uniform("texel_count"), receiverTexels_);
+    glUniform1ui(gatherProgram_.uniform("receiver_count"), receivers_.count());
+    glUniform3fv(gatherProgram_.uniform("power_unit"), 1, glm::value_ptr(powerUnit));
+    constexpr std::size_t kRow = 1024;  // texels per row of the dispatch
+    gatherProgram_.dispatchCovering(kRow, (receiverTexels_ + kRow - 1) / kRow, 1, 8, 8, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl::checkpoint("caustic atlas");
+}
+
+}  // namespace eikon::render

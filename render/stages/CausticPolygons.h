@@ -1,0 +1,51 @@
+// Caustic polygons for the image-space caustic maps (shaders/caustic_polygons.*;
+// [Wyman06] §3.2.1, Fig. 5 and Eq. 1): a light's photons, one
+// per texel of its surface layers, sample a map from the light's texel grid
+// onto the receivers. Rather than splatting each photon's power at one
+// point, which shows the photons' regular grid as moiré wherever fewer than
+// a few land per receiver texel, the power between four neighbouring
+// photons is spread over the quadrilateral between their landings: its two
+// triangles are drawn by the raster pipeline, with additive blending, into
+// an atlas that stacks the receivers' maps a texel per pixel, at the
+// irradiance of their power over their landing area. Triangles smaller than
+// a quarter of a receiver texel, and cells whose corners land on different receivers or
+// through different surfaces (no smooth map there), are splatted as points.
+// The atlas is then added into the receivers' fixed-point tallies, so power
+// is counted as exactly as the splats' (up to where a drawn triangle's edge
+// falls between texel centres).
+#pragma once
+
+#include "gl/GlObjects.h"
+#include "gl/RasterTarget.h"
+#include "render/stages/ReceiverMaps.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace eikon::render {
+
+class CausticPolygons {
+public:
+    // texels: the light layers' edge (render.caustic_map_texels).
+    CausticPolygons(int texels, const ReceiverMaps& receivers);
+
+    // Clears the atlas: the start of a frame's lights.
+    void clear();
+    // Where the photon pass writes its landings (kCausticVertices).
+    void bindVertices() const { vertices_.bindStorage(layout::kCausticVertices); }
+    // After a light's photon pass over a layers' grid of `grid` texels:
+    // splats what has no smooth map and draws the rest into the atlas.
+    void drawLight(const glm::ivec2& grid, const glm::vec3& powerUnit);
+    // Adds the atlas, all lights drawn, into the receivers' tallies.
+    void addToTallies(const glm::vec3& powerUnit);
+
+private:
+    const ReceiverMaps& receivers_;
+    unsigned receiverTexels_ = 0;
+    gl::Buffer vertices_, triangles_, drawCommand_;
+    gl::RasterTarget atlas_;
+    gl::Program cellProgram_, gatherProgram_, drawProgram_;
+    gl::EmptyVertexArray vertexArray_;
+};
+
+}  // namespace eikon::render

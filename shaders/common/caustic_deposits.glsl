@@ -1,0 +1,42 @@
+// The image-space caustics' deposits (image_space_caustics.comp,
+// caustic_polygons.comp): power in W added to a receiver texel's 64-bit
+// fixed-point tallies (common/wide_units.glsl, ReceiverMaps), which
+// ReceiverMaps filters into W/m² as it does the eikonal photons'. GLSL only;
+// needs receiver_blocks.glsl and wide_units.glsl.
+
+layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
+
+uniform vec3 power_unit;  // W per tally unit
+
+void deposit_texel(int r, ivec2 texel, vec3 watts) {
+    int resolution = int(receivers[r].map.y);
+    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(resolution)))) return;
+    uint base = 6u * (receivers[r].map.x + uint(texel.y * resolution + texel.x));
+    for (int c = 0; c < 3; ++c)
+        if (watts[c] > 0.0f) ADD_WIDE_UNITS(receiver_tallies, base + uint(2 * c), wide_units(watts[c] / power_unit[c]));
+}
+
+// Power landing at map_uv on receiver r, shared bilinearly between the four texels around it.
+void splat_at(int r, vec2 map_uv, vec3 watts) {
+    float resolution = float(receivers[r].map.y);
+    vec2 texel = map_uv * resolution - 0.5f;
+    ivec2 base = ivec2(floor(texel));
+    vec2 f = texel - vec2(base);
+    deposit_texel(r, base, (1.0f - f.x) * (1.0f - f.y) * watts);
+    deposit_texel(r, base + ivec2(1, 0), f.x * (1.0f - f.y) * watts);
+    deposit_texel(r, base + ivec2(0, 1), (1.0f - f.x) * f.y * watts);
+    deposit_texel(r, base + ivec2(1, 1), f.x * f.y * watts);
+}
+
+// The receiver and texel of the index-th texel of all receivers' maps
+// (false: past the last of texel_count).
+bool receiver_texel_of(uint index, uint texel_count, out int r, out ivec2 texel) {
+    r = 0;
+    texel = ivec2(0);
+    if (index >= texel_count) return false;
+    while (r + 1 < int(receiver_count) && index >= receivers[r + 1].map.x) ++r;
+    uint resolution = receivers[r].map.y;
+    uint local = index - receivers[r].map.x;
+    texel = ivec2(local % resolution, local / resolution);
+    return true;
+}
