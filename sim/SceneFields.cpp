@@ -45,6 +45,7 @@ struct SceneFields::MeshObject {
     std::unique_ptr<SharpMeshSurface> surface;
     std::size_t root = 0, firstNode = 0, firstTriangle = 0;
     bool published = false;
+    bool coverageBehind = false;  // a sharp surface's coverage, not kept: it lags the shape
 };
 
 namespace {
@@ -55,7 +56,11 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-SceneFields::SceneFields(const Scene& scene) : scene_(scene) {
+bool SceneFields::needsSharpCoverage(const Scene& scene) {
+    return scene.render.method != RenderDesc::Method::ImageSpace || scene.exports.vtk.enabled || scene.exports.vdb.enabled;
+}
+
+SceneFields::SceneFields(const Scene& scene) : scene_(scene), keepSharpCoverage_(needsSharpCoverage(scene)) {
     fields_.grid = scene.grid.spec();
     fields_.referenceIndex = scene.medium.index;
     fields_.deltaIndex.assign(fields_.grid.cellCount(), 0.0f);
@@ -153,7 +158,7 @@ std::vector<const TriangleMesh*> SceneFields::deformedMeshes() const {
 }
 
 // Deform, then voxelize: each object's coverage is redone only where its
-// surface moved.
+// surface moved (a sharp surface's only while its coverage is kept).
 void SceneFields::updateMeshes() {
     deformMs_ = voxelizeMs_ = 0.0;
     recomputedCells_ = 0;
@@ -162,17 +167,38 @@ void SceneFields::updateMeshes() {
         mesh->shape.advanceTo(time());
         deformMs_ += millisecondsSince(start);
         start = std::chrono::steady_clock::now();
-        mesh->updateCoverage();
-        publishSurface(*mesh);
+        if (mesh->surface && !keepSharpCoverage_) {
+            mesh->coverageBehind = mesh->coverageBehind || !mesh->published || mesh->shape.changesOverTime();
+            mesh->changed = CellBlocks(fields_.grid);
+            publishSurface(*mesh, mesh->shape.changesOverTime());
+        } else {
+            mesh->updateCoverage();
+            publishSurface(*mesh, !mesh->changed.empty());
+            recomputedCells_ += mesh->lastRecomputedCells();
+        }
         voxelizeMs_ += millisecondsSince(start);
-        recomputedCells_ += mesh->lastRecomputedCells();
     }
+}
+
+void SceneFields::keepSharpCoverage(bool keep) {
+    if (keep == keepSharpCoverage_) return;
+    keepSharpCoverage_ = keep;
+    if (!keep) return;
+    const auto start = std::chrono::steady_clock::now();
+    for (auto& mesh : meshes_) {
+        if (!mesh->coverageBehind) continue;
+        mesh->updateCoverage();
+        mesh->coverageBehind = false;
+    }
+    if (fluid_ || volume_) refreshFromSimulation();
+    else repaintWhereMeshesChanged();
+    voxelizeMs_ += millisecondsSince(start);
 }
 
 // A sharp mesh's tree and triangles, refitted when its vertices moved
 // within the grid (the tracers see no surface outside it).
-void SceneFields::publishSurface(MeshObject& mesh) {
-    if (!mesh.surface || (mesh.published && mesh.changed.empty())) return;
+void SceneFields::publishSurface(MeshObject& mesh, bool moved) {
+    if (!mesh.surface || (mesh.published && !moved)) return;
     mesh.published = true;
     mesh.surface->write(mesh.shape.mesh(), mesh.root, mesh.firstNode, mesh.firstTriangle, fields_.surfaceNodes.data(),
                         fields_.surfaceTriangles.data());
@@ -193,6 +219,12 @@ void SceneFields::advanceFrame() {
         refreshFromSimulation();
         return;
     }
+    repaintWhereMeshesChanged();
+}
+
+// The medium, objects and strokes again over the cells whose coverage the
+// meshes' last update changed.
+void SceneFields::repaintWhereMeshesChanged() {
     CellBlocks changed(fields_.grid);
     for (const auto& mesh : meshes_) changed.add(mesh->changed);
     if (changed.empty()) return;

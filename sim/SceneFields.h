@@ -92,10 +92,21 @@ public:
     // This frame's mesh of every mesh or water object, in scene order.
     std::vector<const TriangleMesh*> deformedMeshes() const;
 
+    // Whether frames keep the voxel coverage of the sharp meshes and water
+    // surfaces up to date, and the attenuation painted into the grid from
+    // it: only the eikonal tracer and field exports read them, while image
+    // space draws the surfaces themselves. Off, a frame deforms the shapes and
+    // refits their triangles only (pool_caustics: 18 ms of coverage and 21 MB
+    // of upload saved per frame); turned on, the coverage catches up with the
+    // current frame. The constructor starts it as needsSharpCoverage says.
+    void keepSharpCoverage(bool keep);
+    static bool needsSharpCoverage(const Scene& scene);
+
 private:
     struct MeshObject;
     void updateMeshes();
-    void publishSurface(MeshObject& mesh);
+    void publishSurface(MeshObject& mesh, bool moved);
+    void repaintWhereMeshesChanged();
     CoverageGrids coverageGrids() const;
     void refreshFromSimulation();
 
@@ -112,6 +123,7 @@ private:
     double deformMs_ = 0.0;
     double voxelizeMs_ = 0.0;
     long long recomputedCells_ = 0;
+    bool keepSharpCoverage_ = true;
 };
 
 }  // namespace eikon::sim

@@ -4,6 +4,7 @@
 #include "bridge/grid/FieldSet.h"
 
 #include <glm/geometric.hpp>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,14 +28,22 @@ glm::dvec3 unitNormal(const TriangleMesh& mesh, int triangle) {
     return length > 0.0 ? n / length : glm::dvec3(0.0);
 }
 
-// The triangle's angle at vertex v, radians.
-double cornerAngle(const TriangleMesh& mesh, int triangle, int v) {
+// The triangle's angles at its three corners, radians.
+glm::dvec3 cornerAngles(const TriangleMesh& mesh, int triangle) {
+    glm::dvec3 angles(0.0);
+    for (int c = 0; c < 3; ++c) {
+        const glm::dvec3 a = corner(mesh, triangle, (c + 1) % 3) - corner(mesh, triangle, c);
+        const glm::dvec3 b = corner(mesh, triangle, (c + 2) % 3) - corner(mesh, triangle, c);
+        const double la = glm::length(a), lb = glm::length(b);
+        angles[c] = la > 0.0 && lb > 0.0 ? std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0)) : 0.0;
+    }
+    return angles;
+}
+
+// The angle of `triangle` at its corner on vertex v.
+double angleAt(const TriangleMesh& mesh, const std::vector<glm::dvec3>& angles, int triangle, int v) {
     const glm::ivec3& t = mesh.triangles[static_cast<std::size_t>(triangle)];
-    const int c = t.x == v ? 0 : t.y == v ? 1 : 2;
-    const glm::dvec3 a = corner(mesh, triangle, (c + 1) % 3) - corner(mesh, triangle, c);
-    const glm::dvec3 b = corner(mesh, triangle, (c + 2) % 3) - corner(mesh, triangle, c);
-    const double la = glm::length(a), lb = glm::length(b);
-    return la > 0.0 && lb > 0.0 ? std::acos(std::clamp(glm::dot(a, b) / (la * lb), -1.0, 1.0)) : 0.0;
+    return angles[static_cast<std::size_t>(triangle)][t.x == v ? 0 : t.y == v ? 1 : 2];
 }
 
 void put(float* out, const glm::dvec3& v, float w) {
@@ -77,11 +86,14 @@ void SharpMeshSurface::write(const TriangleMesh& mesh, std::size_t root, std::si
         put(out, node.min, static_cast<float>(first));
         put(out + 4, node.max, static_cast<float>(node.count));
     }
-    std::vector<glm::dvec3> faceNormals(mesh.triangles.size());
-    for (std::size_t t = 0; t < faceNormals.size(); ++t) faceNormals[t] = unitNormal(mesh, static_cast<int>(t));
+    std::vector<glm::dvec3> faceNormals(mesh.triangles.size()), angles(mesh.triangles.size());
+    tbb::parallel_for(std::size_t{0}, faceNormals.size(), [&](std::size_t t) {
+        faceNormals[t] = unitNormal(mesh, static_cast<int>(t));
+        angles[t] = cornerAngles(mesh, static_cast<int>(t));
+    });
     const double crease = std::cos(kCreaseDegrees * M_PI / 180.0);
     const std::vector<int>& order = bvh_.order();
-    for (std::size_t slot = 0; slot < order.size(); ++slot) {
+    tbb::parallel_for(std::size_t{0}, order.size(), [&](std::size_t slot) {
         const int t = order[slot];
         const glm::ivec3& corners = mesh.triangles[static_cast<std::size_t>(t)];
         const glm::dvec3 own = faceNormals[static_cast<std::size_t>(t)];
@@ -99,12 +111,12 @@ void SharpMeshSurface::write(const TriangleMesh& mesh, std::size_t root, std::si
                 glm::dvec3 other = faceNormals[static_cast<std::size_t>(neighbour)];
                 if (glm::dot(own, other) < 0.0) other = -other;
                 if (glm::dot(own, other) >= crease)
-                    sum += cornerAngle(mesh, neighbour, static_cast<int>(v)) * other;
+                    sum += angleAt(mesh, angles, neighbour, static_cast<int>(v)) * other;
             }
             const double length = glm::length(sum);
             put(out + 12 + 4 * corner, length > 0.0 ? sum / length : glm::dvec3(0.0), 0.0f);
         }
-    }
+    });
 }
 
 }  // namespace eikon::sim

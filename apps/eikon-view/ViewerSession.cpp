@@ -38,6 +38,7 @@ render::FrameResult ViewerSession::renderImageSpacePreview(bool advance) {
     imageSpace_->setExposure(eikonal.scene().render.exposureEv);
     render::FrameResult result = imageSpace_->render(fields_->fields());
     if (advance) {  // host fields only: a scene of surfaces has no fluid solver
+        fields_->keepSharpCoverage(false);  // until an eikonal frame needs it again
         source_->beginNext();
         source_->waitNext();
         source_->publishNext();
@@ -46,6 +47,7 @@ render::FrameResult ViewerSession::renderImageSpacePreview(bool advance) {
 }
 
 render::FrameResult ViewerSession::renderFrame(bool advance, bool pipelined) {
+    fields_->keepSharpCoverage(sim::SceneFields::needsSharpCoverage(scene_));
     if (!advance) return source_->render();
     // A solver on the GPU queues its passes on this context: nothing to overlap on a thread.
     source_->setPipelined(pipelined && fields_->fluidDevice() != "gpu");

@@ -212,5 +212,43 @@ TEST(SceneFieldsMesh, SharpMeshPublishesItsTriangleTree) {
     EXPECT_EQ(stillFields.fields().surfaceVersion, stillVersion) << "nothing moved: nothing to upload";
 }
 
+// Image space draws a sharp mesh's surface, not its voxel coverage: such a
+// scene skips the coverage (and the extinction painted from it) while its
+// triangles still follow the deformation; once kept again, the coverage
+// catches up, and the fields equal those of a run that kept it throughout.
+TEST(SceneFieldsMesh, ImageSpaceSkipsTheSharpCoverageUntilItIsKept) {
+    Scene eikonal = twistingBarScene();
+    eikonal.objects[0].surface = ObjectDesc::Surface::Sharp;
+    Scene imageSpace = eikonal;
+    imageSpace.render.method = RenderDesc::Method::ImageSpace;
+    EXPECT_TRUE(SceneFields::needsSharpCoverage(eikonal));
+    EXPECT_FALSE(SceneFields::needsSharpCoverage(imageSpace));
+    Scene exported = imageSpace;
+    exported.exports.vtk.enabled = true;
+    EXPECT_TRUE(SceneFields::needsSharpCoverage(exported)) << "exports read the fields";
+
+    SceneFields kept(eikonal), skipped(imageSpace);
+    const GridSpec& grid = kept.fields().grid;
+    EXPECT_EQ(skipped.fields().extinction[3 * grid.linearIndex(24, 24, 24)], 0.0f) << "no coverage painted";
+    const std::uint64_t surfaceVersion = skipped.fields().surfaceVersion, indexVersion = skipped.fields().indexVersion;
+    for (int frame = 0; frame < 2; ++frame) {
+        kept.advanceFrame();
+        skipped.advanceFrame();
+    }
+    EXPECT_EQ(skipped.fields().surfaceVersion, surfaceVersion + 2) << "refitted every frame";
+    EXPECT_EQ(skipped.fields().indexVersion, indexVersion) << "no field to upload";
+    EXPECT_EQ(skipped.fields().surfaceTriangles, kept.fields().surfaceTriangles);
+    EXPECT_EQ(skipped.fields().surfaceNodes, kept.fields().surfaceNodes);
+    EXPECT_EQ(skipped.lastTimings()[1].iterations, 0) << "no cells recomputed";
+
+    skipped.keepSharpCoverage(true);
+    EXPECT_GT(skipped.fields().indexVersion, indexVersion);
+    EXPECT_EQ(skipped.fields().deltaIndex, kept.fields().deltaIndex);
+    EXPECT_EQ(skipped.fields().extinction, kept.fields().extinction);
+    kept.advanceFrame();
+    skipped.advanceFrame();
+    EXPECT_EQ(skipped.fields().extinction, kept.fields().extinction) << "and keeps up afterwards";
+}
+
 }  // namespace
 }  // namespace eikon::sim
