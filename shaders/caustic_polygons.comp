@@ -42,57 +42,70 @@ uniform ivec2 layer_size;
 // a uniform beam flat (CausticPolygons.CarryAUniformBeamThroughASlabUniformly).
 const float kSmallestDrawnTexels = 0.25f;
 
-shared uint group_triangles;  // this work group's triangles to draw
-shared uint group_first;      // where they go in the list
+// A cell's corner: where its photon landed, if on receiver r through surface s.
+bool lands_with(CausticVertex v, int r, int s) { return v.receiver == r && v.surface == s; }
 
+// The area of the triangle between three landings, in texels of receiver r.
+float texels_between(vec2 a, vec2 b, vec2 c, int r) {
+    vec2 ab = b - a, ac = c - a;
+    float edge = float(receivers[r].map.y);
+    return 0.5f * abs(ab.x * ac.y - ab.y * ac.x) * edge * edge;
+}
+
+// A CPU rasterizer runs every call site of a shader under a mask, whether
+// its lanes take it or not, so the cell's splats and triangles are listed
+// first and then deposited from one call site each.
 void main() {
     ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     int sheet = int(gl_GlobalInvocationID.z);
-    bool inside_grid = all(lessThan(cell, layer_size - 1));
-    CausticVertex corner[4];
-    bool smooth_map = inside_grid;
-    if (inside_grid) {
-        const ivec2 offsets[4] = ivec2[4](ivec2(0, 0), ivec2(1, 0), ivec2(1, 1), ivec2(0, 1));
-        for (int k = 0; k < 4; ++k) {
-            ivec2 t = cell + offsets[k];
-            corner[k] = read_caustic_vertex(uint(t.y * layer_size.x + t.x), sheet);
-        }
-        for (int k = 0; k < 4; ++k)
-            smooth_map = smooth_map && corner[k].receiver >= 0 && corner[k].receiver == corner[0].receiver &&
-                         corner[k].surface == corner[0].surface;
-        if (!smooth_map)
-            for (int k = 0; k < 4; ++k)
-                if (corner[k].receiver >= 0) splat_at(corner[k].receiver, corner[k].map_uv, 0.25f * corner[k].watts);
-    }
+    if (any(greaterThanEqual(cell, layer_size - 1))) return;
+    uint first = uint(cell.y * layer_size.x + cell.x);
+    CausticVertex corner[4] = CausticVertex[4](
+        read_caustic_vertex(first, sheet), read_caustic_vertex(first + 1u, sheet),
+        read_caustic_vertex(first + uint(layer_size.x) + 1u, sheet), read_caustic_vertex(first + uint(layer_size.x), sheet));
+    int r = corner[0].receiver;
+    bool smooth_map = r >= 0;
+    for (int k = 1; k < 4; ++k) smooth_map = smooth_map && lands_with(corner[k], r, corner[0].surface);
     // The two triangles (corners 0 1 2 and 0 2 3), each with half the cell's power.
-    int r = smooth_map ? corner[0].receiver : 0;
-    vec3 half_watts = smooth_map ? 0.125f * (corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts)
-                                 : vec3(0.0f);
-    bool drawn[2] = bool[2](false, false);
+    vec3 half_watts = 0.125f * (corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts);
     float texels[2] = float[2](0.0f, 0.0f);
+    bool drawn[2] = bool[2](false, false);
     for (int t = 0; t < 2 && smooth_map; ++t) {
-        vec2 ab = corner[t + 1].map_uv - corner[0].map_uv, ac = corner[t + 2].map_uv - corner[0].map_uv;
-        texels[t] = 0.5f * abs(ab.x * ac.y - ab.y * ac.x) * float(receivers[r].map.y * receivers[r].map.y);
+        texels[t] = texels_between(corner[0].map_uv, corner[t + 1].map_uv, corner[t + 2].map_uv, r);
         drawn[t] = texels[t] >= kSmallestDrawnTexels;
     }
-    if (smooth_map && !drawn[0] && !drawn[1]) {  // the whole cell within about a texel: one splat
-        splat_at(r, 0.25f * (corner[0].map_uv + corner[1].map_uv + corner[2].map_uv + corner[3].map_uv), 2.0f * half_watts);
+    // The splats: a corner's quarter each (no smooth map), the whole cell
+    // within about a texel at once, or a small triangle at its centroid.
+    int splats = 0;
+    int splat_receiver[4];
+    vec2 splat_uv[4];
+    vec3 splat_watts[4];
+    if (!smooth_map) {
+        for (int k = 0; k < 4; ++k)
+            if (corner[k].receiver >= 0) {
+                splat_receiver[splats] = corner[k].receiver;
+                splat_uv[splats] = corner[k].map_uv;
+                splat_watts[splats++] = 0.25f * corner[k].watts;
+            }
+    } else if (!drawn[0] && !drawn[1]) {
+        splat_receiver[0] = r;
+        splat_uv[0] = 0.25f * (corner[0].map_uv + corner[1].map_uv + corner[2].map_uv + corner[3].map_uv);
+        splat_watts[0] = 2.0f * half_watts;
+        splats = 1;
     } else {
-        for (int t = 0; t < 2 && smooth_map; ++t)
-            if (!drawn[t]) splat_at(r, (corner[0].map_uv + corner[t + 1].map_uv + corner[t + 2].map_uv) / 3.0f, half_watts);
+        for (int t = 0; t < 2; ++t)
+            if (!drawn[t]) {
+                splat_receiver[splats] = r;
+                splat_uv[splats] = (corner[0].map_uv + corner[t + 1].map_uv + corner[t + 2].map_uv) / 3.0f;
+                splat_watts[splats++] = half_watts;
+            }
     }
-    // One atomic on the list's count per work group (llvmpipe serialises them).
-    if (gl_LocalInvocationIndex == 0u) group_triangles = 0u;
-    barrier();
-    uint local_slot[2] = uint[2](0u, 0u);
-    for (int t = 0; t < 2; ++t)
-        if (drawn[t]) local_slot[t] = atomicAdd(group_triangles, 1u);
-    barrier();
-    if (gl_LocalInvocationIndex == 0u && group_triangles > 0u) group_first = atomicAdd(caustic_draw.x, 3u * group_triangles) / 3u;
-    barrier();
+    for (int k = 0; k < splats; ++k) splat_at(splat_receiver[k], splat_uv[k], splat_watts[k]);
     for (int t = 0; t < 2; ++t) {
         if (!drawn[t]) continue;
-        uint slot = 3u * (group_first + local_slot[t]);
+        // One atomic per triangle: llvmpipe runs a work group's barriers so
+        // slowly that counting per group first cost more than the whole pass.
+        uint slot = 3u * (atomicAdd(caustic_draw.x, 3u) / 3u);
         caustic_triangles[slot] = vec4(corner[0].map_uv, corner[t + 1].map_uv);
         caustic_triangles[slot + 1u] = vec4(corner[t + 2].map_uv, float(r), 0.0f);
         caustic_triangles[slot + 2u] = vec4(half_watts / texels[t], 0.0f);

@@ -16,16 +16,19 @@ void deposit_texel(int r, ivec2 texel, vec3 watts) {
         if (watts[c] > 0.0f) ADD_WIDE_UNITS(receiver_tallies, base + uint(2 * c), wide_units(watts[c] / power_unit[c]));
 }
 
-// Power landing at map_uv on receiver r, shared bilinearly between the four texels around it.
+// Power landing at map_uv on receiver r, shared bilinearly between the four
+// texels around it. (One deposit in a loop: a CPU rasterizer runs every
+// call site a shader has under a mask, lanes that take it or not.)
 void splat_at(int r, vec2 map_uv, vec3 watts) {
     float resolution = float(receivers[r].map.y);
     vec2 texel = map_uv * resolution - 0.5f;
     ivec2 base = ivec2(floor(texel));
     vec2 f = texel - vec2(base);
-    deposit_texel(r, base, (1.0f - f.x) * (1.0f - f.y) * watts);
-    deposit_texel(r, base + ivec2(1, 0), f.x * (1.0f - f.y) * watts);
-    deposit_texel(r, base + ivec2(0, 1), (1.0f - f.x) * f.y * watts);
-    deposit_texel(r, base + ivec2(1, 1), f.x * f.y * watts);
+    for (int k = 0; k < 4; ++k) {
+        ivec2 offset = ivec2(k & 1, k >> 1);
+        vec2 weight = mix(1.0f - f, f, vec2(offset));
+        deposit_texel(r, base + offset, weight.x * weight.y * watts);
+    }
 }
 
 // The receiver and texel of the index-th texel of all receivers' maps
