@@ -104,9 +104,12 @@ void main() {
     // crosses it (a shadow narrower than half a texel can slip between them)
     // and the 4×4 points need no test of their own.
     const vec2 probes[5] = vec2[5](vec2(0.0f), vec2(1.0f, 0.0f), vec2(0.0f, 1.0f), vec2(1.0f), vec2(0.5f));
-    bool blocked = light_blocked(r, receiver_point(r, vec2(texel) / resolution));
-    bool edge = false;
-    for (int k = 1; k < 5; ++k) edge = edge || light_blocked(r, receiver_point(r, (vec2(texel) + probes[k]) / resolution)) != blocked;
+    bool blocked = false, edge = false;
+    for (int k = 0; k < 5; ++k) {  // one call site (a CPU rasterizer runs each under a mask)
+        bool probe = light_blocked(r, receiver_point(r, (vec2(texel) + probes[k]) / resolution));
+        if (k == 0) blocked = probe;
+        else edge = edge || probe != blocked;
+    }
     if (blocked && !edge) return;
     vec3 sum = vec3(0.0f);
     for (int j = 0; j < kDirectSamples; ++j)
@@ -159,16 +162,31 @@ void main() {
         float reflectance = refracted == vec3(0.0f) ? 1.0f
                             : surface_reflects(first.surface) ? fresnel_reflectance(-dot(d, normal), n_outside, n_inside)
                                                               : 0.0f;
-        if (reflectance > 0.0f)
-            reflected_vertex = landing(first_receiver_crossing(x + 1e-5f * normal, x + kFarAway * reflect(d, normal)),
-                                       first.surface, reflectance * watts);
-        if (reflectance < 1.0f) {
+        // Two branches leave the surface: the refraction, followed through
+        // the object, and the reflection, straight on from x. Each lands
+        // from one call site (a CPU rasterizer runs every call site under a
+        // mask, taken or not).
+        vec3 start[2] = vec3[2](x, x + 1e-5f * normal);
+        vec3 heading[2] = vec3[2](d, reflect(d, normal));
+        vec3 carried[2] = vec3[2](vec3(0.0f), reflectance * watts);
+        ReceiverHit inside = ReceiverHit(-1, 2.0f, false, vec2(0.0f));
+        bool refracted_on = reflectance < 1.0f;
+        if (refracted_on) {
             RefractorPath path = follow_through_refractor(view, x, normalize(refracted), first.surface);
-            vec3 carried = (1.0f - reflectance) * path.throughput * watts;
-            if (path.hit.receiver >= 0) refracted_vertex = landing(path.hit, first.surface, carried);
-            else if (path.left)
-                refracted_vertex =
-                    landing(first_receiver_crossing(path.x, path.x + kFarAway * path.d), first.surface, carried);
+            start[0] = path.x;
+            heading[0] = path.d;
+            carried[0] = (1.0f - reflectance) * path.throughput * watts;
+            inside = path.hit;
+            refracted_on = path.hit.receiver >= 0 || path.left;
+        }
+        for (int sheet = refracted_on ? 0 : 1; sheet < 2; ++sheet) {
+            if (sheet == 1 && reflectance <= 0.0f) break;
+            ReceiverHit hit = sheet == 0 && inside.receiver >= 0
+                                  ? inside
+                                  : first_receiver_crossing(start[sheet], start[sheet] + kFarAway * heading[sheet]);
+            CausticVertex landed = landing(hit, first.surface, carried[sheet]);
+            if (sheet == 0) refracted_vertex = landed;
+            else reflected_vertex = landed;
         }
     }
     write_caustic_vertex(index, 0, refracted_vertex);
@@ -178,11 +196,9 @@ void main() {
     // vertex on the grid's edge lands the share of the cells it lacks here.
     int cells = (texel.x > 0 && texel.x + 1 < layer_size.x ? 2 : 1) * (texel.y > 0 && texel.y + 1 < layer_size.y ? 2 : 1);
     float missing = float(4 - cells) / 4.0f;
-    if (missing > 0.0f) {
-        if (refracted_vertex.receiver >= 0)
-            splat_at(refracted_vertex.receiver, refracted_vertex.map_uv, missing * refracted_vertex.watts);
-        if (reflected_vertex.receiver >= 0)
-            splat_at(reflected_vertex.receiver, reflected_vertex.map_uv, missing * reflected_vertex.watts);
+    for (int sheet = 0; sheet < 2 && missing > 0.0f; ++sheet) {
+        CausticVertex v = sheet == 0 ? refracted_vertex : reflected_vertex;
+        if (v.receiver >= 0) splat_at(v.receiver, v.map_uv, missing * v.watts);
     }
 }
 #endif

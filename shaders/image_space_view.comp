@@ -124,26 +124,35 @@ void main() {
     float reflectance = refracted == vec3(0.0f) ? 1.0f
                         : surface_reflects(first.surface) ? fresnel_reflectance(cos_i, n_outside, n_inside)
                                                           : 0.0f;
-    vec3 reflected = reflect(d, normal);
-    float kind;
-    vec3 radiance = reflectance * straight_radiance(x + 1e-5f * normal, reflected, kind);
-    vec3 exit_direction = reflected;
-    float exit_kind = kind;
-    if (reflectance < 1.0f) {
+    // Two branches leave the surface: the reflection, straight on from x,
+    // and the refraction, followed through the object. Each ends on a
+    // receiver or in the environment, looked up from one call site each: a
+    // CPU rasterizer runs every call site under a mask, taken or not.
+    vec3 origin[2] = vec3[2](x + 1e-5f * normal, x);
+    vec3 direction[2] = vec3[2](reflect(d, normal), d);
+    vec3 weight[2] = vec3[2](vec3(reflectance), vec3(0.0f));
+    ReceiverHit inside = ReceiverHit(-1, 2.0f, false, vec2(0.0f));
+    bool refracted_on = reflectance < 1.0f;
+    if (refracted_on) {
         RefractorPath path = follow_through_refractor(view, x, normalize(refracted), first.surface);
-        vec3 through = vec3(0.0f);
-        if (path.hit.receiver >= 0) {
-            through = receiver_radiance(path.hit);
-            kind = 2.0f;
-        } else if (path.left) {
-            through = straight_radiance(path.x, path.d, kind);
-        } else {
-            kind = 0.0f;
-        }
-        radiance += (1.0f - reflectance) * path.throughput * through;
-        exit_direction = path.d;  // the refracted branch, for tests
-        exit_kind = kind;
+        origin[1] = path.x;
+        direction[1] = path.d;  // the refracted branch, for tests
+        weight[1] = (1.0f - reflectance) * path.throughput;
+        inside = path.hit;
+        refracted_on = path.hit.receiver >= 0 || path.left;
     }
-    write_pixel(pixel, radiance, exit_direction, exit_kind);
+    vec3 radiance = vec3(0.0f);
+    float kind[2] = float[2](1.0f, 0.0f);  // 1 escaped, 2 receiver, 0 lost inside
+    for (int branch = 0; branch < (refracted_on ? 2 : 1); ++branch) {
+        ReceiverHit hit = branch == 1 && inside.receiver >= 0
+                              ? inside
+                              : first_receiver_crossing(origin[branch], origin[branch] + kFarAway * direction[branch]);
+        kind[branch] = hit.receiver >= 0 ? 2.0f : 1.0f;
+        radiance += weight[branch] * (hit.receiver >= 0 ? receiver_radiance(hit)
+                                                        : environment_radiance(origin[branch], direction[branch]));
+    }
+    // The exit recorded for tests: the refracted branch's where there is one.
+    int recorded = reflectance < 1.0f ? 1 : 0;
+    write_pixel(pixel, radiance, direction[recorded], kind[recorded]);
 }
 #endif

@@ -6,6 +6,12 @@
 // and each fragment meets the sphere itself along its texel's ray —
 // entering on peel 0, leaving on peel 1 — with the sphere's own normal, or
 // is discarded where that ray misses it.
+//
+// Program options: EIKON_PEEL (0 or 1); EIKON_EXACT_SHAPES (1: the spheres'
+// and boxes' triangles, whose spheres are met exactly; 0: meshes and water,
+// drawn as they are). Each is its own program because a CPU rasterizer runs
+// every branch under a mask, and a discard anywhere in the program turns its
+// early depth test off: mesh fragments in peel 0 then pay for neither.
 #include "common/surface_layers.glsl"
 #include "common/sharp_surface_list.glsl"
 #include "common/sharp_surfaces.glsl"
@@ -17,8 +23,9 @@ flat in int surface;
 uniform vec3 view_eye;
 uniform vec3 view_axis;
 uniform int view_orthographic;
-uniform int peel;
+#if EIKON_PEEL == 1
 layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
+#endif
 
 layout(location = 0) out vec4 layer;
 
@@ -29,19 +36,21 @@ void main() {
     view.orthographic = view_orthographic != 0;
     vec3 x = world_position;
     vec3 normal = normalize(corner_normal);
+#if EIKON_EXACT_SHAPES
     SharpSurface shape = sharp_surfaces[surface];
     if (surface_kind(shape.shape_a) == kSharpSphere) {
         vec3 origin = view.orthographic ? x - dot(x - view.eye, view.axis) * view.axis : view.eye;
         vec3 d = view.orthographic ? view.axis : normalize(x - view.eye);
-        float t = surface_crossing(shape.shape_a, shape.shape_b, origin, d, peel == 1, -1e30f);
-        if (t == EIKON_NO_CROSSING || (peel == 1 && t == 0.0f)) discard;
+        float t = surface_crossing(shape.shape_a, shape.shape_b, origin, d, EIKON_PEEL == 1, -1e30f);
+        if (t == EIKON_NO_CROSSING || (EIKON_PEEL == 1 && t == 0.0f)) discard;
         x = origin + t * d;
         normal = surface_normal(shape.shape_a, shape.shape_b, x);
     }
+#endif
     float distance = viewpoint_distance(view, x);
-    if (peel == 1) {
-        vec4 nearer = texelFetch(near_layer, ivec2(gl_FragCoord.xy), 0);
-        if (distance <= nearer.z * (1.0f + 1e-5f) + 1e-6f) discard;
-    }
+#if EIKON_PEEL == 1
+    vec4 nearer = texelFetch(near_layer, ivec2(gl_FragCoord.xy), 0);
+    if (distance <= nearer.z * (1.0f + 1e-5f) + 1e-6f) discard;
+#endif
     layer = vec4(octahedral_encode(normal), distance, float(surface + 1));
 }

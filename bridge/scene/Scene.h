@@ -184,7 +184,7 @@ struct RenderDesc {
     // What image space does with a scene it cannot show whole: refuse it
     // (none), or draw the surfaces and drop the media, saying so once.
     enum class MethodFallback { None, SurfacesOnly } methodFallback = MethodFallback::None;
-    int causticMapTexels = 512;  // image space: texels per edge of each light's caustic map (photons: its square)
+    int causticMapTexels = 256;  // image space: texels per edge of each light's caustic map (photons: its square)
 };
 
 // How photons are marched ([Sun08] §4.2–4.4 and §5.3).

@@ -53,9 +53,14 @@ void SurfaceRaster::bindSurfaces() const {
     extinction_.bindStorage(layout::kImageSpaceSurfaces);
 }
 
-SurfaceRaster::SurfaceRaster(const Scene& scene)
-    : surfaces_(scene), extinction_(surfaceExtinction(scene)), program_(gl::compileRasterProgram("surface_layers.vert", "surface_layers.frag",
-                                        {{"EIKON_MAX_SHARP_OBJECTS", std::to_string(kMaxSharpObjects)}})) {
+SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_(surfaceExtinction(scene)) {
+    for (int exact = 0; exact < 2; ++exact)
+        for (int peel = 0; peel < 2; ++peel)
+            programs_[exact][peel] = gl::compileRasterProgram(
+                "surface_layers.vert", "surface_layers.frag",
+                {{"EIKON_MAX_SHARP_OBJECTS", std::to_string(kMaxSharpObjects)},
+                 {"EIKON_EXACT_SHAPES", std::to_string(exact)},
+                 {"EIKON_PEEL", std::to_string(peel)}});
     const std::vector<float> shapes = shapeTriangles(scene);
     if (!shapes.empty())
         shapes_ = gl::Buffer(shapes.size() * sizeof(float), shapes.data(), GL_DYNAMIC_STORAGE_BIT,
@@ -71,10 +76,16 @@ SurfaceRaster::SurfaceRaster(const Scene& scene)
     }
 }
 
-void SurfaceRaster::drawTriangles(const gl::Buffer& triangles, const std::vector<int>& surfaceOfOrdinal) const {
+void SurfaceRaster::drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
+                                  const std::vector<int>& surfaceOfOrdinal) const {
     if (!triangles.id()) return;
+    program.use();
+    glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
+    glUniform3fv(program.uniform("view_eye"), 1, glm::value_ptr(view.eye));
+    glUniform3fv(program.uniform("view_axis"), 1, glm::value_ptr(view.axis));
+    glUniform1i(program.uniform("view_orthographic"), view.orthographic ? 1 : 0);
     triangles.bindStorage(layout::kSurfaceTriangles);
-    glUniform1iv(program_.uniform("surface_of_ordinal"), kMaxSharpObjects, surfaceOfOrdinal.data());
+    glUniform1iv(program.uniform("surface_of_ordinal"), kMaxSharpObjects, surfaceOfOrdinal.data());
     const auto corners = static_cast<GLsizei>(triangles.bytes() / (kSurfaceTriangleFloats * sizeof(float)) * 3);
     glDrawArrays(GL_TRIANGLES, 0, corners);
 }
@@ -82,13 +93,8 @@ void SurfaceRaster::drawTriangles(const gl::Buffer& triangles, const std::vector
 void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const FieldTextures& fields) {
     GLint previousFramebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
-    program_.use();
     vertexArray_.bind();
     surfaces_.bind();
-    glUniformMatrix4fv(program_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
-    glUniform3fv(program_.uniform("view_eye"), 1, glm::value_ptr(view.eye));
-    glUniform3fv(program_.uniform("view_axis"), 1, glm::value_ptr(view.axis));
-    glUniform1i(program_.uniform("view_orthographic"), view.orthographic ? 1 : 0);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // orientation is not relied on: the peel finds front and back
@@ -96,10 +102,9 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
     for (int peel = 0; peel < 2; ++peel) {
         gl::RasterTarget& target = peel == 0 ? layers.near_ : layers.far_;
         target.beginDrawing(glm::vec4(0.0f));
-        glUniform1i(program_.uniform("peel"), peel);
         if (peel == 1) layers.near_.bindColour(layout::kNearLayerTexture);
-        drawTriangles(shapes_, shapeSurfaces_);
-        drawTriangles(fields.surfaceTriangles(), meshSurfaces_);
+        drawTriangles(programs_[1][peel], view, shapes_, shapeSurfaces_);
+        drawTriangles(programs_[0][peel], view, fields.surfaceTriangles(), meshSurfaces_);
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     glDisable(GL_DEPTH_TEST);

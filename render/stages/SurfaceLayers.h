@@ -54,11 +54,12 @@ public:
     void bindSurfaces() const;
 
 private:
-    void drawTriangles(const gl::Buffer& triangles, const std::vector<int>& surfaceOfOrdinal) const;
+    void drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
+                       const std::vector<int>& surfaceOfOrdinal) const;
 
     SharpSurfaceBuffer surfaces_;
     gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it
-    gl::Program program_;
+    gl::Program programs_[2][2];  // [exact shapes: spheres and boxes; 0: meshes and water][peel]
     gl::EmptyVertexArray vertexArray_;
     gl::Buffer shapes_;                     // the spheres' and boxes' triangles
     std::vector<int> shapeSurfaces_;        // identity: a shape's w is its surface number

@@ -27,16 +27,16 @@ TEST(SceneParserRenderMethod, DefaultsToTheEikonalMethod) {
     const RenderDesc render = parseScene(validScene(), "test.json").render;
     EXPECT_EQ(render.method, RenderDesc::Method::Eikonal);
     EXPECT_EQ(render.methodFallback, RenderDesc::MethodFallback::None);
-    EXPECT_EQ(render.causticMapTexels, 512);
+    EXPECT_EQ(render.causticMapTexels, 256);
 }
 
 TEST(SceneParserRenderMethod, ImageSpaceTakesASceneOfSurfaces) {
     json scene = surfacesOnlyScene();
     scene["render"]["method"] = "image_space";
-    scene["render"]["caustic_map_texels"] = 256;
+    scene["render"]["caustic_map_texels"] = 512;
     const Scene parsed = parseScene(scene, "test.json");
     EXPECT_EQ(parsed.render.method, RenderDesc::Method::ImageSpace);
-    EXPECT_EQ(parsed.render.causticMapTexels, 256);
+    EXPECT_EQ(parsed.render.causticMapTexels, 512);
     EXPECT_TRUE(imageSpaceOmissions(parsed).empty());
     EXPECT_EQ(describeImageSpaceOmissions(parsed), "");
 }
