@@ -2,7 +2,10 @@
 // k×k block of pixels (FrameRenderer::setPixelStride), k chosen so that the
 // view pass keeps to a target time; once the camera has rested for the
 // refine delay it draws the full image, the same frame `eikon run` renders.
-// The policy is plain arithmetic on times, so it is tested without a window.
+// A scene of surfaces is previewed in image space instead, drawn at 1/k of
+// the image's size in each direction where its view pass at full size would
+// miss the same target. The policy is plain arithmetic on times, so it is
+// tested without a window.
 #pragma once
 
 namespace eikon::view {
@@ -11,6 +14,7 @@ struct PreviewSettings {
     double targetViewMs = 40.0;       // view-pass time to keep while the camera moves
     double refineDelaySeconds = 0.25;  // rest before the full image is drawn
     int largestStride = 16;
+    int largestImageSpaceScale = 4;
 };
 
 class ViewPreview {
@@ -24,10 +28,15 @@ public:
     // After a frame whose view pass ran at `stride`, its time: the cost per
     // ray it implies sets the next preview's stride.
     void measured(int stride, double viewMs);
+    // The image-space preview's downscale k (1: full size) while the camera
+    // moves, and after such a preview at scale k, its view pass's time.
+    int imageSpaceScale() const;
+    void measuredImageSpace(int scale, double viewMs);
 
 private:
     PreviewSettings settings_;
     double fullViewMs_ = 0.0;  // estimated view-pass time of the full image; 0: not yet measured
+    double fullImageSpaceViewMs_ = 0.0;  // the same for the image-space preview
     double lastMoveSeconds_ = 0.0;
     bool moved_ = false;  // the camera has moved at least once
 };

@@ -85,7 +85,10 @@ public:
             // preview; others (and at rest, every scene) the eikonal frame.
             const bool imageSpacePreview = stride > 1 && session_->hasImageSpacePreview();
             if (imageSpacePreview) {
-                last_ = session_->renderImageSpacePreview(advance);
+                const int scale = preview_.imageSpaceScale();
+                last_ = session_->renderImageSpacePreview(advance, scale);
+                preview_.measuredImageSpace(scale, stageMilliseconds(last_, "image_space_view"));
+                largestImageSpaceScale_ = std::max(largestImageSpaceScale_, scale);
             } else {
                 session_->renderer().setPixelStride(stride);
                 last_ = session_->renderFrame(advance, pipelined_);
@@ -130,10 +133,10 @@ public:
                 if (!options_.screenshotPath.empty()) saveImage(options_.screenshotPath);
                 if (!options_.animate.empty())
                     std::printf("eikon-view: %s: %d frames after the first in %.2f s, %.2f frames/s, last photon "
-                                "count %lld, %d previews (%d in image space, pixel stride up to %d)\n",
+                                "count %lld, %d previews (%d in image space, at up to 1/%d size; pixel stride up to %d)\n",
                                 options_.animate.c_str(), rendered_ - 1, scriptedSeconds,
                                 (rendered_ - 1) / scriptedSeconds, photons_, previewFrames_, imageSpacePreviews_,
-                                largestStride_);
+                                largestImageSpaceScale_, largestStride_);
                 break;
             }
         }
@@ -312,6 +315,7 @@ private:
     int screenshots_ = 0;
     int rendered_ = 0;  // frames drawn, counted up to options_.frames
     int previewFrames_ = 0, imageSpacePreviews_ = 0, largestStride_ = 1;  // previews among the scripted frames
+    int largestImageSpaceScale_ = 1;
     bool returned_ = false;  // orbit-return: back at the scene's camera
     std::filesystem::file_time_type sceneTime_;
     Clock::time_point lastReloadCheck_ = Clock::now();

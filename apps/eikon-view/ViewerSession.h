@@ -13,7 +13,9 @@
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
 
+#include <map>
 #include <memory>
+#include <optional>
 
 namespace eikon::view {
 
@@ -33,17 +35,18 @@ public:
     // one frame (simulated during the render when `pipelined`).
     render::FrameResult renderFrame(bool advance, bool pipelined);
     // Whether the scene has an image-space preview (all surfaces, drawn eikonally).
-    bool hasImageSpacePreview() const { return imageSpace_ != nullptr; }
+    bool hasImageSpacePreview() const { return imageSpaceScene_.has_value(); }
     // The image-space frame of the current fields, seen by the eikonal
-    // renderer's camera under its lights; with `advance`, a moving scene
-    // then moves on one frame.
-    render::FrameResult renderImageSpacePreview(bool advance);
+    // renderer's camera under its lights, at 1/scale of the image's size in
+    // each direction; with `advance`, a moving scene then moves on one frame.
+    render::FrameResult renderImageSpacePreview(bool advance, int scale);
 
 private:
     Scene scene_;
     std::unique_ptr<sim::SceneFields> fields_;
     std::unique_ptr<app::FrameSource> source_;
-    std::unique_ptr<render::FrameRenderer> imageSpace_;
+    std::optional<Scene> imageSpaceScene_;  // the scene as its image-space preview draws it
+    std::map<int, std::unique_ptr<render::FrameRenderer>> imageSpace_;  // by scale, made when first drawn
 };
 
 }  // namespace eikon::view

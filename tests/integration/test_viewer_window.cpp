@@ -78,9 +78,10 @@ TEST_F(ViewerWindow, ShowsTheHeadlessFrameWithThePanel) {
     EXPECT_GT(luminanceSpread(shown, 10, 10, 300, 200), 20.0);
 }
 
-// The viewer's summary of a scripted run: previews, of them in image space, and the largest pixel stride.
+// The viewer's summary of a scripted run: previews, of them in image space,
+// the largest image-space downscale and the largest pixel stride.
 struct PreviewCounts {
-    int previews = -1, imageSpace = -1, stride = -1;
+    int previews = -1, imageSpace = -1, scale = -1, stride = -1;
 };
 
 PreviewCounts previewCounts(const fs::path& log) {
@@ -93,14 +94,15 @@ PreviewCounts previewCounts(const fs::path& log) {
     std::fclose(file);
     const char* tail = found ? std::strstr(line, "photon count") : nullptr;
     if (tail)
-        std::sscanf(tail, "photon count %*d, %d previews (%d in image space, pixel stride up to %d)", &counts.previews,
-                    &counts.imageSpace, &counts.stride);
+        std::sscanf(tail, "photon count %*d, %d previews (%d in image space, at up to 1/%d size; pixel stride up to %d)",
+                    &counts.previews, &counts.imageSpace, &counts.scale, &counts.stride);
     return counts;
 }
 
 // Orbiting shows the preview (a view-pass target of 0.1 ms makes every
 // moving frame one; the viewer prints how many and of which kind): for the
-// default scene, all surfaces, the image-space preview; for the same scene
+// default scene, all surfaces, the image-space preview, drawn smaller once
+// its first frame's view pass missed the target; for the same scene
 // with smoothed (graded) glass, one camera ray per k×k pixels. Back at the
 // scene's camera and at rest, the viewer refines to the headless frame,
 // pixel for pixel.
@@ -119,9 +121,11 @@ TEST_F(ViewerWindow, OrbitingShowsThePreviewAndRestRefinesToTheHeadlessFrame) {
         EXPECT_GE(counts.previews, 5) << overrides;  // every orbiting frame after the first, and the return
         if (imageSpace) {
             EXPECT_EQ(counts.imageSpace, counts.previews);
+            EXPECT_GT(counts.scale, 1);
             EXPECT_EQ(counts.stride, 1);
         } else {
             EXPECT_EQ(counts.imageSpace, 0);
+            EXPECT_EQ(counts.scale, 1);
             EXPECT_GT(counts.stride, 1);
         }
         ASSERT_EQ(run(std::string(EIKON_EXECUTABLE) + " run " + kSmallDefault + overrides + " --quiet --out " +

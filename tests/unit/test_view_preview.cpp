@@ -35,6 +35,20 @@ TEST(ViewPreview, StrideKeepsTheViewPassToItsTarget) {
     EXPECT_EQ(preview.strideFor(true, 1.1), 5);
 }
 
+TEST(ViewPreview, ImageSpacePreviewShrinksToKeepItsViewPassToTheTarget) {
+    ViewPreview preview(settings());
+    EXPECT_EQ(preview.imageSpaceScale(), 1) << "full size until measured";
+    preview.measuredImageSpace(1, 30.0);
+    EXPECT_EQ(preview.imageSpaceScale(), 1) << "within the target";
+    preview.measuredImageSpace(1, 100.0);  // 2.5 times the target: half size draws a quarter of the pixels
+    EXPECT_EQ(preview.imageSpaceScale(), 2);
+    preview.measuredImageSpace(2, 20.0);  // 80 ms at full size
+    EXPECT_EQ(preview.imageSpaceScale(), 2);
+    preview.measuredImageSpace(2, 500.0);  // 2 s at full size: capped
+    EXPECT_EQ(preview.imageSpaceScale(), 4);
+    EXPECT_EQ(preview.strideFor(false, 0.0), 1) << "the eikonal stride is measured apart";
+}
+
 TEST(ViewPreview, RefinesOnceTheCameraHasRested) {
     ViewPreview preview(settings());
     preview.measured(1, 400.0);
