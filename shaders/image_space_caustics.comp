@@ -12,8 +12,8 @@
 // gives each receiver texel its exact irradiance I·cos θ/r² (E·cos θ for
 // directional light), unless the light's layers show a refractor in front
 // of it (then it arrives through the caustic maps) or another receiver
-// shadows it, averaged over 4×4 points of the texel (a shadow's edge crosses
-// texels).
+// shadows it, averaged over the texel (4×4 points where a shadow's edge
+// crosses it).
 //
 // Program options: EIKON_PASS (0: direct, one invocation per receiver texel;
 // 1: photons, one per light texel).
@@ -111,13 +111,19 @@ void main() {
         else edge = edge || probe != blocked;
     }
     if (blocked && !edge) return;
+    // A texel in full light averages its smooth irradiance over 2×2
+    // Gauss–Legendre points (exact for a bicubic); one a shadow's edge
+    // crosses, over 4×4 points each tested for shadow.
+    int samples = edge ? kDirectSamples : 2;
     vec3 sum = vec3(0.0f);
-    for (int j = 0; j < kDirectSamples; ++j)
-        for (int i = 0; i < kDirectSamples; ++i) {
-            vec3 x = receiver_point(r, (vec2(texel) + (vec2(i, j) + 0.5f) / float(kDirectSamples)) / resolution);
+    for (int j = 0; j < samples; ++j)
+        for (int i = 0; i < samples; ++i) {
+            vec2 at = edge ? (vec2(i, j) + 0.5f) / float(kDirectSamples)
+                           : 0.5f + (vec2(i, j) - 0.5f) / sqrt(3.0f);
+            vec3 x = receiver_point(r, (vec2(texel) + at) / resolution);
             if (!edge || !light_blocked(r, x)) sum += unblocked_irradiance(r, x);
         }
-    deposit_texel(r, texel, sum / float(kDirectSamples * kDirectSamples) * receivers[r].normal.w);
+    deposit_texel(r, texel, sum / float(samples * samples) * receivers[r].normal.w);
 }
 #else
 // A landing on a receiver's lit side, or none.
