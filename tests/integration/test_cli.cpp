@@ -582,12 +582,13 @@ TEST_F(AccuracyCli, WritesCsvPlotAndReportForOneCase) {
     std::getline(csv, header);
     EXPECT_EQ(header.rfind("case,integrator,step_policy,sweep,step_voxels", 0), 0u) << header;
     for (const char* column : {",grid,", ",photons,", ",runtime_s,", ",error,", ",error_metric,", ",invariant_max,",
-                               ",energy_balance"})
+                               ",energy_balance", ",method,"})
         EXPECT_NE(header.find(column), std::string::npos) << column;
     int rows = 0;
     while (std::getline(csv, row)) {
         ++rows;
         EXPECT_EQ(row.rfind("beer_lambert,", 0), 0u) << row;
+        EXPECT_NE(row.find(",eikonal,"), std::string::npos) << row;
         EXPECT_EQ(row.find("nan"), std::string::npos) << row;
     }
     EXPECT_GE(rows, 10);

@@ -8,6 +8,7 @@
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
 #include "tests/integration/TraceHelpers.h"
+#include "verify/reference/PinholeCamera.h"
 
 #include <gtest/gtest.h>
 
@@ -36,18 +37,6 @@ ViewResult view(const Scene& scene, const FieldSet& fields) {
     result.hdr = renderer.viewStage().downloadHdr();
     result.exits = renderer.viewStage().downloadExits();
     return result;
-}
-
-// The pinhole direction of pixel (i, j), as the view shader computes it.
-glm::dvec3 pixelDirection(const Scene& scene, int i, int j) {
-    const glm::dvec3 forward = glm::normalize(scene.camera.target - scene.camera.position);
-    const glm::dvec3 right = glm::normalize(glm::cross(forward, scene.camera.up));
-    const glm::dvec3 up = glm::cross(right, forward);
-    const double tanHalf = std::tan(scene.camera.fovDeg * std::numbers::pi / 360.0);
-    const double aspect = static_cast<double>(scene.render.width) / scene.render.height;
-    const double ndcX = (i + 0.5) / scene.render.width * 2.0 - 1.0;
-    const double ndcY = (j + 0.5) / scene.render.height * 2.0 - 1.0;
-    return glm::normalize(forward + ndcX * tanHalf * aspect * right - ndcY * tanHalf * up);
 }
 
 // Heat shimmer: hot air lowers the index, δn = A·exp(−r²/2s²) with A < 0. A
@@ -83,7 +72,7 @@ TEST(ViewPass, HeatShimmerDeflectsByTheAnalyticAngle) {
     double worst = 0.0;
     int checked = 0;
     for (int i = 0; i < scene.render.width; ++i) {
-        const glm::dvec3 initial = pixelDirection(scene, i, 1);
+        const glm::dvec3 initial = reference::pixelDirection(scene.camera, scene.render.width, scene.render.height, i, 1);
         const glm::dvec3 exit(result.exits[static_cast<std::size_t>(scene.render.width + i)]);
         // Impact parameter: closest approach of the undeflected ray to the bump's centre.
         const glm::dvec3 toCentre = -scene.camera.position;

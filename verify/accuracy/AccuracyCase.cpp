@@ -143,6 +143,14 @@ RunRecord makeRecord(const Scene& scene, const RunSettings& settings, const GpuT
     return record;
 }
 
+RunRecord makeImageSpaceRecord(const RunSettings& settings, double runtimeSeconds, Measurement measurement) {
+    RunRecord record;
+    record.settings = settings;
+    record.runtimeSeconds = runtimeSeconds;
+    record.measurement = std::move(measurement);
+    return record;
+}
+
 void measureStepErrors(std::vector<RunRecord>& records) {
     for (RunRecord& record : records) {
         if (record.positionsAtArc.empty()) continue;

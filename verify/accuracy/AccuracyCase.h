@@ -43,6 +43,10 @@ std::vector<RunSettings> standardSweep(bool quick, const SweepKnobs& knobs);
 RunRecord makeRecord(const Scene& scene, const RunSettings& settings, const GpuTrace& trace, Measurement measurement,
                      double arcLength = 0.0);
 
+// The record of an image-space run: its settings, time and measurement (no
+// grid, photons or tracer statistics).
+RunRecord makeImageSpaceRecord(const RunSettings& settings, double runtimeSeconds, Measurement measurement);
+
 // Fills stepErrorVoxels of every record that has positions at arc length,
 // against the finest-step RK4 uniform run of its case, grid and smoothing.
 void measureStepErrors(std::vector<RunRecord>& records);

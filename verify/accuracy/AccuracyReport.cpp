@@ -43,10 +43,13 @@ std::vector<std::string> casesInOrder(const std::vector<RunRecord>& records) {
     return names;
 }
 
-std::vector<const RunRecord*> ofCase(const std::vector<RunRecord>& records, const std::string& name) {
+// The runs of case `name` by `method`: the tracer's tables and fronts are the
+// eikonal runs', image space has its own (its truth may differ).
+std::vector<const RunRecord*> ofCase(const std::vector<RunRecord>& records, const std::string& name,
+                                     RenderDesc::Method method = RenderDesc::Method::Eikonal) {
     std::vector<const RunRecord*> out;
     for (const auto& r : records)
-        if (r.measurement.caseName == name) out.push_back(&r);
+        if (r.measurement.caseName == name && r.settings.method == method) out.push_back(&r);
     return out;
 }
 
@@ -77,14 +80,46 @@ const RunRecord* floorRun(const std::vector<const RunRecord*>& runs) {
     return floor;
 }
 
+// Each image-space run (render.method "image_space") beside the cheapest
+// eikonal run of its case that is as accurate; nothing without any.
+void writeImageSpaceSection(std::ostringstream& md, const std::vector<RunRecord>& records) {
+    using M = RenderDesc::Method;
+    std::vector<std::string> withImageSpace;
+    for (const auto& name : casesInOrder(records))
+        if (!ofCase(records, name, M::ImageSpace).empty()) withImageSpace.push_back(name);
+    if (withImageSpace.empty()) return;
+    md << "\n### Image space beside the eikonal tracer\n\n"
+       << "Image space (`render.method: \"image_space\"`) over the size of what it rasterizes; its run time is one "
+          "frame of the stages the measure needs (the caustic maps, or the view), the faster of two after a first "
+          "frame. Its error is taken against the truth of what it draws (below the table), which may differ from "
+          "the eikonal rows'; so it has no place in the tables above or the Pareto fronts below.\n\n"
+       << "| case | image-space run | run time (s) | error | the eikonal tracer's cheapest run as accurate |\n"
+       << "| --- | --- | --- | --- | --- |\n";
+    for (const auto& name : withImageSpace) {
+        const auto eikonal = ofCase(records, name, M::Eikonal);
+        for (const RunRecord* r : ofCase(records, name, M::ImageSpace))
+            md << "| " << name << " | " << settingsLabel(*r) << " | " << format("%.3g", r->runtimeSeconds) << " | "
+               << percent(r->measurement.error) << " | " << cheapestCell(eikonal, r->measurement.error) << " |\n";
+    }
+    md << "\n";
+    for (const auto& name : withImageSpace)
+        md << "- " << name << ": " << ofCase(records, name, M::ImageSpace).front()->measurement.metric << ".\n";
+}
+
 }  // namespace
 
 std::string curveLabel(const RunSettings& settings) {
+    if (settings.method == RenderDesc::Method::ImageSpace) return methodName(settings.method);
     return std::string(integratorName(settings.integrator)) + " " + stepPolicyName(settings.stepPolicy);
 }
 
 std::string settingsLabel(const RunRecord& record) {
     const RunSettings& s = record.settings;
+    if (s.method == RenderDesc::Method::ImageSpace) {
+        const std::string pixels = std::to_string(s.imagePixels);
+        return curveLabel(s) + (s.causticMapTexels > 0 ? " caustic map " + std::to_string(s.causticMapTexels) + "²"
+                                                       : " view " + pixels + "x" + pixels);
+    }
     std::string label = tracerKey(s) + " " + record.grid;
     if (s.smoothingVoxels > 0.0) label += format(" w=%g", s.smoothingVoxels);
     if (s.sweep == "photons") label += " " + std::to_string(record.photons) + " photons";
@@ -145,19 +180,28 @@ void writeCsv(const std::filesystem::path& file, const std::vector<RunRecord>& r
     std::ostringstream out;
     out << "case,integrator,step_policy,sweep,step_voxels,max_step_voxels,epsilon,epsilon_prime,smoothing_voxels,"
            "grid,photons,steps,runtime_s,error,error_voxels,error_metric,samples,step_error_voxels,invariant_max,"
-           "invariant_mean,energy_balance,estimator,split_texels\n";
+           "invariant_mean,energy_balance,estimator,split_texels,method,caustic_map_texels,image_pixels\n";
     for (const RunRecord& r : records) {
         const RunSettings& s = r.settings;
-        char line[1024];
-        std::snprintf(line, sizeof line, "%s,%s,%s,%s,%g,%g,%g,%g,%g,%s,%lld,%llu,%.6g,%.6g,%.6g,\"%s\",%d,%.6g,%.6g,%.6g,%.3g,%s,%g\n",
-                      r.measurement.caseName.c_str(), integratorName(s.integrator), stepPolicyName(s.stepPolicy),
-                      s.sweep.c_str(), s.stepVoxels, s.maxStepVoxels, s.epsilon, s.epsilonPrime, s.smoothingVoxels,
-                      r.grid.c_str(), r.photons, static_cast<unsigned long long>(r.stats.steps), r.runtimeSeconds,
-                      r.measurement.error, r.measurement.errorVoxels, r.measurement.metric.c_str(),
-                      r.measurement.samples, r.stepErrorVoxels, r.stats.maxInvariantError, r.stats.meanInvariantError,
-                      r.stats.balanceError(),
-                      s.estimator == TracerDesc::Estimator::Wavefront ? "wavefront" : "photons", s.splitTexels);
-        out << line;
+        // Image space has none of the tracer's knobs and statistics: their cells stay empty.
+        const auto tracer = [&](std::string cell) {
+            return s.method == RenderDesc::Method::Eikonal ? cell : std::string();
+        };
+        const std::vector<std::string> cells = {
+            r.measurement.caseName, tracer(integratorName(s.integrator)), tracer(stepPolicyName(s.stepPolicy)),
+            s.sweep, tracer(format("%g", s.stepVoxels)), tracer(format("%g", s.maxStepVoxels)),
+            tracer(format("%g", s.epsilon)), tracer(format("%g", s.epsilonPrime)), tracer(format("%g", s.smoothingVoxels)),
+            r.grid, tracer(std::to_string(r.photons)), tracer(std::to_string(r.stats.steps)),
+            format("%.6g", r.runtimeSeconds), format("%.6g", r.measurement.error),
+            format("%.6g", r.measurement.errorVoxels), "\"" + r.measurement.metric + "\"",
+            std::to_string(r.measurement.samples), format("%.6g", r.stepErrorVoxels),
+            tracer(format("%.6g", r.stats.maxInvariantError)), tracer(format("%.6g", r.stats.meanInvariantError)),
+            tracer(format("%.3g", r.stats.balanceError())),
+            tracer(s.estimator == TracerDesc::Estimator::Wavefront ? "wavefront" : "photons"),
+            tracer(format("%g", s.splitTexels)), methodName(s.method), std::to_string(s.causticMapTexels),
+            std::to_string(s.imagePixels)};
+        for (std::size_t c = 0; c < cells.size(); ++c) out << (c ? "," : "") << cells[c];
+        out << "\n";
     }
     io::writeFileAtomically(file, out.str());
 }
@@ -178,6 +222,7 @@ void writeMarkdown(const std::filesystem::path& file, const std::vector<RunRecor
        << "| --- | --- | --- | --- | --- |\n";
     for (const auto& name : cases) {
         const auto runs = ofCase(records, name);
+        if (runs.empty()) continue;
         const RunRecord* floor = floorRun(runs);
         std::string floorCell = "—";
         if (floor) {
@@ -278,10 +323,13 @@ void writeMarkdown(const std::filesystem::path& file, const std::vector<RunRecor
         md << " |\n";
     }
 
+    writeImageSpaceSection(md, records);
+
     md << "\n### Per case: the Pareto front (no other run is both faster and more accurate)\n";
     for (const auto& name : cases) {
         auto runs = ofCase(records, name);
         std::sort(runs.begin(), runs.end(), [](auto* a, auto* b) { return a->runtimeSeconds < b->runtimeSeconds; });
+        if (runs.empty()) continue;
         md << "\n**" << name << "** — " << runs.front()->measurement.metric << ".\n\n"
            << "| setting | run time (s) | error | error (voxels) | max invariant error | energy balance |\n"
            << "| --- | --- | --- | --- | --- | --- |\n";

@@ -1,11 +1,13 @@
 #include "verify/accuracy/AccuracyRun.h"
 
 #include "render/graph/FrameRenderer.h"
+#include "verify/reference/AnalyticFields.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace eikon::accuracy {
 
@@ -20,6 +22,10 @@ const char* integratorName(TracerDesc::Integrator integrator) {
 
 const char* stepPolicyName(TracerDesc::StepPolicy policy) {
     return policy == TracerDesc::StepPolicy::Uniform ? "uniform" : "octree";
+}
+
+const char* methodName(RenderDesc::Method method) {
+    return method == RenderDesc::Method::ImageSpace ? "image_space" : "eikonal";
 }
 
 GpuTrace traceOnGpu(const Scene& scene, const FieldSet& fields, TraceRequest request) {
@@ -52,6 +58,32 @@ GpuTrace traceOnGpu(const Scene& scene, const FieldSet& fields, TraceRequest req
         }
     }
     return trace;
+}
+
+ImageSpaceFrame renderImageSpace(const Scene& scene) {
+    const bool caustics = !scene.receivers.empty();
+    // Image space draws the scene's sharp objects in a medium of uniform index.
+    const FieldSet fields =
+        sampleIndexField(reference::UniformField(scene.medium.index), scene.grid.spec(), scene.medium.index);
+    render::RendererOptions options;
+    options.recordViewExits = !caustics;
+    options.drawsImage = !caustics;
+    options.temporalMean = false;  // each frame times the caustic maps drawn anew
+    render::FrameRenderer renderer(scene, fields, options);
+    renderer.render(fields);  // compiles, uploads and draws once
+    ImageSpaceFrame frame;
+    frame.runtimeSeconds = std::numeric_limits<double>::infinity();
+    for (int run = 0; run < 2; ++run) {
+        if (caustics) renderer.setLight(0, scene.lights[0]);
+        else renderer.setCamera(scene.camera);
+        double seconds = 0.0;
+        for (const render::StageReport& stage : renderer.render(fields).stages)
+            if (stage.ran && stage.name != "post") seconds += stage.milliseconds / 1000.0;  // the tone map is not timed
+        frame.runtimeSeconds = std::min(frame.runtimeSeconds, seconds);
+    }
+    if (caustics) frame.receiverMap = renderer.receivers().download(0);
+    else frame.exits = renderer.imageSpaceView()->downloadExits();
+    return frame;
 }
 
 FieldSet sampleIndexField(const reference::IndexField& field, const GridSpec& grid, double referenceIndex) {

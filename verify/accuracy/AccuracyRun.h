@@ -9,6 +9,7 @@
 #include "render/stages/PhotonStage.h"
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <map>
 #include <string>
@@ -30,11 +31,21 @@ struct RunSettings {
     // (tracer.wavefront.split_texels); receiver cases only.
     TracerDesc::Estimator estimator = TracerDesc::Estimator::Photons;
     double splitTexels = 1.5;
-    std::string sweep = "step";      // which knob this run varies: step, grid, smoothing, photons, octree, wavefront
+    // How the light and the view are formed (render.method). Image space has
+    // none of the knobs above; its own is the size of what it rasterizes:
+    // the caustic map's edge (render.caustic_map_texels) or the camera
+    // image's (render.width = height).
+    RenderDesc::Method method = RenderDesc::Method::Eikonal;
+    int causticMapTexels = 0;
+    int imagePixels = 0;
+    // Which knob this run varies: step, grid, smoothing, photons, octree,
+    // wavefront; caustic_map, view (image space).
+    std::string sweep = "step";
 };
 
 const char* integratorName(TracerDesc::Integrator integrator);
 const char* stepPolicyName(TracerDesc::StepPolicy policy);
+const char* methodName(RenderDesc::Method method);  // as render.method spells it
 
 // Error of one run by one measure.
 struct Measurement {
@@ -90,6 +101,19 @@ struct TraceRequest {
 // compilation and the per-frame prepare and step-structure stages are not
 // timed). Same seed: same photons.
 GpuTrace traceOnGpu(const Scene& scene, const FieldSet& fields, TraceRequest request = {});
+
+// One image-space frame (render.method "image_space") of `scene`, timed as
+// the eikonal traces are: a first frame (compilation, upload), then two
+// frames after touching what the measure needs drawn anew, keeping the
+// faster one's stages (the tone map not timed) — with receivers, the light
+// (the caustic maps: one frame of their temporal mean,
+// ImageSpaceCaustics); without, the camera (the view, ImageSpaceView).
+struct ImageSpaceFrame {
+    double runtimeSeconds = 0.0;
+    std::vector<float> receiverMap;   // receiver 0, RGB per texel, if any
+    std::vector<glm::vec4> exits;     // without receivers: each pixel's exit direction
+};
+ImageSpaceFrame renderImageSpace(const Scene& scene);
 
 // δn = n − n_ref of `field` sampled at the cell centres of `grid`.
 FieldSet sampleIndexField(const reference::IndexField& field, const GridSpec& grid, double referenceIndex);

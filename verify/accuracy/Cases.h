@@ -19,4 +19,9 @@ std::unique_ptr<AccuracyCase> makeGlassSphereCase();   // LensCases.cpp
 std::unique_ptr<AccuracyCase> makeGlassSphereMapCase();  // MapCases.cpp
 std::unique_ptr<AccuracyCase> makeHeatShimmerCase();   // ShimmerCase.cpp
 
+// The glass-sphere cases' image-space rows, which makeGlassSphereMapCase and
+// makeGlassSphereCase add (ImageSpaceRows.h); GlassSphereImageSpace.cpp.
+std::unique_ptr<AccuracyCase> makeGlassSphereCausticRows();
+std::unique_ptr<AccuracyCase> makeGlassSphereViewRows();
+
 }  // namespace eikon::accuracy

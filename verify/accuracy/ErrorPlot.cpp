@@ -12,6 +12,7 @@ namespace {
 
 plot::Colour curveColour(const RunSettings& s) {
     using I = TracerDesc::Integrator;
+    if (s.method == RenderDesc::Method::ImageSpace) return {227, 119, 194};
     if (s.estimator == TracerDesc::Estimator::Wavefront) return {140, 86, 75};
     const bool octree = s.stepPolicy == TracerDesc::StepPolicy::Octree;
     if (s.integrator == I::Euler) return {214, 39, 40};
@@ -37,8 +38,9 @@ plot::Panel casePanel(const std::string& name, const std::vector<const RunRecord
             curves[curveLabel(r->settings) + "/" + r->settings.sweep].push_back(r);
     for (const auto& [key, points] : curves) {
         const RunSettings& settings = points.front()->settings;
-        // The step sweep of each integrator, and the wavefront's split sweep: solid.
-        const bool stepSweep = settings.sweep == "step" || settings.sweep == "wavefront";
+        // The step sweep of each integrator, the wavefront's split sweep and image space's size: solid.
+        const bool stepSweep = settings.sweep == "step" || settings.sweep == "wavefront" ||
+                               settings.method == RenderDesc::Method::ImageSpace;
         plot::Curve curve{{}, {}, curveColour(settings), sweepMarker(settings.sweep), !stepSweep, stepSweep ? 2.0 : 1.0};
         for (const RunRecord* p : points) {
             curve.x.push_back(p->runtimeSeconds);
@@ -75,7 +77,8 @@ void writeErrorPlot(const std::filesystem::path& file, const std::vector<RunReco
              {{.integrator = I::Rk4}, "rk4 uniform"},
              {{.integrator = I::Leapfrog, .stepPolicy = P::Octree}, "leapfrog octree"},
              {{.integrator = I::Rk4, .stepPolicy = P::Octree}, "rk4 octree"},
-             {{.estimator = TracerDesc::Estimator::Wavefront}, "wavefront"}})
+             {{.estimator = TracerDesc::Estimator::Wavefront}, "wavefront"},
+             {{.method = RenderDesc::Method::ImageSpace}, "image space"}})
         colours.push_back({label, curveColour(settings)});
     std::vector<plot::LegendEntry> markers;
     for (const auto& [sweep, label] : std::vector<std::pair<const char*, const char*>>{
@@ -88,7 +91,7 @@ void writeErrorPlot(const std::filesystem::path& file, const std::vector<RunReco
     markers.push_back({"1% and 0.1% error", {160, 160, 160}, plot::Marker::None, true, true});
     figure.legendRows = {colours, markers};
     figure.caption = "error (dimensionless) against run time of the light pass, log-log; dashed: one knob at a fine "
-                     "step; brown: the wavefront's split";
+                     "step; brown: the wavefront's split; pink: image space's caustic map or image size";
     plot::writeFigure(file, figure);
 }
 

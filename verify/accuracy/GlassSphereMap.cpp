@@ -2,6 +2,7 @@
 
 #include "verify/accuracy/ReceiverCaseScene.h"
 #include "verify/accuracy/RingMap.h"
+#include "verify/reference/SphereCaustic.h"
 
 #include <cmath>
 #include <numbers>
@@ -49,6 +50,34 @@ std::vector<double> glassSphereReferenceMap() {
     setup.texels = kTexels;
     setup.size = kSize;
     return ringMap(glassSphereMapField(), {.tolerance = 1e-10, .maxStep = 0.25 * kWidth}, setup);
+}
+
+ObjectDesc sharpGlassSphere() {
+    ObjectDesc glass;
+    glass.kind = ObjectDesc::Kind::Sphere;
+    glass.sphere = {glm::dvec3(0.0), kRadius};
+    glass.material.index = kGlass;
+    glass.surface = ObjectDesc::Surface::Sharp;
+    return glass;
+}
+
+Scene sharpGlassSphereMapScene(int causticMapTexels) {
+    Scene scene = glassSphereMapScene();
+    scene.objects = {sharpGlassSphere()};
+    scene.render.method = RenderDesc::Method::ImageSpace;
+    scene.render.causticMapTexels = causticMapTexels;
+    return scene;
+}
+
+std::vector<double> sharpGlassSphereReferenceMap() {
+    reference::SphereCausticSetup setup;
+    setup.centre = glm::dvec3(0.0);
+    setup.radius = kRadius;
+    setup.sphereIndex = kGlass;
+    setup.receiverCentre = glm::dvec3(0.0, focalPlane(), 0.0);
+    setup.size = kSize;
+    setup.resolution = kTexels;
+    return reference::integrateSphereCausticUnderBeam(setup, 1.0).irradiance;
 }
 
 }  // namespace eikon::accuracy

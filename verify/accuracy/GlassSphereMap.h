@@ -6,7 +6,8 @@
 // double-precision reference tracer through the same analytic field: the
 // map depends only on the distance from the axis, so rings of impact
 // parameter b, each of power E0·2πb·db, traced to the plane give it without
-// noise (verify/accuracy/RingMap).
+// noise (verify/accuracy/RingMap). And the sharp sphere the field smooths,
+// for image space, against the exact sphere.
 #pragma once
 
 #include "bridge/scene/Scene.h"
@@ -24,5 +25,18 @@ Scene glassSphereMapScene();
 
 // Irradiance (W/m²) per texel, j·resolution + i, by the reference tracer.
 std::vector<double> glassSphereReferenceMap();
+
+// The same sphere sharp, as image space draws it (render.method
+// "image_space", which cannot draw smoothed glass).
+ObjectDesc sharpGlassSphere();
+
+// The scene with the sharp sphere in place of the smoothed field, drawn in
+// image space with caustic maps of `causticMapTexels` texels per edge.
+Scene sharpGlassSphereMapScene(int causticMapTexels);
+
+// Irradiance (W/m²) per texel under the sharp sphere, noise-free from the
+// exact sphere's ray tree (reference::integrateSphereCausticUnderBeam: Snell,
+// Fresnel splitting, total internal reflection, in double precision).
+std::vector<double> sharpGlassSphereReferenceMap();
 
 }  // namespace eikon::accuracy

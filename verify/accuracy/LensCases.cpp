@@ -1,10 +1,11 @@
 // Gradient-index lenses with closed-form foci: the Luneburg lens, Maxwell's
 // fish-eye and a glass sphere (paraxial focus, and against the reference
-// tracer on the same smoothed field); their receiver maps are in
+// tracer on the same smoothed field, and the camera's exit rays in image
+// space against the exact sharp sphere); their receiver maps are in
 // MapCases.cpp.
 #include "verify/accuracy/Cases.h"
 
-
+#include "verify/accuracy/ImageSpaceRows.h"
 #include "verify/reference/AnalyticFields.h"
 #include "verify/reference/ReferenceTracer.h"
 
@@ -240,6 +241,8 @@ public:
 
 std::unique_ptr<AccuracyCase> makeLuneburgCase() { return std::make_unique<LuneburgCase>(); }
 std::unique_ptr<AccuracyCase> makeFishEyeCase() { return std::make_unique<FishEyeCase>(); }
-std::unique_ptr<AccuracyCase> makeGlassSphereCase() { return std::make_unique<GlassSphereCase>(); }
+std::unique_ptr<AccuracyCase> makeGlassSphereCase() {
+    return withImageSpaceRows(std::make_unique<GlassSphereCase>(), makeGlassSphereViewRows());
+}
 
 }  // namespace eikon::accuracy

@@ -1,10 +1,12 @@
 // The receiver-map cases (verify/accuracy/ReceiverMapCase): the path cases'
-// media on receivers, where both light estimators are measured.
+// media on receivers, where both light estimators are measured, and for the
+// glass sphere image space's caustic maps too.
 #include "verify/accuracy/Cases.h"
 
 #include "verify/accuracy/CatenaryMap.h"
 #include "verify/accuracy/FishEyeMap.h"
 #include "verify/accuracy/GlassSphereMap.h"
+#include "verify/accuracy/ImageSpaceRows.h"
 #include "verify/accuracy/LuneburgMap.h"
 #include "verify/accuracy/MirageMap.h"
 #include "verify/accuracy/ReceiverCaseScene.h"
@@ -33,8 +35,10 @@ std::unique_ptr<AccuracyCase> makeFishEyeMapCase() {
 }
 
 std::unique_ptr<AccuracyCase> makeGlassSphereMapCase() {
-    return makeReceiverMapCase({"glass_sphere_map", "relative L1 over the receiver against the reference tracer's rings",
-                                glassSphereMapScene, glassSphereMapField, 1.0, glassSphereReferenceMap, texelMapError});
+    return withImageSpaceRows(
+        makeReceiverMapCase({"glass_sphere_map", "relative L1 over the receiver against the reference tracer's rings",
+                             glassSphereMapScene, glassSphereMapField, 1.0, glassSphereReferenceMap, texelMapError}),
+        makeGlassSphereCausticRows());
 }
 
 }  // namespace eikon::accuracy

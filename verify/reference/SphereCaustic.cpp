@@ -1,6 +1,7 @@
 #include "verify/reference/SphereCaustic.h"
 
 #include "verify/reference/CircleDeposit.h"
+#include "verify/reference/SphereOptics.h"
 
 #include <glm/geometric.hpp>
 
@@ -23,32 +24,6 @@ struct Ray {
     bool insideSphere;
 };
 
-// Nearest t > tMin where origin + t·direction meets the sphere, or −1.
-double sphereHit(const Ray& ray, const glm::dvec3& centre, double radius, double tMin) {
-    const glm::dvec3 oc = ray.origin - centre;
-    const double b = glm::dot(oc, ray.direction);
-    const double c = glm::dot(oc, oc) - radius * radius;
-    const double discriminant = b * b - c;
-    if (discriminant < 0.0) return -1.0;
-    const double root = std::sqrt(discriminant);
-    const double near = -b - root, far = -b + root;
-    if (near > tMin) return near;
-    if (far > tMin) return far;
-    return -1.0;
-}
-
-// Unpolarised Fresnel reflectance from index ni into nt at incidence cos θi
-// ([Born99] §1.5.2); 1 beyond the critical angle.
-double reflectance(double cosI, double ni, double nt, double& cosT) {
-    const double eta = ni / nt;
-    const double sinT2 = eta * eta * std::max(0.0, 1.0 - cosI * cosI);
-    if (sinT2 >= 1.0) return 1.0;
-    cosT = std::sqrt(1.0 - sinT2);
-    const double rs = (ni * cosI - nt * cosT) / (ni * cosI + nt * cosT);
-    const double rp = (nt * cosI - ni * cosT) / (nt * cosI + ni * cosT);
-    return 0.5 * (rs * rs + rp * rp);
-}
-
 // Where a ray meets the receiver's plane, and the power it brings there (W).
 using Landing = std::function<void(const glm::dvec3& point, double weight)>;
 
@@ -59,7 +34,7 @@ public:
     // Follows a ray and the branches Fresnel splits off it (depth-first).
     void trace(Ray ray, int crossings) {
         for (;;) {
-            const double t = sphereHit(ray, s_.centre, s_.radius, 1e-9);
+            const double t = sphereHit(ray.origin, ray.direction, {s_.centre, s_.radius}, 1e-9);
             if (t < 0.0) {
                 if (!ray.insideSphere) land(ray);
                 return;
@@ -71,19 +46,15 @@ public:
             if (ray.insideSphere) normal = -normal;              // facing the incoming ray
             const double ni = ray.insideSphere ? s_.sphereIndex : s_.mediumIndex;
             const double nt = ray.insideSphere ? s_.mediumIndex : s_.sphereIndex;
-            const double cosI = -glm::dot(ray.direction, normal);
-            double cosT = 0.0;
-            const double r = reflectance(cosI, ni, nt, cosT);
-            const glm::dvec3 mirrored = ray.direction + 2.0 * cosI * normal;
-            if (r >= 1.0) {  // total internal reflection
-                ray = {hit, mirrored, ray.weight, ray.insideSphere};
+            const SurfaceCrossing crossing = crossSurface(ray.direction, normal, ni, nt);
+            if (crossing.reflectance >= 1.0) {  // total internal reflection
+                ray = {hit, crossing.reflected, ray.weight, ray.insideSphere};
                 continue;
             }
-            const double eta = ni / nt;
-            const glm::dvec3 refracted = eta * ray.direction + (eta * cosI - cosT) * normal;
-            if (s_.fresnel && s_.followReflections) trace({hit, mirrored, ray.weight * r, ray.insideSphere}, crossings);
-            const double kept = s_.fresnel ? 1.0 - r : 1.0;
-            ray = {hit, glm::normalize(refracted), ray.weight * kept, !ray.insideSphere};
+            if (s_.fresnel && s_.followReflections)
+                trace({hit, crossing.reflected, ray.weight * crossing.reflectance, ray.insideSphere}, crossings);
+            const double kept = s_.fresnel ? 1.0 - crossing.reflectance : 1.0;
+            ray = {hit, crossing.refracted, ray.weight * kept, !ray.insideSphere};
         }
     }
 
@@ -132,6 +103,21 @@ std::vector<std::vector<double>> inParallel(const SphereCausticSetup& setup, Wor
     return partial;
 }
 
+// Traces rings(k) for k < count, split among threads, each landing
+// deposited as a circle about the sphere's axis (CircleDeposit.h).
+template <typename RingRay>
+IrradianceMap depositRings(const SphereCausticSetup& setup, long long count, RingRay ringRay) {
+    const auto partial = inParallel(setup, [&](unsigned w, unsigned threads, std::vector<double>& power) {
+        CircleDeposit circles(setup.resolution, setup.size, power);
+        Tracer tracer(setup, [&](const glm::dvec3& p, double rayWeight) {
+            circles.add(std::hypot(p.x - setup.centre.x, p.z - setup.centre.z), rayWeight);
+        });
+        const long long begin = count * w / threads, end = count * (w + 1) / threads;
+        for (long long k = begin; k < end; ++k) tracer.trace(ringRay(k), 0);
+    });
+    return toIrradiance(setup, partial);
+}
+
 }  // namespace
 
 IrradianceMap traceSphereCaustic(const SphereCausticSetup& setup) {
@@ -170,20 +156,28 @@ IrradianceMap integrateSphereCaustic(const SphereCausticSetup& setup, long long 
     const double thetaMax = std::acos(receiverConeCosine(setup));
     const double step = thetaMax / static_cast<double>(angles);
     const double intensity = setup.power / (4.0 * std::numbers::pi);  // W/sr
-    const auto partial = inParallel(setup, [&](unsigned w, unsigned threads, std::vector<double>& power) {
-        CircleDeposit circles(setup.resolution, setup.size, power);
-        Tracer tracer(setup, [&](const glm::dvec3& p, double rayWeight) {
-            circles.add(std::hypot(p.x - setup.centre.x, p.z - setup.centre.z), rayWeight);
-        });
-        const long long begin = angles * w / threads, end = angles * (w + 1) / threads;
-        for (long long k = begin; k < end; ++k) {
-            // The ring of directions θ ± step/2 about −y: solid angle 2π sin θ dθ (midpoint rule).
-            const double theta = (static_cast<double>(k) + 0.5) * step;
-            const double ring = intensity * 2.0 * std::numbers::pi * std::sin(theta) * step;
-            tracer.trace({setup.light, glm::dvec3(std::sin(theta), -std::cos(theta), 0.0), ring, false}, 0);
-        }
+    return depositRings(setup, angles, [&](long long k) {
+        // The ring of directions θ ± step/2 about −y: solid angle 2π sin θ dθ (midpoint rule).
+        const double theta = (static_cast<double>(k) + 0.5) * step;
+        const double ring = intensity * 2.0 * std::numbers::pi * std::sin(theta) * step;
+        return Ray{setup.light, glm::dvec3(std::sin(theta), -std::cos(theta), 0.0), ring, false};
     });
-    return toIrradiance(setup, partial);
+}
+
+IrradianceMap integrateSphereCausticUnderBeam(const SphereCausticSetup& setup, double irradiance, long long rings) {
+    if (setup.resolution % 2 != 0 || setup.receiverCentre.x != setup.centre.x || setup.receiverCentre.z != setup.centre.z)
+        throw std::invalid_argument("integrateSphereCausticUnderBeam: the sphere and receiver must share one vertical "
+                                    "axis, and the resolution must be even");
+    // Rays past both the sphere and the receiver's corners land off the receiver.
+    const double outermost = std::max(setup.radius, std::sqrt(0.5) * setup.size);
+    const double step = outermost / static_cast<double>(rings);
+    const double above = std::max(setup.centre.y + setup.radius, setup.receiverCentre.y) + 1.0;
+    return depositRings(setup, rings, [&](long long k) {
+        // The ring of impact parameters b ± step/2 about the axis: area 2π b db (midpoint rule).
+        const double b = (static_cast<double>(k) + 0.5) * step;
+        const double ring = irradiance * 2.0 * std::numbers::pi * b * step;
+        return Ray{setup.centre + glm::dvec3(b, above - setup.centre.y, 0.0), glm::dvec3(0.0, -1.0, 0.0), ring, false};
+    });
 }
 
 double shadowRadius(const SphereCausticSetup& setup) {

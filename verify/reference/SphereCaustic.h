@@ -1,8 +1,8 @@
-// Ground truth for the showcase: a point light above a sharp glass sphere
-// over a square diffuse receiver, the receiver's irradiance per texel by Monte
-// Carlo over exact ray–sphere intersections with Snell refraction, total
-// internal reflection and (optionally) unpolarised Fresnel splitting, in
-// double precision. It shares no code with the GPU path — no voxels, no
+// Ground truth for the showcase: a point light (or a parallel beam) above a
+// sharp glass sphere over a square diffuse receiver, the receiver's
+// irradiance per texel by Monte Carlo over exact ray–sphere intersections
+// with Snell refraction, total internal reflection and (optionally)
+// unpolarised Fresnel splitting, in double precision (SphereOptics). It shares no code with the GPU path — no voxels, no
 // shaders, no emission or receiver code of the renderer — so it can find the
 // renderer's model errors as well as its tracer's. For tests only.
 #pragma once
@@ -56,6 +56,16 @@ IrradianceMap traceSphereCaustic(const SphereCausticSetup& setup);
 // inside each. The error is the quadrature's, far below a texel per ring
 // (`rays` and `seed` are unused).
 IrradianceMap integrateSphereCaustic(const SphereCausticSetup& setup, long long angles = 400'000);
+
+// The same noise-free map under a parallel beam of `irradiance` W/m²
+// travelling along −y in place of the point light (`light`, `power`, `rays`
+// and `seed` unused), for a sphere and receiver centre on one vertical axis
+// and an even resolution (std::invalid_argument otherwise): `rings` rings of
+// impact parameter b about the axis, each of power E·2πb·db (midpoint rule
+// in b out to the sphere's radius or the receiver's corners, whichever is
+// further), follow the same exact ray tree.
+IrradianceMap integrateSphereCausticUnderBeam(const SphereCausticSetup& setup, double irradiance,
+                                              long long rings = 400'000);
 
 // The radius on the receiver plane of the sphere's geometric shadow from the
 // light: h·tan(asin(R/d)) with h the light's height above the plane and d its
