@@ -3,15 +3,21 @@
 // the light's texel grid to the receivers, so the power between four
 // neighbouring photons lands spread over the quadrilateral between their
 // landings ([Wyman06] §3.2.1, Fig. 5: caustic polygons joining adjacent
-// photons of the light-space buffer, after Watt's beam tracing). Each cell carries
-// a quarter of each corner's power, split between its two triangles; a
-// triangle covering a quarter of a receiver texel or more is drawn
-// (caustic_polygons.vert/.frag) with its irradiance, power over landing
-// area; a smaller one lands at its centroid as a bilinear splat (the whole
-// cell at once where both are small). A cell
-// whose corners do not all land on one receiver, through one surface, is no
-// smooth map (the paper culls such polygons or draws them anyway): each
-// corner that lands splats its quarter where it lands, so no power is lost.
+// photons of the light-space buffer, after Watt's beam tracing). Each cell
+// carries a quarter of each corner's power, split between its two
+// triangles. Where its four photons left through one surface, the cell is
+// drawn on each receiver one of them lands on: all four flights are met
+// with that receiver's plane, and the triangles, clipped to its square
+// (caustic_polygons.vert), carry their irradiance, power over landing area,
+// so a cell across two receivers' seam or a square's edge lands on each in
+// proportion. A triangle on less than a quarter of a texel is splatted at
+// its centroid instead (the whole cell at once where both are), when that
+// lies on the square. A cell whose photons left through different surfaces
+// or none, or whose flight cannot reach a plane, is no smooth map (the
+// paper culls such polygons or draws them anyway): each corner that lands
+// splats its quarter where it lands, so no power is lost. Where two
+// receivers face each other, a cell drawn on both is not shadowed by
+// either.
 //
 // Program options: EIKON_PASS (0: one invocation per grid cell and sheet,
 // listing the triangles to draw; 1: one per receiver texel, adding the
@@ -42,15 +48,14 @@ uniform ivec2 layer_size;
 // a uniform beam flat (CausticPolygons.CarryAUniformBeamThroughASlabUniformly).
 const float kSmallestDrawnTexels = 0.25f;
 
-// A cell's corner: where its photon landed, if on receiver r through surface s.
-bool lands_with(CausticVertex v, int r, int s) { return v.receiver == r && v.surface == s; }
-
-// The area of the triangle between three landings, in texels of receiver r.
+// The area of the triangle between three map points, in texels of receiver r.
 float texels_between(vec2 a, vec2 b, vec2 c, int r) {
     vec2 ab = b - a, ac = c - a;
     float edge = float(receivers[r].map.y);
     return 0.5f * abs(ab.x * ac.y - ab.y * ac.x) * edge * edge;
 }
+
+bool on_square(vec2 map_uv) { return all(greaterThanEqual(map_uv, vec2(0.0f))) && all(lessThan(map_uv, vec2(1.0f))); }
 
 // A CPU rasterizer runs every call site of a shader under a mask, whether
 // its lanes take it or not, so the cell's splats and triangles are listed
@@ -63,52 +68,81 @@ void main() {
     CausticVertex corner[4] = CausticVertex[4](
         read_caustic_vertex(first, sheet), read_caustic_vertex(first + 1u, sheet),
         read_caustic_vertex(first + uint(layer_size.x) + 1u, sheet), read_caustic_vertex(first + uint(layer_size.x), sheet));
-    int r = corner[0].receiver;
-    bool smooth_map = r >= 0;
-    for (int k = 1; k < 4; ++k) smooth_map = smooth_map && lands_with(corner[k], r, corner[0].surface);
-    // The two triangles (corners 0 1 2 and 0 2 3), each with half the cell's power.
-    vec3 half_watts = 0.125f * (corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts);
-    float texels[2] = float[2](0.0f, 0.0f);
-    bool drawn[2] = bool[2](false, false);
-    for (int t = 0; t < 2 && smooth_map; ++t) {
-        texels[t] = texels_between(corner[0].map_uv, corner[t + 1].map_uv, corner[t + 2].map_uv, r);
-        drawn[t] = texels[t] >= kSmallestDrawnTexels;
+    bool one_surface = corner[0].surface >= 0;
+    for (int k = 1; k < 4; ++k) one_surface = one_surface && corner[k].surface == corner[0].surface;
+    // The receivers the cell's photons land on, each once.
+    int targets = 0;
+    int target[4];
+    for (int k = 0; k < 4; ++k) {
+        bool listed = corner[k].receiver < 0;
+        for (int q = 0; q < targets; ++q) listed = listed || target[q] == corner[k].receiver;
+        if (!listed) target[targets++] = corner[k].receiver;
     }
-    // The splats: a corner's quarter each (no smooth map), the whole cell
-    // within about a texel at once, or a small triangle at its centroid.
+    vec3 half_watts = 0.125f * (corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts);
     int splats = 0;
-    int splat_receiver[4];
-    vec2 splat_uv[4];
-    vec3 splat_watts[4];
-    if (!smooth_map) {
-        for (int k = 0; k < 4; ++k)
-            if (corner[k].receiver >= 0) {
-                splat_receiver[splats] = corner[k].receiver;
-                splat_uv[splats] = corner[k].map_uv;
-                splat_watts[splats++] = 0.25f * corner[k].watts;
-            }
-    } else if (!drawn[0] && !drawn[1]) {
-        splat_receiver[0] = r;
-        splat_uv[0] = 0.25f * (corner[0].map_uv + corner[1].map_uv + corner[2].map_uv + corner[3].map_uv);
-        splat_watts[0] = 2.0f * half_watts;
-        splats = 1;
-    } else {
-        for (int t = 0; t < 2; ++t)
-            if (!drawn[t]) {
+    int splat_receiver[8];
+    vec2 splat_uv[8];
+    vec3 splat_watts[8];
+    int drawn = 0;
+    int drawn_receiver[8];
+    vec2 drawn_corner[8][3];
+    vec3 drawn_watts[8];
+    bool smooth_map = one_surface && targets > 0;
+    for (int q = 0; q < targets && smooth_map; ++q) {
+        int r = target[q];
+        vec2 uv[4];
+        bool reached = true;
+        for (int k = 0; k < 4; ++k) reached = flight_on_receiver(corner[k], r, uv[k]) && reached;
+        if (!reached) {
+            smooth_map = false;
+            break;
+        }
+        float texels[2];
+        for (int t = 0; t < 2; ++t) texels[t] = texels_between(uv[0], uv[t + 1], uv[t + 2], r);
+        vec2 middle = 0.25f * (uv[0] + uv[1] + uv[2] + uv[3]);
+        if (texels[0] < kSmallestDrawnTexels && texels[1] < kSmallestDrawnTexels) {  // one splat for the cell
+            if (on_square(middle)) {
                 splat_receiver[splats] = r;
-                splat_uv[splats] = (corner[0].map_uv + corner[t + 1].map_uv + corner[t + 2].map_uv) / 3.0f;
+                splat_uv[splats] = middle;
+                splat_watts[splats++] = 2.0f * half_watts;
+            }
+            continue;
+        }
+        for (int t = 0; t < 2; ++t) {
+            vec2 triangle_middle = (uv[0] + uv[t + 1] + uv[t + 2]) / 3.0f;
+            if (texels[t] >= kSmallestDrawnTexels) {
+                drawn_receiver[drawn] = r;
+                drawn_corner[drawn][0] = uv[0];
+                drawn_corner[drawn][1] = uv[t + 1];
+                drawn_corner[drawn][2] = uv[t + 2];
+                drawn_watts[drawn++] = half_watts / texels[t];
+            } else if (on_square(triangle_middle)) {
+                splat_receiver[splats] = r;
+                splat_uv[splats] = triangle_middle;
                 splat_watts[splats++] = half_watts;
             }
+        }
+    }
+    if (!smooth_map) {  // a corner's quarter each, where it lands
+        splats = 0;
+        drawn = 0;
+        for (int k = 0; k < 4; ++k) {
+            vec2 map_uv;
+            if (corner[k].receiver >= 0 && flight_on_receiver(corner[k], corner[k].receiver, map_uv)) {
+                splat_receiver[splats] = corner[k].receiver;
+                splat_uv[splats] = map_uv;
+                splat_watts[splats++] = 0.25f * corner[k].watts;
+            }
+        }
     }
     for (int k = 0; k < splats; ++k) splat_at(splat_receiver[k], splat_uv[k], splat_watts[k]);
-    for (int t = 0; t < 2; ++t) {
-        if (!drawn[t]) continue;
+    for (int t = 0; t < drawn; ++t) {
         // One atomic per triangle: llvmpipe runs a work group's barriers so
         // slowly that counting per group first cost more than the whole pass.
         uint slot = 3u * (atomicAdd(caustic_draw.x, 3u) / 3u);
-        caustic_triangles[slot] = vec4(corner[0].map_uv, corner[t + 1].map_uv);
-        caustic_triangles[slot + 1u] = vec4(corner[t + 2].map_uv, float(r), 0.0f);
-        caustic_triangles[slot + 2u] = vec4(half_watts / texels[t], 0.0f);
+        caustic_triangles[slot] = vec4(drawn_corner[t][0], drawn_corner[t][1]);
+        caustic_triangles[slot + 1u] = vec4(drawn_corner[t][2], float(drawn_receiver[t]), 0.0f);
+        caustic_triangles[slot + 2u] = vec4(drawn_watts[t], 0.0f);
     }
 }
 #else

@@ -126,17 +126,18 @@ void main() {
     deposit_texel(r, texel, sum / float(samples * samples) * receivers[r].normal.w);
 }
 #else
-// A landing on a receiver's lit side, or none.
-CausticVertex landing(ReceiverHit hit, int surface, vec3 watts) {
-    bool received = hit.receiver >= 0 && hit.lit_side;
-    return CausticVertex(received ? hit.receiver : -1, surface, hit.map_uv, received ? watts : vec3(0.0f));
+// A photon's last straight flight, from `origin` along `direction`, the
+// receiver it lands on (`hit`, if on its lit side) and the power it carries:
+// the cells it bounds carry that power whether or not it lands itself.
+CausticVertex landing(ReceiverHit hit, int surface, vec3 origin, vec3 direction, vec3 watts) {
+    return CausticVertex(hit.receiver >= 0 && hit.lit_side ? hit.receiver : -1, surface, origin, direction, watts);
 }
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, layer_size))) return;
     uint index = uint(texel.y * layer_size.x + texel.x);
-    CausticVertex refracted_vertex = CausticVertex(-1, -1, vec2(0.0f), vec3(0.0f));
+    CausticVertex refracted_vertex = CausticVertex(-1, -1, vec3(0.0f), vec3(0.0f, -1.0f, 0.0f), vec3(0.0f));
     CausticVertex reflected_vertex = refracted_vertex;
     LayerSample first = layer_sample(near_layer, texel);
     if (first.surface >= 0) {  // otherwise this light reaches the receivers directly
@@ -190,7 +191,7 @@ void main() {
             ReceiverHit hit = sheet == 0 && inside.receiver >= 0
                                   ? inside
                                   : first_receiver_crossing(start[sheet], start[sheet] + kFarAway * heading[sheet]);
-            CausticVertex landed = landing(hit, first.surface, carried[sheet]);
+            CausticVertex landed = landing(hit, first.surface, start[sheet], heading[sheet], carried[sheet]);
             if (sheet == 0) refracted_vertex = landed;
             else reflected_vertex = landed;
         }
@@ -204,7 +205,8 @@ void main() {
     float missing = float(4 - cells) / 4.0f;
     for (int sheet = 0; sheet < 2 && missing > 0.0f; ++sheet) {
         CausticVertex v = sheet == 0 ? refracted_vertex : reflected_vertex;
-        if (v.receiver >= 0) splat_at(v.receiver, v.map_uv, missing * v.watts);
+        vec2 map_uv;
+        if (v.receiver >= 0 && flight_on_receiver(v, v.receiver, map_uv)) splat_at(v.receiver, map_uv, missing * v.watts);
     }
 }
 #endif

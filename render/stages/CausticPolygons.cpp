@@ -13,7 +13,7 @@ namespace eikon::render {
 namespace {
 
 constexpr int kSheets = 2;  // refracted and reflected (common/caustic_vertices.glsl)
-constexpr std::size_t kVertexBytes = 2 * 4 * sizeof(float);
+constexpr std::size_t kVertexBytes = 3 * 4 * sizeof(float);
 constexpr std::size_t kTriangleBytes = 3 * 4 * sizeof(float);
 constexpr unsigned kNoTriangles[4] = {0u, 1u, 0u, 0u};  // glDrawArraysIndirect's count, instances, first, base
 
@@ -34,8 +34,9 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
     : receivers_(receivers),
       vertices_(static_cast<std::size_t>(texels) * static_cast<std::size_t>(texels) * kSheets * kVertexBytes,
                 gl::GpuResource{"render.caustic_map_texels", "the caustic maps' photon landings"}),
+      // Two triangles per cell and sheet on each receiver its photons land on (at most four).
       triangles_(static_cast<std::size_t>(std::max(texels - 1, 1)) * static_cast<std::size_t>(std::max(texels - 1, 1)) *
-                     kSheets * 2 * kTriangleBytes,
+                     kSheets * 2 * std::clamp<std::size_t>(receivers.count(), 1, 4) * kTriangleBytes,
                  gl::GpuResource{"render.caustic_map_texels", "the caustic triangles"}),
       drawCommand_(sizeof kNoTriangles, kNoTriangles, GL_DYNAMIC_STORAGE_BIT),
       atlas_(atlasSize(receivers).x, atlasSize(receivers).y,

@@ -17,17 +17,25 @@ void deposit_texel(int r, ivec2 texel, vec3 watts) {
 }
 
 // Power landing at map_uv on receiver r, shared bilinearly between the four
-// texels around it. (One deposit in a loop: a CPU rasterizer runs every
-// call site a shader has under a mask, lanes that take it or not.)
+// texels around it (those of them on the receiver, at its edge: none is
+// lost). One deposit in a loop: a CPU rasterizer runs every call site a
+// shader has under a mask, lanes that take it or not.
 void splat_at(int r, vec2 map_uv, vec3 watts) {
-    float resolution = float(receivers[r].map.y);
-    vec2 texel = map_uv * resolution - 0.5f;
+    int resolution = int(receivers[r].map.y);
+    vec2 texel = map_uv * float(resolution) - 0.5f;
     ivec2 base = ivec2(floor(texel));
     vec2 f = texel - vec2(base);
+    float on_receiver = 0.0f;
     for (int k = 0; k < 4; ++k) {
         ivec2 offset = ivec2(k & 1, k >> 1);
         vec2 weight = mix(1.0f - f, f, vec2(offset));
-        deposit_texel(r, base + offset, weight.x * weight.y * watts);
+        bool inside = all(greaterThanEqual(base + offset, ivec2(0))) && all(lessThan(base + offset, ivec2(resolution)));
+        on_receiver += inside ? weight.x * weight.y : 0.0f;
+    }
+    for (int k = 0; k < 4 && on_receiver > 0.0f; ++k) {
+        ivec2 offset = ivec2(k & 1, k >> 1);
+        vec2 weight = mix(1.0f - f, f, vec2(offset));
+        deposit_texel(r, base + offset, weight.x * weight.y / on_receiver * watts);
     }
 }
 

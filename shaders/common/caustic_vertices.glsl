@@ -1,32 +1,53 @@
 // The vertices of the image-space caustic maps (render/stages/CausticPolygons.h):
 // per light texel and sheet (0: refracted through the surface, 1: reflected
-// by it), where that texel's photon lands and the power it carries. The
-// photon pass of image_space_caustics.comp writes them; caustic_polygons.comp
-// joins neighbours into triangles. GLSL only.
+// by it), the straight flight in which that texel's photon ends, the first
+// receiver it lands on and the power it carries. The photon pass of
+// image_space_caustics.comp writes them; caustic_polygons.comp joins
+// neighbours into triangles, on every receiver one of them lands on (the
+// flight, not only the landing, lets a cell whose photons land on two
+// receivers, or past a receiver's edge, be drawn on each). GLSL only; needs
+// receiver.glsl and receiver_blocks.glsl.
 
 layout(std430, binding = kCausticVertices) buffer CausticVertices {
-    vec4 caustic_vertices[];  // [2·(2·texel + sheet)]: (map uv, receiver or −1, surface); [+ 1]: (W rgb, 0)
+    vec4 caustic_vertices[];  // [3·(2·texel + sheet)]: (flight origin, surface); [+ 1]: (direction, receiver or −1); [+ 2]: (W rgb, 0)
 };
 
 const int kCausticSheets = 2;
 
 struct CausticVertex {
-    int receiver;  // −1: lands on no receiver's lit side
-    int surface;   // the sharp surface the light texel shows
-    vec2 map_uv;
-    vec3 watts;    // the power of the texel's photon on landing
+    int receiver;    // the first receiver whose lit side it lands on; −1: none
+    int surface;     // the sharp surface the light texel shows
+    vec3 origin;     // its last straight flight: from here
+    vec3 direction;  // along this (unit)
+    vec3 watts;      // the power of the texel's photon on landing
 };
 
-uint caustic_vertex_slot(uint texel, int sheet) { return 2u * (uint(kCausticSheets) * texel + uint(sheet)); }
+uint caustic_vertex_slot(uint texel, int sheet) { return 3u * (uint(kCausticSheets) * texel + uint(sheet)); }
 
 void write_caustic_vertex(uint texel, int sheet, CausticVertex v) {
     uint slot = caustic_vertex_slot(texel, sheet);
-    caustic_vertices[slot] = vec4(v.map_uv, float(v.receiver), float(v.surface));
-    caustic_vertices[slot + 1u] = vec4(v.watts, 0.0f);
+    caustic_vertices[slot] = vec4(v.origin, float(v.surface));
+    caustic_vertices[slot + 1u] = vec4(v.direction, float(v.receiver));
+    caustic_vertices[slot + 2u] = vec4(v.watts, 0.0f);
 }
 
 CausticVertex read_caustic_vertex(uint texel, int sheet) {
     uint slot = caustic_vertex_slot(texel, sheet);
-    vec4 a = caustic_vertices[slot], b = caustic_vertices[slot + 1u];
-    return CausticVertex(int(round(a.z)), int(round(a.w)), a.xy, b.rgb);
+    vec4 a = caustic_vertices[slot], b = caustic_vertices[slot + 1u], c = caustic_vertices[slot + 2u];
+    return CausticVertex(int(round(b.w)), int(round(a.w)), a.xyz, b.xyz, c.rgb);
+}
+
+// Where a vertex's flight meets receiver r's plane from its lit side, in
+// r's map coordinates (outside [0, 1)² past the square's edges); false where
+// the flight runs away from the plane, along it, or arrives from behind.
+bool flight_on_receiver(CausticVertex v, int r, out vec2 map_uv) {
+    map_uv = vec2(0.0f);
+    vec3 normal = receivers[r].normal.xyz;
+    float approach = dot(v.direction, normal);
+    if (approach >= -1e-6f) return false;
+    float t = dot(receivers[r].origin.xyz - v.origin, normal) / approach;
+    if (t < -1e-4f) return false;
+    map_uv = receiver_map_coordinates(v.origin + t * v.direction, receivers[r].origin.xyz, receivers[r].axis_u.xyz,
+                                      receivers[r].axis_v.xyz, receivers[r].origin.w);
+    return true;
 }

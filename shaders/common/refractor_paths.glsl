@@ -113,7 +113,7 @@ LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
 
 struct RefractorPath {
     vec3 x;           // where the ray left the surface, or where it ends inside
-    vec3 d;           // the direction it leaves in
+    vec3 d;           // the direction it leaves in (or ends in, at a receiver inside)
     vec3 throughput;  // Fresnel transmittance at the exit × Beer–Lambert inside
     ReceiverHit hit;  // a receiver met inside (hit.receiver ≥ 0): the ray ends there
     bool left;        // false: no way out was found (or the bounces ran out); the ray carries nothing on
@@ -132,6 +132,7 @@ RefractorPath follow_through_refractor(Viewpoint view, vec3 x, vec3 d, int s) {
         LayerExit exit_ = find_layer_exit(view, x, d, s, to_receiver);
         if (hit.receiver >= 0 && !exit_.found) {
             path.x = x + to_receiver * d;
+            path.d = d;
             path.throughput *= exp(-kappa * to_receiver);
             path.hit = hit;
             return path;
