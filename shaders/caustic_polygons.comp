@@ -70,80 +70,66 @@ void main() {
         read_caustic_vertex(first + uint(layer_size.x) + 1u, sheet), read_caustic_vertex(first + uint(layer_size.x), sheet));
     bool one_surface = corner[0].surface >= 0;
     for (int k = 1; k < 4; ++k) one_surface = one_surface && corner[k].surface == corner[0].surface;
-    // The receivers the cell's photons land on, each once.
+    // The receivers the cell's photons land on, each once (corner k's: target[own[k]]).
     int targets = 0;
     int target[4];
+    int own[4];
     for (int k = 0; k < 4; ++k) {
-        bool listed = corner[k].receiver < 0;
-        for (int q = 0; q < targets; ++q) listed = listed || target[q] == corner[k].receiver;
-        if (!listed) target[targets++] = corner[k].receiver;
+        own[k] = -1;
+        for (int q = 0; q < targets; ++q)
+            if (target[q] == corner[k].receiver) own[k] = q;
+        if (corner[k].receiver >= 0 && own[k] < 0) {
+            own[k] = targets;
+            target[targets++] = corner[k].receiver;
+        }
     }
-    vec3 half_watts = 0.125f * (corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts);
+    // Every flight met with every such receiver's plane (one call site: a
+    // CPU rasterizer runs each under a mask, taken or not).
+    vec2 uvs[4][4];  // [target][corner]
+    bool reached = true;
+    for (int q = 0; q < targets; ++q) {
+        ReceiverPlane plane = receiver_plane(target[q]);
+        for (int k = 0; k < 4; ++k) reached = flight_on_plane(corner[k], plane, uvs[q][k]) && reached;
+    }
+    bool smooth_map = one_surface && targets > 0 && reached;
+    // The splats, deposited from one call site after the triangles.
     int splats = 0;
-    int splat_receiver[8];
+    int splat_receiver[8];  // up to two per receiver
     vec2 splat_uv[8];
     vec3 splat_watts[8];
-    int drawn = 0;
-    int drawn_receiver[8];
-    vec2 drawn_corner[8][3];
-    vec3 drawn_watts[8];
-    bool smooth_map = one_surface && targets > 0;
-    for (int q = 0; q < targets && smooth_map; ++q) {
+    for (int k = 0; k < 4 && !smooth_map; ++k) {  // no smooth map: a corner's quarter each, where it lands
+        if (own[k] < 0) continue;
+        splat_receiver[splats] = corner[k].receiver;
+        splat_uv[splats] = uvs[own[k]][k];
+        splat_watts[splats++] = 0.25f * corner[k].watts;
+    }
+    vec3 half_watts = 0.125f * (corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts);
+    for (int q = 0; q < (smooth_map ? targets : 0); ++q) {
         int r = target[q];
-        vec2 uv[4];
-        bool reached = true;
-        for (int k = 0; k < 4; ++k) reached = flight_on_receiver(corner[k], r, uv[k]) && reached;
-        if (!reached) {
-            smooth_map = false;
-            break;
-        }
         float texels[2];
-        for (int t = 0; t < 2; ++t) texels[t] = texels_between(uv[0], uv[t + 1], uv[t + 2], r);
-        vec2 middle = 0.25f * (uv[0] + uv[1] + uv[2] + uv[3]);
-        if (texels[0] < kSmallestDrawnTexels && texels[1] < kSmallestDrawnTexels) {  // one splat for the cell
+        for (int t = 0; t < 2; ++t) texels[t] = texels_between(uvs[q][0], uvs[q][t + 1], uvs[q][t + 2], r);
+        bool whole_cell = texels[0] < kSmallestDrawnTexels && texels[1] < kSmallestDrawnTexels;
+        for (int t = 0; t < (whole_cell ? 1 : 2); ++t) {
+            if (!whole_cell && texels[t] >= kSmallestDrawnTexels) {
+                // One atomic per triangle: llvmpipe runs a work group's barriers
+                // so slowly that counting per group first cost more than the pass.
+                uint slot = 3u * (atomicAdd(caustic_draw.x, 3u) / 3u);
+                caustic_triangles[slot] = vec4(uvs[q][0], uvs[q][t + 1]);
+                caustic_triangles[slot + 1u] = vec4(uvs[q][t + 2], float(r), 0.0f);
+                caustic_triangles[slot + 2u] = vec4(half_watts / texels[t], 0.0f);
+                continue;
+            }
+            // Too small to draw: at its middle (the whole cell's at once), where that lies on the square.
+            vec2 middle = whole_cell ? 0.25f * (uvs[q][0] + uvs[q][1] + uvs[q][2] + uvs[q][3])
+                                     : (uvs[q][0] + uvs[q][t + 1] + uvs[q][t + 2]) / 3.0f;
             if (on_square(middle)) {
                 splat_receiver[splats] = r;
                 splat_uv[splats] = middle;
-                splat_watts[splats++] = 2.0f * half_watts;
-            }
-            continue;
-        }
-        for (int t = 0; t < 2; ++t) {
-            vec2 triangle_middle = (uv[0] + uv[t + 1] + uv[t + 2]) / 3.0f;
-            if (texels[t] >= kSmallestDrawnTexels) {
-                drawn_receiver[drawn] = r;
-                drawn_corner[drawn][0] = uv[0];
-                drawn_corner[drawn][1] = uv[t + 1];
-                drawn_corner[drawn][2] = uv[t + 2];
-                drawn_watts[drawn++] = half_watts / texels[t];
-            } else if (on_square(triangle_middle)) {
-                splat_receiver[splats] = r;
-                splat_uv[splats] = triangle_middle;
-                splat_watts[splats++] = half_watts;
-            }
-        }
-    }
-    if (!smooth_map) {  // a corner's quarter each, where it lands
-        splats = 0;
-        drawn = 0;
-        for (int k = 0; k < 4; ++k) {
-            vec2 map_uv;
-            if (corner[k].receiver >= 0 && flight_on_receiver(corner[k], corner[k].receiver, map_uv)) {
-                splat_receiver[splats] = corner[k].receiver;
-                splat_uv[splats] = map_uv;
-                splat_watts[splats++] = 0.25f * corner[k].watts;
+                splat_watts[splats++] = (whole_cell ? 2.0f : 1.0f) * half_watts;
             }
         }
     }
     for (int k = 0; k < splats; ++k) splat_at(splat_receiver[k], splat_uv[k], splat_watts[k]);
-    for (int t = 0; t < drawn; ++t) {
-        // One atomic per triangle: llvmpipe runs a work group's barriers so
-        // slowly that counting per group first cost more than the whole pass.
-        uint slot = 3u * (atomicAdd(caustic_draw.x, 3u) / 3u);
-        caustic_triangles[slot] = vec4(drawn_corner[t][0], drawn_corner[t][1]);
-        caustic_triangles[slot + 1u] = vec4(drawn_corner[t][2], float(drawn_receiver[t]), 0.0f);
-        caustic_triangles[slot + 2u] = vec4(drawn_watts[t], 0.0f);
-    }
 }
 #else
 #include "common/caustic_atlas.glsl"

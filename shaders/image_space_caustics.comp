@@ -206,7 +206,8 @@ void main() {
     for (int sheet = 0; sheet < 2 && missing > 0.0f; ++sheet) {
         CausticVertex v = sheet == 0 ? refracted_vertex : reflected_vertex;
         vec2 map_uv;
-        if (v.receiver >= 0 && flight_on_receiver(v, v.receiver, map_uv)) splat_at(v.receiver, map_uv, missing * v.watts);
+        if (v.receiver >= 0 && flight_on_plane(v, receiver_plane(v.receiver), map_uv))
+            splat_at(v.receiver, map_uv, missing * v.watts);
     }
 }
 #endif

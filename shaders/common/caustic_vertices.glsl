@@ -37,17 +37,29 @@ CausticVertex read_caustic_vertex(uint texel, int sheet) {
     return CausticVertex(int(round(b.w)), int(round(a.w)), a.xyz, b.xyz, c.rgb);
 }
 
-// Where a vertex's flight meets receiver r's plane from its lit side, in
-// r's map coordinates (outside [0, 1)² past the square's edges); false where
-// the flight runs away from the plane, along it, or arrives from behind.
-bool flight_on_receiver(CausticVertex v, int r, out vec2 map_uv) {
+// A receiver's plane and square, read once for the flights met with it.
+struct ReceiverPlane {
+    vec3 origin;  // the square's centre
+    vec3 normal;  // toward its lit side
+    vec3 axis_u, axis_v;
+    float size;   // edge, m
+};
+
+ReceiverPlane receiver_plane(int r) {
+    return ReceiverPlane(receivers[r].origin.xyz, receivers[r].normal.xyz, receivers[r].axis_u.xyz,
+                         receivers[r].axis_v.xyz, receivers[r].origin.w);
+}
+
+// Where a vertex's flight meets a receiver's plane from its lit side, in
+// the receiver's map coordinates (outside [0, 1)² past the square's edges);
+// false where the flight runs away from the plane, along it, or arrives
+// from behind.
+bool flight_on_plane(CausticVertex v, ReceiverPlane plane, out vec2 map_uv) {
     map_uv = vec2(0.0f);
-    vec3 normal = receivers[r].normal.xyz;
-    float approach = dot(v.direction, normal);
+    float approach = dot(v.direction, plane.normal);
     if (approach >= -1e-6f) return false;
-    float t = dot(receivers[r].origin.xyz - v.origin, normal) / approach;
+    float t = dot(plane.origin - v.origin, plane.normal) / approach;
     if (t < -1e-4f) return false;
-    map_uv = receiver_map_coordinates(v.origin + t * v.direction, receivers[r].origin.xyz, receivers[r].axis_u.xyz,
-                                      receivers[r].axis_v.xyz, receivers[r].origin.w);
+    map_uv = receiver_map_coordinates(v.origin + t * v.direction, plane.origin, plane.axis_u, plane.axis_v, plane.size);
     return true;
 }
