@@ -12,10 +12,13 @@
 // so a cell across two receivers' seam or a square's edge lands on each in
 // proportion. A triangle on less than a quarter of a texel is splatted at
 // its centroid instead (the whole cell at once where both are), when that
-// lies on the square. A cell whose photons left through different surfaces
-// or none, or whose flight cannot reach a plane, is no smooth map (the
-// paper culls such polygons or draws them anyway): each corner that lands
-// splats its quarter where it lands, so no power is lost. Where two
+// lies on the square. On a refractor's silhouette, where one corner's texel
+// shows no surface, the triangle of the other three carries their
+// quarters. A cell whose photons left through different surfaces, or with
+// two or more corners on no surface, or whose flight cannot reach a plane,
+// is no smooth map (the paper culls such polygons or draws them anyway):
+// each corner that lands splats its quarter where it lands, so no power is
+// lost. Where two
 // receivers face each other, a cell drawn on both is not shadowed by
 // either.
 //
@@ -68,8 +71,21 @@ void main() {
     CausticVertex corner[4] = CausticVertex[4](
         read_caustic_vertex(first, sheet), read_caustic_vertex(first + 1u, sheet),
         read_caustic_vertex(first + uint(layer_size.x) + 1u, sheet), read_caustic_vertex(first + uint(layer_size.x), sheet));
-    bool one_surface = corner[0].surface >= 0;
-    for (int k = 1; k < 4; ++k) one_surface = one_surface && corner[k].surface == corner[0].surface;
+    // The corners whose light texel shows a surface, all the same one for a
+    // smooth map; a cell on a refractor's silhouette keeps the triangle of
+    // its three that do (corners k + 1, k + 2, k + 3 around the missing k).
+    int shown = 0, missing = 0;
+    bool one_surface = true;
+    int surface = -1;
+    for (int k = 0; k < 4; ++k) {
+        if (corner[k].surface < 0) {
+            missing = k;
+            continue;
+        }
+        one_surface = one_surface && (surface < 0 || corner[k].surface == surface);
+        surface = corner[k].surface;
+        ++shown;
+    }
     // The receivers the cell's photons land on, each once (corner k's: target[own[k]]).
     int targets = 0;
     int target[4];
@@ -89,9 +105,16 @@ void main() {
     bool reached = true;
     for (int q = 0; q < targets; ++q) {
         ReceiverPlane plane = receiver_plane(target[q]);
-        for (int k = 0; k < 4; ++k) reached = flight_on_plane(corner[k], plane, uvs[q][k]) && reached;
+        for (int k = 0; k < 4; ++k)
+            reached = (flight_on_plane(corner[k], plane, uvs[q][k]) || corner[k].surface < 0) && reached;
     }
-    bool smooth_map = one_surface && targets > 0 && reached;
+    bool smooth_map = one_surface && shown >= 3 && targets > 0 && reached;
+    // Its triangles: corners 0 1 2 and 0 2 3 with half the cell's power
+    // each, or on a silhouette the three shown with their quarters.
+    int triangles = shown == 4 ? 2 : 1;
+    ivec3 triangle[2] = ivec3[2](shown == 4 ? ivec3(0, 1, 2) : (ivec3(1, 2, 3) + missing) % 4, ivec3(0, 2, 3));
+    vec3 all_watts = corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts;
+    vec3 triangle_watts = shown == 4 ? 0.125f * all_watts : 0.25f * all_watts;  // a missing corner carries none
     // The splats, deposited from one call site after the triangles.
     int splats = 0;
     int splat_receiver[8];  // up to two per receiver
@@ -103,29 +126,29 @@ void main() {
         splat_uv[splats] = uvs[own[k]][k];
         splat_watts[splats++] = 0.25f * corner[k].watts;
     }
-    vec3 half_watts = 0.125f * (corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts);
     for (int q = 0; q < (smooth_map ? targets : 0); ++q) {
         int r = target[q];
         float texels[2];
-        for (int t = 0; t < 2; ++t) texels[t] = texels_between(uvs[q][0], uvs[q][t + 1], uvs[q][t + 2], r);
-        bool whole_cell = texels[0] < kSmallestDrawnTexels && texels[1] < kSmallestDrawnTexels;
-        for (int t = 0; t < (whole_cell ? 1 : 2); ++t) {
+        for (int t = 0; t < triangles; ++t)
+            texels[t] = texels_between(uvs[q][triangle[t].x], uvs[q][triangle[t].y], uvs[q][triangle[t].z], r);
+        bool whole_cell = triangles == 2 && texels[0] < kSmallestDrawnTexels && texels[1] < kSmallestDrawnTexels;
+        for (int t = 0; t < (whole_cell ? 1 : triangles); ++t) {
+            vec2 a = uvs[q][triangle[t].x], b = uvs[q][triangle[t].y], c = uvs[q][triangle[t].z];
             if (!whole_cell && texels[t] >= kSmallestDrawnTexels) {
                 // One atomic per triangle: llvmpipe runs a work group's barriers
                 // so slowly that counting per group first cost more than the pass.
                 uint slot = 3u * (atomicAdd(caustic_draw.x, 3u) / 3u);
-                caustic_triangles[slot] = vec4(uvs[q][0], uvs[q][t + 1]);
-                caustic_triangles[slot + 1u] = vec4(uvs[q][t + 2], float(r), 0.0f);
-                caustic_triangles[slot + 2u] = vec4(half_watts / texels[t], 0.0f);
+                caustic_triangles[slot] = vec4(a, b);
+                caustic_triangles[slot + 1u] = vec4(c, float(r), 0.0f);
+                caustic_triangles[slot + 2u] = vec4(triangle_watts / texels[t], 0.0f);
                 continue;
             }
             // Too small to draw: at its middle (the whole cell's at once), where that lies on the square.
-            vec2 middle = whole_cell ? 0.25f * (uvs[q][0] + uvs[q][1] + uvs[q][2] + uvs[q][3])
-                                     : (uvs[q][0] + uvs[q][t + 1] + uvs[q][t + 2]) / 3.0f;
+            vec2 middle = whole_cell ? 0.25f * (uvs[q][0] + uvs[q][1] + uvs[q][2] + uvs[q][3]) : (a + b + c) / 3.0f;
             if (on_square(middle)) {
                 splat_receiver[splats] = r;
                 splat_uv[splats] = middle;
-                splat_watts[splats++] = (whole_cell ? 2.0f : 1.0f) * half_watts;
+                splat_watts[splats++] = (whole_cell ? 2.0f : 1.0f) * triangle_watts;
             }
         }
     }
