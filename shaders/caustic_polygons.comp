@@ -164,9 +164,7 @@ uniform uint texel_count;  // receiver texels in all
 void main() {
     int r;
     ivec2 texel;
-    if (!receiver_texel_of(gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x,
-                           texel_count, r, texel))
-        return;
+    if (!receiver_texel_of_invocation(texel_count, r, texel)) return;
     deposit_texel(r, texel, texelFetch(caustic_atlas, texel + ivec2(0, atlas_row(r)), 0).rgb);
 }
 #endif

@@ -4,10 +4,11 @@
 // refracts through two interfaces (common/refractor_paths.glsl) and lands
 // on a receiver. A photon carries the light's power over the texel's solid
 // angle ([Wyman06] §3.2.1: E_B = E_L·ω_B/4π; a directional light's over the
-// texel's area). The photon pass (EIKON_PASS 1) records where each photon
-// lands, refracted and reflected (common/caustic_vertices.glsl);
-// caustic_polygons.comp joins neighbouring landings into triangles that
-// carry the power between them (render/stages/CausticPolygons.h). The light
+// texel's area). The photon pass (EIKON_PASS 1) records each photon's last
+// straight flight and the receiver it lands on, refracted and reflected
+// (common/caustic_vertices.glsl); caustic_polygons.comp joins neighbouring
+// photons into triangles that carry the power between them
+// (render/stages/CausticPolygons.h). The light
 // no refractor intercepts is not sampled: the direct pass (EIKON_PASS 0)
 // gives each receiver texel its exact irradiance I·cos θ/r² (E·cos θ for
 // directional light), unless the light's layers show a refractor in front
@@ -96,9 +97,7 @@ vec3 receiver_point(int r, vec2 uv) {
 void main() {
     int r;
     ivec2 texel;
-    if (!receiver_texel_of(gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x,
-                           texel_count, r, texel))
-        return;
+    if (!receiver_texel_of_invocation(texel_count, r, texel)) return;
     float resolution = float(receivers[r].map.y);
     // The texel's corners and centre first: where they agree, no shadow edge
     // crosses it (a shadow narrower than half a texel can slip between them)

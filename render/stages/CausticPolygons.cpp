@@ -6,7 +6,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
-#include <cstdint>
 
 namespace eikon::render {
 
@@ -43,10 +42,7 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
              gl::GpuResource{"receivers", "the atlas the caustic triangles are drawn into"}),
       cellProgram_(gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "0"}})),
       gatherProgram_(gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "1"}})),
-      drawProgram_(gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag")) {
-    for (unsigned r = 0; r < receivers_.count(); ++r)
-        receiverTexels_ += receivers_.receiver(r).map.y * receivers_.receiver(r).map.y;
-}
+      drawProgram_(gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag")) {}
 
 void CausticPolygons::clear() {
     GLint previousFramebuffer = 0;
@@ -94,11 +90,9 @@ void CausticPolygons::addToTallies(const glm::vec3& powerUnit) {
     receivers_.bind();
     atlas_.bindColour(layout::kCausticAtlasTexture);
     gatherProgram_.use();
-    glUniform1ui(gatherProgram_.uniform("texel_count"), receiverTexels_);
     glUniform1ui(gatherProgram_.uniform("receiver_count"), receivers_.count());
     glUniform3fv(gatherProgram_.uniform("power_unit"), 1, glm::value_ptr(powerUnit));
-    constexpr std::size_t kRow = 1024;  // texels per row of the dispatch
-    gatherProgram_.dispatchCovering(kRow, (receiverTexels_ + kRow - 1) / kRow, 1, 8, 8, 1);
+    receivers_.dispatchOverTexels(gatherProgram_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gl::checkpoint("caustic atlas");
 }

@@ -1,18 +1,21 @@
 // Caustic polygons for the image-space caustic maps (shaders/caustic_polygons.*;
-// [Wyman06] §3.2.1, Fig. 5 and Eq. 1): a light's photons, one
-// per texel of its surface layers, sample a map from the light's texel grid
-// onto the receivers. Rather than splatting each photon's power at one
-// point, which shows the photons' regular grid as moiré wherever fewer than
-// a few land per receiver texel, the power between four neighbouring
-// photons is spread over the quadrilateral between their landings: its two
-// triangles are drawn by the raster pipeline, with additive blending, into
-// an atlas that stacks the receivers' maps a texel per pixel, at the
+// [Wyman06] §3.2.1, Fig. 5 and Eq. 1): a light's photons, one per texel of
+// its surface layers, sample a map from the light's texel grid onto the
+// receivers. Rather than splatting each photon's power at one point, which
+// shows the photons' regular grid as moiré wherever fewer than a few land
+// per receiver texel, the power between four neighbouring photons is spread
+// over the quadrilateral between their landings: its two triangles are met
+// with every receiver one of the photons lands on, and drawn by the raster
+// pipeline, with additive blending and clipped to each receiver's square,
+// into an atlas that stacks the receivers' maps a texel per pixel, at the
 // irradiance of their power over their landing area. Triangles smaller than
-// a quarter of a receiver texel, and cells whose corners land on different receivers or
-// through different surfaces (no smooth map there), are splatted as points.
-// The atlas is then added into the receivers' fixed-point tallies, so power
-// is counted as exactly as the splats' (up to where a drawn triangle's edge
-// falls between texel centres).
+// a quarter of a receiver texel are splatted at their middle; cells whose
+// photons left through different surfaces (no smooth map there) are
+// splatted corner by corner, except that a cell on a silhouette keeps the
+// triangle of its three corners on the surface. The atlas is then added
+// into the receivers' fixed-point tallies, so power is counted as exactly
+// as the splats' (up to where a drawn triangle's edge falls between texel
+// centres).
 #pragma once
 
 #include "gl/GlObjects.h"
@@ -41,7 +44,6 @@ public:
 
 private:
     const ReceiverMaps& receivers_;
-    unsigned receiverTexels_ = 0;
     gl::Buffer vertices_, triangles_, drawCommand_;
     gl::RasterTarget atlas_;
     gl::Program cellProgram_, gatherProgram_, drawProgram_;

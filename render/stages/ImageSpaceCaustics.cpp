@@ -62,8 +62,6 @@ ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receive
     for (const LightDesc& light : lights_)
         total += light.kind == LightDesc::Kind::Directional ? light.irradiance * receiverArea : light.power;
     for (int c = 0; c < 3; ++c) powerUnit_[c] = static_cast<float>(std::max(total[c], 1e-20) / std::ldexp(1.0, 40));
-    for (unsigned r = 0; r < receivers_.count(); ++r)
-        receiverTexels_ += receivers_.receiver(r).map.y * receivers_.receiver(r).map.y;
 }
 
 void ImageSpaceCaustics::setLight(std::size_t index, const LightDesc& light) {
@@ -165,9 +163,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
             glUniform1ui(program->uniform("receiver_count"), receivers_.count());
         }
         directProgram_.use();
-        glUniform1ui(directProgram_.uniform("texel_count"), receiverTexels_);
-        constexpr std::size_t kRow = 1024;  // texels per row of the dispatch
-        directProgram_.dispatchCovering(kRow, (receiverTexels_ + kRow - 1) / kRow, 1, 8, 8, 1);
+        receivers_.dispatchOverTexels(directProgram_);
         photonProgram_.use();
         polygons_.bindVertices();
         glUniform3fv(photonProgram_.uniform("frame_right"), 1, glm::value_ptr(frame.right));

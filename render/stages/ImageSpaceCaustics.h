@@ -55,7 +55,6 @@ private:
     gl::Program directProgram_, photonProgram_;
     CausticPolygons polygons_;
     glm::vec3 powerUnit_{1.0f};
-    unsigned receiverTexels_ = 0;
     int frames_ = 0;
 };
 

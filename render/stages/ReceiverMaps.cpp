@@ -38,8 +38,8 @@ ReceiverMaps::ReceiverMaps(const std::vector<ReceiverDesc>& receivers) : receive
         kernelRadius_.push_back(desc.filter == ReceiverDesc::Filter::Binomial   ? 1
                                 : desc.filter == ReceiverDesc::Filter::Adaptive ? kAdaptiveKernel
                                                                                 : 0);
-    std::size_t texels = 0;
-    for (const auto& receiver : receivers_) texels += std::size_t{receiver.map.y} * receiver.map.y;
+    for (const auto& receiver : receivers_) texelCount_ += receiver.map.y * receiver.map.y;
+    const std::size_t texels = texelCount_;
     geometry_ = gl::Buffer(receivers_.size() * sizeof(layout::GpuReceiver), receivers_.data());
     tallies_ = gl::Buffer(6 * texels * sizeof(std::uint32_t), {"receivers[].resolution", "the receivers' tallies"});
     maps_ = gl::Buffer(3 * texels * sizeof(float), {"receivers[].resolution", "the receivers' maps"});
@@ -50,6 +50,12 @@ void ReceiverMaps::bind() const {
     geometry_.bindStorage(layout::kReceivers);
     tallies_.bindStorage(layout::kReceiverTallies);
     maps_.bindStorage(layout::kReceiverMaps);
+}
+
+void ReceiverMaps::dispatchOverTexels(const gl::Program& program) const {
+    constexpr std::size_t kRow = 1024;  // texels per row of the dispatch
+    glUniform1ui(program.uniform("texel_count"), texelCount_);
+    program.dispatchCovering(kRow, (texelCount_ + kRow - 1) / kRow, 1, 8, 8, 1);
 }
 
 void ReceiverMaps::filter(const glm::vec3& powerUnit) {

@@ -20,6 +20,12 @@ public:
     explicit ReceiverMaps(const std::vector<ReceiverDesc>& receivers);
 
     unsigned count() const { return static_cast<unsigned>(receivers_.size()); }
+    // Texels of all receivers' maps together.
+    unsigned texelCount() const { return texelCount_; }
+    // Dispatches `program` (used, local size 8×8) once per texel of all the
+    // maps, numbered as common/caustic_deposits.glsl's
+    // receiver_texel_of_invocation reads them; sets its uniform texel_count.
+    void dispatchOverTexels(const gl::Program& program) const;
     const layout::GpuReceiver& receiver(unsigned i) const { return receivers_[i]; }
     void clearTallies() { tallies_.clearToZero(); }
     // The raw tallies, one 64-bit fixed-point number per texel and channel
@@ -41,6 +47,7 @@ private:
     // density-adaptive tent (shaders/receiver_filter.comp).
     static constexpr int kAdaptiveKernel = -1;
     std::vector<int> kernelRadius_;
+    unsigned texelCount_ = 0;
     gl::Buffer geometry_;
     gl::Buffer tallies_;
     gl::Buffer maps_;

@@ -39,9 +39,11 @@ void splat_at(int r, vec2 map_uv, vec3 watts) {
     }
 }
 
-// The receiver and texel of the index-th texel of all receivers' maps
-// (false: past the last of texel_count).
-bool receiver_texel_of(uint index, uint texel_count, out int r, out ivec2 texel) {
+// This invocation's receiver and texel, one invocation per texel of all
+// receivers' maps in the rows ReceiverMaps::dispatchOverTexels dispatches
+// (false: past the last of texel_count). Compute shaders only.
+bool receiver_texel_of_invocation(uint texel_count, out int r, out ivec2 texel) {
+    uint index = gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x + gl_GlobalInvocationID.x;
     r = 0;
     texel = ivec2(0);
     if (index >= texel_count) return false;
