@@ -95,6 +95,22 @@ void Texture3D::upload(GLenum format, GLenum type, const void* data) {
     glTextureSubImage3D(id(), 0, 0, 0, 0, width_, height_, depth_, format, type, data);
 }
 
+void Texture3D::uploadBox(GLenum format, GLenum type, const void* data, const glm::ivec3& begin,
+                          const glm::ivec3& end) {
+    if (end.x <= begin.x || end.y <= begin.y || end.z <= begin.z) return;
+    // The unpack state says where the box lies in the whole array.
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, width_);
+    glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, height_);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, begin.x);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, begin.y);
+    glPixelStorei(GL_UNPACK_SKIP_IMAGES, begin.z);
+    glTextureSubImage3D(id(), 0, begin.x, begin.y, begin.z, end.x - begin.x, end.y - begin.y, end.z - begin.z, format,
+                        type, data);
+    for (GLenum parameter : {GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS,
+                             GL_UNPACK_SKIP_IMAGES})
+        glPixelStorei(parameter, 0);
+}
+
 void Texture3D::bindImage(GLuint unit, GLenum access) const {
     glBindImageTexture(unit, id(), 0, GL_TRUE, 0, access, internalFormat_);
 }

@@ -104,6 +104,9 @@ public:
 
     GLuint id() const { return name_.id(); }
     void upload(GLenum format, GLenum type, const void* data);
+    // Copies the texels [begin, end) from `data`, which holds the whole
+    // texture (x fastest), leaving the others as they are.
+    void uploadBox(GLenum format, GLenum type, const void* data, const glm::ivec3& begin, const glm::ivec3& end);
     void bindSampler(GLuint unit) const { glBindTextureUnit(unit, id()); }
     void bindImage(GLuint unit, GLenum access) const;
 

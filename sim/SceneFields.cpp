@@ -230,15 +230,18 @@ void SceneFields::repaintWhereMeshesChanged() {
     if (changed.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     const CoverageGrids grids = coverageGrids();
+    CellBox repainted;
     for (const CellBox& box : changed.boxes()) {
         fillMedium(scene_, fields_, box);
         paintObjects(scene_, fields_, grids, &box);
         paintStrokes(scene_, fields_, &box);
+        repainted = repainted.unite(box);
     }
     voxelizeMs_ += millisecondsSince(start);
-    ++fields_.indexVersion;
-    if (fields_.hasExtinction()) ++fields_.extinctionVersion;
-    if (fields_.hasScattering()) ++fields_.scatteringVersion;
+    // The GPU's copies need only the repainted cells (their bounding box).
+    fields_.indexChange = {++fields_.indexVersion, repainted};
+    if (fields_.hasExtinction()) fields_.extinctionChange = {++fields_.extinctionVersion, repainted};
+    if (fields_.hasScattering()) fields_.scatteringChange = {++fields_.scatteringVersion, repainted};
 }
 
 std::vector<PhaseTiming> SceneFields::lastTimings() const {

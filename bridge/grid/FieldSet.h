@@ -5,6 +5,7 @@
 // changes whenever its values do, so stages can skip unchanged inputs.
 #pragma once
 
+#include "bridge/grid/CellBox.h"
 #include "bridge/grid/GridSpec.h"
 
 #include <cstdint>
@@ -24,6 +25,21 @@ namespace eikon {
 // crease).
 constexpr std::size_t kSurfaceNodeFloats = 8;
 constexpr std::size_t kSurfaceTriangleFloats = 24;
+
+// The cells in which version `version` of a volume field differs from the
+// version before it. A copy that holds the version before needs only these
+// cells (render/stages/FieldTextures.h uploads just them); a producer that
+// bumps a field's version without saying where leaves `version` behind,
+// which means anywhere.
+struct FieldChange {
+    std::uint64_t version = 0;
+    CellBox cells;
+
+    // Whether going from version `held` to `current` touched only `cells`.
+    bool onlyCellsSince(std::uint64_t held, std::uint64_t current) const {
+        return version == current && held + 1 == current;
+    }
+};
 
 struct FieldSet {
     GridSpec grid;
@@ -46,6 +62,7 @@ struct FieldSet {
     std::uint64_t extinctionVersion = 0;  // κ and ε together
     std::uint64_t scatteringVersion = 0;  // σs and g together
     std::uint64_t surfaceVersion = 0;     // surface nodes and triangles together
+    FieldChange indexChange, extinctionChange, scatteringChange;
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }

@@ -93,7 +93,10 @@ FieldUpload FieldRing::current() const {
             slot.extinctionVersion,
             slot.scatteringVersion,
             slot.surfaceVersion,
-            FieldSource{}};  // emission comes only from imported volumes, never through the ring
+            FieldSource{},  // emission comes only from imported volumes, never through the ring
+            FieldChange{},  // a slot's fields are copied whole, on the GPU
+            FieldChange{},
+            FieldChange{}};
 }
 
 std::array<GLuint, 3> FieldRing::acquiredDeviceBuffers() const {

@@ -15,14 +15,23 @@ bool sameGrid(const GridSpec& a, const GridSpec& b) {
 
 FieldSource hostSource(const std::vector<float>& values) { return {values.data(), 0, values.size()}; }
 
+constexpr std::uint64_t kNothingHeld = ~0ull;  // a texture's version before its first upload
+
 // Copies `source` into `texture` (created on demand with `internalFormat`):
-// from a buffer bound as the pixel unpack buffer the copy stays on the GPU.
+// from a buffer bound as the pixel unpack buffer the copy stays on the GPU;
+// from host memory into a texture that already holds the version before,
+// only the cells `change` names.
 void uploadField(gl::Texture3D& texture, const char* what, GLenum internalFormat, GLenum format, const GridSpec& grid,
-                 const FieldSource& source, UploadBytes& bytes) {
+                 const FieldSource& source, const FieldChange& change, std::uint64_t held, std::uint64_t version,
+                 UploadBytes& bytes) {
     const glm::ivec3 r = grid.resolution;
+    const bool whole = !texture.id() || held == kNothingHeld || !change.onlyCellsSince(held, version);
     if (!texture.id()) texture = gl::Texture3D(internalFormat, r.x, r.y, r.z, gl::gridResource(what, r.x, r.y, r.z));
     const std::size_t size = source.floats * sizeof(float);
-    if (source.buffer) {
+    if (!source.buffer && !whole) {
+        texture.uploadBox(format, GL_FLOAT, source.host, change.cells.min, change.cells.max);
+        bytes.host += size / static_cast<std::size_t>(grid.cellCount()) * static_cast<std::size_t>(change.cells.cellCount());
+    } else if (source.buffer) {
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, source.buffer);
         texture.upload(format, GL_FLOAT, nullptr);
         glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
@@ -69,7 +78,10 @@ FieldUpload hostUpload(const FieldSet& fields) {
             fields.extinctionVersion,
             fields.scatteringVersion,
             fields.surfaceVersion,
-            hostSource(fields.emission)};
+            hostSource(fields.emission),
+            fields.indexChange,
+            fields.extinctionChange,
+            fields.scatteringChange};
 }
 
 UploadBytes FieldTextures::upload(const FieldUpload& fields) {
@@ -89,22 +101,32 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
         scattering_ = {};
         anisotropy_ = {};
         emission_ = {};
-        indexVersion_ = extinctionVersion_ = scatteringVersion_ = surfaceVersion_ = ~0ull;
+        indexVersion_ = extinctionVersion_ = scatteringVersion_ = surfaceVersion_ = kNothingHeld;
         bytes.host += sizeof block;
     }
-    if (fields.indexVersion != indexVersion_) uploadField(index_, "the refractive index", GL_R32F, GL_RED, grid_, fields.deltaIndex, bytes);
+    if (fields.indexVersion != indexVersion_)
+        uploadField(index_, "the refractive index", GL_R32F, GL_RED, grid_, fields.deltaIndex, fields.indexChange,
+                    indexVersion_, fields.indexVersion, bytes);
     indexVersion_ = fields.indexVersion;
     const bool extinctionChanged = fields.extinctionVersion != extinctionVersion_;
     if (!fields.extinction.floats) extinction_ = {};
-    else if (extinctionChanged) uploadField(extinction_, "the extinction", GL_RGBA32F, GL_RGB, grid_, fields.extinction, bytes);
+    else if (extinctionChanged)
+        uploadField(extinction_, "the extinction", GL_RGBA32F, GL_RGB, grid_, fields.extinction, fields.extinctionChange,
+                    extinctionVersion_, fields.extinctionVersion, bytes);
     if (!fields.emission.floats) emission_ = {};
-    else if (extinctionChanged) uploadField(emission_, "the emission", GL_RGBA32F, GL_RGB, grid_, fields.emission, bytes);
+    else if (extinctionChanged)
+        uploadField(emission_, "the emission", GL_RGBA32F, GL_RGB, grid_, fields.emission, fields.extinctionChange,
+                    extinctionVersion_, fields.extinctionVersion, bytes);
     extinctionVersion_ = fields.extinctionVersion;
     const bool scatteringChanged = fields.scatteringVersion != scatteringVersion_;
     if (!fields.scattering.floats) scattering_ = {};
-    else if (scatteringChanged) uploadField(scattering_, "the scattering", GL_RGBA32F, GL_RGB, grid_, fields.scattering, bytes);
+    else if (scatteringChanged)
+        uploadField(scattering_, "the scattering", GL_RGBA32F, GL_RGB, grid_, fields.scattering, fields.scatteringChange,
+                    scatteringVersion_, fields.scatteringVersion, bytes);
     if (!fields.anisotropy.floats) anisotropy_ = {};
-    else if (scatteringChanged) uploadField(anisotropy_, "the anisotropy", GL_R32F, GL_RED, grid_, fields.anisotropy, bytes);
+    else if (scatteringChanged)
+        uploadField(anisotropy_, "the anisotropy", GL_R32F, GL_RED, grid_, fields.anisotropy, fields.scatteringChange,
+                    scatteringVersion_, fields.scatteringVersion, bytes);
     scatteringVersion_ = fields.scatteringVersion;
     if (!fields.surfaceTriangles.floats) {
         surfaceNodes_ = {};

@@ -2,9 +2,12 @@
 // field the scene has (δn always; κ, σs, g, ε only when present), and the storage
 // buffers of the sharp mesh and water surfaces' trees and triangles (when
 // the scene has such surfaces). Re-uploads a field only when its version
-// changed. Values come either from host memory (the driver copies them: host
-// bytes) or from a GL buffer the simulation wrote in place
-// (render/stages/FieldRing.h; the copy runs on the GPU: no host bytes).
+// changed, and from host memory only the cells the new version changed when
+// the texture holds the version before (FieldChange; a water surface
+// repaints a thin band of the grid). Values come either from host memory
+// (the driver copies them: host bytes) or from a GL buffer the simulation
+// wrote in place (render/stages/FieldRing.h; the copy runs on the GPU: no
+// host bytes).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -29,6 +32,9 @@ struct FieldUpload {
     FieldSource surfaceNodes, surfaceTriangles;
     std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0, surfaceVersion = 0;
     FieldSource emission;  // host memory only (an imported volume's); versioned with κ
+    // Where each version differs from the one before (host sources only):
+    // a texture one version behind takes just those cells.
+    FieldChange indexChange, extinctionChange, scatteringChange;
 };
 
 FieldUpload hostUpload(const FieldSet& fields);
@@ -45,6 +51,7 @@ public:
 
     const gl::Buffer& gridBlock() const { return gridBlock_; }
     const gl::Texture3D& index() const { return index_; }
+    const gl::Texture3D& extinction() const { return extinction_; }
     gl::Texture3D& gradient() { return gradient_; }
     bool hasExtinction() const { return static_cast<bool>(extinction_.id()); }
     bool hasScattering() const { return static_cast<bool>(scattering_.id()); }

@@ -88,8 +88,8 @@ LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
         }
         inside_t = t;
     }
-    if (outside_t < 0.0f) return LayerExit(false, reach, vec3(0.0f));
-    for (int i = 0; i < kLayerBisections; ++i) {
+    bool found = outside_t >= 0.0f;
+    for (int i = 0; i < (found ? kLayerBisections : 0); ++i) {
         float middle = 0.5f * (inside_t + outside_t);
         if (inside_layers(view, x + middle * d, s)) inside_t = middle;
         else outside_t = middle;
@@ -98,7 +98,7 @@ LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
     vec3 normal = vec3(0.0f);
     vec3 point;
     vec3 layer_normal;
-    for (int i = 0; i < kTangentPlaneSteps; ++i) {
+    for (int i = 0; i < (found ? kTangentPlaneSteps : 0); ++i) {
         if (!nearest_layer_point(view, x + t * d, point, layer_normal)) break;
         normal = layer_normal;
         float approach = dot(d, layer_normal);
@@ -107,6 +107,7 @@ LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
         if (!(on_plane > 0.0f) || abs(on_plane - t) > 2.0f * h) break;  // a plane far off: keep the bisection's point
         t = on_plane;
     }
+    if (!found) return LayerExit(false, reach, vec3(0.0f));
     if (normal == vec3(0.0f)) normal = -d;  // no layer found: leave undeflected below
     return LayerExit(true, t, dot(normal, d) < 0.0f ? -normal : normal);
 }

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
-#include "sim/voxelize/CellBox.h"
+#include "bridge/grid/CellBox.h"
 
 #include <vector>
 

@@ -13,7 +13,7 @@
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/FieldViews.h"
 #include "bridge/scene/Scene.h"
-#include "sim/voxelize/CellBox.h"
+#include "bridge/grid/CellBox.h"
 
 #include <vector>
 

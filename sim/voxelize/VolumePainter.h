@@ -14,7 +14,7 @@
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/FieldViews.h"
 #include "bridge/scene/Scene.h"
-#include "sim/voxelize/CellBox.h"
+#include "bridge/grid/CellBox.h"
 
 namespace eikon::sim {
 

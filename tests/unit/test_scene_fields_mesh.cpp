@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 
@@ -80,6 +81,41 @@ TEST(SceneFieldsMesh, DeformsEachFrameAndMatchesAFullRepaint) {
     for (std::size_t cell = 0; cell < full.deltaIndex.size(); ++cell)
         ASSERT_EQ(full.deltaIndex[cell], fields.fields().deltaIndex[cell]) << "cell " << cell;
     EXPECT_EQ(full.extinction, fields.fields().extinction);
+}
+
+// Each frame says where its fields changed (FieldChange), so the GPU's
+// copies of the frame before take only those cells: every cell that
+// differs lies in the box, and the box is a small part of the grid.
+TEST(SceneFieldsMesh, EachFrameNamesTheCellsItChanged) {
+    const Scene scene = twistingBarScene();
+    SceneFields fields(scene);
+    const GridSpec& grid = fields.fields().grid;
+    for (int frame = 0; frame < 3; ++frame) {
+        const FieldSet before = fields.fields();
+        fields.advanceFrame();
+        const FieldSet& after = fields.fields();
+        ASSERT_EQ(after.indexVersion, before.indexVersion + 1);
+        EXPECT_TRUE(after.indexChange.onlyCellsSince(before.indexVersion, after.indexVersion));
+        EXPECT_TRUE(after.extinctionChange.onlyCellsSince(before.extinctionVersion, after.extinctionVersion));
+        EXPECT_FALSE(after.indexChange.onlyCellsSince(before.indexVersion - 1, after.indexVersion))
+            << "two versions behind: the change says nothing about the one between";
+        const CellBox box = after.indexChange.cells;
+        EXPECT_LT(box.cellCount(), static_cast<long long>(grid.cellCount() / 2));
+        long long differing = 0;
+        for (int k = 0; k < grid.resolution.z; ++k)
+            for (int j = 0; j < grid.resolution.y; ++j)
+                for (int i = 0; i < grid.resolution.x; ++i) {
+                    const std::size_t cell = grid.linearIndex(i, j, k);
+                    const bool changed = before.deltaIndex[cell] != after.deltaIndex[cell] ||
+                                         before.extinction[3 * cell] != after.extinction[3 * cell];
+                    if (!changed) continue;
+                    ++differing;
+                    const glm::ivec3 c(i, j, k);
+                    ASSERT_TRUE(glm::all(glm::greaterThanEqual(c, box.min)) && glm::all(glm::lessThan(c, box.max)))
+                        << "cell (" << i << ", " << j << ", " << k << ") changed outside the box";
+                }
+        EXPECT_GT(differing, 0) << "the bar twists every frame";
+    }
 }
 
 TEST(SceneFieldsMesh, ObjectsCompositeInListOrderWhateverTheirKind) {

@@ -1,5 +1,6 @@
 // A box of grid cells, [min, max) on each axis: the region of a grid that a
-// frame's change touched and that must be recomputed.
+// frame's change touched, which must be recomputed (sim/voxelize) and copied
+// to the GPU again (FieldSet's changes).
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
@@ -10,7 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace eikon::sim {
+namespace eikon {
 
 struct CellBox {
     glm::ivec3 min{0};
@@ -21,6 +22,12 @@ struct CellBox {
         return empty() ? 0 : static_cast<long long>(max.x - min.x) * (max.y - min.y) * (max.z - min.z);
     }
     static CellBox whole(const GridSpec& grid) { return {glm::ivec3(0), grid.resolution}; }
+    // The smallest box holding both (an empty one adds nothing).
+    CellBox unite(const CellBox& other) const {
+        if (other.empty()) return *this;
+        if (empty()) return other;
+        return {glm::min(min, other.min), glm::max(max, other.max)};
+    }
 
     // Cells whose centres may lie within `margin` metres of the world box
     // [lo, hi], clipped to the grid.
@@ -43,4 +50,4 @@ struct CellBox {
     }
 };
 
-}  // namespace eikon::sim
+}  // namespace eikon
