@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Every GPU-dependent figure of the benchmark pages in one run, sized for a
+# short lease of a GPU machine (docs/benchmarks-gpu.md, "Measuring on a GPU
+# machine"):
+#  1. image space against the eikonal tracer, frame times of the surface
+#     scenes (docs/benchmarks-image-space.md's conventions);
+#  2. every scene's eikonal frame (the wavefront where the scene uses it);
+#  3. the multiple-scattering lattice, ms per converged frame and
+#     iterations at 64³ and 128³ (bench_lattice);
+#  4. the fluid solver on both backends and the live loops
+#     (bench/gpu_solver.sh).
+# Each step has a time limit, so one that hangs costs only its own share.
+# Results go to OUT_DIR; a summary is printed last.
+#   bench/gpu_all.sh [BIN_DIR] [OUT_DIR]
+# BIN_DIR holds eikon and the bench_ binaries: build/release, or the bin/ of
+# tools/bundle-release.sh's archive (with LD_LIBRARY_PATH at its lib/).
+set -uo pipefail
+cd "$(dirname "$0")/.."
+bin=$(realpath "${1:-build/release}")
+out=${2:-out/gpu-all}
+mkdir -p "$out"
+out=$(realpath "$out")
+summary="$out/summary.txt"
+: > "$summary"
+note() { echo "$*" | tee -a "$summary"; }
+
+# render_ms of frames FIRST … LAST of a report, their median.
+median_render_ms() {
+    grep -o '"render_ms":[0-9.e+-]*' "$1/report.jsonl" | sed -n "$(($2 + 1)),$(($3 + 1))p" | cut -d: -f2 | sort -g |
+        awk '{ v[NR] = $1 } END { if (NR) printf "%.2f", (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2; else printf "n/a" }'
+}
+
+timeout 60 "$bin/eikon" info | tee "$out/info.txt"
+
+note "## image space against eikonal (render_ms; image space: median of frames 2-4; eikonal: frame 0 static, 1 moving)"
+for scene in default glass_sphere_sky pool_caustics twisting_glass deforming_blob; do
+    for texels in 256 128; do
+        run="$out/runs/${scene}_image_space_${texels}"
+        timeout 120 "$bin/eikon" run "scenes/$scene.json" --frames 5 --quiet --force --out "$run" \
+            --set render.method=image_space --set render.caustic_map_texels=$texels >/dev/null 2>"$run.log"
+        note "$scene image_space ${texels}²: $(median_render_ms "$run" 2 4) ms"
+    done
+    run="$out/runs/${scene}_eikonal"
+    timeout 120 "$bin/eikon" run "scenes/$scene.json" --frames 2 --quiet --force --out "$run" >/dev/null 2>"$run.log"
+    frame=1
+    case $scene in default | glass_sphere_sky) frame=0 ;; esac
+    note "$scene eikonal: $(median_render_ms "$run" $frame $frame) ms"
+done
+
+note "## every scene, eikonal (render_ms, median of frames 1-3; frame 0 compiles)"
+for file in scenes/*.json; do
+    scene=$(basename "$file" .json)
+    run="$out/runs/${scene}_frames"
+    timeout 120 "$bin/eikon" run "$file" --frames 4 --quiet --force --out "$run" >/dev/null 2>"$run.log"
+    note "$scene: $(median_render_ms "$run" 1 3) ms (frame 0: $(median_render_ms "$run" 0 0) ms)"
+done
+
+note "## multiple-scattering lattice (bench_lattice)"
+timeout 240 "$bin/bench_lattice" --benchmark_counters_tabular=true --benchmark_out="$out/lattice.json" \
+    --benchmark_out_format=json 2>&1 | tee "$out/lattice.txt" | grep -E "^BM_|^Benchmark" | tee -a "$summary"
+
+note "## fluid solver and live loops (bench/gpu_solver.sh)"
+timeout 420 bench/gpu_solver.sh "$bin" "$out/solver" >"$out/solver.log" 2>&1
+cat "$out/solver/summary.txt" 2>/dev/null | tee -a "$summary"
+grep -E "^BM_" "$out/solver.log" | tee -a "$summary"
+
+echo
+echo "=== summary ($summary) ==="
+cat "$summary"
