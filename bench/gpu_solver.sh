@@ -2,9 +2,10 @@
 # The fluid solver's GPU-dependent figures in one run (docs/benchmarks-gpu-solver.md):
 # ms per step on both backends at 64³, 128³ and 256³ (bench_fluid_step), and
 # the live frame rate of heat_shimmer with its solver at 128³ and 256³ on
-# each backend and of pool_caustics. Run from the repository root after
-# `./dev.sh test` (or a release build); on a machine without a GPU it
-# measures llvmpipe, as the development machine's figures do.
+# each backend and of pool_caustics with its water on each device. Run from
+# the repository root after `./dev.sh test` (or a release build); on a
+# machine without a GPU it measures llvmpipe, as the development machine's
+# figures do.
 #   bench/gpu_solver.sh [BUILD_DIR] [OUT_DIR]
 set -euo pipefail
 build=${1:-build/release}
@@ -31,5 +32,8 @@ for resolution in 128 256; do
         echo "heat_shimmer, solver ${resolution}³ on the $device: $(frames_per_second "$run")" | tee -a "$out/summary.txt"
     done
 done
-"$build/eikon" run scenes/pool_caustics.json --frames 12 --quiet --force --out "$out/pool_caustics"
-echo "pool_caustics: $(frames_per_second "$out/pool_caustics")" | tee -a "$out/summary.txt"
+for device in gpu cpu; do
+    run="$out/pool_caustics_water_${device}"
+    "$build/eikon" run scenes/pool_caustics.json --frames 12 --quiet --force --out "$run" --set objects.0.device="$device"
+    echo "pool_caustics, water on the $device: $(frames_per_second "$run")" | tee -a "$out/summary.txt"
+done

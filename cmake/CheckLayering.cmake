@@ -25,7 +25,7 @@ set(rules
   "sim/voxelize|bridge/,sim/optics/"
   "sim/deform|bridge/,io/mesh/"
   "sim/volume|bridge/,io/vdb/,sim/optics/"
-  "sim/gpu|bridge/,sim/field/,sim/fluid/,gl/"
+  "sim/gpu|bridge/,sim/field/,sim/fluid/,sim/deform/,gl/"
   "gl|bridge/core/"
   "render/stages|bridge/,shaders/,gl/"
   "render/graph|bridge/,gl/,render/stages/"

@@ -114,8 +114,7 @@ SceneFields::~SceneFields() = default;
 
 std::string SceneFields::placeFluidSolver(bool hardwareGpu) {
     if (!fluid_) return "";
-    const SimDesc::Device device = scene_.sim->device;
-    if (device == SimDesc::Device::Gpu || (device == SimDesc::Device::Auto && hardwareGpu)) {
+    if (runsOnGpu(scene_.sim->device, hardwareGpu)) {
         auto backend = std::make_unique<gpu::GpuFluidBackend>(*fluid_);
         gpuSolver_ = backend.get();
         fluid_->attachDevice(std::move(backend));
@@ -123,6 +122,39 @@ std::string SceneFields::placeFluidSolver(bool hardwareGpu) {
                                                               fields_.referenceIndex);
     }
     return fluid_->deviceName();
+}
+
+std::string SceneFields::placeWater(bool hardwareGpu) {
+    const auto water = std::find_if(meshes_.begin(), meshes_.end(), [](const auto& mesh) { return mesh->shape.water(); });
+    if (water == meshes_.end()) return "";
+    const ObjectDesc& object = scene_.objects[(*water)->object];
+    if (!runsOnGpu(object.water.device, hardwareGpu)) return "cpu";
+    const std::string unfit = gpu::GpuWaterBody::unfit(scene_);
+    if (!unfit.empty()) {
+        if (object.water.device == ComputeDevice::Auto) return "cpu";
+        throw InputError(scene_.sourcePath + ": objects[" + std::to_string((*water)->object) + "].device",
+                         "\"cpu\" or \"auto\" (the water stays on the GPU only as the scene's only object, sharp, "
+                         "under no solver, volume, paint or field export)",
+                         "\"gpu\", but " + unfit);
+    }
+    FieldSet medium;
+    medium.grid = fields_.grid;
+    medium.referenceIndex = fields_.referenceIndex;
+    medium.deltaIndex.assign(fields_.grid.cellCount(), 0.0f);
+    fillMedium(scene_, medium, CellBox::whole(medium.grid));
+    const SharpMeshSurface& surface = *(*water)->surface;
+    gpuWater_ = std::make_unique<gpu::GpuWaterBody>(
+        object, *(*water)->shape.water(),
+        gpu::SharpSurfaceTopology{surface.bvh(), surface.cornerStart(), surface.cornerTriangles(),
+                                  SharpMeshSurface::creaseCosine()},
+        fields_, medium);
+    return "gpu";
+}
+
+std::string SceneFields::waterDevice() const {
+    if (gpuWater_) return "gpu";
+    const bool water = std::any_of(meshes_.begin(), meshes_.end(), [](const auto& mesh) { return mesh->shape.water(); });
+    return water ? "cpu" : "";
 }
 
 void SceneFields::writeFrameOnGpu(const gpu::OpticalTargets& targets) const {
@@ -184,6 +216,12 @@ void SceneFields::keepSharpCoverage(bool keep) {
     if (keep == keepSharpCoverage_) return;
     keepSharpCoverage_ = keep;
     if (!keep) return;
+    if (gpuWater_) {  // no step: the surface and its coverage at the current time
+        voxelizeMs_ += gpuWater_->advanceTo(time_, true).coverage;
+        if (fields_.hasExtinction()) ++fields_.extinctionVersion;
+        if (fields_.hasScattering()) ++fields_.scatteringVersion;
+        return;
+    }
     const auto start = std::chrono::steady_clock::now();
     for (auto& mesh : meshes_) {
         if (!mesh->coverageBehind) continue;
@@ -213,6 +251,18 @@ void SceneFields::advanceFrame() {
         volume_->advanceFrame();
     } else {
         time_ = static_cast<double>(++frame_) * scene_.frameTime;  // one rounding: no drift over frames
+    }
+    if (gpuWater_) {  // the scene's only object: nothing is left for the host
+        const gpu::GpuWaterBody::PassTimes times = gpuWater_->advanceTo(time_, keepSharpCoverage_);
+        deformMs_ = times.surface;
+        voxelizeMs_ = times.coverage;
+        recomputedCells_ = keepSharpCoverage_ ? static_cast<long long>(fields_.grid.cellCount()) : 0;
+        ++fields_.surfaceVersion;
+        if (keepSharpCoverage_) {
+            if (fields_.hasExtinction()) ++fields_.extinctionVersion;
+            if (fields_.hasScattering()) ++fields_.scatteringVersion;
+        }
+        return;
     }
     updateMeshes();
     if (fluid_ || volume_) {

@@ -17,6 +17,7 @@
 #include "sim/fluid/FluidSimulation.h"
 #include "sim/gpu/GpuFluidBackend.h"
 #include "sim/gpu/GpuOpticalMapping.h"
+#include "sim/gpu/GpuWaterBody.h"
 #include "sim/optics/OpticalMapping.h"
 #include "sim/volume/VolumeSequence.h"
 #include "sim/voxelize/Compositor.h"
@@ -62,6 +63,18 @@ public:
     // thread that will advance the frames. Returns where the solver runs:
     // "cpu", "gpu", or "" without a solver.
     std::string placeFluidSolver(bool hardwareGpu);
+    // Moves a water body onto the GPU (sim/gpu/GpuWaterBody.h) where its
+    // `device` asks for it ("gpu", or "auto" when `hardwareGpu`) and the
+    // scene allows it (GpuWaterBody::unfit; "gpu" where it does not is an
+    // InputError at the water's key path). Call once, before the first
+    // frame advances, with the renderer's context current on the thread
+    // that advances the frames. From then on its frames' surfaces and
+    // attenuation live in gpuWater()'s buffers, and fields() keeps frame 0's
+    // (apps/common/FrameSource.h renders from those buffers). Returns where
+    // the water runs: "cpu", "gpu", or "" without a water body.
+    std::string placeWater(bool hardwareGpu);
+    const gpu::GpuWaterBody* gpuWater() const { return gpuWater_.get(); }
+    std::string waterDevice() const;
     // Where the solver runs, and the bytes it moved between host and GPU
     // since the last call.
     std::string fluidDevice() const { return fluid_ ? fluid_->deviceName() : ""; }
@@ -116,6 +129,7 @@ private:
     std::unique_ptr<OpticalModel> fluidOptics_;  // the solver's scalars → δn, κ, σs
     gpu::GpuFluidBackend* gpuSolver_ = nullptr;  // the fluid's device, when it runs on the GPU
     std::unique_ptr<gpu::GpuOpticalMapping> gpuOptics_;
+    std::unique_ptr<gpu::GpuWaterBody> gpuWater_;  // the water body, when it runs on the GPU
     std::unique_ptr<VolumeSequence> volume_;
     std::vector<std::unique_ptr<MeshObject>> meshes_;
     double time_ = 0.0;  // without a fluid solver

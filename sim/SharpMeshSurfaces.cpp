@@ -55,6 +55,8 @@ void put(float* out, const glm::dvec3& v, float w) {
 
 }  // namespace
 
+double SharpMeshSurface::creaseCosine() { return std::cos(kCreaseDegrees * M_PI / 180.0); }
+
 SharpMeshSurface::SharpMeshSurface(const TriangleMesh& mesh) : bvh_(mesh) {
     EIKON_CHECK_MSG(bvh_.nodes().size() < kLargestIndex && mesh.triangles.size() < kLargestIndex,
                     "a sharp mesh of more than 2^24 triangles");
@@ -91,7 +93,7 @@ void SharpMeshSurface::write(const TriangleMesh& mesh, std::size_t root, std::si
         faceNormals[t] = unitNormal(mesh, static_cast<int>(t));
         angles[t] = cornerAngles(mesh, static_cast<int>(t));
     });
-    const double crease = std::cos(kCreaseDegrees * M_PI / 180.0);
+    const double crease = creaseCosine();
     const std::vector<int>& order = bvh_.order();
     tbb::parallel_for(std::size_t{0}, order.size(), [&](std::size_t slot) {
         const int t = order[slot];

@@ -26,11 +26,19 @@ namespace eikon::sim {
 class SharpMeshSurface {
 public:
     static constexpr double kCreaseDegrees = 50.0;
+    static double creaseCosine();  // cos kCreaseDegrees
 
     explicit SharpMeshSurface(const TriangleMesh& mesh);
 
     std::size_t nodeCount() const { return bvh_.nodes().size(); }
     std::size_t triangleCount() const { return bvh_.order().size(); }
+    // The tree (its topology: nodes' first and count, the leaf order), and
+    // the triangles at each vertex: those of vertex v are
+    // cornerTriangles()[cornerStart()[v] .. cornerStart()[v + 1]), for a
+    // refit elsewhere (sim/gpu/GpuWaterBody.h).
+    const TriangleBvh& bvh() const { return bvh_; }
+    const std::vector<int>& cornerStart() const { return cornerStart_; }
+    const std::vector<int>& cornerTriangles() const { return cornerTriangles_; }
 
     // Refits the tree to `mesh` (the topology it was built for) and writes
     // it: its root as node `root`, its other nodes from node `firstNode` on,
@@ -41,8 +49,6 @@ public:
 
 private:
     TriangleBvh bvh_;
-    // The triangles at each vertex: those of vertex v are
-    // cornerTriangles_[cornerStart_[v] .. cornerStart_[v + 1]).
     std::vector<int> cornerStart_;
     std::vector<int> cornerTriangles_;
 };

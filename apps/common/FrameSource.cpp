@@ -12,6 +12,8 @@ FrameSource::FrameSource(const Scene& scene, sim::SceneFields& fields, const ren
         renderer_ = std::make_unique<render::FrameRenderer>(scene, live_->ring(), options);
     } else {
         host_.time = fields.time();
+        host_.simulationDevice = fields.waterDevice();
+        if (fields.gpuWater()) host_.busBytes = fields.gpuWater()->setupBytes();
         host_.phases = fields.lastTimings();
         if (captureExportArrays_) captureForExport(fields_, host_);
         renderer_ = std::make_unique<render::FrameRenderer>(scene, fields.fields(), options);
@@ -27,7 +29,23 @@ void FrameSource::beginNext() {
 }
 
 render::FrameResult FrameSource::render() {
-    return live_ ? renderer_->render(live_->ring()) : renderer_->render(fields_.fields());
+    return live_ ? renderer_->render(live_->ring()) : renderer_->render(hostFields());
+}
+
+render::FieldUpload FrameSource::hostFields() const {
+    EIKON_CHECK_MSG(!live_, "a fluid solver's frames come through the ring");
+    render::FieldUpload upload = render::hostUpload(fields_.fields());
+    if (const sim::gpu::GpuWaterBody* water = fields_.gpuWater()) {
+        auto onGpu = [](const render::FieldSource& host, GLuint buffer) {
+            return host.floats ? render::FieldSource{nullptr, buffer, host.floats} : host;
+        };
+        upload.surfaceNodes = onGpu(upload.surfaceNodes, water->surfaceNodes().id());
+        upload.surfaceTriangles = onGpu(upload.surfaceTriangles, water->surfaceTriangles().id());
+        upload.extinction = onGpu(upload.extinction, water->extinction());
+        upload.scattering = onGpu(upload.scattering, water->scattering());
+        upload.anisotropy = onGpu(upload.anisotropy, water->anisotropy());
+    }
+    return upload;
 }
 
 const ProducedFrame& FrameSource::waitNext() {
@@ -42,6 +60,7 @@ void FrameSource::publishNext() {
     if (!fields_.changesOverTime()) return;
     const auto start = std::chrono::steady_clock::now();
     fields_.advanceFrame();
+    host_.busBytes = 0;  // a water body on the GPU moves nothing after its set-up
     host_.simulated = true;
     host_.simulateMs = millisecondsSince(start);
     host_.time = fields_.time();

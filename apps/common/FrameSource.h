@@ -5,7 +5,9 @@
 // while the current one renders (when pipelined) or after it. Any other
 // scene keeps its fields in host memory: a static scene is uploaded once,
 // moving meshes and water are recomputed where they moved and uploaded as
-// they change.
+// they change — except a water body the GPU simulates
+// (sim/gpu/GpuWaterBody.h), whose surface and attenuation come from its
+// own buffers and never cross the bus.
 //
 // One turn of a loop: beginNext() (when a next frame follows), render(),
 // waitNext(), write the current frame's outputs from currentViews(), then
@@ -40,6 +42,9 @@ public:
     void beginNext();
     // Renders the current frame.
     render::FrameResult render();
+    // The current frame's fields as a renderer takes them, for another
+    // renderer of the same scene (the viewer's preview); host fields only.
+    render::FieldUpload hostFields() const;
     // Ring: produces the next frame (not pipelined) or waits for it; its
     // production times. Host: nothing yet (the fields advance in publishNext).
     const ProducedFrame& waitNext();

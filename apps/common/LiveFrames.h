@@ -26,7 +26,7 @@ struct ProducedFrame {
     double writeFieldsMs = 0.0;
     std::uint64_t surfaceVersion = 0;  // of the sharp surfaces written into the slot
     std::vector<sim::PhaseTiming> phases;
-    std::string simulationDevice;     // where the fluid solver ran: "cpu" or "gpu"
+    std::string simulationDevice;     // where the fluid solver or the water ran: "cpu" or "gpu"
     // Bytes that crossed between host and GPU memory to make this frame: the
     // solver's own traffic and the optical fields written into the mapped ring slot.
     std::uint64_t busBytes = 0;

@@ -14,11 +14,12 @@ namespace {
 // the 256² of image-space scenes) and cost about half as much.
 constexpr int kPreviewCausticMapTexels = 128;
 
-// The scene's fields with its fluid solver placed (before the frame source
-// sizes its field ring for where the solver writes).
+// The scene's fields with its fluid solver and water placed (before the
+// frame source sizes its field ring for where the solver writes).
 std::unique_ptr<sim::SceneFields> placedFields(const Scene& scene, bool hardwareGpu) {
     auto fields = std::make_unique<sim::SceneFields>(scene);
     fields->placeFluidSolver(hardwareGpu);
+    fields->placeWater(hardwareGpu);
     return fields;
 }
 
@@ -50,7 +51,7 @@ render::FrameResult ViewerSession::renderImageSpacePreview(bool advance, int sca
     for (std::size_t i = 0; i < eikonal.scene().lights.size(); ++i)
         if (eikonal.scene().lights[i] != preview->scene().lights[i]) preview->setLight(i, eikonal.scene().lights[i]);
     preview->setExposure(eikonal.scene().render.exposureEv);
-    render::FrameResult result = preview->render(fields_->fields());
+    render::FrameResult result = preview->render(source_->hostFields());
     if (advance) {  // host fields only: a scene of surfaces has no fluid solver
         fields_->keepSharpCoverage(false);  // until an eikonal frame needs it again
         source_->beginNext();

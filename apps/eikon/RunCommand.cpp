@@ -89,6 +89,7 @@ int runCommand(const RunOptions& options) {
         // rank takes the GPU of its local rank where a machine has several.
         context = gl::createHeadlessContext(static_cast<unsigned>(ranks.localRank()));
         fields->placeFluidSolver(!context->info().rendersOnCpu());
+        fields->placeWater(!context->info().rendersOnCpu());
     });
     const int ownFrames =
         distribution == Distribution::Frames ? (options.frames + ranks.size() - 1) / ranks.size() : options.frames;

@@ -125,7 +125,8 @@
     X(kSharpBox, 1)                         \
     X(kSharpTriangles, 2)
 
-// Binding points of the fluid solver's GPU passes (sim/gpu, shaders/sim).
+// Binding points of the fluid solver's and the water surface's GPU passes
+// (sim/gpu, shaders/sim).
 // Every pass binds what it reads right before its dispatch, so these may
 // share numbers with the renderer's bindings. Fields are float32 in
 // GridField order (x fastest); the Krylov vectors and reduction results are
@@ -157,7 +158,26 @@
     X(kOpticsDye, 23)         /* buffer OpticsDye { float dye[]; }: on the solver grid */                         \
     X(kOpticsDeltaIndex, 24)  /* buffer OpticsDeltaIndex { float delta_index[]; }: δn on the render grid, written */ \
     X(kOpticsExtinction, 25)  /* buffer OpticsExtinction { float extinction[]; }: κ RGB per render cell, written */ \
-    X(kOpticsScattering, 26)  /* buffer OpticsScattering { float scattering[]; }: σs RGB per render cell, written */
+    X(kOpticsScattering, 26)  /* buffer OpticsScattering { float scattering[]; }: σs RGB per render cell, written */ \
+    X(kOpticsAnisotropy, 27)  /* buffer OpticsAnisotropy { float anisotropy[]; }: g per render cell, written */       \
+    X(kWaterHeight, 28)       /* buffer WaterHeight { double height[]; }: a water surface's h^n per node, m */        \
+    X(kWaterNextHeight, 29)   /* buffer WaterNextHeight { double next_height[]; }: h^{n+1}, written */              \
+    X(kWaterVelocity, 30)     /* buffer WaterVelocity { double velocity[]; }: v^{n−½} per node, m/s */             \
+    X(kWaterDrop, 31)         /* buffer WaterDrop { double dip[]; }: a drop's depth per node, m */                  \
+    X(kWaterVertices, 32)     /* buffer WaterVertices { dvec4 vertices[]; }: (x, y at rest, z, height node or −1) */ \
+    X(kWaterTriangles, 33)    /* buffer WaterTriangles { ivec4 triangles[]; }: the water mesh's corners */         \
+    X(kWaterSlots, 34)        /* buffer WaterSlots { int triangle_of_slot[]; }: the tree's leaf order */            \
+    X(kWaterCornerStart, 35)  /* buffer WaterCornerStart { int corner_start[]; }: per vertex, its first triangle */ \
+    X(kWaterCorners, 36)      /* buffer WaterCorners { int corner_triangles[]; }: the triangles at each vertex */   \
+    X(kWaterFaceNormals, 37)  /* buffer WaterFaceNormals { dvec4 face_normal[]; }: per triangle, unit */            \
+    X(kWaterFaceAngles, 38)   /* buffer WaterFaceAngles { dvec4 face_angles[]; }: per triangle, at its corners */   \
+    X(kWaterNodes, 39)        /* buffer WaterNodes { ivec4 tree_nodes[]; }: (slot, count, first, second) */         \
+    X(kWaterLevelNodes, 40)   /* buffer WaterLevelNodes { int level_nodes[]; }: the tree's nodes, deepest first */  \
+    X(kWaterSurfaceNodes, 41) /* buffer WaterSurfaceNodes { vec4 nodes[]; }: FieldSet's node layout, written */     \
+    X(kWaterSurfaceTriangles, 42) /* buffer WaterSurfaceTriangles { vec4 triangles[]; }: FieldSet's layout, written */ \
+    X(kWaterBaseExtinction, 43) /* buffer WaterBaseExtinction { float base_extinction[]; }: κ RGB under the water */ \
+    X(kWaterBaseScattering, 44) /* buffer WaterBaseScattering { float base_scattering[]; }: σs RGB under it */      \
+    X(kWaterBaseAnisotropy, 45) /* buffer WaterBaseAnisotropy { float base_anisotropy[]; }: g under it */
 
 // Every list above: the constants each shader program is given.
 #define EIKON_LAYOUT_SHADER_CONSTANTS(X) \

@@ -3,6 +3,8 @@
 // damped wave equation (docs/scene-format.md, "mesh" and "water").
 #pragma once
 
+#include "bridge/scene/ComputeDevice.h"
+
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -88,6 +90,10 @@ struct WaterDesc {
     unsigned seed = 1;
     std::vector<WaterDrop> drops;
     std::vector<WaterDisturbance> disturbances;
+    // Where the wave equation, the surface's triangles and its coverage are
+    // computed each frame (sim/gpu/GpuWaterBody.h: on the GPU when the water
+    // is the scene's only object, sharp, and no field is exported).
+    ComputeDevice device = ComputeDevice::Auto;
 };
 
 }  // namespace eikon

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "bridge/grid/GridSpec.h"
+#include "bridge/scene/ComputeDevice.h"
 #include "bridge/scene/ExportDesc.h"
 #include "bridge/scene/FloatImage.h"
 #include "bridge/scene/MeshObjectDesc.h"
@@ -254,10 +255,9 @@ struct SimDesc {
         double dye = 0.0;               // jet: dye concentration, >= 0
     };
 
-    // Where the substeps run: the CPU (TBB) or the GPU (OpenGL compute,
-    // sim/gpu); auto takes the GPU where the OpenGL renderer is a hardware
-    // GPU and the CPU under a software rasterizer (docs/benchmarks-gpu-solver.md).
-    enum class Device { Auto, Cpu, Gpu } device = Device::Auto;
+    // Where the substeps run (ComputeDevice.h).
+    using Device = ComputeDevice;
+    Device device = Device::Auto;
     glm::ivec3 resolution{32, 32, 32};  // solver cells per axis, each >= 1
     std::optional<BoxShape> bounds;     // metres; absent: the render grid's bounds
     double frameTime = 1.0 / 30.0;      // s of simulated time per rendered frame, > 0

@@ -1,5 +1,7 @@
 #include "io/scene/MeshObjectParser.h"
 
+#include "io/scene/ComputeDeviceParser.h"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -162,6 +164,7 @@ WaterDesc readWater(const JsonObjectReader& fields) {
             if (auto v = d.optional("radius")) mover.radius = v->number(kPositive);
             water.disturbances.push_back(mover);
         }
+    if (auto v = fields.optional("device")) water.device = readComputeDevice(*v);
     return water;
 }
 
@@ -187,8 +190,8 @@ ObjectDesc readMeshOrWaterObject(const JsonReader& node, const std::string& type
         readProperties(fields, object);
     } else {
         const auto fields = node.object({"type", "basin", "cells", "wave_speed", "damping", "swell", "drops",
-                                         "disturbances", "index", "extinction", "scattering", "anisotropy", "surface",
-                                         "fresnel"});
+                                         "disturbances", "device", "index", "extinction", "scattering", "anisotropy",
+                                         "surface", "fresnel"});
         object.kind = ObjectDesc::Kind::Water;
         object.water = readWater(fields);
         readProperties(fields, object);

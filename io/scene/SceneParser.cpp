@@ -9,6 +9,7 @@
 #include "io/scene/JsonReader.h"
 #include "io/scene/MeshObjectParser.h"
 #include "io/scene/PaintParser.h"
+#include "io/scene/ComputeDeviceParser.h"
 #include "io/scene/RenderMethodParser.h"
 
 #include <glm/geometric.hpp>
@@ -504,10 +505,7 @@ SimDesc readSim(const JsonReader& node) {
         sim.thermalDiffusivity = 1.43e-7;
         sim.concentrationDiffusivity = 5.2e-10;  // sucrose in water
     }
-    if (auto device = fields.optional("device")) {
-        const std::string name = device->oneOf({"auto", "cpu", "gpu"});
-        sim.device = name == "cpu" ? SimDesc::Device::Cpu : name == "gpu" ? SimDesc::Device::Gpu : SimDesc::Device::Auto;
-    }
+    if (auto device = fields.optional("device")) sim.device = readComputeDevice(*device);
     if (auto resolution = fields.optional("resolution")) {
         sim.resolution = resolution->ivec3(1, static_cast<int>(kMaxGridCells));
         const double cells = static_cast<double>(sim.resolution.x) * sim.resolution.y * sim.resolution.z;

@@ -86,6 +86,9 @@ public:
     FrameResult render(const FieldSet& fields);
     // Renders the ring's current slot (no host copy) and fences it.
     FrameResult render(FieldRing& ring);
+    // Renders fields from host memory or GL buffers (a simulation on the GPU
+    // that writes its own: sim/gpu/GpuWaterBody.h).
+    FrameResult render(const FieldUpload& fields) { return render(fields, nullptr); }
     void setCamera(const CameraDesc& camera);
     // Moves or re-powers light `index` of the scene: photons are traced anew.
     void setLight(std::size_t index, const LightDesc& light);

@@ -369,6 +369,35 @@ TEST_F(Cli, SolverOnTheGpuRendersTheCpuBackendsFrames) {
         EXPECT_EQ(fileBytes(cpu / "frames" / frame), fileBytes(gpu / "frames" / frame)) << frame;
 }
 
+// A water body's device "gpu" steps its wave equation, writes its surface
+// and paints its attenuation as compute passes (llvmpipe here): after the
+// first frame nothing crosses the bus, where the host path uploads the
+// repainted band of κ and the water's triangles, and the frames are the
+// host path's, byte for byte — eikonal (coverage kept) and image space.
+TEST_F(Cli, WaterOnTheGpuRendersTheHostPathsFrames) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/pool_caustics.json";
+    const std::string small = " --frames 3 --quiet --set grid.resolution=[32,16,32] --set objects.0.cells=[48,48]"
+                              " --set render.width=48 --set render.height=36 --set render.photons=16384";
+    for (const char* method : {"eikonal", "image_space"}) {
+        const fs::path cpu = dir_ / (std::string(method) + "_cpu"), gpu = dir_ / (std::string(method) + "_gpu");
+        const std::string common = small + " --set render.method=" + method;
+        ASSERT_EQ(runEikon("run " + scene + " --out " + cpu.string() + common + " --set objects.0.device=cpu").exitCode, 0);
+        const Outcome onGpu = runEikon("run " + scene + " --out " + gpu.string() + common + " --set objects.0.device=gpu");
+        ASSERT_EQ(onGpu.exitCode, 0) << onGpu.output;
+        const auto cpuReport = readReport(cpu / "report.jsonl");
+        const auto gpuReport = readReport(gpu / "report.jsonl");
+        ASSERT_EQ(gpuReport.size(), 3u);
+        for (std::size_t frame = 1; frame < gpuReport.size(); ++frame) {
+            EXPECT_EQ(gpuReport[frame]["simulation_device"], "gpu") << method;
+            EXPECT_EQ(cpuReport[frame]["simulation_device"], "cpu") << method;
+            EXPECT_GT(cpuReport[frame]["bus_bytes"].get<std::size_t>(), 0u) << method;
+            EXPECT_EQ(gpuReport[frame]["bus_bytes"].get<std::size_t>(), 0u) << method;
+        }
+        for (const char* frame : {"frame_00000.png", "frame_00001.png", "frame_00002.png"})
+            EXPECT_EQ(fileBytes(cpu / "frames" / frame), fileBytes(gpu / "frames" / frame)) << method << " " << frame;
+    }
+}
+
 TEST_F(Cli, RefusesEarlierRunUnlessForced) {
     const std::string scene = writeScene("ok.json", validScene());
     const std::string out = (dir_ / "out").string();

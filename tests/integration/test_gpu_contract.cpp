@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/ext/vector_double4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -114,6 +115,25 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"OpticsDeltaIndex", {layout::kOpticsDeltaIndex, 0, sizeof(float)}},
         {"OpticsExtinction", {layout::kOpticsExtinction, 0, sizeof(float)}},
         {"OpticsScattering", {layout::kOpticsScattering, 0, sizeof(float)}},
+        {"OpticsAnisotropy", {layout::kOpticsAnisotropy, 0, sizeof(float)}},
+        {"WaterHeight", {layout::kWaterHeight, 0, sizeof(double)}},
+        {"WaterNextHeight", {layout::kWaterNextHeight, 0, sizeof(double)}},
+        {"WaterVelocity", {layout::kWaterVelocity, 0, sizeof(double)}},
+        {"WaterDrop", {layout::kWaterDrop, 0, sizeof(double)}},
+        {"WaterVertices", {layout::kWaterVertices, 0, sizeof(glm::dvec4)}},
+        {"WaterTriangles", {layout::kWaterTriangles, 0, sizeof(glm::ivec4)}},
+        {"WaterSlots", {layout::kWaterSlots, 0, sizeof(int)}},
+        {"WaterCornerStart", {layout::kWaterCornerStart, 0, sizeof(int)}},
+        {"WaterCorners", {layout::kWaterCorners, 0, sizeof(int)}},
+        {"WaterFaceNormals", {layout::kWaterFaceNormals, 0, sizeof(glm::dvec4)}},
+        {"WaterFaceAngles", {layout::kWaterFaceAngles, 0, sizeof(glm::dvec4)}},
+        {"WaterNodes", {layout::kWaterNodes, 0, sizeof(glm::ivec4)}},
+        {"WaterLevelNodes", {layout::kWaterLevelNodes, 0, sizeof(int)}},
+        {"WaterSurfaceNodes", {layout::kWaterSurfaceNodes, 0, sizeof(glm::vec4)}},
+        {"WaterSurfaceTriangles", {layout::kWaterSurfaceTriangles, 0, sizeof(glm::vec4)}},
+        {"WaterBaseExtinction", {layout::kWaterBaseExtinction, 0, sizeof(float)}},
+        {"WaterBaseScattering", {layout::kWaterBaseScattering, 0, sizeof(float)}},
+        {"WaterBaseAnisotropy", {layout::kWaterBaseAnisotropy, 0, sizeof(float)}},
     };
     return rows;
 }
@@ -258,6 +278,15 @@ std::vector<Variant> productionVariants() {
          {{"EIKON_LIQUID", "1"}, {"EIKON_LORENTZ_LORENZ", "1"}, {"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}}},
         {"sim/optical_mapping.comp",
          {{"EIKON_LIQUID", "0"}, {"EIKON_LORENTZ_LORENZ", "0"}, {"EIKON_HAS_EXTINCTION", "0"}, {"EIKON_HAS_SCATTERING", "0"}}},
+        {"sim/water_step.comp", {{"EIKON_PASS", "0"}, {"EIKON_MAX_WATER_MOVERS", "8"}}},
+        {"sim/water_step.comp", {{"EIKON_PASS", "1"}, {"EIKON_MAX_WATER_MOVERS", "8"}}},
+        {"sim/water_surface.comp", {{"EIKON_PASS", "0"}}},
+        {"sim/water_surface.comp", {{"EIKON_PASS", "1"}}},
+        {"sim/water_surface.comp", {{"EIKON_PASS", "2"}}},
+        {"sim/water_coverage.comp",
+         {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_SCATTERING", "1"}, {"EIKON_HAS_ANISOTROPY", "1"}}},
+        {"sim/water_coverage.comp",
+         {{"EIKON_HAS_EXTINCTION", "0"}, {"EIKON_HAS_SCATTERING", "0"}, {"EIKON_HAS_ANISOTROPY", "0"}}},
     };
 }
 

@@ -92,7 +92,10 @@ TEST(SceneParserMesh, ParsesWaterWithDefaultsAndInputs) {
     EXPECT_EQ(w.drops[0].position, glm::dvec2(0.1, 0.2));
     ASSERT_EQ(w.disturbances.size(), 1u);
     EXPECT_EQ(w.disturbances[0].until, 1.0);
+    EXPECT_EQ(w.device, ComputeDevice::Auto);
     EXPECT_EQ(scene.frameTime, 0.05);
+    water["device"] = "gpu";
+    EXPECT_EQ(parseScene(sceneWithObject(water), "test.json").objects[0].water.device, ComputeDevice::Gpu);
 }
 
 TEST(SceneParserMesh, BadValuesNameTheirJsonPath) {
@@ -115,6 +118,9 @@ TEST(SceneParserMesh, BadValuesNameTheirJsonPath) {
     water["cells"] = {8, 8};
     water["drops"] = {{{"time", 0}, {"position", {1, 2, 3}}}};
     expectErrorAt(sceneWithObject(water), "objects[0].drops[0].position", "2 numbers");
+    water.erase("drops");
+    water["device"] = "tpu";
+    expectErrorAt(sceneWithObject(water), "objects[0].device", "one of");
 
     json withSim = validScene();
     withSim["sim"] = json::object();
