@@ -67,6 +67,7 @@ void drawFigures(const render::FrameResult& last, const ViewerStatus& status) {
         ImGui::Text("full image");
     if (status.simulated) ImGui::Text("simulated time %.3f s", status.simulatedTime);
     if (!status.solverDevice.empty()) ImGui::Text("fluid solver on the %s", status.solverDevice == "gpu" ? "GPU" : "CPU");
+    if (!status.waterDevice.empty()) ImGui::Text("water surface on the %s", status.waterDevice == "gpu" ? "GPU" : "CPU");
     for (const auto& stage : last.stages)
         ImGui::Text("%-15s %s %8.1f ms", stage.name.c_str(), stage.ran ? "ran " : "kept", stage.milliseconds);
     ImGui::Text("energy balance error %.2e", last.photons.balanceError());

@@ -26,6 +26,7 @@ struct ViewerStatus {
     bool pipelined = false;
     double simulatedTime = 0.0;
     std::string solverDevice;  // where the fluid solver runs: "cpu", "gpu", or "" without one
+    std::string waterDevice;   // where a water body's frames are made: "cpu", "gpu", or "" without one
     double framesPerSecond = 0.0;
     long long photonsInUse = 0;
     bool imageSpacePreview = false;  // on screen: the image-space preview of an eikonal scene

@@ -108,6 +108,7 @@ public:
             status_.simulated = session_->simulated();
             status_.simulatedTime = session_->simulatedTime();
             status_.solverDevice = session_->solverDevice();
+            status_.waterDevice = session_->waterDevice();
             status_.photonsInUse = photons_;
             status_.imageSpacePreview = imageSpacePreview;
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);

@@ -30,6 +30,7 @@ public:
     bool simulated() const { return fields_->changesOverTime(); }
     double simulatedTime() const { return source_->current().time; }
     std::string solverDevice() const { return fields_->fluidDevice(); }
+    std::string waterDevice() const { return fields_->waterDevice(); }
 
     // Renders the current frame; with `advance`, a simulated scene moves on
     // one frame (simulated during the render when `pipelined`).
