@@ -313,10 +313,18 @@ void SceneFields::refreshFromSimulation() {
     validateFields(fields_, volume_ ? volume_->currentFile() : scene_.sourcePath);
 }
 
-std::vector<NamedArray> SceneFields::exportArrays() const {
+std::vector<NamedArray> SceneFields::exportArrays(const std::vector<std::string>& names) const {
     if (volume_) return volume_->exportArrays();
     if (!fluid_) return {};
-    return solverArrays(fluid_->state(), fields_.grid, *scene_.sim);
+    auto wants = [&](const char* name) {
+        return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
+    };
+    // The const state(): reading it must not mark the host copy newer (a
+    // solver on the GPU would take the whole state back before its next substep).
+    const FluidSimulation& fluid = *fluid_;
+    if (wants("velocity")) return solverArrays(fluid.state(), fields_.grid, *scene_.sim, names);
+    if (!wants("temperature") && !wants("concentration") && !wants("dye")) return {};
+    return solverArrays(fluid.scalarState(), fields_.grid, *scene_.sim, names);
 }
 
 CoverageGrids SceneFields::coverageGrids() const {

@@ -100,8 +100,10 @@ public:
     std::vector<PhaseTiming> lastTimings() const;
     // The simulation's own fields on the render grid, for export (empty for a
     // static scene): velocity, temperature, concentration, dye; a volume's
-    // density, temperature, flame, velocity.
-    std::vector<NamedArray> exportArrays() const;
+    // density, temperature, flame, velocity. A fluid solver's are only those
+    // `names` lists (empty: all), and a solver on the GPU reads back only
+    // what they need (the scalars alone unless the velocity is asked for).
+    std::vector<NamedArray> exportArrays(const std::vector<std::string>& names = {}) const;
     // This frame's mesh of every mesh or water object, in scene order.
     std::vector<const TriangleMesh*> deformedMeshes() const;
 

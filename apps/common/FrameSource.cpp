@@ -5,17 +5,17 @@
 namespace eikon::app {
 
 FrameSource::FrameSource(const Scene& scene, sim::SceneFields& fields, const render::RendererOptions& options,
-                         bool pipelined, bool captureExportArrays)
-    : fields_(fields), captureExportArrays_(captureExportArrays) {
+                         bool pipelined, ExportNeeds exports)
+    : fields_(fields), exports_(std::move(exports)) {
     if (fields.simulatesFluid()) {
-        live_ = std::make_unique<LiveFrames>(fields, pipelined, captureExportArrays);
+        live_ = std::make_unique<LiveFrames>(fields, pipelined, exports_);
         renderer_ = std::make_unique<render::FrameRenderer>(scene, live_->ring(), options);
     } else {
         host_.time = fields.time();
         host_.simulationDevice = fields.waterDevice();
         if (fields.gpuWater()) host_.busBytes = fields.gpuWater()->setupBytes();
         host_.phases = fields.lastTimings();
-        if (captureExportArrays_) captureForExport(fields_, host_);
+        if (exports_.exportsFrame(0)) captureForExport(fields_, exports_, host_);
         renderer_ = std::make_unique<render::FrameRenderer>(scene, fields.fields(), options);
     }
 }
@@ -65,7 +65,7 @@ void FrameSource::publishNext() {
     host_.simulateMs = millisecondsSince(start);
     host_.time = fields_.time();
     host_.phases = fields_.lastTimings();
-    if (captureExportArrays_) captureForExport(fields_, host_);
+    if (exports_.exportsFrame(++hostFrame_)) captureForExport(fields_, exports_, host_);
 }
 
 void FrameSource::seekFrame(int frame) {
@@ -76,13 +76,14 @@ void FrameSource::seekFrame(int frame) {
     host_.simulateMs = millisecondsSince(start);
     host_.time = fields_.time();
     host_.phases = fields_.lastTimings();
-    if (captureExportArrays_) captureForExport(fields_, host_);
+    hostFrame_ = frame;
+    if (exports_.exportsFrame(frame)) captureForExport(fields_, exports_, host_);
 }
 
 const ProducedFrame& FrameSource::current() const { return live_ ? live_->current() : host_; }
 
 ConstFieldViews FrameSource::currentViews() const {
-    return live_ ? live_->ring().currentViews() : viewsOf(fields_.fields());
+    return live_ ? live_->currentViews() : viewsOf(fields_.fields());
 }
 
 }  // namespace eikon::app

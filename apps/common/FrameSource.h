@@ -27,10 +27,10 @@ namespace eikon::app {
 
 class FrameSource {
 public:
-    // With `captureExportArrays`, each frame keeps what export reads of it
-    // (the solver's own fields and the deformed meshes) as it was produced.
+    // Each frame `exports` exports keeps what export reads of it (the
+    // solver's own fields it asks for, the deformed meshes) as it was produced.
     FrameSource(const Scene& scene, sim::SceneFields& fields, const render::RendererOptions& options,
-                bool pipelined, bool captureExportArrays);
+                bool pipelined, ExportNeeds exports);
 
     render::FrameRenderer& renderer() { return *renderer_; }
     const render::FrameRenderer& renderer() const { return *renderer_; }
@@ -63,7 +63,8 @@ public:
 
 private:
     sim::SceneFields& fields_;
-    bool captureExportArrays_;
+    ExportNeeds exports_;
+    int hostFrame_ = 0;                 // the frame the host fields hold
     std::unique_ptr<LiveFrames> live_;  // a fluid solver's frames, through the ring
     ProducedFrame host_;                // otherwise: what produced the host fields
     std::unique_ptr<render::FrameRenderer> renderer_;

@@ -2,7 +2,10 @@
 
 #include "bridge/core/Error.h"
 
+#include <algorithm>
 #include <array>
+#include <memory>
+#include <utility>
 
 namespace eikon::app {
 
@@ -10,25 +13,82 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void captureForExport(const sim::SceneFields& fields, ProducedFrame& frame) {
-    frame.exportArrays = fields.exportArrays();
+ExportNeeds::ExportNeeds(const ExportDesc& exports) {
+    for (const ExportSelection* selection : {static_cast<const ExportSelection*>(&exports.vtk),
+                                             static_cast<const ExportSelection*>(&exports.vdb)}) {
+        if (!selection->enabled) continue;
+        selections_.push_back(*selection);
+        all_ = all_ || selection->fields.empty();
+        for (const std::string& name : selection->fields)
+            if (std::find(names_.begin(), names_.end(), name) == names_.end()) names_.push_back(name);
+    }
+    if (all_) names_.clear();
+}
+
+bool ExportNeeds::exportsFrame(int frame) const {
+    return std::any_of(selections_.begin(), selections_.end(),
+                       [&](const ExportSelection& selection) { return selection.exportsFrame(frame); });
+}
+
+bool ExportNeeds::wants(const std::string& name) const {
+    return any() && (all_ || std::find(names_.begin(), names_.end(), name) != names_.end());
+}
+
+void captureForExport(const sim::SceneFields& fields, const ExportNeeds& needs, ProducedFrame& frame) {
+    frame.exportArrays = fields.exportArrays(needs.names());
     frame.meshes.clear();
     for (const TriangleMesh* mesh : fields.deformedMeshes()) frame.meshes.push_back(*mesh);
 }
 
-LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays)
+LiveFrames::LiveFrames(sim::SceneFields& fields, bool pipelined, ExportNeeds exports)
     : fields_(fields),
       pipelined_(pipelined),
-      captureExportArrays_(captureExportArrays),
-      fieldsOnGpu_(fields.mapsOnGpu() && !captureExportArrays),
+      exports_(std::move(exports)),
+      fieldsOnGpu_(fields.mapsOnGpu()),
       ring_(fields.fields(), 2, fieldsOnGpu_ ? render::FieldRingMemory::Device : render::FieldRingMemory::Mapped) {
     const auto start = std::chrono::steady_clock::now();
     writeFields(ring_.acquire());
     current_.time = fields_.time();
     current_.surfaceVersion = fields_.fields().surfaceVersion;
-    if (captureExportArrays_) captureForExport(fields_, current_);
+    current_.busBytes = captureExport(0, current_);
     current_.writeFieldsMs = millisecondsSince(start);
     ring_.publish(version_, version_, version_, current_.surfaceVersion);
+}
+
+std::uint64_t LiveFrames::captureExport(int frame, ProducedFrame& produced) {
+    if (!exports_.exportsFrame(frame)) return 0;
+    captureForExport(fields_, exports_, produced);
+    if (!fieldsOnGpu_) return 0;  // the mapped slot is read in place
+    // The optical fields the export reads, from the acquired slot in GPU memory.
+    auto copy = std::make_shared<FieldSet>();
+    const FieldSet& layout = fields_.fields();
+    copy->grid = layout.grid;
+    copy->referenceIndex = layout.referenceIndex;
+    const std::array<GLuint, 3> buffers = ring_.acquiredDeviceBuffers();
+    std::uint64_t bytes = 0;
+    auto readBack = [&](GLuint buffer, std::size_t floats, bool wanted, std::vector<float>& into) {
+        into.assign(floats, 0.0f);  // present (zero) where not exported: the views keep the layout
+        if (!wanted || !buffer || floats == 0) return;
+        glGetNamedBufferSubData(buffer, 0, static_cast<GLsizeiptr>(floats * sizeof(float)), into.data());
+        bytes += floats * sizeof(float);
+    };
+    readBack(buffers[0], layout.deltaIndex.size(), exports_.wants("index") || exports_.wants("delta_index"),
+             copy->deltaIndex);
+    readBack(buffers[1], layout.extinction.size(), exports_.wants("extinction"), copy->extinction);
+    readBack(buffers[2], layout.scattering.size(), exports_.wants("scattering"), copy->scattering);
+    produced.exportedFields = std::move(copy);
+    return bytes;
+}
+
+ConstFieldViews LiveFrames::currentViews() const {
+    ConstFieldViews views = ring_.currentViews();
+    if (current_.exportedFields) {  // an exported frame whose slot is in GPU memory
+        const ConstFieldViews copy = viewsOf(*current_.exportedFields);
+        views.deltaIndex = copy.deltaIndex;
+        views.extinction = copy.extinction;
+        views.scattering = copy.scattering;
+    }
+    return views;
 }
 
 LiveFrames::~LiveFrames() {
@@ -46,6 +106,7 @@ void LiveFrames::writeFields(const FieldViews& slot) {
 
 ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     ProducedFrame frame;
+    const int index = ++producedFrame_;
     frame.simulated = true;
     auto start = std::chrono::steady_clock::now();
     fields_.simulateFrame();
@@ -56,11 +117,12 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     frame.time = fields_.time();
     frame.surfaceVersion = fields_.fields().surfaceVersion;
     frame.phases = fields_.lastTimings();
-    if (captureExportArrays_) captureForExport(fields_, frame);
+    const std::uint64_t exportedBytes = captureExport(index, frame);
     frame.simulationDevice = fields_.fluidDevice();
     const std::size_t ringFloats = slot.deltaIndex.size() + slot.extinction.size() + slot.scattering.size() +
                                    slot.anisotropy.size() + slot.surfaceNodes.size() + slot.surfaceTriangles.size();
-    frame.busBytes = fields_.takeFluidBusBytes() + ringFloats * sizeof(float);  // after the export's reads, which count too
+    // After the export's reads, which count too.
+    frame.busBytes = fields_.takeFluidBusBytes() + ringFloats * sizeof(float) + exportedBytes;
     return frame;
 }
 

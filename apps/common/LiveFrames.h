@@ -6,12 +6,14 @@
 // its frames into slots in GPU memory instead, on the GL thread.
 #pragma once
 
+#include "bridge/scene/ExportDesc.h"
 #include "render/stages/FieldRing.h"
 #include "sim/SceneFields.h"
 
 #include <chrono>
 #include <cstdint>
 #include <future>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,24 +34,51 @@ struct ProducedFrame {
     std::uint64_t busBytes = 0;
     std::vector<NamedArray> exportArrays;  // the solver's own fields, when captured for export
     std::vector<TriangleMesh> meshes;          // the deformed meshes, when captured for export
+    // The optical fields the export reads, copied back from a slot in GPU
+    // memory (null otherwise: the ring's mapped slot is read in place).
+    std::shared_ptr<const FieldSet> exportedFields;
+};
+
+// What a run exports, frame by frame: which frames, and which of the
+// solver's arrays and the optical fields.
+class ExportNeeds {
+public:
+    ExportNeeds() = default;  // nothing
+    explicit ExportNeeds(const ExportDesc& exports);
+
+    bool any() const { return selections_.size() > 0; }
+    bool exportsFrame(int frame) const;
+    bool wants(const std::string& name) const;
+    // The names to hand SceneFields::exportArrays (empty: all).
+    const std::vector<std::string>& names() const { return names_; }
+
+private:
+    std::vector<ExportSelection> selections_;  // the enabled ones
+    std::vector<std::string> names_;
+    bool all_ = false;
 };
 
 // Wall time since `start`, in milliseconds (the frame loop's stage figures).
 double millisecondsSince(std::chrono::steady_clock::time_point start);
 
 // Copies what export reads of the frame `fields` now hold (the simulation's
-// own arrays and the deformed meshes) into `frame`.
-void captureForExport(const sim::SceneFields& fields, ProducedFrame& frame);
+// own arrays that `needs` asks for, and the deformed meshes) into `frame`.
+void captureForExport(const sim::SceneFields& fields, const ExportNeeds& needs, ProducedFrame& frame);
 
 class LiveFrames {
 public:
-    // Writes frame 0 into the ring and publishes it. GL thread. With
-    // `captureExportArrays`, each frame also keeps the solver's own fields
-    // (velocity, temperature, …) as they were when it was produced.
-    LiveFrames(sim::SceneFields& fields, bool pipelined, bool captureExportArrays = false);
+    // Writes frame 0 into the ring and publishes it. GL thread. Each frame
+    // `exports` exports also keeps what it asks of the solver's own fields
+    // (velocity, temperature, …) as they were when it was produced, and,
+    // where the slots live in GPU memory, a host copy of the optical fields
+    // it asks for; other frames read nothing back for export.
+    LiveFrames(sim::SceneFields& fields, bool pipelined, ExportNeeds exports = {});
     ~LiveFrames();
 
     render::FieldRing& ring() { return ring_; }
+    // The current frame's fields for its outputs: the ring's mapped slot, or
+    // the host copy of an exported frame whose slot is in GPU memory.
+    ConstFieldViews currentViews() const;
     // Takes effect at the next beginNext().
     void setPipelined(bool pipelined) { pipelined_ = pipelined; }
     const ProducedFrame& current() const { return current_; }
@@ -68,10 +97,13 @@ private:
 
     // Writes the slot's fields: on the host, or on the GPU (writeFrameOnGpu).
     void writeFields(const FieldViews& slot);
+    // What frame `frame` (its fields just written into the acquired slot)
+    // keeps for export, and the bytes read back for it.
+    std::uint64_t captureExport(int frame, ProducedFrame& produced);
 
     sim::SceneFields& fields_;
     bool pipelined_;
-    bool captureExportArrays_;
+    ExportNeeds exports_;
     // The solver and its optical mapping run on the GPU and write the ring's
     // device-memory slots; exports keep the mapped slots the host reads.
     bool fieldsOnGpu_;
@@ -80,6 +112,7 @@ private:
     std::future<ProducedFrame> pending_;
     ProducedFrame current_, produced_;
     std::uint64_t version_ = 1;
+    int producedFrame_ = 0;  // the frame the acquired slot holds or will hold
 };
 
 }  // namespace eikon::app

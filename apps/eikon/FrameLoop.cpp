@@ -121,7 +121,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
     }
     const bool pipelined = options.pipelined;
     FrameSource source(scene, fields, rendererOptions, pipelined,
-                       writes && (scene.exports.vtk.enabled || scene.exports.vdb.enabled));
+                       writes ? ExportNeeds(scene.exports) : ExportNeeds());
     std::optional<FrameOutputs> outputs;  // opened once frame 0 is rendered: its GPU resources all fit
     const bool simulated = fields.changesOverTime();
     PowerWarning warning;

@@ -34,8 +34,7 @@ void renderFrameShare(const Scene& scene, sim::SceneFields& fields, int frames,
                       const std::function<io::OutputFolder&()>& openOutput, ProgressBar& progress,
                       const std::filesystem::path& outputRoot) {
     Ranks& ranks = Ranks::world();
-    FrameSource source(scene, fields, rendererOptionsFor(scene), /*pipelined=*/false,
-                       scene.exports.vtk.enabled || scene.exports.vdb.enabled);
+    FrameSource source(scene, fields, rendererOptionsFor(scene), /*pipelined=*/false, ExportNeeds(scene.exports));
     std::optional<FrameOutputs> outputs;
     // Rank 0 opens the folder once its frame 0 is rendered; the others wait
     // for that before they write (one barrier, reached by every rank, even

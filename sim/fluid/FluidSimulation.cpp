@@ -232,6 +232,11 @@ void FluidSimulation::checkFinite(const std::string& phase, unsigned fields) con
     if (fields & kPressure) requireFinite(state_.pressure, "pressure", "cell", phase);
 }
 
+const FluidState& FluidSimulation::scalarState() const {
+    scalars();
+    return state_;
+}
+
 SolverScalars FluidSimulation::scalars() const {
     if (!hostScalarsCurrent_) {
         device_->downloadScalars(const_cast<FluidState&>(state_));

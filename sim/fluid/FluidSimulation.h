@@ -76,6 +76,10 @@ public:
     // first; the mutable one is taken back to the device before the next substep.
     FluidState& state();
     const FluidState& state() const;
+    // The host state with temperature, concentration and dye brought up to
+    // date, but not the velocity and pressure (which may lag an attached
+    // device): for reading the scalars alone without moving the rest.
+    const FluidState& scalarState() const;
 
 private:
     void substep(double dt);

@@ -2,6 +2,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+
 namespace eikon::sim {
 
 ConstantSolverFields solverArraysNeverChange(const SimDesc& desc) {
@@ -17,7 +19,12 @@ ConstantSolverFields solverArraysNeverChange(const SimDesc& desc) {
     return constant;
 }
 
-std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid, const SimDesc& desc) {
+std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid, const SimDesc& desc,
+                                     const std::vector<std::string>& names) {
+    auto wants = [&](const char* name) {
+        return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
+    };
+    const bool withVelocity = wants("velocity");
     const std::size_t cells = renderGrid.cellCount();
     const auto ambient = static_cast<float>(desc.ambientTemperature);
     NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f), {"m/s", ArrayRole::Velocity}};
@@ -32,8 +39,10 @@ std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& re
                 const glm::dvec3 x = renderGrid.cellCentre(i, j, k);
                 if (!flow.grid.contains(x)) continue;
                 const std::size_t cell = renderGrid.linearIndex(i, j, k);
-                const glm::dvec3 u = flow.velocityAt(x);
-                for (int a = 0; a < 3; ++a) velocity.values[3 * cell + a] = static_cast<float>(u[a]);
+                if (withVelocity) {
+                    const glm::dvec3 u = flow.velocityAt(x);
+                    for (int a = 0; a < 3; ++a) velocity.values[3 * cell + a] = static_cast<float>(u[a]);
+                }
                 temperature.values[cell] = static_cast<float>(sampleTrilinear(state.temperature, flow.lattice(state.temperature, x)));
                 concentration.values[cell] =
                     static_cast<float>(sampleTrilinear(state.concentration, flow.lattice(state.concentration, x)));
@@ -45,7 +54,10 @@ std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& re
     temperature.constant = constant.temperature;
     concentration.constant = constant.concentration;
     dye.constant = constant.dye;
-    return {std::move(velocity), std::move(temperature), std::move(concentration), std::move(dye)};
+    std::vector<NamedArray> arrays;
+    for (NamedArray* array : {&velocity, &temperature, &concentration, &dye})
+        if (wants(array->name.c_str())) arrays.push_back(std::move(*array));
+    return arrays;
 }
 
 }  // namespace eikon::sim

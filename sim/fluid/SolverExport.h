@@ -8,6 +8,7 @@
 #include "bridge/scene/Scene.h"
 #include "sim/fluid/FluidState.h"
 
+#include <string>
 #include <vector>
 
 namespace eikon::sim {
@@ -16,8 +17,11 @@ namespace eikon::sim {
 // faces), "temperature" (K), "concentration", "dye", trilinear at the render
 // cells' centres; render cells outside the solver box see the ambient fluid
 // at rest (the ambient temperature, no liquid B, no dye). An array no source
-// of `desc` can change is marked constant (solverArraysNeverChange).
-std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid, const SimDesc& desc);
+// of `desc` can change is marked constant (solverArraysNeverChange). Only
+// the arrays `names` lists are made (empty: all four); `state`'s velocity is
+// read only when "velocity" is among them.
+std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& renderGrid, const SimDesc& desc,
+                                     const std::vector<std::string>& names = {});
 
 // Which solver fields stay as they start — the ambient fluid at rest, no
 // liquid B, no dye — for the whole run: temperature without a hot plate

@@ -9,6 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkCellData.h>
+#include <vtkXMLImageDataReader.h>
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -21,6 +27,7 @@
 #include <fstream>
 #include <sstream>
 #include <iterator>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -301,6 +308,22 @@ std::vector<nlohmann::json> readReport(const fs::path& path) {
     return lines;
 }
 
+// Every cell-data array of a VTK ImageData file, by name, its components flattened.
+std::map<std::string, std::vector<double>> vtiArrays(const fs::path& path) {
+    vtkNew<vtkXMLImageDataReader> reader;
+    reader->SetFileName(path.string().c_str());
+    reader->Update();
+    std::map<std::string, std::vector<double>> arrays;
+    vtkCellData* cells = reader->GetOutput()->GetCellData();
+    for (int a = 0; a < cells->GetNumberOfArrays(); ++a) {
+        vtkDataArray* array = cells->GetArray(a);
+        std::vector<double>& values = arrays[array->GetName()];
+        for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+            for (int c = 0; c < array->GetNumberOfComponents(); ++c) values.push_back(array->GetComponent(t, c));
+    }
+    return arrays;
+}
+
 std::string fileBytes(const fs::path& path) {
     std::ifstream file(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
@@ -396,6 +419,67 @@ TEST_F(Cli, WaterOnTheGpuRendersTheHostPathsFrames) {
         for (const char* frame : {"frame_00000.png", "frame_00001.png", "frame_00002.png"})
             EXPECT_EQ(fileBytes(cpu / "frames" / frame), fileBytes(gpu / "frames" / frame)) << method << " " << frame;
     }
+}
+
+// With the solver on the GPU an export reads back only what it exports,
+// when it exports it: the frames between read back nothing for it, and an
+// exported frame only the fields listed (here the temperature: the solver's
+// scalars, not its velocity; and δn from the ring's slot in GPU memory).
+// The exported values are the CPU backend's to float rounding (1e-6 of the
+// largest; 9e-8 measured).
+TEST_F(Cli, ExportsOfASolverOnTheGpuReadBackOnlyWhatTheyExport) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string small = " --frames 5 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
+                              " --set render.width=48 --set render.height=36 --set export.vtk.enabled=true"
+                              " --set export.vtk.every=2 --set 'export.vtk.fields=[\"temperature\",\"delta_index\"]'";
+    const fs::path cpu = dir_ / "cpu", gpu = dir_ / "gpu";
+    ASSERT_EQ(runEikon("run " + scene + " --out " + cpu.string() + small + " --set sim.device=cpu").exitCode, 0);
+    const Outcome onGpu = runEikon("run " + scene + " --out " + gpu.string() + small + " --set sim.device=gpu");
+    ASSERT_EQ(onGpu.exitCode, 0) << onGpu.output;
+    const auto report = readReport(gpu / "report.jsonl");
+    ASSERT_EQ(report.size(), 5u);
+    const std::size_t deltaIndexBytes = 16u * 16u * 16u * sizeof(float);
+    const std::size_t scalarBytes = 3u * 12u * 24u * 12u * sizeof(float);  // temperature, concentration, dye
+    for (std::size_t frame = 2; frame < report.size(); ++frame) {
+        const auto bytes = report[frame]["bus_bytes"].get<std::size_t>();
+        if (frame % 2 == 1) {
+            EXPECT_LT(bytes, 4096u) << "frame " << frame << " exports nothing: only the stopping tests";
+        } else {
+            EXPECT_GE(bytes, deltaIndexBytes + scalarBytes) << "frame " << frame;
+            EXPECT_LT(bytes, deltaIndexBytes + scalarBytes + 4096u) << "frame " << frame << ": no velocity";
+        }
+    }
+    for (const char* file : {"fields_00000.vti", "fields_00002.vti", "fields_00004.vti"}) {
+        const auto onCpu = vtiArrays(cpu / "vtk" / file), onGpuArrays = vtiArrays(gpu / "vtk" / file);
+        ASSERT_EQ(onGpuArrays.size(), 2u) << file << ": temperature and delta_index only";
+        for (const auto& [name, values] : onCpu) {
+            ASSERT_TRUE(onGpuArrays.count(name)) << file << " " << name;
+            const std::vector<double>& other = onGpuArrays.at(name);
+            ASSERT_EQ(values.size(), other.size());
+            double largest = 0.0, difference = 0.0;
+            for (std::size_t i = 0; i < values.size(); ++i) {
+                largest = std::max(largest, std::abs(values[i]));
+                difference = std::max(difference, std::abs(values[i] - other[i]));
+            }
+            EXPECT_LE(difference, 1e-6 * largest) << file << " " << name;
+            ::testing::Test::RecordProperty(std::string(file) + "_" + name + "_relative_difference",
+                                            std::to_string(difference / largest));
+            std::printf("%s %s: largest difference %.3g of the largest value\n", file, name.c_str(), difference / largest);
+        }
+    }
+    EXPECT_FALSE(fs::exists(gpu / "vtk" / "fields_00001.vti"));
+
+    // Exporting the velocity takes the whole state down on the frames that
+    // export it, and leaves the GPU's copy current: nothing goes back up.
+    const fs::path velocity = dir_ / "velocity";
+    const std::string velocityOnly = " --frames 5 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
+                                     " --set render.width=48 --set render.height=36 --set export.vtk.enabled=true"
+                                     " --set export.vtk.every=2 --set 'export.vtk.fields=[\"velocity\"]'";
+    ASSERT_EQ(runEikon("run " + scene + " --out " + velocity.string() + velocityOnly + " --set sim.device=gpu").exitCode, 0);
+    const auto velocityReport = readReport(velocity / "report.jsonl");
+    ASSERT_EQ(velocityReport.size(), 5u);
+    EXPECT_GE(velocityReport[2]["bus_bytes"].get<std::size_t>(), scalarBytes) << "the state, scalars with it";
+    EXPECT_LT(velocityReport[3]["bus_bytes"].get<std::size_t>(), 4096u) << "no upload after the export's read";
 }
 
 TEST_F(Cli, RefusesEarlierRunUnlessForced) {
