@@ -8,9 +8,12 @@
 #  3. the multiple-scattering lattice, ms per converged frame and
 #     iterations at 64³ and 128³ (bench_lattice);
 #  4. the fluid solver on both backends and the live loops
-#     (bench/gpu_solver.sh).
+#     (bench/gpu_solver.sh);
+#  5. eikon accuracy --quick, image space's and the tracer's error against
+#     run time on the analytic cases.
 # Each step has a time limit, so one that hangs costs only its own share.
-# Results go to OUT_DIR; a summary is printed last.
+# Results go to OUT_DIR, and all but the pictures also to OUT_DIR.tar.gz; a
+# summary is printed last.
 #   bench/gpu_all.sh [--quick] [BIN_DIR] [OUT_DIR]
 # BIN_DIR holds eikon and the bench_ binaries: build/release, or the bin/ of
 # tools/bundle-release.sh's archive (with LD_LIBRARY_PATH at its lib/).
@@ -84,6 +87,17 @@ else
     note "(left out with --quick)"
 fi
 
+note "## accuracy against run time (eikon accuracy --quick; last, the one step that may run out of time)"
+if [ ${#quick[@]} -eq 0 ]; then
+    timeout 150 "$bin/eikon" accuracy --quick --out "$out/accuracy" >"$out/accuracy.log" 2>&1
+    note "eikon accuracy: exit $? (report in $out/accuracy)"
+else
+    note "(left out with --quick)"
+fi
+
+# Everything but the pictures in one archive, to carry off a borrowed machine.
+tar -czf "$out.tar.gz" -C "$(dirname "$out")" --exclude='*.png' --exclude='*.vti' --exclude='*.vtp' "$(basename "$out")"
+
 echo
-echo "=== summary ($summary) ==="
+echo "=== summary ($summary; reports and logs in $out.tar.gz) ==="
 cat "$summary"
