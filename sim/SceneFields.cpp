@@ -124,15 +124,20 @@ std::string SceneFields::placeFluidSolver(bool hardwareGpu) {
     return fluid_->deviceName();
 }
 
-std::string SceneFields::placeWater(bool hardwareGpu) {
+SceneFields::MeshObject* SceneFields::waterObject() const {
     const auto water = std::find_if(meshes_.begin(), meshes_.end(), [](const auto& mesh) { return mesh->shape.water(); });
-    if (water == meshes_.end()) return "";
-    const ObjectDesc& object = scene_.objects[(*water)->object];
+    return water == meshes_.end() ? nullptr : water->get();
+}
+
+std::string SceneFields::placeWater(bool hardwareGpu) {
+    MeshObject* const water = waterObject();
+    if (!water) return "";
+    const ObjectDesc& object = scene_.objects[water->object];
     if (!runsOnGpu(object.water.device, hardwareGpu)) return "cpu";
     const std::string unfit = gpu::GpuWaterBody::unfit(scene_);
     if (!unfit.empty()) {
         if (object.water.device == ComputeDevice::Auto) return "cpu";
-        throw InputError(scene_.sourcePath + ": objects[" + std::to_string((*water)->object) + "].device",
+        throw InputError(scene_.sourcePath + ": objects[" + std::to_string(water->object) + "].device",
                          "\"cpu\" or \"auto\" (the water stays on the GPU only as the scene's only object, sharp, "
                          "under no solver, volume, paint or field export)",
                          "\"gpu\", but " + unfit);
@@ -142,9 +147,9 @@ std::string SceneFields::placeWater(bool hardwareGpu) {
     medium.referenceIndex = fields_.referenceIndex;
     medium.deltaIndex.assign(fields_.grid.cellCount(), 0.0f);
     fillMedium(scene_, medium, CellBox::whole(medium.grid));
-    const SharpMeshSurface& surface = *(*water)->surface;
+    const SharpMeshSurface& surface = *water->surface;
     gpuWater_ = std::make_unique<gpu::GpuWaterBody>(
-        object, *(*water)->shape.water(),
+        object, *water->shape.water(),
         gpu::SharpSurfaceTopology{surface.bvh(), surface.cornerStart(), surface.cornerTriangles(),
                                   SharpMeshSurface::creaseCosine()},
         fields_, medium);
@@ -153,8 +158,7 @@ std::string SceneFields::placeWater(bool hardwareGpu) {
 
 std::string SceneFields::waterDevice() const {
     if (gpuWater_) return "gpu";
-    const bool water = std::any_of(meshes_.begin(), meshes_.end(), [](const auto& mesh) { return mesh->shape.water(); });
-    return water ? "cpu" : "";
+    return waterObject() ? "cpu" : "";
 }
 
 void SceneFields::writeFrameOnGpu(const gpu::OpticalTargets& targets) const {

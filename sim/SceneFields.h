@@ -119,6 +119,7 @@ public:
 
 private:
     struct MeshObject;
+    MeshObject* waterObject() const;  // the scene's water body, or null
     void updateMeshes();
     void publishSurface(MeshObject& mesh, bool moved);
     void repaintWhereMeshesChanged();

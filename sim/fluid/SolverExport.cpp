@@ -24,7 +24,8 @@ std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& re
     auto wants = [&](const char* name) {
         return names.empty() || std::find(names.begin(), names.end(), name) != names.end();
     };
-    const bool withVelocity = wants("velocity");
+    const bool withVelocity = wants("velocity"), withTemperature = wants("temperature"),
+               withConcentration = wants("concentration"), withDye = wants("dye");
     const std::size_t cells = renderGrid.cellCount();
     const auto ambient = static_cast<float>(desc.ambientTemperature);
     NamedArray velocity{"velocity", 3, std::vector<float>(3 * cells, 0.0f), {"m/s", ArrayRole::Velocity}};
@@ -43,10 +44,13 @@ std::vector<NamedArray> solverArrays(const FluidState& state, const GridSpec& re
                     const glm::dvec3 u = flow.velocityAt(x);
                     for (int a = 0; a < 3; ++a) velocity.values[3 * cell + a] = static_cast<float>(u[a]);
                 }
-                temperature.values[cell] = static_cast<float>(sampleTrilinear(state.temperature, flow.lattice(state.temperature, x)));
-                concentration.values[cell] =
-                    static_cast<float>(sampleTrilinear(state.concentration, flow.lattice(state.concentration, x)));
-                dye.values[cell] = static_cast<float>(sampleTrilinear(state.dye, flow.lattice(state.dye, x)));
+                if (withTemperature)
+                    temperature.values[cell] =
+                        static_cast<float>(sampleTrilinear(state.temperature, flow.lattice(state.temperature, x)));
+                if (withConcentration)
+                    concentration.values[cell] =
+                        static_cast<float>(sampleTrilinear(state.concentration, flow.lattice(state.concentration, x)));
+                if (withDye) dye.values[cell] = static_cast<float>(sampleTrilinear(state.dye, flow.lattice(state.dye, x)));
             }
     });
     const ConstantSolverFields constant = solverArraysNeverChange(desc);

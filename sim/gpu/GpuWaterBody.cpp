@@ -122,25 +122,29 @@ GpuWaterBody::GpuWaterBody(const ObjectDesc& object, const WaterSurface& water, 
     surfaceNodes_ = bufferOf(frame0.surfaceNodes, "the water's tree for the tracers", setupBytes_);
     surfaceTriangles_ = bufferOf(frame0.surfaceTriangles, "the water's triangles for the tracers", setupBytes_);
 
+    // κ, σs and g, each where the scene has it: the medium's values under
+    // the water (zero where the medium has none), and the painted ones.
     const std::size_t cells = grid_.cellCount();
-    if (frame0.hasExtinction()) {
-        baseExtinction_ = bufferOf(medium.hasExtinction() ? medium.extinction : std::vector<float>(3 * cells, 0.0f),
-                                   "the extinction under the water", setupBytes_);
-        extinction_ = gl::Buffer(3 * cells * sizeof(float), {"objects", "the water's extinction"});
+    auto paints = [&](PaintedField& field, bool present, const std::vector<float>& under, std::size_t perCell,
+                      const char* what, GLuint baseBinding, GLuint paintedBinding) {
+        if (!present) return;
+        field.base = bufferOf(under.empty() ? std::vector<float>(perCell * cells, 0.0f) : under, what, setupBytes_);
+        field.painted = gl::Buffer(perCell * cells * sizeof(float), {"objects", what});
+        field.baseBinding = baseBinding;
+        field.paintedBinding = paintedBinding;
+    };
+    paints(painted_[0], frame0.hasExtinction(), medium.extinction, 3, "the water's extinction",
+           layout::kWaterBaseExtinction, layout::kOpticsExtinction);
+    paints(painted_[1], frame0.hasScattering(), medium.scattering, 3, "the water's scattering",
+           layout::kWaterBaseScattering, layout::kOpticsScattering);
+    paints(painted_[2], frame0.hasAnisotropy(), medium.anisotropy, 1, "the water's anisotropy",
+           layout::kWaterBaseAnisotropy, layout::kOpticsAnisotropy);
+    if (frame0.hasExtinction())
         setDouble3(coverage_, "water_extinction", {material_.extinction.r, material_.extinction.g, material_.extinction.b});
-    }
-    if (frame0.hasScattering()) {
-        baseScattering_ = bufferOf(medium.hasScattering() ? medium.scattering : std::vector<float>(3 * cells, 0.0f),
-                                   "the scattering under the water", setupBytes_);
-        scattering_ = gl::Buffer(3 * cells * sizeof(float), {"objects", "the water's scattering"});
+    if (frame0.hasScattering())
         setDouble3(coverage_, "water_scattering", {material_.scattering.r, material_.scattering.g, material_.scattering.b});
-    }
-    if (frame0.hasAnisotropy()) {
-        baseAnisotropy_ = bufferOf(medium.hasAnisotropy() ? medium.anisotropy : std::vector<float>(cells, 0.0f),
-                                   "the anisotropy under the water", setupBytes_);
-        anisotropy_ = gl::Buffer(cells * sizeof(float), {"objects", "the water's anisotropy"});
+    if (frame0.hasAnisotropy())
         glProgramUniform1d(coverage_.id(), coverage_.uniform("water_anisotropy"), material_.anisotropy);
-    }
 
     // Uniforms that hold for every frame.
     const double dx = water.spacingX(), dz = water.spacingZ();
@@ -242,19 +246,13 @@ void GpuWaterBody::writeSurface() {
 }
 
 void GpuWaterBody::writeCoverage() {
-    if (!extinction_.id() && !scattering_.id() && !anisotropy_.id()) return;
+    if (std::none_of(painted_.begin(), painted_.end(), [](const PaintedField& field) { return field.painted.id(); }))
+        return;
     height_[current_].bindStorage(layout::kWaterHeight);
-    if (extinction_.id()) {
-        baseExtinction_.bindStorage(layout::kWaterBaseExtinction);
-        extinction_.bindStorage(layout::kOpticsExtinction);
-    }
-    if (scattering_.id()) {
-        baseScattering_.bindStorage(layout::kWaterBaseScattering);
-        scattering_.bindStorage(layout::kOpticsScattering);
-    }
-    if (anisotropy_.id()) {
-        baseAnisotropy_.bindStorage(layout::kWaterBaseAnisotropy);
-        anisotropy_.bindStorage(layout::kOpticsAnisotropy);
+    for (const PaintedField& field : painted_) {
+        if (!field.painted.id()) continue;
+        field.base.bindStorage(field.baseBinding);
+        field.painted.bindStorage(field.paintedBinding);
     }
     coverage_.use();
     coverage_.dispatchOverCells(grid_.resolution);

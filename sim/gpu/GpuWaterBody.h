@@ -72,9 +72,9 @@ public:
     // The outputs, in FieldSet's layouts (0 where the scene lacks the field).
     const gl::Buffer& surfaceNodes() const { return surfaceNodes_; }
     const gl::Buffer& surfaceTriangles() const { return surfaceTriangles_; }
-    GLuint extinction() const { return extinction_.id(); }
-    GLuint scattering() const { return scattering_.id(); }
-    GLuint anisotropy() const { return anisotropy_.id(); }
+    GLuint extinction() const { return painted_[0].painted.id(); }
+    GLuint scattering() const { return painted_[1].painted.id(); }
+    GLuint anisotropy() const { return painted_[2].painted.id(); }
 
     // The bytes its construction uploaded: the initial heights and the
     // tables of the surface and the medium (frame 0's share of the bus).
@@ -98,7 +98,12 @@ private:
         faceAngles_, treeNodes_, levelNodes_, surfaceNodes_, surfaceTriangles_;
     std::vector<gl::Buffer> drops_;
     std::vector<int> levelFirst_;  // level d's nodes: levelNodes_[levelFirst_[d] .. levelFirst_[d + 1])
-    gl::Buffer baseExtinction_, baseScattering_, baseAnisotropy_, extinction_, scattering_, anisotropy_;
+    // An attenuation field the water paints: the values under the water, and the painted ones.
+    struct PaintedField {
+        gl::Buffer base, painted;
+        GLuint baseBinding = 0, paintedBinding = 0;
+    };
+    std::array<PaintedField, 3> painted_;  // κ, σs, g
     std::uint64_t setupBytes_ = 0;
     int current_ = 0;  // height_[current_] holds h^n
     std::array<GLuint, 3> timestamps_{};  // before the steps, after the surface, after the coverage
