@@ -6,7 +6,7 @@
 // its frames into slots in GPU memory instead, on the GL thread.
 #pragma once
 
-#include "bridge/scene/ExportDesc.h"
+#include "apps/common/ExportNeeds.h"
 #include "render/stages/FieldRing.h"
 #include "sim/SceneFields.h"
 
@@ -37,25 +37,6 @@ struct ProducedFrame {
     // The optical fields the export reads, copied back from a slot in GPU
     // memory (null otherwise: the ring's mapped slot is read in place).
     std::shared_ptr<const FieldSet> exportedFields;
-};
-
-// What a run exports, frame by frame: which frames, and which of the
-// solver's arrays and the optical fields.
-class ExportNeeds {
-public:
-    ExportNeeds() = default;  // nothing
-    explicit ExportNeeds(const ExportDesc& exports);
-
-    bool any() const { return selections_.size() > 0; }
-    bool exportsFrame(int frame) const;
-    bool wants(const std::string& name) const;
-    // The names to hand SceneFields::exportArrays (empty: all).
-    const std::vector<std::string>& names() const { return names_; }
-
-private:
-    std::vector<ExportSelection> selections_;  // the enabled ones
-    std::vector<std::string> names_;
-    bool all_ = false;
 };
 
 // Wall time since `start`, in milliseconds (the frame loop's stage figures).
