@@ -65,7 +65,9 @@ void drawFigures(const render::FrameResult& last, const ViewerStatus& status) {
         ImGui::Text("preview: a ray per %d×%d pixels", last.pixelStride, last.pixelStride);
     else
         ImGui::Text("full image");
-    if (status.simulated) ImGui::Text("simulated time %.3f s", status.simulatedTime);
+    if (status.simulated)
+        ImGui::Text("simulated time %.3f s%s", status.simulatedTime,
+                    status.simulationHeld ? " (held while the camera moves)" : "");
     if (!status.solverDevice.empty()) ImGui::Text("fluid solver on the %s", status.solverDevice == "gpu" ? "GPU" : "CPU");
     if (!status.waterDevice.empty()) ImGui::Text("water surface on the %s", status.waterDevice == "gpu" ? "GPU" : "CPU");
     for (const auto& stage : last.stages)

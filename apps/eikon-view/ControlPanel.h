@@ -30,6 +30,7 @@ struct ViewerStatus {
     double framesPerSecond = 0.0;
     long long photonsInUse = 0;
     bool imageSpacePreview = false;  // on screen: the image-space preview of an eikonal scene
+    bool simulationHeld = false;     // this frame redrew the camera and held the simulation (SimulationPacer.h)
 };
 
 class ControlPanel {

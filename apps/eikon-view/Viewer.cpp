@@ -3,6 +3,7 @@
 #include "apps/eikon-view/CameraControls.h"
 #include "apps/eikon-view/ControlPanel.h"
 #include "apps/eikon-view/ImagePresenter.h"
+#include "apps/eikon-view/SimulationPacer.h"
 #include "apps/eikon-view/ViewPreview.h"
 #include "apps/eikon-view/ViewerSession.h"
 #include "bridge/core/Error.h"
@@ -49,6 +50,7 @@ public:
           window_(gl::createWindowContext(options.width, options.height, "eikon-view — " + options.scenePath)),
           panel_(scene_),
           preview_(PreviewSettings{options.previewViewMs}),
+          pacer_(options.cameraFrameMs),
           sceneTime_(modificationTime(options.scenePath)) {
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
@@ -79,7 +81,9 @@ public:
             const bool cameraMoved = handleInput();
             const double now = std::chrono::duration<double>(frameStart - viewerStart).count();
             const int stride = preview_.strideFor(cameraMoved, now);
-            const bool advance = session_->simulated() && (!paused_ || stepOnce_);
+            const bool previewing = stride > 1;  // the camera moves, or came to rest within the refine delay
+            const bool running = session_->simulated() && !paused_;
+            const bool advance = (running && pacer_.advances(previewing)) || (session_->simulated() && stepOnce_);
             stepOnce_ = false;
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
@@ -99,6 +103,7 @@ public:
                 ++previewFrames_;
                 imageSpacePreviews_ += imageSpacePreview ? 1 : 0;
                 largestStride_ = std::max(largestStride_, last_.pixelStride);
+                advancedFrames_ += advance ? 1 : 0;
             }
             adaptPhotons();
             if (!last_.image.rgba.empty()) image_ = last_.image;
@@ -111,6 +116,7 @@ public:
             status_.waterDevice = session_->waterDevice();
             status_.photonsInUse = photons_;
             status_.imageSpacePreview = imageSpacePreview;
+            status_.simulationHeld = running && !advance;
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);
             act(requests);
             ImGui::Render();
@@ -125,6 +131,7 @@ public:
             reloadIfChanged();
             const double ms = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
             status_.framesPerSecond = 0.9 * status_.framesPerSecond + 0.1 * 1000.0 / std::max(ms, 1e-3);
+            if (running) pacer_.frameDone(advance, previewing, ms);
             if (rendered_ < std::max(options_.frames, 1)) {
                 if (++rendered_ == 1) runStart = Clock::now();
                 if (rendered_ == options_.frames)
@@ -134,10 +141,11 @@ public:
                 if (!options_.screenshotPath.empty()) saveImage(options_.screenshotPath);
                 if (!options_.animate.empty())
                     std::printf("eikon-view: %s: %d frames after the first in %.2f s, %.2f frames/s, last photon "
-                                "count %lld, %d previews (%d in image space, at up to 1/%d size; pixel stride up to %d)\n",
+                                "count %lld, %d previews (%d in image space, at up to 1/%d size; pixel stride up to %d), "
+                                "%d of them advanced the scene\n",
                                 options_.animate.c_str(), rendered_ - 1, scriptedSeconds,
                                 (rendered_ - 1) / scriptedSeconds, photons_, previewFrames_, imageSpacePreviews_,
-                                largestImageSpaceScale_, largestStride_);
+                                largestImageSpaceScale_, largestStride_, advancedFrames_);
                 break;
             }
         }
@@ -210,9 +218,10 @@ private:
     }
 
     // While photons are retraced every frame — a light dragged, or a scene
-    // that moves — fewer of them keep the target frame time; when the light
-    // is let go or the scene paused, the full count traces once more
-    // (progressive).
+    // that moves — fewer of them keep the target frame time, the new count
+    // taking effect at the next trace (frames that hold the scene while the
+    // camera moves trace none); when the light is let go or the scene
+    // paused, the full count traces once more (progressive).
     void adaptPhotons() {
         render::FrameRenderer& renderer = session_->renderer();
         long long wanted = fullPhotons_;
@@ -220,14 +229,14 @@ private:
         if (retracingEveryFrame) {
             const double ms = stageMilliseconds(last_, "photons");
             if (ms > 0.0) {
-                const double scale = std::clamp(options_.targetFrameMs / ms, 0.25, 2.0);
+                const double scale = std::clamp(options_.targetFrameMs / ms, 1.0 / 16.0, 2.0);
                 wanted = std::clamp(static_cast<long long>(static_cast<double>(photons_) * scale), 4096LL, fullPhotons_);
             } else {
                 wanted = photons_;
             }
         }
         photons_ = wanted;
-        renderer.setPhotonCount(photons_);
+        renderer.setPhotonCount(photons_, !retracingEveryFrame);
     }
 
     void act(const PanelRequests& requests) {
@@ -305,6 +314,7 @@ private:
     ImagePresenter presenter_;
     ControlPanel panel_;
     ViewPreview preview_;
+    SimulationPacer pacer_;
     std::unique_ptr<ViewerSession> session_;
     render::FrameResult last_;
     render::Image8 image_;
@@ -317,6 +327,7 @@ private:
     int rendered_ = 0;  // frames drawn, counted up to options_.frames
     int previewFrames_ = 0, imageSpacePreviews_ = 0, largestStride_ = 1;  // previews among the scripted frames
     int largestImageSpaceScale_ = 1;
+    int advancedFrames_ = 0;  // previews among the scripted frames that advanced a moving scene
     bool returned_ = false;  // orbit-return: back at the scene's camera
     std::filesystem::file_time_type sceneTime_;
     Clock::time_point lastReloadCheck_ = Clock::now();

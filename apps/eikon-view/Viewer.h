@@ -21,11 +21,16 @@ struct ViewerOptions {
     std::string windowShotPath;          // with frames: the whole window, panel included
     double targetFrameMs = 100.0;        // while dragging a light
     double previewViewMs = 40.0;         // view-pass time to keep while the camera moves (ViewPreview.h)
+    // Mean frame time to keep while the camera moves, by holding a moving
+    // scene between its frames (SimulationPacer.h); 0: it advances every
+    // frame. 60 ms, 16.7 frames/s: a margin over the 15 aimed at.
+    double cameraFrameMs = 60.0;
     // Scripted input for benchmarks and demos: "orbit" turns the camera 1.8°
     // per frame, "light" drags the first light 6 pixels per frame,
     // "orbit-return" orbits and then returns to the scene's camera; with
-    // frames, the mean frames per second over them is printed at the end,
-    // which waits for the full image (the preview refined).
+    // frames, the mean frames per second over them and how many of them
+    // advanced a moving scene are printed at the end, which waits for the
+    // full image (the preview refined).
     std::string animate;
 };
 

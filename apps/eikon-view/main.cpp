@@ -29,5 +29,9 @@ int main(int argc, char** argv) {
     app.add_option("--preview-ms", options.previewViewMs,
                    "View-pass time to keep while the camera moves: a preview of one ray per k×k pixels")
         ->check(CLI::Range(0.01, 10000.0));
+    app.add_option("--camera-frame-ms", options.cameraFrameMs,
+                   "Mean frame time to keep while the camera moves, by holding a moving scene between its frames "
+                   "(0: the scene advances every frame)")
+        ->check(CLI::Range(0.0, 10000.0));
     return eikon::app::parseAndRun(app, argc, argv, "eikon-view", [&] { return eikon::view::runViewer(options); });
 }

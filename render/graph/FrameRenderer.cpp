@@ -114,11 +114,11 @@ void FrameRenderer::setLight(std::size_t index, const LightDesc& light) {
     lightsChanged_ = true;
 }
 
-void FrameRenderer::setPhotonCount(long long photons) {
+void FrameRenderer::setPhotonCount(long long photons, bool retrace) {
     if (photons == scene_.render.photons) return;
     scene_.render.photons = photons;
     if (photons_) photons_->setEmitters(scene_);  // photons are shared among lights by power
-    lightsChanged_ = true;
+    lightsChanged_ = lightsChanged_ || retrace;
 }
 
 void FrameRenderer::setExposure(double exposureEv) {

@@ -93,8 +93,9 @@ public:
     // Moves or re-powers light `index` of the scene: photons are traced anew.
     void setLight(std::size_t index, const LightDesc& light);
     // Photons per trace (the viewer lowers it while the user drags a light);
-    // a changed count traces anew.
-    void setPhotonCount(long long photons);
+    // a changed count traces anew, or with `retrace` false, takes effect at
+    // the next trace that runs for another reason (a moved light, new fields).
+    void setPhotonCount(long long photons, bool retrace = true);
     // Exposure of the tone map: post runs again.
     void setExposure(double exposureEv);
     // 1: the full image; k > 1: a preview of one camera ray per k×k pixels

@@ -79,9 +79,10 @@ TEST_F(ViewerWindow, ShowsTheHeadlessFrameWithThePanel) {
 }
 
 // The viewer's summary of a scripted run: previews, of them in image space,
-// the largest image-space downscale and the largest pixel stride.
+// the largest image-space downscale, the largest pixel stride, and how many
+// of them advanced a moving scene.
 struct PreviewCounts {
-    int previews = -1, imageSpace = -1, scale = -1, stride = -1;
+    int previews = -1, imageSpace = -1, scale = -1, stride = -1, advanced = -1;
 };
 
 PreviewCounts previewCounts(const fs::path& log) {
@@ -94,8 +95,10 @@ PreviewCounts previewCounts(const fs::path& log) {
     std::fclose(file);
     const char* tail = found ? std::strstr(line, "photon count") : nullptr;
     if (tail)
-        std::sscanf(tail, "photon count %*d, %d previews (%d in image space, at up to 1/%d size; pixel stride up to %d)",
-                    &counts.previews, &counts.imageSpace, &counts.scale, &counts.stride);
+        std::sscanf(tail,
+                    "photon count %*d, %d previews (%d in image space, at up to 1/%d size; pixel stride up to %d), "
+                    "%d of them advanced the scene",
+                    &counts.previews, &counts.imageSpace, &counts.scale, &counts.stride, &counts.advanced);
     return counts;
 }
 
@@ -136,6 +139,31 @@ TEST_F(ViewerWindow, OrbitingShowsThePreviewAndRestRefinesToTheHeadlessFrame) {
         ASSERT_EQ(viewed.width, rendered.width);
         ASSERT_EQ(viewed.height, rendered.height);
         EXPECT_EQ(viewed.rgba, rendered.rgba) << overrides;
+    }
+}
+
+// While the camera moves (every moving frame a preview, as above), a
+// deforming scene is held on the frame that draws its last advance
+// (SimulationPacer): fewer frames advance it than are drawn; with no
+// frame-time target every frame advances it.
+TEST_F(ViewerWindow, OrbitingHoldsAMovingSceneBetweenItsFrames) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) +
+                              "/scenes/twisting_glass.json --set render.width=160 --set render.height=120 "
+                              "--set render.photons=65536 --set grid.resolution=[40,40,40]";
+    for (const auto& [target, everyFrame] : {std::pair<std::string, bool>{"", false}, {" --camera-frame-ms 0", true}}) {
+        const fs::path log = dir_ / "viewer.txt";
+        ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
+                          scene + target + " --frames 6 --animate orbit --preview-ms 0.1 --width 640 --height 480",
+                      log.string()),
+                  0);
+        const PreviewCounts counts = previewCounts(log);
+        ASSERT_GE(counts.previews, 5) << target;
+        if (everyFrame) {
+            EXPECT_EQ(counts.advanced, counts.previews);
+        } else {
+            EXPECT_GE(counts.advanced, 1);
+            EXPECT_LT(counts.advanced, counts.previews);
+        }
     }
 }
 
