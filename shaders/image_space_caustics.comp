@@ -112,16 +112,21 @@ void main() {
     if (blocked && !edge) return;
     // A texel in full light averages its smooth irradiance over 2×2
     // Gauss–Legendre points (exact for a bicubic); one a shadow's edge
-    // crosses, over 4×4 points each tested for shadow.
-    int samples = edge ? kDirectSamples : 2;
+    // crosses, over 4×4 points each tested for shadow. Two loops, each run
+    // no turn where it does not apply: a CPU rasterizer leaves a loop none
+    // of its lanes enters, but runs a skipped call (the shadow test) under
+    // a mask.
     vec3 sum = vec3(0.0f);
-    for (int j = 0; j < samples; ++j)
-        for (int i = 0; i < samples; ++i) {
-            vec2 at = edge ? (vec2(i, j) + 0.5f) / float(kDirectSamples)
-                           : 0.5f + (vec2(i, j) - 0.5f) / sqrt(3.0f);
-            vec3 x = receiver_point(r, (vec2(texel) + at) / resolution);
-            if (!edge || !light_blocked(r, x)) sum += unblocked_irradiance(r, x);
-        }
+    for (int k = 0; k < (edge ? 0 : 4); ++k) {
+        vec2 at = 0.5f + (vec2(k % 2, k / 2) - 0.5f) / sqrt(3.0f);
+        sum += unblocked_irradiance(r, receiver_point(r, (vec2(texel) + at) / resolution));
+    }
+    for (int k = 0; k < (edge ? kDirectSamples * kDirectSamples : 0); ++k) {
+        vec2 at = (vec2(k % kDirectSamples, k / kDirectSamples) + 0.5f) / float(kDirectSamples);
+        vec3 x = receiver_point(r, (vec2(texel) + at) / resolution);
+        if (!light_blocked(r, x)) sum += unblocked_irradiance(r, x);
+    }
+    int samples = edge ? kDirectSamples : 2;
     deposit_texel(r, texel, sum / float(samples * samples) * receivers[r].normal.w);
 }
 #else
