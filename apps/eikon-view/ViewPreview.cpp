@@ -10,11 +10,14 @@ int ViewPreview::strideFor(bool cameraMoved, double nowSeconds) {
         lastMoveSeconds_ = nowSeconds;
         moved_ = true;
     }
-    const bool resting = !moved_ || nowSeconds - lastMoveSeconds_ >= settings_.refineDelaySeconds;
-    if (resting || fullViewMs_ <= settings_.targetViewMs) return 1;
+    if (!cameraMoving(nowSeconds) || fullViewMs_ <= settings_.targetViewMs) return 1;
     // A k×k stride traces 1/k² of the rays.
     const int stride = static_cast<int>(std::ceil(std::sqrt(fullViewMs_ / settings_.targetViewMs)));
     return std::clamp(stride, 1, settings_.largestStride);
+}
+
+bool ViewPreview::cameraMoving(double nowSeconds) const {
+    return moved_ && nowSeconds - lastMoveSeconds_ < settings_.refineDelaySeconds;
 }
 
 void ViewPreview::measured(int stride, double viewMs) {

@@ -25,6 +25,10 @@ public:
     // frame, and the time now (s, any steady origin). Returns the pixel
     // stride to draw with: 1 for the full image.
     int strideFor(bool cameraMoved, double nowSeconds);
+    // Whether the camera moved within the refine delay before `nowSeconds`
+    // (as strideFor last saw it): the viewer is in its interactive mode,
+    // whether or not the view needs a stride to keep to its target.
+    bool cameraMoving(double nowSeconds) const;
     // After a frame whose view pass ran at `stride`, its time: the cost per
     // ray it implies sets the next preview's stride.
     void measured(int stride, double viewMs);

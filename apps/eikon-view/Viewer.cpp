@@ -81,9 +81,9 @@ public:
             const bool cameraMoved = handleInput();
             const double now = std::chrono::duration<double>(frameStart - viewerStart).count();
             const int stride = preview_.strideFor(cameraMoved, now);
-            const bool previewing = stride > 1;  // the camera moves, or came to rest within the refine delay
+            const bool cameraMoving = preview_.cameraMoving(now);  // or came to rest within the refine delay
             const bool running = session_->simulated() && !paused_;
-            const bool advance = (running && pacer_.advances(previewing)) || (session_->simulated() && stepOnce_);
+            const bool advance = (running && pacer_.advances(cameraMoving)) || (session_->simulated() && stepOnce_);
             stepOnce_ = false;
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
@@ -131,7 +131,9 @@ public:
             reloadIfChanged();
             const double ms = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
             status_.framesPerSecond = 0.9 * status_.framesPerSecond + 0.1 * 1000.0 / std::max(ms, 1e-3);
-            if (running) pacer_.frameDone(advance, previewing, ms);
+            // A session's first frame compiles its shaders: no measure of a frame.
+            if (running && !sessionStarting_) pacer_.frameDone(advance, cameraMoving, ms);
+            sessionStarting_ = false;
             if (rendered_ < std::max(options_.frames, 1)) {
                 if (++rendered_ == 1) runStart = Clock::now();
                 if (rendered_ == options_.frames)
@@ -156,6 +158,8 @@ private:
     void start(const Scene& scene) {
         session_.reset();
         session_ = std::make_unique<ViewerSession>(scene, !window_->info().rendersOnCpu());
+        pacer_ = SimulationPacer(options_.cameraFrameMs);
+        sessionStarting_ = true;
         orbit_ = orbitOf(scene.camera);
         exposure_ = scene.render.exposureEv;
         fullPhotons_ = photons_ = scene.render.photons;
@@ -315,6 +319,7 @@ private:
     ControlPanel panel_;
     ViewPreview preview_;
     SimulationPacer pacer_;
+    bool sessionStarting_ = true;  // the next frame is the session's first
     std::unique_ptr<ViewerSession> session_;
     render::FrameResult last_;
     render::Image8 image_;

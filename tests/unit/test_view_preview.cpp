@@ -78,5 +78,17 @@ TEST(ViewPreview, AFrameWhoseViewDidNotRunKeepsTheEstimate) {
     EXPECT_EQ(preview.strideFor(true, 1.0), 4);
 }
 
+TEST(ViewPreview, TheCameraCountsAsMovingUntilTheRefineDelayHasPassed) {
+    ViewPreview preview(settings());
+    EXPECT_FALSE(preview.cameraMoving(0.0)) << "not before it first moves";
+    preview.measured(1, 10.0);  // a view within the target: no stride, yet the camera moves
+    EXPECT_EQ(preview.strideFor(true, 1.0), 1);
+    EXPECT_TRUE(preview.cameraMoving(1.0));
+    EXPECT_EQ(preview.strideFor(false, 1.2), 1);
+    EXPECT_TRUE(preview.cameraMoving(1.2));
+    EXPECT_EQ(preview.strideFor(false, 1.25), 1);
+    EXPECT_FALSE(preview.cameraMoving(1.25));
+}
+
 }  // namespace
 }  // namespace eikon::view
