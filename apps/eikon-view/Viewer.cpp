@@ -134,6 +134,7 @@ public:
             // A session's first frame compiles its shaders: no measure of a frame.
             if (running && !sessionStarting_) pacer_.frameDone(advance, cameraMoving, ms);
             sessionStarting_ = false;
+            if (rendered_ >= 1 && rendered_ < options_.frames) longestFrameMs_ = std::max(longestFrameMs_, ms);
             if (rendered_ < std::max(options_.frames, 1)) {
                 if (++rendered_ == 1) runStart = Clock::now();
                 if (rendered_ == options_.frames)
@@ -144,10 +145,10 @@ public:
                 if (!options_.animate.empty())
                     std::printf("eikon-view: %s: %d frames after the first in %.2f s, %.2f frames/s, last photon "
                                 "count %lld, %d previews (%d in image space, at up to 1/%d size; pixel stride up to %d), "
-                                "%d of them advanced the scene\n",
+                                "%d of them advanced the scene, longest frame %.0f ms\n",
                                 options_.animate.c_str(), rendered_ - 1, scriptedSeconds,
                                 (rendered_ - 1) / scriptedSeconds, photons_, previewFrames_, imageSpacePreviews_,
-                                largestImageSpaceScale_, largestStride_, advancedFrames_);
+                                largestImageSpaceScale_, largestStride_, advancedFrames_, longestFrameMs_);
                 break;
             }
         }
@@ -333,6 +334,7 @@ private:
     int previewFrames_ = 0, imageSpacePreviews_ = 0, largestStride_ = 1;  // previews among the scripted frames
     int largestImageSpaceScale_ = 1;
     int advancedFrames_ = 0;  // previews among the scripted frames that advanced a moving scene
+    double longestFrameMs_ = 0.0;  // among the scripted frames after the first
     bool returned_ = false;  // orbit-return: back at the scene's camera
     std::filesystem::file_time_type sceneTime_;
     Clock::time_point lastReloadCheck_ = Clock::now();

@@ -28,9 +28,9 @@ struct ViewerOptions {
     // Scripted input for benchmarks and demos: "orbit" turns the camera 1.8°
     // per frame, "light" drags the first light 6 pixels per frame,
     // "orbit-return" orbits and then returns to the scene's camera; with
-    // frames, the mean frames per second over them and how many of them
-    // advanced a moving scene are printed at the end, which waits for the
-    // full image (the preview refined).
+    // frames, the mean frames per second over them, how many of them
+    // advanced a moving scene and the longest are printed at the end, which
+    // waits for the full image (the preview refined).
     std::string animate;
 };
 
