@@ -1,7 +1,9 @@
 // eikon-view: a window in which the scene runs — the same frame loop as
 // `eikon run` — while the user orbits the camera, drags the light and edits
 // settings. Only the stages whose inputs changed run, so orbiting costs a
-// view pass, drawn as a preview while the camera moves (ViewPreview.h);
+// view pass, drawn as a preview while the camera moves (ViewPreview.h),
+// and a moving scene is held between its frames meanwhile as far as keeps
+// the camera to its frame time (SimulationPacer.h);
 // while a light is dragged or the scene moves, the photon count
 // drops to keep the target frame time and returns to the scene's count when
 // the drag ends or the scene is paused.
