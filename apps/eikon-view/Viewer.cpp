@@ -105,7 +105,7 @@ public:
                 largestStride_ = std::max(largestStride_, last_.pixelStride);
                 advancedFrames_ += advance ? 1 : 0;
             }
-            adaptPhotons();
+            adaptPhotons(cameraMoving);
             if (!last_.image.rgba.empty()) image_ = last_.image;
             int width = 0, height = 0;
             window_->framebufferSize(width, height);
@@ -227,14 +227,20 @@ private:
     // taking effect at the next trace (frames that hold the scene while the
     // camera moves trace none); when the light is let go or the scene
     // paused, the full count traces once more (progressive).
-    void adaptPhotons() {
+    // While the camera moves, a trace (for a scene's advance) keeps to the
+    // camera's frame time where that is the shorter: it is the frame the
+    // camera waits for.
+    void adaptPhotons(bool cameraMoving) {
         render::FrameRenderer& renderer = session_->renderer();
         long long wanted = fullPhotons_;
         const bool retracingEveryFrame = draggingLight_ || (session_->simulated() && !paused_);
         if (retracingEveryFrame) {
             const double ms = stageMilliseconds(last_, "photons");
             if (ms > 0.0) {
-                const double scale = std::clamp(options_.targetFrameMs / ms, 1.0 / 16.0, 2.0);
+                const double target = cameraMoving && options_.cameraFrameMs > 0.0
+                                          ? std::min(options_.targetFrameMs, options_.cameraFrameMs)
+                                          : options_.targetFrameMs;
+                const double scale = std::clamp(target / ms, 1.0 / 16.0, 2.0);
                 wanted = std::clamp(static_cast<long long>(static_cast<double>(photons_) * scale), 4096LL, fullPhotons_);
             } else {
                 wanted = photons_;

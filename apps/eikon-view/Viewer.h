@@ -24,8 +24,9 @@ struct ViewerOptions {
     double targetFrameMs = 100.0;        // while dragging a light
     double previewViewMs = 40.0;         // view-pass time to keep while the camera moves (ViewPreview.h)
     // Mean frame time to keep while the camera moves, by holding a moving
-    // scene between its frames (SimulationPacer.h); 0: it advances every
-    // frame. 60 ms, 16.7 frames/s: a margin over the 15 aimed at.
+    // scene between its frames (SimulationPacer.h), and photon tracing's
+    // meanwhile where shorter than targetFrameMs; 0: the scene advances
+    // every frame. 60 ms, 16.7 frames/s: a margin over the 15 aimed at.
     double cameraFrameMs = 60.0;
     // Scripted input for benchmarks and demos: "orbit" turns the camera 1.8°
     // per frame, "light" drags the first light 6 pixels per frame,

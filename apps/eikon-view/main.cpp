@@ -31,7 +31,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.01, 10000.0));
     app.add_option("--camera-frame-ms", options.cameraFrameMs,
                    "Mean frame time to keep while the camera moves, by holding a moving scene between its frames "
-                   "(0: the scene advances every frame)")
+                   "(0: the scene advances every frame); photon tracing then keeps to it where it is shorter than "
+                   "--target-ms")
         ->check(CLI::Range(0.0, 10000.0));
     return eikon::app::parseAndRun(app, argc, argv, "eikon-view", [&] { return eikon::view::runViewer(options); });
 }
