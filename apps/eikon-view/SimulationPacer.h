@@ -24,7 +24,7 @@ public:
     explicit SimulationPacer(double targetFrameMs) : target_(targetFrameMs) {}
 
     // Before a frame: whether a moving scene advances on it, given whether
-    // the camera is moving (the preview is on screen).
+    // the camera is moving (moved within the refine delay, ViewPreview::cameraMoving).
     bool advances(bool cameraMoving) const;
     // After the frame: whether it advanced, whether the camera was moving,
     // and its wall time.
