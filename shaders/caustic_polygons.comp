@@ -18,19 +18,17 @@
 // two or more corners on no surface, or whose flight cannot reach a plane,
 // is no smooth map (the paper culls such polygons or draws them anyway):
 // each corner that lands splats its quarter where it lands, so no power is
-// lost. Where two
-// receivers face each other, a cell drawn on both is not shadowed by
-// either.
+// lost. Where two receivers face each other, a cell drawn on both is not
+// shadowed by either. Both are drawn by the raster pipeline: the triangles
+// by caustic_polygons.vert, the splats as points by caustic_splats.vert.
 //
 // Program options: EIKON_PASS (0: one invocation per grid cell and sheet,
-// listing the triangles to draw; 1: one per receiver texel, adding the
-// drawn triangles' atlas to the tallies).
+// listing the triangles and splats to draw; 1: one per receiver texel,
+// adding the drawn atlas to the tallies).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/receiver.glsl"
 #include "common/receiver_blocks.glsl"
-#include "common/wide_units.glsl"
-#include "common/caustic_deposits.glsl"
 
 #if EIKON_PASS == 0
 #include "common/caustic_vertices.glsl"
@@ -41,8 +39,19 @@ layout(std430, binding = kCausticTriangles) writeonly buffer CausticTriangles {
 layout(std430, binding = kCausticDraw) buffer CausticDraw {
     uvec4 caustic_draw;  // glDrawArraysIndirect's (count, instances, first, base instance)
 };
+layout(std430, binding = kCausticSplats) writeonly buffer CausticSplats {
+    vec4 caustic_splats[];  // per splat: (map uv, receiver, 0), (W rgb, 0)
+};
+layout(std430, binding = kCausticSplatDraw) buffer CausticSplatDraw {
+    uvec4 caustic_splat_draw;  // glDrawArraysIndirect's (count, instances, first, base instance)
+};
 
 uniform ivec2 layer_size;
+
+// The most receivers one cell is drawn on: the scene's, up to four (program
+// option EIKON_CELL_RECEIVERS); and the most splats a cell makes.
+const int kCellReceivers = EIKON_CELL_RECEIVERS;
+const int kSplatSlots = max(4, 2 * kCellReceivers);
 
 // Triangles landing on less of a receiver texel than this are splatted: the
 // raster pipeline samples coverage at texel centres, which a swarm of tiny
@@ -60,101 +69,143 @@ float texels_between(vec2 a, vec2 b, vec2 c, int r) {
 
 bool on_square(vec2 map_uv) { return all(greaterThanEqual(map_uv, vec2(0.0f))) && all(lessThan(map_uv, vec2(1.0f))); }
 
-// A CPU rasterizer runs every call site of a shader under a mask, whether
-// its lanes take it or not, so the cell's splats and triangles are listed
-// first and then deposited from one call site each.
+// Corner k of a cell (0 at its first texel, counter-clockwise): its light texel.
+uint corner_texel(uint first, int k) {
+    return first + uint(k >> 1) * uint(layer_size.x) + uint(k == 1 || k == 2 ? 1 : 0);
+}
+
+// Every array below is indexed by constants only (loops of constant bounds,
+// unrolled): a CPU rasterizer keeps such arrays in registers, where an index
+// that differs between lanes sends each access through memory lane by lane.
+// So the corners are read rotated to put a silhouette's missing corner last,
+// and the receivers a cell lands on are ranked by selects.
 void main() {
     ivec2 cell = ivec2(gl_GlobalInvocationID.xy);
     int sheet = int(gl_GlobalInvocationID.z);
     if (any(greaterThanEqual(cell, layer_size - 1))) return;
     uint first = uint(cell.y * layer_size.x + cell.x);
-    CausticVertex corner[4] = CausticVertex[4](
-        read_caustic_vertex(first, sheet), read_caustic_vertex(first + 1u, sheet),
-        read_caustic_vertex(first + uint(layer_size.x) + 1u, sheet), read_caustic_vertex(first + uint(layer_size.x), sheet));
     // The corners whose light texel shows a surface, all the same one for a
     // smooth map; a cell on a refractor's silhouette keeps the triangle of
-    // its three that do (corners k + 1, k + 2, k + 3 around the missing k).
+    // its three that do, corners 0, 1, 2 once the missing one is turned to 3.
     int shown = 0, missing = 0;
+    for (int k = 0; k < 4; ++k) {
+        bool on_surface = caustic_vertex_surface(corner_texel(first, k), sheet) >= 0;
+        shown += on_surface ? 1 : 0;
+        missing = on_surface ? missing : k;
+    }
+    int turn = shown == 4 ? 0 : missing + 1;
+    CausticVertex corner[4];
+    for (int k = 0; k < 4; ++k) corner[k] = read_caustic_vertex(corner_texel(first, (k + turn) & 3), sheet);
     bool one_surface = true;
     int surface = -1;
     for (int k = 0; k < 4; ++k) {
-        if (corner[k].surface < 0) {
-            missing = k;
-            continue;
-        }
-        one_surface = one_surface && (surface < 0 || corner[k].surface == surface);
-        surface = corner[k].surface;
-        ++shown;
+        one_surface = one_surface && (corner[k].surface < 0 || surface < 0 || corner[k].surface == surface);
+        surface = corner[k].surface >= 0 ? corner[k].surface : surface;
     }
-    // The receivers the cell's photons land on, each once (corner k's: target[own[k]]).
+    // The receivers the cell's photons land on, each once: corner k's is
+    // target rank[k] (−1: it lands on none), target q's receiver target[q].
     int targets = 0;
-    int target[4];
-    int own[4];
+    int rank[4];
+    int target[kCellReceivers];
+    for (int q = 0; q < kCellReceivers; ++q) target[q] = -1;
     for (int k = 0; k < 4; ++k) {
-        own[k] = -1;
-        for (int q = 0; q < targets; ++q)
-            if (target[q] == corner[k].receiver) own[k] = q;
-        if (corner[k].receiver >= 0 && own[k] < 0) {
-            own[k] = targets;
-            target[targets++] = corner[k].receiver;
-        }
+        int own = -1;
+        for (int j = 0; j < k; ++j) own = own < 0 && rank[j] >= 0 && corner[j].receiver == corner[k].receiver ? rank[j] : own;
+        bool opens = corner[k].receiver >= 0 && own < 0;
+        for (int q = 0; q < kCellReceivers; ++q) target[q] = opens && q == targets ? corner[k].receiver : target[q];
+        rank[k] = opens ? targets : own;
+        targets += opens ? 1 : 0;
     }
-    // Every flight met with every such receiver's plane (one call site: a
-    // CPU rasterizer runs each under a mask, taken or not).
-    vec2 uvs[4][4];  // [target][corner]
+    // Every flight met with every such receiver's plane.
+    vec2 uvs[kCellReceivers][4];  // [target][corner]
     bool reached = true;
-    for (int q = 0; q < targets; ++q) {
-        ReceiverPlane plane = receiver_plane(target[q]);
-        for (int k = 0; k < 4; ++k)
-            reached = (flight_on_plane(corner[k], plane, uvs[q][k]) || corner[k].surface < 0) && reached;
+    for (int q = 0; q < kCellReceivers; ++q) {
+        ReceiverPlane plane = receiver_plane(max(target[q], 0));
+        for (int k = 0; k < 4; ++k) {
+            bool meets = flight_on_plane(corner[k], plane, uvs[q][k]);
+            reached = (q >= targets || meets || corner[k].surface < 0) && reached;
+        }
     }
     bool smooth_map = one_surface && shown >= 3 && targets > 0 && reached;
     // Its triangles: corners 0 1 2 and 0 2 3 with half the cell's power
-    // each, or on a silhouette the three shown with their quarters.
-    int triangles = shown == 4 ? 2 : 1;
-    ivec3 triangle[2] = ivec3[2](shown == 4 ? ivec3(0, 1, 2) : (ivec3(1, 2, 3) + missing) % 4, ivec3(0, 2, 3));
+    // each, or on a silhouette 0 1 2 with the three corners' quarters.
     vec3 all_watts = corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts;
     vec3 triangle_watts = shown == 4 ? 0.125f * all_watts : 0.25f * all_watts;  // a missing corner carries none
-    // The splats, deposited from one call site after the triangles.
-    int splats = 0;
-    int splat_receiver[8];  // up to two per receiver
-    vec2 splat_uv[8];
-    vec3 splat_watts[8];
-    for (int k = 0; k < 4 && !smooth_map; ++k) {  // no smooth map: a corner's quarter each, where it lands
-        if (own[k] < 0) continue;
-        splat_receiver[splats] = corner[k].receiver;
-        splat_uv[splats] = uvs[own[k]][k];
-        splat_watts[splats++] = 0.25f * corner[k].watts;
+    // The splats: with no smooth map, a corner's quarter each where it lands
+    // (slot k); with one, the triangles too small to draw (slots 2q, 2q + 1).
+    bool splat_on[kSplatSlots];
+    int splat_receiver[kSplatSlots];
+    vec2 splat_uv[kSplatSlots];
+    vec3 splat_watts[kSplatSlots];
+    for (int j = 0; j < kSplatSlots; ++j) {
+        splat_on[j] = false;
+        splat_receiver[j] = 0;
+        splat_uv[j] = vec2(0.0f);
+        splat_watts[j] = vec3(0.0f);
     }
-    for (int q = 0; q < (smooth_map ? targets : 0); ++q) {
-        int r = target[q];
-        float texels[2];
-        for (int t = 0; t < triangles; ++t)
-            texels[t] = texels_between(uvs[q][triangle[t].x], uvs[q][triangle[t].y], uvs[q][triangle[t].z], r);
-        bool whole_cell = triangles == 2 && texels[0] < kSmallestDrawnTexels && texels[1] < kSmallestDrawnTexels;
-        for (int t = 0; t < (whole_cell ? 1 : triangles); ++t) {
-            vec2 a = uvs[q][triangle[t].x], b = uvs[q][triangle[t].y], c = uvs[q][triangle[t].z];
-            if (!whole_cell && texels[t] >= kSmallestDrawnTexels) {
-                // One atomic per triangle: llvmpipe runs a work group's barriers
-                // so slowly that counting per group first cost more than the pass.
-                uint slot = 3u * (atomicAdd(caustic_draw.x, 3u) / 3u);
-                caustic_triangles[slot] = vec4(a, b);
-                caustic_triangles[slot + 1u] = vec4(c, float(r), 0.0f);
-                caustic_triangles[slot + 2u] = vec4(triangle_watts / texels[t], 0.0f);
-                continue;
-            }
-            // Too small to draw: at its middle (the whole cell's at once), where that lies on the square.
-            vec2 middle = whole_cell ? 0.25f * (uvs[q][0] + uvs[q][1] + uvs[q][2] + uvs[q][3]) : (a + b + c) / 3.0f;
-            if (on_square(middle)) {
-                splat_receiver[splats] = r;
-                splat_uv[splats] = middle;
-                splat_watts[splats++] = (whole_cell ? 2.0f : 1.0f) * triangle_watts;
-            }
+    for (int k = 0; k < 4; ++k) {
+        vec2 own_uv = vec2(0.0f);
+        for (int q = 0; q < kCellReceivers; ++q) own_uv = rank[k] == q ? uvs[q][k] : own_uv;
+        splat_on[k] = !smooth_map && rank[k] >= 0;
+        splat_receiver[k] = corner[k].receiver;
+        splat_uv[k] = own_uv;
+        splat_watts[k] = 0.25f * corner[k].watts;
+    }
+    bool drawn[kCellReceivers][2];
+    vec3 drawn_watts[kCellReceivers][2];  // W per receiver texel
+    for (int q = 0; q < kCellReceivers; ++q) {
+        bool on = smooth_map && q < targets;
+        int r = max(target[q], 0);
+        float texels[2] = float[2](texels_between(uvs[q][0], uvs[q][1], uvs[q][2], r),
+                                   texels_between(uvs[q][0], uvs[q][2], uvs[q][3], r));
+        bool whole_cell = shown == 4 && texels[0] < kSmallestDrawnTexels && texels[1] < kSmallestDrawnTexels;
+        // Too small to draw: at its middle (the whole cell's at once), where that lies on the square.
+        vec2 middle[2] = vec2[2](whole_cell ? 0.25f * (uvs[q][0] + uvs[q][1] + uvs[q][2] + uvs[q][3])
+                                            : (uvs[q][0] + uvs[q][1] + uvs[q][2]) / 3.0f,
+                                 (uvs[q][0] + uvs[q][2] + uvs[q][3]) / 3.0f);
+        for (int t = 0; t < 2; ++t) {
+            bool exists = on && (t == 0 || (shown == 4 && !whole_cell));
+            drawn[q][t] = exists && !whole_cell && texels[t] >= kSmallestDrawnTexels;
+            drawn_watts[q][t] = triangle_watts / max(texels[t], 1e-30f);
+            int slot = 2 * q + t;
+            if (!exists) continue;
+            splat_on[slot] = !drawn[q][t] && on_square(middle[t]);
+            splat_receiver[slot] = r;
+            splat_uv[slot] = middle[t];
+            splat_watts[slot] = (whole_cell ? 2.0f : 1.0f) * triangle_watts;
         }
     }
-    for (int k = 0; k < splats; ++k) splat_at(splat_receiver[k], splat_uv[k], splat_watts[k]);
+    // One atomic per cell for its triangles and one for its splats: llvmpipe
+    // runs a work group's barriers so slowly that counting per group first
+    // cost more than the pass.
+    int triangle_count = 0;
+    for (int q = 0; q < kCellReceivers; ++q)
+        for (int t = 0; t < 2; ++t) triangle_count += drawn[q][t] ? 1 : 0;
+    uint triangle_slot = triangle_count > 0 ? atomicAdd(caustic_draw.x, 3u * uint(triangle_count)) : 0u;
+    for (int q = 0; q < kCellReceivers; ++q)
+        for (int t = 0; t < 2; ++t) {
+            if (!drawn[q][t]) continue;
+            caustic_triangles[triangle_slot] = vec4(uvs[q][0], uvs[q][t + 1]);
+            caustic_triangles[triangle_slot + 1u] = vec4(uvs[q][t + 2], float(target[q]), 0.0f);
+            caustic_triangles[triangle_slot + 2u] = vec4(drawn_watts[q][t], 0.0f);
+            triangle_slot += 3u;
+        }
+    // The splats are drawn as points rather than added here by atomics: a
+    // CPU rasterizer ran a splat's dozens of atomics under a mask for every
+    // cell of a work group that had one (half the pass on the default scene).
+    int splat_count = 0;
+    for (int j = 0; j < kSplatSlots; ++j) splat_count += splat_on[j] ? 1 : 0;
+    uint splat_slot = splat_count > 0 ? atomicAdd(caustic_splat_draw.x, uint(splat_count)) : 0u;
+    for (int j = 0; j < kSplatSlots; ++j) {
+        if (!splat_on[j]) continue;
+        caustic_splats[2u * splat_slot] = vec4(splat_uv[j], float(splat_receiver[j]), 0.0f);
+        caustic_splats[2u * splat_slot + 1u] = vec4(splat_watts[j], 0.0f);
+        ++splat_slot;
+    }
 }
 #else
+#include "common/wide_units.glsl"
+#include "common/caustic_deposits.glsl"
 #include "common/caustic_atlas.glsl"
 
 layout(binding = kCausticAtlasTexture) uniform sampler2D caustic_atlas;

@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
+#include <string>
 
 namespace eikon::render {
 
@@ -14,7 +15,8 @@ namespace {
 constexpr int kSheets = 2;  // refracted and reflected (common/caustic_vertices.glsl)
 constexpr std::size_t kVertexBytes = 3 * 4 * sizeof(float);
 constexpr std::size_t kTriangleBytes = 3 * 4 * sizeof(float);
-constexpr unsigned kNoTriangles[4] = {0u, 1u, 0u, 0u};  // glDrawArraysIndirect's count, instances, first, base
+constexpr std::size_t kSplatBytes = 2 * 4 * sizeof(float);
+constexpr unsigned kNothingToDraw[4] = {0u, 1u, 0u, 0u};  // glDrawArraysIndirect's count, instances, first, base
 
 // The atlas stacks the receivers' maps: as wide as the widest, as tall as all together.
 glm::ivec2 atlasSize(const ReceiverMaps& receivers) {
@@ -27,6 +29,16 @@ glm::ivec2 atlasSize(const ReceiverMaps& receivers) {
     return {size.x, std::max(size.y, 1)};
 }
 
+// The most receivers one cell is drawn on (caustic_polygons.comp).
+std::size_t receiversPerCell(const ReceiverMaps& receivers) {
+    return std::clamp<std::size_t>(receivers.count(), 1, 4);
+}
+
+std::size_t cellsOf(int texels) {
+    const auto edge = static_cast<std::size_t>(std::max(texels - 1, 1));
+    return edge * edge * kSheets;
+}
+
 }  // namespace
 
 CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
@@ -34,15 +46,21 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
       vertices_(static_cast<std::size_t>(texels) * static_cast<std::size_t>(texels) * kSheets * kVertexBytes,
                 gl::GpuResource{"render.caustic_map_texels", "the caustic maps' photon landings"}),
       // Two triangles per cell and sheet on each receiver its photons land on (at most four).
-      triangles_(static_cast<std::size_t>(std::max(texels - 1, 1)) * static_cast<std::size_t>(std::max(texels - 1, 1)) *
-                     kSheets * 2 * std::clamp<std::size_t>(receivers.count(), 1, 4) * kTriangleBytes,
+      triangles_(cellsOf(texels) * 2 * receiversPerCell(receivers) * kTriangleBytes,
                  gl::GpuResource{"render.caustic_map_texels", "the caustic triangles"}),
-      drawCommand_(sizeof kNoTriangles, kNoTriangles, GL_DYNAMIC_STORAGE_BIT),
+      // A splat per corner of a cell with no smooth map, or two per receiver of one with.
+      splats_(cellsOf(texels) * std::max<std::size_t>(4, 2 * receiversPerCell(receivers)) * kSplatBytes,
+              gl::GpuResource{"render.caustic_map_texels", "the caustic splats"}),
+      drawCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
+      splatCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
       atlas_(atlasSize(receivers).x, atlasSize(receivers).y,
              gl::GpuResource{"receivers", "the atlas the caustic triangles are drawn into"}),
-      cellProgram_(gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "0"}})),
+      cellProgram_(gl::compileComputeProgram(
+          "caustic_polygons.comp",
+          {{"EIKON_PASS", "0"}, {"EIKON_CELL_RECEIVERS", std::to_string(receiversPerCell(receivers))}})),
       gatherProgram_(gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "1"}})),
-      drawProgram_(gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag")) {}
+      drawProgram_(gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag")),
+      splatProgram_(gl::compileRasterProgram("caustic_splats.vert", "caustic_splats.frag")) {}
 
 void CausticPolygons::clear() {
     GLint previousFramebuffer = 0;
@@ -51,15 +69,17 @@ void CausticPolygons::clear() {
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
 }
 
-void CausticPolygons::drawLight(const glm::ivec2& grid, const glm::vec3& powerUnit) {
-    drawCommand_.upload(kNoTriangles, sizeof kNoTriangles);
+void CausticPolygons::drawLight(const glm::ivec2& grid) {
+    drawCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
+    splatCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
     receivers_.bind();
     vertices_.bindStorage(layout::kCausticVertices);
     triangles_.bindStorage(layout::kCausticTriangles);
     drawCommand_.bindStorage(layout::kCausticDraw);
+    splats_.bindStorage(layout::kCausticSplats);
+    splatCommand_.bindStorage(layout::kCausticSplatDraw);
     cellProgram_.use();
     glUniform2i(cellProgram_.uniform("layer_size"), grid.x, grid.y);
-    glUniform3fv(cellProgram_.uniform("power_unit"), 1, glm::value_ptr(powerUnit));
     cellProgram_.dispatchCovering(static_cast<std::size_t>(grid.x - 1), static_cast<std::size_t>(grid.y - 1), kSheets,
                                   8, 8, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
@@ -80,6 +100,17 @@ void CausticPolygons::drawLight(const glm::ivec2& grid, const glm::vec3& powerUn
     glDrawArraysIndirect(GL_TRIANGLES, nullptr);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     for (GLenum plane = 0; plane < 4; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
+
+    // The splats, as points two texels wide in a viewport a texel wider on
+    // every side than the atlas (caustic_splats.vert).
+    splatProgram_.use();
+    glUniform2i(splatProgram_.uniform("atlas_size"), atlas_.width(), atlas_.height());
+    glViewport(-1, -1, atlas_.width() + 2, atlas_.height() + 2);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, splatCommand_.id());
+    glDrawArraysIndirect(GL_POINTS, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glDisable(GL_PROGRAM_POINT_SIZE);
     glDisable(GL_BLEND);
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));

@@ -12,10 +12,11 @@
 // a quarter of a receiver texel are splatted at their middle; cells whose
 // photons left through different surfaces (no smooth map there) are
 // splatted corner by corner, except that a cell on a silhouette keeps the
-// triangle of its three corners on the surface. The atlas is then added
-// into the receivers' fixed-point tallies, so power is counted as exactly
-// as the splats' (up to where a drawn triangle's edge falls between texel
-// centres).
+// triangle of its three corners on the surface. A splat is drawn too, as a
+// point two texels wide that shares its power bilinearly among the four
+// texels around it. The atlas is then added into the receivers'
+// fixed-point tallies, so every photon's power is counted (up to where a
+// drawn triangle's edge falls between texel centres).
 #pragma once
 
 #include "gl/GlObjects.h"
@@ -37,16 +38,16 @@ public:
     // Where the photon pass writes its landings (kCausticVertices).
     void bindVertices() const { vertices_.bindStorage(layout::kCausticVertices); }
     // After a light's photon pass over a layers' grid of `grid` texels:
-    // splats what has no smooth map and draws the rest into the atlas.
-    void drawLight(const glm::ivec2& grid, const glm::vec3& powerUnit);
+    // draws its cells into the atlas, as triangles and as splats.
+    void drawLight(const glm::ivec2& grid);
     // Adds the atlas, all lights drawn, into the receivers' tallies.
     void addToTallies(const glm::vec3& powerUnit);
 
 private:
     const ReceiverMaps& receivers_;
-    gl::Buffer vertices_, triangles_, drawCommand_;
+    gl::Buffer vertices_, triangles_, splats_, drawCommand_, splatCommand_;
     gl::RasterTarget atlas_;
-    gl::Program cellProgram_, gatherProgram_, drawProgram_;
+    gl::Program cellProgram_, gatherProgram_, drawProgram_, splatProgram_;
     gl::EmptyVertexArray vertexArray_;
 };
 

@@ -173,7 +173,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         photonProgram_.dispatchCovering(static_cast<std::size_t>(layers.width()),
                                         static_cast<std::size_t>(layers.height()), 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        polygons_.drawLight({layers.width(), layers.height()}, powerUnit_);
+        polygons_.drawLight({layers.width(), layers.height()});
     }
     polygons_.addToTallies(powerUnit_);
     ++frames_;

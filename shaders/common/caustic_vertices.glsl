@@ -31,6 +31,11 @@ void write_caustic_vertex(uint texel, int sheet, CausticVertex v) {
     caustic_vertices[slot + 2u] = vec4(v.watts, 0.0f);
 }
 
+// The sharp surface a vertex's light texel shows (−1: none), read alone.
+int caustic_vertex_surface(uint texel, int sheet) {
+    return int(round(caustic_vertices[caustic_vertex_slot(texel, sheet)].w));
+}
+
 CausticVertex read_caustic_vertex(uint texel, int sheet) {
     uint slot = caustic_vertex_slot(texel, sheet);
     vec4 a = caustic_vertices[slot], b = caustic_vertices[slot + 1u], c = caustic_vertices[slot + 2u];

@@ -109,5 +109,33 @@ TEST(CausticPolygons, KeepEachReceiverToItsOwnMapInTheAtlas) {
         300);
 }
 
+// Where a cell is too small to draw it is splatted whole at its middle,
+// drawn as a point that shares its power bilinearly among the four texels
+// around it (shaders/caustic_splats.*), the shares of texels off its
+// receiver's square given to those on it. On floors of 4² and 7² texels
+// side by side under the slab every cell is splatted. The light's photons
+// sit on a grid of spacing h over the slab's bounding sphere (radius 1.01 ×
+// half the box's diagonal, 48 texels across), straight through to the
+// floor, so a cell's middle lies on a whole multiple of h; the squares'
+// edges lie halfway between, where a cell's power is either all on a
+// square or all off it. Every texel, those at the squares' edges and along
+// their seam included, then gets E·(1 − R)², the power landing on it: none
+// leaks off a square or into the other receiver's rows of the atlas.
+TEST(CausticPolygons, SplatCellsTooSmallToDrawWithoutLosingPower) {
+    test::glContext();
+    const double h = 2.0 * 1.01 * 0.5 * std::sqrt(0.6 * 0.6 + 0.1 * 0.1 + 0.6 * 0.6) / 48.0;
+    const double edge = 14.0 * h;  // x from −14.5 h to −0.5 h and on to 13.5 h; z from −7.5 h to 6.5 h
+    const auto plane = [&](double x, int texels) {
+        return R"({"type": "plane", "point": [)" + std::to_string(x) + ", 0, " + std::to_string(-0.5 * h) +
+               R"(], "normal": [0, 1, 0], "size": )" + std::to_string(edge) +
+               R"(, "resolution": )" + std::to_string(texels) + R"(, "filter": "none"})";
+    };
+    const SlabFigures figures =
+        slabFigures(slabScene("image_space_splats", "[" + plane(-7.5 * h, 4) + ", " + plane(6.5 * h, 7) + "]"));
+    test::reportFigure("image_space_splats_worst_relative_error", figures.worstUnder);
+    EXPECT_EQ(figures.under, 4 * 4 + 7 * 7);
+    EXPECT_LE(figures.worstUnder, 0.005);
+}
+
 }  // namespace
 }  // namespace eikon
