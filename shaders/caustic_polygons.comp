@@ -24,7 +24,8 @@
 //
 // Program options: EIKON_PASS (0: one invocation per grid cell and sheet,
 // listing the triangles and splats to draw; 1: one per receiver texel,
-// adding the drawn atlas to the tallies).
+// adding the drawn atlas to the tallies); EIKON_CELL_RECEIVERS (pass 0:
+// the scene's receivers, up to four).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/receiver.glsl"
