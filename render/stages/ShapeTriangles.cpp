@@ -44,7 +44,9 @@ void appendSphereFacet(std::vector<float>& out, const SphereShape& sphere, const
 void appendSphere(std::vector<float>& out, const SphereShape& sphere, int surface) {
     for (int octant = 0; octant < 8; ++octant) {
         const glm::dvec3 sign((octant & 1) ? -1.0 : 1.0, (octant & 2) ? -1.0 : 1.0, (octant & 4) ? -1.0 : 1.0);
-        appendSphereFacet(out, sphere, {glm::dvec3(sign.x, 0, 0), glm::dvec3(0, sign.y, 0), glm::dvec3(0, 0, sign.z)},
+        // Counter-clockwise seen from outside: an octant mirrored an odd number of times swaps two corners.
+        const glm::dvec3 x(sign.x, 0, 0), y(0, sign.y, 0), z(0, 0, sign.z);
+        appendSphereFacet(out, sphere, sign.x * sign.y * sign.z > 0.0 ? Corners{x, y, z} : Corners{y, x, z},
                           kSphereSubdivisions, surface);
     }
 }
@@ -61,8 +63,10 @@ void appendBox(std::vector<float>& out, const BoxShape& box, int surface) {
             const int fixed = side << axis;
             const int u = 1 << ((axis + 1) % 3), v = 1 << ((axis + 2) % 3);
             const Corners flat{normal, normal, normal};
-            append(out, {corner(fixed), corner(fixed | u), corner(fixed | u | v)}, flat, surface);
-            append(out, {corner(fixed), corner(fixed | u | v), corner(fixed | v)}, flat, surface);
+            // Counter-clockwise seen from outside: u × v is the axis, outward on the far side only.
+            const int first = side == 1 ? u : v, second = side == 1 ? v : u;
+            append(out, {corner(fixed), corner(fixed | first), corner(fixed | u | v)}, flat, surface);
+            append(out, {corner(fixed), corner(fixed | u | v), corner(fixed | second)}, flat, surface);
         }
     }
 }

@@ -7,7 +7,8 @@
 // kSphereHullScale radii, so that its facets hold the sphere (the raster
 // pass then meets the sphere itself in every fragment,
 // shaders/surface_layers.frag); a box is its twelve triangles with face
-// normals.
+// normals. Every triangle winds counter-clockwise seen from outside its
+// shape, so the raster pipeline can tell the faces toward a viewpoint.
 #pragma once
 
 #include "bridge/scene/Scene.h"

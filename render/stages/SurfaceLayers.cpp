@@ -7,11 +7,13 @@
 #include "render/stages/ShapeTriangles.h"
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <numeric>
 
 namespace eikon::render {
@@ -48,6 +50,34 @@ gl::Buffer surfaceExtinction(const Scene& scene) {
 
 }  // namespace
 
+namespace {
+
+// The bounds of the scene's spheres (their hulls: ShapeTriangles.h) and
+// boxes where its sharp surfaces are all spheres and boxes and no two
+// bounds meet; empty otherwise.
+std::vector<std::pair<glm::dvec3, glm::dvec3>> apartShapeBounds(const Scene& scene) {
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> bounds;
+    for (const ObjectDesc& object : scene.objects) {
+        if (!object.isSharp()) continue;
+        if (object.kind == ObjectDesc::Kind::Sphere) {
+            const glm::dvec3 reach(kSphereHullScale * object.sphere.radius);
+            bounds.emplace_back(object.sphere.center - reach, object.sphere.center + reach);
+        } else if (object.kind == ObjectDesc::Kind::Box) {
+            bounds.emplace_back(object.box.min, object.box.max);
+        } else {
+            return {};
+        }
+    }
+    for (std::size_t i = 0; i < bounds.size(); ++i)
+        for (std::size_t j = i + 1; j < bounds.size(); ++j)
+            if (glm::all(glm::lessThanEqual(bounds[i].first, bounds[j].second)) &&
+                glm::all(glm::lessThanEqual(bounds[j].first, bounds[i].second)))
+                return {};
+    return bounds;
+}
+
+}  // namespace
+
 void SurfaceRaster::bindSurfaces() const {
     surfaces_.bind();
     extinction_.bindStorage(layout::kImageSpaceSurfaces);
@@ -74,6 +104,16 @@ SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_
         if (object.hasTriangleSurface()) meshSurfaces_[static_cast<std::size_t>(meshes++)] = surface;
         ++surface;
     }
+    apartShapeBounds_ = apartShapeBounds(scene);
+}
+
+bool SurfaceRaster::drawsFacingFaces(const Viewpoint& view) const {
+    if (apartShapeBounds_.empty()) return false;
+    if (view.orthographic) return true;  // a light's: its near plane lies before all the refractors
+    const glm::dvec3 eye(view.eye);
+    return std::none_of(apartShapeBounds_.begin(), apartShapeBounds_.end(), [&](const auto& bounds) {
+        return glm::all(glm::greaterThanEqual(eye, bounds.first)) && glm::all(glm::lessThanEqual(eye, bounds.second));
+    });
 }
 
 void SurfaceRaster::drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
@@ -97,13 +137,18 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
     surfaces_.bind();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);  // orientation is not relied on: the peel finds front and back
+    glDisable(GL_CULL_FACE);  // a mesh's orientation is not relied on: the peel finds front and back
     glDisable(GL_BLEND);
     for (int peel = 0; peel < 2; ++peel) {
         gl::RasterTarget& target = peel == 0 ? layers.near_ : layers.far_;
         target.beginDrawing(glm::vec4(0.0f));
         if (peel == 1) layers.near_.bindColour(layout::kNearLayerTexture);
+        if (drawsFacingFaces(view)) {
+            glEnable(GL_CULL_FACE);
+            glCullFace(peel == 0 ? GL_BACK : GL_FRONT);
+        }
         drawTriangles(programs_[1][peel], view, shapes_, shapeSurfaces_);
+        glDisable(GL_CULL_FACE);
         drawTriangles(programs_[0][peel], view, fields.surfaceTriangles(), meshSurfaces_);
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }

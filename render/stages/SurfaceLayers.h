@@ -16,6 +16,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include <utility>
 #include <vector>
 
 namespace eikon::render {
@@ -56,6 +57,14 @@ public:
 private:
     void drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
                        const std::vector<int>& surfaceOfOrdinal) const;
+    // Whether `view` may draw the spheres and boxes by their faces toward it
+    // alone: their entries on the near layer, their exits on the far. So it
+    // may when the scene's surfaces are all spheres and boxes, none within
+    // another's bounds, and the viewpoint is outside every one of them:
+    // then every texel's two layers are one shape's entry and exit, and a
+    // sphere's facets toward the viewpoint, enclosing it, cover its entries.
+    // A CPU rasterizer then shades half the fragments.
+    bool drawsFacingFaces(const Viewpoint& view) const;
 
     SharpSurfaceBuffer surfaces_;
     gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it
@@ -64,6 +73,9 @@ private:
     gl::Buffer shapes_;                     // the spheres' and boxes' triangles
     std::vector<int> shapeSurfaces_;        // identity: a shape's w is its surface number
     std::vector<int> meshSurfaces_;         // the k-th mesh's surface number
+    // The spheres' hulls' and the boxes' bounds, where the scene's surfaces
+    // are all apart spheres and boxes; empty otherwise.
+    std::vector<std::pair<glm::dvec3, glm::dvec3>> apartShapeBounds_;
 };
 
 }  // namespace eikon::render
