@@ -52,9 +52,10 @@ gl::Buffer surfaceExtinction(const Scene& scene) {
 
 namespace {
 
-// The bounds of the scene's spheres (their hulls: ShapeTriangles.h) and
-// boxes where its sharp surfaces are all spheres and boxes and no two
-// bounds meet; empty otherwise.
+// The bounds of the scene's spheres (their hulls: ShapeTriangles.h), boxes
+// and water bodies (whose triangles wind counter-clockwise seen from
+// outside too: sim/deform/WaterSurface) where its sharp surfaces are all
+// of these and no two bounds meet; empty otherwise.
 std::vector<std::pair<glm::dvec3, glm::dvec3>> apartShapeBounds(const Scene& scene) {
     std::vector<std::pair<glm::dvec3, glm::dvec3>> bounds;
     for (const ObjectDesc& object : scene.objects) {
@@ -64,8 +65,13 @@ std::vector<std::pair<glm::dvec3, glm::dvec3>> apartShapeBounds(const Scene& sce
             bounds.emplace_back(object.sphere.center - reach, object.sphere.center + reach);
         } else if (object.kind == ObjectDesc::Kind::Box) {
             bounds.emplace_back(object.box.min, object.box.max);
+        } else if (object.kind == ObjectDesc::Kind::Water) {
+            // Its waves stay well within the basin's depth above the rest level.
+            const WaterDesc& water = object.water;
+            bounds.emplace_back(water.basinMin,
+                                water.basinMax + glm::dvec3(0.0, water.basinMax.y - water.basinMin.y, 0.0));
         } else {
-            return {};
+            return {};  // an imported mesh: its triangles' winding is its author's
         }
     }
     for (std::size_t i = 0; i < bounds.size(); ++i)
@@ -137,7 +143,7 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
     surfaces_.bind();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE);  // a mesh's orientation is not relied on: the peel finds front and back
+    glDisable(GL_CULL_FACE);  // the peel finds front and back; facing faces alone only where drawsFacingFaces
     glDisable(GL_BLEND);
     for (int peel = 0; peel < 2; ++peel) {
         gl::RasterTarget& target = peel == 0 ? layers.near_ : layers.far_;
@@ -148,8 +154,8 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
             glCullFace(peel == 0 ? GL_BACK : GL_FRONT);
         }
         drawTriangles(programs_[1][peel], view, shapes_, shapeSurfaces_);
-        glDisable(GL_CULL_FACE);
         drawTriangles(programs_[0][peel], view, fields.surfaceTriangles(), meshSurfaces_);
+        glDisable(GL_CULL_FACE);
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     glDisable(GL_DEPTH_TEST);

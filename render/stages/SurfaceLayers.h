@@ -57,13 +57,15 @@ public:
 private:
     void drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
                        const std::vector<int>& surfaceOfOrdinal) const;
-    // Whether `view` may draw the spheres and boxes by their faces toward it
-    // alone: their entries on the near layer, their exits on the far. So it
-    // may when the scene's surfaces are all spheres and boxes, none within
-    // another's bounds, and the viewpoint is outside every one of them:
-    // then every texel's two layers are one shape's entry and exit, and a
-    // sphere's facets toward the viewpoint, enclosing it, cover its entries.
-    // A CPU rasterizer then shades half the fragments.
+    // Whether `view` may draw the surfaces by their faces toward it alone on
+    // the near layer and away from it on the far. So it may when the
+    // scene's surfaces are all spheres, boxes and water bodies (closed, and
+    // wound counter-clockwise seen from outside), none within another's
+    // bounds, and the viewpoint is outside every one of them: along any ray
+    // the faces it crosses then alternate toward and away, so the first two
+    // are one surface's entry and exit, and a sphere's facets toward the
+    // viewpoint, enclosing it, cover its entries. A CPU rasterizer then
+    // shades half the fragments.
     bool drawsFacingFaces(const Viewpoint& view) const;
 
     SharpSurfaceBuffer surfaces_;
@@ -73,8 +75,8 @@ private:
     gl::Buffer shapes_;                     // the spheres' and boxes' triangles
     std::vector<int> shapeSurfaces_;        // identity: a shape's w is its surface number
     std::vector<int> meshSurfaces_;         // the k-th mesh's surface number
-    // The spheres' hulls' and the boxes' bounds, where the scene's surfaces
-    // are all apart spheres and boxes; empty otherwise.
+    // The spheres' hulls', the boxes' and the water bodies' bounds, where
+    // the scene's surfaces are all of these and apart; empty otherwise.
     std::vector<std::pair<glm::dvec3, glm::dvec3>> apartShapeBounds_;
 };
 
