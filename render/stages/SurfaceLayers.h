@@ -53,10 +53,6 @@ public:
     // shapes and optics (kSharpSurfaces) and the extinction inside each
     // (kImageSpaceSurfaces).
     void bindSurfaces() const;
-
-private:
-    void drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
-                       const std::vector<int>& surfaceOfOrdinal) const;
     // Whether `view` may draw the surfaces by their faces toward it alone on
     // the near layer and away from it on the far. So it may when the
     // scene's surfaces are all spheres, boxes and water bodies (closed, and
@@ -64,9 +60,14 @@ private:
     // bounds, and the viewpoint is outside every one of them: along any ray
     // the faces it crosses then alternate toward and away, so the first two
     // are one surface's entry and exit, and a sphere's facets toward the
-    // viewpoint, enclosing it, cover its entries. A CPU rasterizer then
-    // shades half the fragments.
+    // viewpoint, enclosing it, cover its entries. An orthographic viewpoint
+    // (a directional light's) always is outside: its near plane lies before
+    // all the refractors. A CPU rasterizer then shades half the fragments.
     bool drawsFacingFaces(const Viewpoint& view) const;
+
+private:
+    void drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
+                       const std::vector<int>& surfaceOfOrdinal) const;
 
     SharpSurfaceBuffer surfaces_;
     gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it

@@ -10,6 +10,7 @@
 // sphere's pixels.
 #include "io/scene/SceneParser.h"
 #include "render/graph/FrameRenderer.h"
+#include "render/stages/SurfaceLayers.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
 #include "verify/reference/PinholeCamera.h"
@@ -86,6 +87,55 @@ TEST(ImageSpace, SphereRefractionIsWithinAPixelOfTheExactTwoInterfaceRay) {
     test::reportFigure("image_space_worst_error_impact_radii", worstRimImpact);
     EXPECT_GT(pixels, 20000);
     EXPECT_GE(fraction, 0.95);
+}
+
+// A scene of the given sharp objects (a JSON list) in image space.
+Scene surfacesScene(const std::string& name, const std::string& objects) {
+    const std::string path = ::testing::TempDir() + name + ".json";
+    std::ofstream(path) << R"({
+      "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-1, -0.5, -1], "max": [1, 1.5, 1]}},
+      "objects": )" + objects + R"(,
+      "lights": [{"type": "point", "position": [0.0, 2.0, 0.0], "power": 10}],
+      "camera": {"position": [0.0, 0.5, 2.0], "target": [0.0, 0.5, 0.0], "up": [0, 1, 0], "fov_deg": 40},
+      "render": {"method": "image_space", "width": 32, "height": 24}
+    })";
+    return loadSceneFile(path);
+}
+
+render::Viewpoint viewpointAt(const glm::vec3& eye, bool orthographic = false) {
+    render::Viewpoint view;
+    view.eye = eye;
+    view.axis = glm::vec3(0.0f, 0.0f, -1.0f);
+    view.orthographic = orthographic;
+    return view;
+}
+
+// The layers keep only the faces toward a viewpoint (near) and away from it
+// (far) where that leaves them the same: surfaces that are all spheres,
+// boxes and water, apart, seen from outside every one. From inside a box
+// its nearest face turns away from the eye; a sphere inside a box puts two
+// faces toward the eye on one ray; an imported mesh winds as its author
+// chose.
+TEST(ImageSpace, DrawsFacingFacesOnlyWhereTheLayersStayTheSame) {
+    test::glContext();
+    const std::string sphere = R"({"type": "sphere", "center": [0.0, 0.5, 0.0], "radius": 0.25, "index": 1.5})";
+    const std::string box = R"({"type": "box", "min": [0.5, 0.3, -0.2], "max": [0.9, 0.7, 0.2], "index": 1.5})";
+    const std::string water =
+        R"({"type": "water", "basin": {"min": [-0.9, -0.4, -0.9], "max": [0.9, -0.2, 0.9]}, "cells": [8, 8], "index": 1.333})";
+    const render::SurfaceRaster apart(surfacesScene("facing_apart", "[" + sphere + ", " + box + ", " + water + "]"));
+    EXPECT_TRUE(apart.drawsFacingFaces(viewpointAt({0.0f, 0.5f, 2.0f})));
+    EXPECT_TRUE(apart.drawsFacingFaces(viewpointAt({0.0f, 0.5f, 0.0f}, true)));
+    EXPECT_FALSE(apart.drawsFacingFaces(viewpointAt({0.0f, 0.5f, 0.0f})));    // in the sphere
+    EXPECT_FALSE(apart.drawsFacingFaces(viewpointAt({0.0f, 0.5f, 0.2502f})));  // between it and its hull
+    EXPECT_FALSE(apart.drawsFacingFaces(viewpointAt({0.7f, 0.5f, 0.0f})));    // in the box
+    EXPECT_FALSE(apart.drawsFacingFaces(viewpointAt({0.0f, -0.3f, 0.0f})));   // under water
+    const std::string outer = R"({"type": "box", "min": [-0.4, 0.0, -0.4], "max": [0.4, 1.0, 0.4], "index": 1.2})";
+    const render::SurfaceRaster nested(surfacesScene("facing_nested", "[" + sphere + ", " + outer + "]"));
+    EXPECT_FALSE(nested.drawsFacingFaces(viewpointAt({0.0f, 0.5f, 2.0f})));
+    const std::string mesh = R"({"type": "mesh", "mesh": {"path": ")" + std::string(EIKON_SOURCE_DIR) +
+                             R"(/scenes/meshes/blob.obj", "translate": [0.0, 0.36, 0.0]}, "index": 1.5})";
+    const render::SurfaceRaster imported(surfacesScene("facing_mesh", "[" + mesh + "]"));
+    EXPECT_FALSE(imported.drawsFacingFaces(viewpointAt({0.0f, 0.5f, 2.0f})));
 }
 
 }  // namespace
