@@ -3,8 +3,8 @@
 // texels wide: a point covers the centres of the four texels around it, and
 // caustic_splats.frag gives each its bilinear share of the power. The texels
 // of the four off the receiver's square (at its edge) take no share, the
-// others theirs over the shares of those on it, so no power is lost, as in
-// common/caustic_deposits.glsl's splat_at. The atlas is drawn with its
+// others theirs over the shares of those on it (bilinear_share_on_map), so
+// no power is lost, as in common/caustic_deposits.glsl's splat_at. The atlas is drawn with its
 // viewport a texel wider on every side, so that a point whose centre lies
 // just past the atlas's edge still reaches the texels inside. No vertex
 // buffer: gl_VertexID names the splat.
@@ -25,14 +25,7 @@ void main() {
     int r = int(round(where.z));
     int resolution = int(receivers[r].map.y);
     vec2 texel = where.xy * float(resolution);  // in the map's pixels
-    vec2 corner = floor(texel - 0.5f) + 0.5f;   // the centre of the nearest texel below and left
-    float on_receiver = 0.0f;
-    for (int k = 0; k < 4; ++k) {
-        vec2 centre = corner + vec2(k & 1, k >> 1);
-        vec2 weight = max(1.0f - abs(centre - texel), 0.0f);
-        bool inside = all(greaterThanEqual(centre, vec2(0.0f))) && all(lessThan(centre, vec2(resolution)));
-        on_receiver += inside ? weight.x * weight.y : 0.0f;
-    }
+    float on_receiver = bilinear_share_on_map(where.xy, resolution);
     int row = atlas_row(r);
     splat_pixel = texel + vec2(0.0f, float(row));
     splat_map = ivec3(row, resolution, 0);

@@ -48,36 +48,32 @@ gl::Buffer surfaceExtinction(const Scene& scene) {
                       {"objects", "the surfaces' extinction"});
 }
 
-}  // namespace
-
-namespace {
-
 // The bounds of the scene's spheres (their hulls: ShapeTriangles.h), boxes
 // and water bodies (whose triangles wind counter-clockwise seen from
 // outside too: sim/deform/WaterSurface) where its sharp surfaces are all
 // of these and no two bounds meet; empty otherwise.
-std::vector<std::pair<glm::dvec3, glm::dvec3>> apartShapeBounds(const Scene& scene) {
-    std::vector<std::pair<glm::dvec3, glm::dvec3>> bounds;
+std::vector<BoxShape> apartShapeBounds(const Scene& scene) {
+    std::vector<BoxShape> bounds;
     for (const ObjectDesc& object : scene.objects) {
         if (!object.isSharp()) continue;
         if (object.kind == ObjectDesc::Kind::Sphere) {
             const glm::dvec3 reach(kSphereHullScale * object.sphere.radius);
-            bounds.emplace_back(object.sphere.center - reach, object.sphere.center + reach);
+            bounds.push_back({object.sphere.center - reach, object.sphere.center + reach});
         } else if (object.kind == ObjectDesc::Kind::Box) {
-            bounds.emplace_back(object.box.min, object.box.max);
+            bounds.push_back(object.box);
         } else if (object.kind == ObjectDesc::Kind::Water) {
             // Its waves stay well within the basin's depth above the rest level.
             const WaterDesc& water = object.water;
-            bounds.emplace_back(water.basinMin,
-                                water.basinMax + glm::dvec3(0.0, water.basinMax.y - water.basinMin.y, 0.0));
+            bounds.push_back({water.basinMin,
+                              water.basinMax + glm::dvec3(0.0, water.basinMax.y - water.basinMin.y, 0.0)});
         } else {
             return {};  // an imported mesh: its triangles' winding is its author's
         }
     }
     for (std::size_t i = 0; i < bounds.size(); ++i)
         for (std::size_t j = i + 1; j < bounds.size(); ++j)
-            if (glm::all(glm::lessThanEqual(bounds[i].first, bounds[j].second)) &&
-                glm::all(glm::lessThanEqual(bounds[j].first, bounds[i].second)))
+            if (glm::all(glm::lessThanEqual(bounds[i].min, bounds[j].max)) &&
+                glm::all(glm::lessThanEqual(bounds[j].min, bounds[i].max)))
                 return {};
     return bounds;
 }
@@ -117,8 +113,8 @@ bool SurfaceRaster::drawsFacingFaces(const Viewpoint& view) const {
     if (apartShapeBounds_.empty()) return false;
     if (view.orthographic) return true;  // a light's: its near plane lies before all the refractors
     const glm::dvec3 eye(view.eye);
-    return std::none_of(apartShapeBounds_.begin(), apartShapeBounds_.end(), [&](const auto& bounds) {
-        return glm::all(glm::greaterThanEqual(eye, bounds.first)) && glm::all(glm::lessThanEqual(eye, bounds.second));
+    return std::none_of(apartShapeBounds_.begin(), apartShapeBounds_.end(), [&](const BoxShape& bounds) {
+        return glm::all(glm::greaterThanEqual(eye, bounds.min)) && glm::all(glm::lessThanEqual(eye, bounds.max));
     });
 }
 
@@ -145,11 +141,12 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // the peel finds front and back; facing faces alone only where drawsFacingFaces
     glDisable(GL_BLEND);
+    const bool facingFaces = drawsFacingFaces(view);
     for (int peel = 0; peel < 2; ++peel) {
         gl::RasterTarget& target = peel == 0 ? layers.near_ : layers.far_;
         target.beginDrawing(glm::vec4(0.0f));
         if (peel == 1) layers.near_.bindColour(layout::kNearLayerTexture);
-        if (drawsFacingFaces(view)) {
+        if (facingFaces) {
             glEnable(GL_CULL_FACE);
             glCullFace(peel == 0 ? GL_BACK : GL_FRONT);
         }

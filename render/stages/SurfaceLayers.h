@@ -16,7 +16,6 @@
 
 #include <glm/mat4x4.hpp>
 
-#include <utility>
 #include <vector>
 
 namespace eikon::render {
@@ -78,7 +77,7 @@ private:
     std::vector<int> meshSurfaces_;         // the k-th mesh's surface number
     // The spheres' hulls', the boxes' and the water bodies' bounds, where
     // the scene's surfaces are all of these and apart; empty otherwise.
-    std::vector<std::pair<glm::dvec3, glm::dvec3>> apartShapeBounds_;
+    std::vector<BoxShape> apartShapeBounds_;
 };
 
 }  // namespace eikon::render

@@ -25,13 +25,7 @@ void splat_at(int r, vec2 map_uv, vec3 watts) {
     vec2 texel = map_uv * float(resolution) - 0.5f;
     ivec2 base = ivec2(floor(texel));
     vec2 f = texel - vec2(base);
-    float on_receiver = 0.0f;
-    for (int k = 0; k < 4; ++k) {
-        ivec2 offset = ivec2(k & 1, k >> 1);
-        vec2 weight = mix(1.0f - f, f, vec2(offset));
-        bool inside = all(greaterThanEqual(base + offset, ivec2(0))) && all(lessThan(base + offset, ivec2(resolution)));
-        on_receiver += inside ? weight.x * weight.y : 0.0f;
-    }
+    float on_receiver = bilinear_share_on_map(map_uv, resolution);
     for (int k = 0; k < 4 && on_receiver > 0.0f; ++k) {
         ivec2 offset = ivec2(k & 1, k >> 1);
         vec2 weight = mix(1.0f - f, f, vec2(offset));

@@ -22,3 +22,21 @@ float receiver_ray_parameter(vec3 x, vec3 d, vec3 origin, vec3 normal) {
     float t = -receiver_signed_distance(x, origin, normal) / approach;
     return t >= 0.0f ? t : -1.0f;
 }
+
+// Of a power shared bilinearly between the four texels around map_uv on a
+// map of resolution² texels, the part that falls on the map's texels: 1
+// inside, less at its edges (the splats of common/caustic_deposits.glsl and
+// caustic_splats.vert give those on it the shares of those off it).
+float bilinear_share_on_map(vec2 map_uv, int resolution) {
+    vec2 texel = map_uv * float(resolution) - 0.5f;
+    ivec2 base = ivec2(floor(texel));
+    vec2 f = texel - vec2(base);
+    float share = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 offset = ivec2(k & 1, k >> 1);
+        vec2 weight = mix(1.0f - f, f, vec2(offset));
+        bool inside = all(greaterThanEqual(base + offset, ivec2(0))) && all(lessThan(base + offset, ivec2(resolution)));
+        share += inside ? weight.x * weight.y : 0.0f;
+    }
+    return share;
+}
