@@ -115,6 +115,21 @@ void Texture3D::bindImage(GLuint unit, GLenum access) const {
     glBindImageTexture(unit, id(), 0, GL_TRUE, 0, access, internalFormat_);
 }
 
+BufferTexture::BufferTexture(const Buffer& buffer, GLenum internalFormat, const GpuResource& resource) {
+    const std::size_t texelBytes = internalFormat == GL_RGB32F ? 12 : internalFormat == GL_RGBA32F ? 16 : 0;
+    if (texelBytes == 0) throw std::invalid_argument("BufferTexture: internalFormat must be GL_RGB32F or GL_RGBA32F");
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    const std::uint64_t texels = buffer.bytes() / texelBytes;
+    if (texels > static_cast<std::uint64_t>(maxTexels))
+        throw GpuMemoryError(resource.keyPath, resource.description + " read as a texture", buffer.bytes(),
+                             std::to_string(maxTexels) + " texels (GL_MAX_TEXTURE_BUFFER_SIZE)");
+    GLuint id = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &id);
+    name_ = GlName<deleteTexture>(id);
+    glTextureBuffer(id, internalFormat, buffer.id());
+}
+
 Texture2D::Texture2D(int width, int height, const float* rgba, const GpuResource& resource)
     : reservation_(resource, 16 * std::uint64_t(width) * std::uint64_t(height)) {
     GLuint id = 0;

@@ -89,6 +89,28 @@ private:
     std::size_t bytes_ = 0;
 };
 
+// A buffer's bytes read as a texture (GL_TEXTURE_BUFFER; GLSL samplerBuffer
+// and texelFetch), the buffer staying what passes write. A CPU rasterizer
+// fetches texels for all the lanes of a SIMD group at once, where it loads
+// a storage buffer at lane-dependent offsets one lane and one component at
+// a time: read-mostly arrays that many invocations index apart (receiver
+// maps, caustic vertices) are read faster as textures. internalFormat:
+// GL_RGB32F or GL_RGBA32F. Passes that wrote the buffer need
+// GL_TEXTURE_FETCH_BARRIER_BIT before the texels are read. Throws
+// GpuMemoryError where the buffer holds more texels than the driver's
+// GL_MAX_TEXTURE_BUFFER_SIZE.
+class BufferTexture {
+public:
+    BufferTexture() = default;
+    BufferTexture(const Buffer& buffer, GLenum internalFormat, const GpuResource& resource);
+
+    GLuint id() const { return name_.id(); }
+    void bindSampler(GLuint unit) const { glBindTextureUnit(unit, id()); }
+
+private:
+    GlName<deleteTexture> name_;
+};
+
 // A 3D texture with trilinear filtering and clamp-to-edge addressing, and
 // optionally a mip chain of `levels` (read with texelFetch per level).
 // internalFormat: GL_R32F or GL_RGBA32F. Asked of the driver by a proxy

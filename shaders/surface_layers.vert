@@ -6,7 +6,7 @@
 layout(std430, binding = kSurfaceTriangles) readonly buffer SurfaceTriangles { vec4 surface_triangles[]; };
 
 uniform mat4 view_projection;
-uniform int surface_of_ordinal[EIKON_MAX_SHARP_OBJECTS];  // the ordinal in w → the sharp surface's number
+uniform int surface_of_ordinal[kMaxSharpObjects];  // the ordinal in w → the sharp surface's number
 
 out vec3 world_position;
 out vec3 corner_normal;

@@ -24,20 +24,29 @@
 // (Comments inside the lists are /* */: a // comment would swallow the line
 // continuation.)
 
+// Limits of a scene that fixed-size blocks follow (the scene parser refuses
+// more). Uniform blocks, not storage buffers, hold the receivers and the
+// sharp surfaces: every pass reads them, and a CPU rasterizer broadcasts a
+// uniform block's values and gathers them for all the lanes of a SIMD group
+// at once, where it loads a storage buffer one lane at a time.
+#define EIKON_LAYOUT_LIMITS(X)                                                                                  \
+    X(kMaxSharpObjects, 32) /* sharp surfaces: a ray keeps one bit per surface it is inside; SharpSurfaces' size */ \
+    X(kMaxReceivers, 128)   /* receivers: the Receivers block's size (12 KiB, under GL's 16 KiB minimum) */
+
 // Binding points shared by the C++ stages and the shaders; each names the
 // GLSL block it binds, less the k.
 #define EIKON_LAYOUT_BINDINGS(X)                                                                                                \
     X(kGridBlock, 0)            /* uniform GridBlock (GpuGrid) */                                                               \
     X(kCameraBlock, 1)          /* uniform CameraBlock (GpuCamera) */                                                           \
     X(kEmitters, 2)             /* buffer Emitters { GpuEmitter emitters[]; } */                                                \
-    X(kReceivers, 3)            /* buffer Receivers { GpuReceiver receivers[]; } */                                             \
+    X(kReceivers, 3)            /* uniform Receivers { GpuReceiver receivers[kMaxReceivers]; } */                               \
     X(kReceiverMaps, 4)         /* buffer ReceiverMaps { float irradiance[]; }: RGB per texel, W/m² */                          \
     X(kFluence, 5)              /* buffer Fluence { float fluence[]; }: RGB per cell, W/m², track-length estimator, smoothed */ \
     X(kPhotonStats, 6)          /* buffer PhotonStats (GpuPhotonStats) */                                                       \
     X(kHdrImage, 7)             /* buffer HdrImage { vec4 radiance[]; } */                                                      \
     X(kLdrImage, 8)             /* buffer LdrImage { uint rgba8[]; } */                                                         \
     X(kPhotonPaths, 9)          /* buffer PhotonPaths { vec4 vertices[]; }: optional recording for tests and export */          \
-    X(kImageSpaceSurfaces, 9)   /* buffer ImageSpaceSurfaces { vec4 optics[]; }: per sharp surface (n, κ rgb), image space */    \
+    X(kImageSpaceSurfaces, 9)   /* uniform ImageSpaceSurfaces { vec4 extinction[kMaxSharpObjects]; }: per sharp surface κ rgb, image space */ \
     X(kPhotonEnds, 10)          /* buffer PhotonEnds { vec4 ends[]; }: per recorded photon (end, fate), (power, receiver) */    \
     X(kSurfacePixels, 10)       /* buffer SurfacePixels { uint pixels[]; }: image space, the pixels that see a surface */    \
     X(kReceiverTallies, 11)     /* buffer ReceiverTallies { uint units[]; }: per texel and channel a 64-bit fixed-point sum */  \
@@ -47,7 +56,7 @@
     X(kRawFluenceDirection, 14) /* buffer RawFluenceDirection: and its unsmoothed direction sums */                             \
     X(kViewExit, 15)            /* buffer ViewExit { vec4 exit[]; }: per pixel, direction leaving the scene, w: how (tests) */  \
     X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */          \
-    X(kSharpSurfaces, 17)       /* buffer SharpSurfaces { GpuSharpSurface surfaces[]; } */                                      \
+    X(kSharpSurfaces, 17)       /* uniform SharpSurfaces { GpuSharpSurface surfaces[kMaxSharpObjects]; } */                     \
     X(kSurfaceNodes, 18)        /* buffer SurfaceNodes { vec4 nodes[]; }: the sharp meshes' trees (FieldSet.h) */              \
     X(kSurfaceTriangles, 19)    /* buffer SurfaceTriangles { vec4 triangles[]; }: their corners and normals (FieldSet.h) */ \
     X(kWavefrontPatches, 20)    /* buffer Patches { GpuWavefrontPatch patches[]; }: one level of the wavefront, read */    \
@@ -87,7 +96,9 @@
     X(kEmissionTexture, 7)    /* rgba32f (ε rgb in W/(m³·sr), 0) */                                                 \
     X(kNearLayerTexture, 8)   /* rgba32f (octahedral normal, distance, surface + 1): the nearest surfaces a viewpoint sees */ \
     X(kFarLayerTexture, 9)    /* the same, the next surfaces behind them (image space, render/stages/SurfaceLayers) */ \
-    X(kCausticAtlasTexture, 10) /* rgba32f W per receiver texel, the receivers' maps stacked (image space, render/stages/CausticPolygons) */
+    X(kCausticAtlasTexture, 10) /* rgba32f W per receiver texel, the receivers' maps stacked (image space, render/stages/CausticPolygons) */ \
+    X(kReceiverMapTexture, 11)  /* rgb32f buffer texture of the ReceiverMaps buffer: the irradiance a view reads */     \
+    X(kCausticVertexTexture, 12) /* rgba32f buffer texture of the CausticVertices buffer: the photon landings the cells read */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \
@@ -183,6 +194,7 @@
 
 // Every list above: the constants each shader program is given.
 #define EIKON_LAYOUT_SHADER_CONSTANTS(X) \
+    EIKON_LAYOUT_LIMITS(X)               \
     EIKON_LAYOUT_BINDINGS(X)             \
     EIKON_LAYOUT_TEXTURE_UNITS(X)        \
     EIKON_LAYOUT_IMAGE_UNITS(X)          \
@@ -193,6 +205,7 @@
 namespace eikon::layout {
 
 #define EIKON_LAYOUT_ENUMERATOR(name, value) name = value,
+enum Limit : int { EIKON_LAYOUT_LIMITS(EIKON_LAYOUT_ENUMERATOR) };
 enum Binding : unsigned { EIKON_LAYOUT_BINDINGS(EIKON_LAYOUT_ENUMERATOR) };
 enum TextureUnit : unsigned { EIKON_LAYOUT_TEXTURE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
 enum ImageUnit : unsigned { EIKON_LAYOUT_IMAGE_UNITS(EIKON_LAYOUT_ENUMERATOR) };

@@ -68,9 +68,6 @@ struct BoxShape {
     glm::dvec3 max{0.5};  // > min on every axis
 };
 
-// A ray keeps one bit per sharp surface it is inside.
-constexpr int kMaxSharpObjects = 32;
-
 struct ObjectDesc {
     enum class Kind { Sphere, Box, Mesh, Water } kind = Kind::Sphere;
     SphereShape sphere;  // valid when kind == Sphere

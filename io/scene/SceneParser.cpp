@@ -1,6 +1,7 @@
 #include "io/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/layout/GpuLayouts.h"
 #include "io/files/FileBytes.h"
 #include "io/image/ImageIo.h"
 #include "io/scene/DuplicateKeyCheck.h"
@@ -635,8 +636,8 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
                                          [&](const JsonReader& node) { return readObject(node, sceneFolder); });
     const auto sharp = std::count_if(scene.objects.begin(), scene.objects.end(),
                                      [](const ObjectDesc& object) { return object.isSharp(); });
-    if (sharp > kMaxSharpObjects)
-        fields.member("objects").fail("at most " + std::to_string(kMaxSharpObjects) +
+    if (sharp > layout::kMaxSharpObjects)
+        fields.member("objects").fail("at most " + std::to_string(layout::kMaxSharpObjects) +
                                           " sharp objects (set \"surface\": \"smooth\" on the others)",
                                       std::to_string(sharp));
     scene.paint = readList<PaintStroke>(fields, "paint", readPaintStroke);
@@ -644,6 +645,9 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     if (auto tracer = fields.optional("tracer")) scene.tracer = readTracer(*tracer);
     scene.receivers = readList<ReceiverDesc>(
         fields, "receivers", [&](const JsonReader& node) { return readReceiver(node, scene.tracer.estimator); });
+    if (scene.receivers.size() > static_cast<std::size_t>(layout::kMaxReceivers))
+        fields.member("receivers").fail("at most " + std::to_string(layout::kMaxReceivers) + " receivers",
+                                        std::to_string(scene.receivers.size()));
     if (auto camera = fields.optional("camera")) scene.camera = readCamera(*camera);
     if (auto render = fields.optional("render")) scene.render = readRender(*render, sceneFolder);
     if (auto sim = fields.optional("sim")) scene.sim = readSim(*sim);

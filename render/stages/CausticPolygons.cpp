@@ -53,6 +53,7 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
               gl::GpuResource{"render.caustic_map_texels", "the caustic splats"}),
       drawCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
       splatCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
+      vertexTexels_(vertices_, GL_RGBA32F, {"render.caustic_map_texels", "the caustic maps' photon landings"}),
       atlas_(atlasSize(receivers).x, atlasSize(receivers).y,
              gl::GpuResource{"receivers", "the atlas the caustic triangles are drawn into"}),
       cellProgram_(gl::compileComputeProgram(
@@ -73,7 +74,7 @@ void CausticPolygons::drawLight(const glm::ivec2& grid) {
     drawCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
     splatCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
     receivers_.bind();
-    vertices_.bindStorage(layout::kCausticVertices);
+    vertexTexels_.bindSampler(layout::kCausticVertexTexture);
     triangles_.bindStorage(layout::kCausticTriangles);
     drawCommand_.bindStorage(layout::kCausticDraw);
     splats_.bindStorage(layout::kCausticSplats);

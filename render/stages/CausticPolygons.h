@@ -37,8 +37,12 @@ public:
     void clear();
     // Where the photon pass writes its landings (kCausticVertices).
     void bindVertices() const { vertices_.bindStorage(layout::kCausticVertices); }
-    // After a light's photon pass over a layers' grid of `grid` texels:
-    // draws its cells into the atlas, as triangles and as splats.
+    // After a light's photon pass over a layers' grid of `grid` texels, and
+    // a barrier for texel fetches: draws its cells into the atlas, as
+    // triangles and as splats. The cell pass reads the landings as a buffer
+    // texture, which a CPU rasterizer fetches for all lanes at once (its
+    // storage-buffer loads at lane-dependent offsets go a lane and a float
+    // at a time: 2–3 ms more of a 256² cell pass on two cores).
     void drawLight(const glm::ivec2& grid);
     // Adds the atlas, all lights drawn, into the receivers' tallies.
     void addToTallies(const glm::vec3& powerUnit);
@@ -46,6 +50,7 @@ public:
 private:
     const ReceiverMaps& receivers_;
     gl::Buffer vertices_, triangles_, splats_, drawCommand_, splatCommand_;
+    gl::BufferTexture vertexTexels_;  // vertices_, read by the cell pass
     gl::RasterTarget atlas_;
     gl::Program cellProgram_, gatherProgram_, drawProgram_, splatProgram_;
     gl::EmptyVertexArray vertexArray_;

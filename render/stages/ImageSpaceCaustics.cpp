@@ -172,7 +172,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         glUniform2fv(photonProgram_.uniform("jitter"), 1, glm::value_ptr(jitter));
         photonProgram_.dispatchCovering(static_cast<std::size_t>(layers.width()),
                                         static_cast<std::size_t>(layers.height()), 1, 8, 8, 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // the cells read the landings as texels
         polygons_.drawLight({layers.width(), layers.height()});
     }
     polygons_.addToTallies(powerUnit_);

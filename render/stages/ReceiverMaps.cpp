@@ -40,16 +40,21 @@ ReceiverMaps::ReceiverMaps(const std::vector<ReceiverDesc>& receivers) : receive
                                                                                 : 0);
     for (const auto& receiver : receivers_) texelCount_ += receiver.map.y * receiver.map.y;
     const std::size_t texels = texelCount_;
-    geometry_ = gl::Buffer(receivers_.size() * sizeof(layout::GpuReceiver), receivers_.data());
+    EIKON_CHECK(receivers_.size() <= static_cast<std::size_t>(layout::kMaxReceivers));  // the scene parser's limit
+    std::vector<layout::GpuReceiver> block(receivers_);  // the uniform block's whole array
+    block.resize(layout::kMaxReceivers);
+    geometry_ = gl::Buffer(block.size() * sizeof(layout::GpuReceiver), block.data());
     tallies_ = gl::Buffer(6 * texels * sizeof(std::uint32_t), {"receivers[].resolution", "the receivers' tallies"});
     maps_ = gl::Buffer(3 * texels * sizeof(float), {"receivers[].resolution", "the receivers' maps"});
+    mapTexels_ = gl::BufferTexture(maps_, GL_RGB32F, {"receivers[].resolution", "the receivers' maps"});
     if (!receivers_.empty()) filterProgram_ = gl::compileComputeProgram("receiver_filter.comp");
 }
 
 void ReceiverMaps::bind() const {
-    geometry_.bindStorage(layout::kReceivers);
+    geometry_.bindUniform(layout::kReceivers);
     tallies_.bindStorage(layout::kReceiverTallies);
     maps_.bindStorage(layout::kReceiverMaps);
+    mapTexels_.bindSampler(layout::kReceiverMapTexture);
 }
 
 void ReceiverMaps::dispatchOverTexels(const gl::Program& program) const {
@@ -72,7 +77,7 @@ void ReceiverMaps::filter(const glm::vec3& powerUnit) {
         glUniform1f(filterProgram_.uniform("texel_area"), receiver.normal.w);
         filterProgram_.dispatchCovering(receiver.map.y, receiver.map.y, 1, 8, 8, 1);
     }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("receiver filter");
 }
 

@@ -27,19 +27,22 @@ std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene) {
                                    object.fresnel ? 1.0f : 0.0f, 0.0f, 0.0f);
         surfaces.push_back(surface);
     }
-    EIKON_CHECK(surfaces.size() <= static_cast<std::size_t>(kMaxSharpObjects));
+    EIKON_CHECK(surfaces.size() <= static_cast<std::size_t>(layout::kMaxSharpObjects));
     return surfaces;
 }
 
 SharpSurfaceBuffer::SharpSurfaceBuffer(const Scene& scene) : SharpSurfaceBuffer(buildSharpSurfaces(scene)) {}
 
 SharpSurfaceBuffer::SharpSurfaceBuffer(std::vector<layout::GpuSharpSurface> surfaces) : surfaces_(std::move(surfaces)) {
-    if (!surfaces_.empty())
-        buffer_ = gl::Buffer(surfaces_.size() * sizeof(layout::GpuSharpSurface), surfaces_.data());
+    EIKON_CHECK(surfaces_.size() <= static_cast<std::size_t>(layout::kMaxSharpObjects));
+    if (surfaces_.empty()) return;
+    std::vector<layout::GpuSharpSurface> block(surfaces_);  // the uniform block's whole array
+    block.resize(layout::kMaxSharpObjects);
+    buffer_ = gl::Buffer(block.size() * sizeof(layout::GpuSharpSurface), block.data());
 }
 
 void SharpSurfaceBuffer::bind() const {
-    if (!surfaces_.empty()) buffer_.bindStorage(layout::kSharpSurfaces);
+    if (!surfaces_.empty()) buffer_.bindUniform(layout::kSharpSurfaces);
 }
 
 }  // namespace eikon::render

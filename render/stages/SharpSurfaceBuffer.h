@@ -18,7 +18,7 @@
 namespace eikon::render {
 
 // The scene's sharp objects as surfaces (empty when it has none; at most
-// kMaxSharpObjects, which the scene parser checks). Mesh and water surfaces
+// layout::kMaxSharpObjects, which the scene parser checks). Mesh and water surfaces
 // get their root node: the k-th such object in scene order has node k.
 std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene);
 

@@ -39,11 +39,12 @@ void SurfaceLayers::bind() const {
 
 namespace {
 
+// The uniform block ImageSpaceSurfaces: κ per sharp surface, in scene order.
 gl::Buffer surfaceExtinction(const Scene& scene) {
     std::vector<glm::vec4> extinction;
     for (const ObjectDesc& object : scene.objects)
         if (object.isSharp()) extinction.emplace_back(glm::vec3(object.material.extinction), 0.0f);
-    if (extinction.empty()) extinction.emplace_back(0.0f);  // a buffer of one for a scene without surfaces
+    extinction.resize(layout::kMaxSharpObjects, glm::vec4(0.0f));
     return gl::Buffer(extinction.size() * sizeof(glm::vec4), extinction.data(), GL_DYNAMIC_STORAGE_BIT,
                       {"objects", "the surfaces' extinction"});
 }
@@ -82,7 +83,7 @@ std::vector<BoxShape> apartShapeBounds(const Scene& scene) {
 
 void SurfaceRaster::bindSurfaces() const {
     surfaces_.bind();
-    extinction_.bindStorage(layout::kImageSpaceSurfaces);
+    extinction_.bindUniform(layout::kImageSpaceSurfaces);
 }
 
 SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_(surfaceExtinction(scene)) {
@@ -90,16 +91,15 @@ SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_
         for (int peel = 0; peel < 2; ++peel)
             programs_[exact][peel] = gl::compileRasterProgram(
                 "surface_layers.vert", "surface_layers.frag",
-                {{"EIKON_MAX_SHARP_OBJECTS", std::to_string(kMaxSharpObjects)},
-                 {"EIKON_EXACT_SHAPES", std::to_string(exact)},
+                {{"EIKON_EXACT_SHAPES", std::to_string(exact)},
                  {"EIKON_PEEL", std::to_string(peel)}});
     const std::vector<float> shapes = shapeTriangles(scene);
     if (!shapes.empty())
         shapes_ = gl::Buffer(shapes.size() * sizeof(float), shapes.data(), GL_DYNAMIC_STORAGE_BIT,
                              {"objects", "the spheres' and boxes' triangles"});
-    shapeSurfaces_.resize(kMaxSharpObjects);
+    shapeSurfaces_.resize(layout::kMaxSharpObjects);
     std::iota(shapeSurfaces_.begin(), shapeSurfaces_.end(), 0);
-    meshSurfaces_.assign(kMaxSharpObjects, 0);
+    meshSurfaces_.assign(layout::kMaxSharpObjects, 0);
     int surface = 0, meshes = 0;
     for (const ObjectDesc& object : scene.objects) {
         if (!object.isSharp()) continue;
@@ -127,7 +127,7 @@ void SurfaceRaster::drawTriangles(const gl::Program& program, const Viewpoint& v
     glUniform3fv(program.uniform("view_axis"), 1, glm::value_ptr(view.axis));
     glUniform1i(program.uniform("view_orthographic"), view.orthographic ? 1 : 0);
     triangles.bindStorage(layout::kSurfaceTriangles);
-    glUniform1iv(program.uniform("surface_of_ordinal"), kMaxSharpObjects, surfaceOfOrdinal.data());
+    glUniform1iv(program.uniform("surface_of_ordinal"), layout::kMaxSharpObjects, surfaceOfOrdinal.data());
     const auto corners = static_cast<GLsizei>(triangles.bytes() / (kSurfaceTriangleFloats * sizeof(float)) * 3);
     glDrawArrays(GL_TRIANGLES, 0, corners);
 }

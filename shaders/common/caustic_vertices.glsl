@@ -5,12 +5,14 @@
 // image_space_caustics.comp writes them; caustic_polygons.comp joins
 // neighbours into triangles, on every receiver one of them lands on (the
 // flight, not only the landing, lets a cell whose photons land on two
-// receivers, or past a receiver's edge, be drawn on each). GLSL only; needs
-// receiver.glsl and receiver_blocks.glsl.
+// receivers, or past a receiver's edge, be drawn on each). The photon pass
+// writes them to the buffer; the cell pass reads the same buffer as a
+// buffer texture (render/stages/CausticPolygons.h says why). GLSL only;
+// needs receiver.glsl and receiver_blocks.glsl.
 
-layout(std430, binding = kCausticVertices) buffer CausticVertices {
-    vec4 caustic_vertices[];  // [3·(2·texel + sheet)]: (flight origin, surface); [+ 1]: (direction, receiver or −1); [+ 2]: (W rgb, 0)
-};
+// [3·(2·texel + sheet)]: (flight origin, surface); [+ 1]: (direction, receiver or −1); [+ 2]: (W rgb, 0)
+layout(std430, binding = kCausticVertices) writeonly buffer CausticVertices { vec4 caustic_vertices[]; };
+layout(binding = kCausticVertexTexture) uniform samplerBuffer caustic_vertex_texels;
 
 const int kCausticSheets = 2;
 
@@ -33,12 +35,13 @@ void write_caustic_vertex(uint texel, int sheet, CausticVertex v) {
 
 // The sharp surface a vertex's light texel shows (−1: none), read alone.
 int caustic_vertex_surface(uint texel, int sheet) {
-    return int(round(caustic_vertices[caustic_vertex_slot(texel, sheet)].w));
+    return int(round(texelFetch(caustic_vertex_texels, int(caustic_vertex_slot(texel, sheet))).w));
 }
 
 CausticVertex read_caustic_vertex(uint texel, int sheet) {
-    uint slot = caustic_vertex_slot(texel, sheet);
-    vec4 a = caustic_vertices[slot], b = caustic_vertices[slot + 1u], c = caustic_vertices[slot + 2u];
+    int slot = int(caustic_vertex_slot(texel, sheet));
+    vec4 a = texelFetch(caustic_vertex_texels, slot), b = texelFetch(caustic_vertex_texels, slot + 1),
+         c = texelFetch(caustic_vertex_texels, slot + 2);
     return CausticVertex(int(round(b.w)), int(round(a.w)), a.xyz, b.xyz, c.rgb);
 }
 

@@ -1,5 +1,8 @@
-// Receivers as shaders see them (C++ mirror: layout::GpuReceiver) and their
-// irradiance maps. GLSL only; the geometry lives in common/receiver.glsl.
+// Receivers as shaders see them (C++ mirror: layout::GpuReceiver; a uniform
+// block, bridge/layout/GpuLayouts.h says why) and their irradiance maps,
+// read as a buffer texture of the ReceiverMaps buffer that
+// receiver_filter.comp writes (for the same reason: render/stages/ReceiverMaps.h).
+// GLSL only; the geometry lives in common/receiver.glsl.
 struct Receiver {
     vec4 origin;   // w: edge size
     vec4 normal;   // w: texel area
@@ -9,8 +12,8 @@ struct Receiver {
     uvec4 map;     // x: first texel, y: texels per edge, z: 1 if photons bounce
 };
 
-layout(std430, binding = kReceivers) readonly buffer Receivers { Receiver receivers[]; };
-layout(std430, binding = kReceiverMaps) buffer ReceiverMaps { float receiver_irradiance[]; };  // RGB per texel, W/m²
+layout(std140, binding = kReceivers) uniform Receivers { Receiver receivers[kMaxReceivers]; };
+layout(binding = kReceiverMapTexture) uniform samplerBuffer receiver_map_texels;  // RGB per texel, W/m²
 
 uniform uint receiver_count;
 
@@ -48,9 +51,9 @@ vec3 receiver_irradiance_at(int r, vec2 uv) {
     for (int j = 0; j < 2; ++j) {
         for (int i = 0; i < 2; ++i) {
             ivec2 t = clamp(base + ivec2(i, j), ivec2(0), ivec2(int(resolution) - 1));
-            uint index = 3u * (receivers[r].map.x + uint(t.y) * resolution + uint(t.x));
+            int index = int(receivers[r].map.x + uint(t.y) * resolution + uint(t.x));
             float weight = (i == 0 ? 1.0f - f.x : f.x) * (j == 0 ? 1.0f - f.y : f.y);
-            sum += weight * vec3(receiver_irradiance[index], receiver_irradiance[index + 1u], receiver_irradiance[index + 2u]);
+            sum += weight * texelFetch(receiver_map_texels, index).rgb;
         }
     }
     return sum;

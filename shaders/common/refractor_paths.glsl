@@ -21,7 +21,7 @@
 #include "common/sharp_surface_list.glsl"
 
 layout(std430, binding = kSurfaceNodes) readonly buffer SurfaceNodes { vec4 surface_nodes[]; };
-layout(std430, binding = kImageSpaceSurfaces) readonly buffer ImageSpaceSurfaces { vec4 surface_extinction[]; };
+layout(std140, binding = kImageSpaceSurfaces) uniform ImageSpaceSurfaces { vec4 surface_extinction[kMaxSharpObjects]; };
 layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
 layout(binding = kFarLayerTexture) uniform sampler2D far_layer;
 

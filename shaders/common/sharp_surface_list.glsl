@@ -6,4 +6,4 @@ struct SharpSurface {
     vec4 shape_b;  // x sphere radius, or xyz box max; w a mesh's root node
     vec4 optics;   // x n_object − n_ref; y 1 if Fresnel reflects
 };
-layout(std430, binding = kSharpSurfaces) readonly buffer SharpSurfaces { SharpSurface sharp_surfaces[]; };
+layout(std140, binding = kSharpSurfaces) uniform SharpSurfaces { SharpSurface sharp_surfaces[kMaxSharpObjects]; };

@@ -45,6 +45,9 @@ const std::map<std::string, BlockRow>& uniformBlocks() {
     static const std::map<std::string, BlockRow> rows = {
         {"GridBlock", {layout::kGridBlock, sizeof(layout::GpuGrid), 0}},
         {"CameraBlock", {layout::kCameraBlock, sizeof(layout::GpuCamera), 0}},
+        {"Receivers", {layout::kReceivers, layout::kMaxReceivers * sizeof(layout::GpuReceiver), 0}},
+        {"SharpSurfaces", {layout::kSharpSurfaces, layout::kMaxSharpObjects * sizeof(layout::GpuSharpSurface), 0}},
+        {"ImageSpaceSurfaces", {layout::kImageSpaceSurfaces, layout::kMaxSharpObjects * sizeof(glm::vec4), 0}},
     };
     return rows;
 }
@@ -52,7 +55,6 @@ const std::map<std::string, BlockRow>& uniformBlocks() {
 const std::map<std::string, BlockRow>& storageBlocks() {
     static const std::map<std::string, BlockRow> rows = {
         {"Emitters", {layout::kEmitters, 0, sizeof(layout::GpuEmitter)}},
-        {"Receivers", {layout::kReceivers, 0, sizeof(layout::GpuReceiver)}},
         {"ReceiverMaps", {layout::kReceiverMaps, 0, sizeof(float)}},
         {"Fluence", {layout::kFluence, 0, sizeof(float)}},
         {"PhotonStats", {layout::kPhotonStats, sizeof(layout::GpuPhotonStats), 0}},
@@ -65,7 +67,6 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"RawFluenceDirection", {layout::kRawFluenceDirection, 0, sizeof(float)}},
         {"ViewExit", {layout::kViewExit, 0, sizeof(glm::vec4)}},
         {"PhotonPathPower", {layout::kPhotonPathPower, 0, sizeof(glm::vec4)}},
-        {"SharpSurfaces", {layout::kSharpSurfaces, 0, sizeof(layout::GpuSharpSurface)}},
         {"SurfaceNodes", {layout::kSurfaceNodes, 0, sizeof(glm::vec4)}},
         {"SurfaceTriangles", {layout::kSurfaceTriangles, 0, sizeof(glm::vec4)}},
         {"Patches", {layout::kWavefrontPatches, 0, sizeof(layout::GpuWavefrontPatch)}},
@@ -81,6 +82,14 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"ScatteredPower", {layout::kScatteredPower, 0, sizeof(float)}},
         {"LatticeGrey", {layout::kLatticeGrey, sizeof(std::uint32_t), 0}},
         {"LatticeInterfaces", {layout::kLatticeInterfaces, 0, sizeof(glm::uvec4)}},
+        // Image space (render/stages/ImageSpace*, CausticPolygons).
+        {"SurfacePixels", {layout::kSurfacePixels, 0, sizeof(std::uint32_t)}},
+        {"SurfacePixelCount", {layout::kSurfacePixelCount, sizeof(glm::uvec4), 0}},
+        {"CausticVertices", {layout::kCausticVertices, 0, sizeof(glm::vec4)}},
+        {"CausticTriangles", {layout::kCausticTriangles, 0, sizeof(glm::vec4)}},
+        {"CausticDraw", {layout::kCausticDraw, sizeof(glm::uvec4), 0}},
+        {"CausticSplats", {layout::kCausticSplats, 0, sizeof(glm::vec4)}},
+        {"CausticSplatDraw", {layout::kCausticSplatDraw, sizeof(glm::uvec4), 0}},
         // The fluid solver's passes (sim/gpu, shaders/sim).
         {"VelocityX", {layout::kSolverVelocityX, 0, sizeof(float)}},
         {"VelocityY", {layout::kSolverVelocityY, 0, sizeof(float)}},
@@ -146,6 +155,9 @@ const std::map<std::string, unsigned>& samplers() {
         {"extinction_texture", layout::kExtinctionTexture}, {"scattering_texture", layout::kScatteringTexture},
         {"step_structure", layout::kStepTexture},           {"environment_texture", layout::kEnvironmentTexture},
         {"anisotropy_texture", layout::kAnisotropyTexture}, {"emission_texture", layout::kEmissionTexture},
+        {"near_layer", layout::kNearLayerTexture},          {"far_layer", layout::kFarLayerTexture},
+        {"caustic_atlas", layout::kCausticAtlasTexture},    {"receiver_map_texels", layout::kReceiverMapTexture},
+        {"caustic_vertex_texels", layout::kCausticVertexTexture},
     };
     return rows;
 }
@@ -243,6 +255,14 @@ std::vector<Variant> productionVariants() {
           {"EIKON_HAS_ANISOTROPY", "1"},
           {"EIKON_LATTICE_DIRECTIONS", "18"},
           {"EIKON_LATTICE_PASS", "2"}}},
+        // Image space's compute passes (render/stages/ImageSpace*, CausticPolygons).
+        {"image_space_caustics.comp", {{"EIKON_PASS", "0"}}},
+        {"image_space_caustics.comp", {{"EIKON_PASS", "1"}}},
+        {"image_space_view.comp", {{"EIKON_PASS", "0"}, {"EIKON_ENVIRONMENT", std::to_string(layout::kHdrEnvironment)}}},
+        {"image_space_view.comp",
+         {{"EIKON_PASS", "1"}, {"EIKON_ENVIRONMENT", std::to_string(layout::kHdrEnvironment)}, {"EIKON_RECORD_EXIT", "1"}}},
+        {"caustic_polygons.comp", {{"EIKON_PASS", "0"}, {"EIKON_CELL_RECEIVERS", "4"}}},
+        {"caustic_polygons.comp", {{"EIKON_PASS", "1"}}},
         // The fluid solver's passes, each variant sim/gpu compiles.
         {"sim/apply_sources.comp", {}},
         {"sim/buoyancy.comp", {}},

@@ -162,6 +162,17 @@ TEST(SceneParserMesh, SurfaceKeys) {
     expectErrorAt(many, "objects", "at most 32 sharp");
 }
 
+// The receivers fill a uniform block of 128 (bridge/layout/GpuLayouts.h).
+TEST(SceneParserMesh, AtMost128Receivers) {
+    json root = validScene();
+    const json receiver = root["receivers"][0];
+    root["receivers"] = json::array();
+    for (int k = 0; k < 128; ++k) root["receivers"].push_back(receiver);
+    EXPECT_EQ(parseScene(root, "test.json").receivers.size(), 128u);
+    root["receivers"].push_back(receiver);
+    expectErrorAt(root, "receivers", "at most 128 receivers");
+}
+
 TEST(SceneParserMesh, ReceiverFilter) {
     json root = validScene();
     EXPECT_EQ(parseScene(root, "test.json").receivers[0].filter, ReceiverDesc::Filter::Binomial);
