@@ -7,11 +7,15 @@
 // entering on peel 0, leaving on peel 1 — with the sphere's own normal, or
 // is discarded where that ray misses it.
 //
-// Program options: EIKON_PEEL (0 or 1); EIKON_EXACT_SHAPES (1: the spheres'
-// and boxes' triangles, whose spheres are met exactly; 0: meshes and water,
+// Program options: EIKON_PEEL (0 or 1); EIKON_NEAR_TEST (peel 1: 1 peels
+// behind the first layer; 0 where only the faces away from the viewpoint
+// are drawn, whose nearest lies behind the first layer already:
+// SurfaceRaster::drawsFacingFaces); EIKON_EXACT_SHAPES (1: the spheres' and
+// boxes' triangles, whose spheres are met exactly; 0: meshes and water,
 // drawn as they are). Each is its own program because a CPU rasterizer runs
 // every branch under a mask, and a discard anywhere in the program turns its
-// early depth test off: mesh fragments in peel 0 then pay for neither.
+// early depth test off: mesh fragments then pay for neither, except in a
+// peel that tests the first layer.
 #include "common/surface_layers.glsl"
 #include "common/sharp_surface_list.glsl"
 #include "common/sharp_surfaces.glsl"
@@ -23,7 +27,7 @@ flat in int surface;
 uniform vec3 view_eye;
 uniform vec3 view_axis;
 uniform int view_orthographic;
-#if EIKON_PEEL == 1
+#if EIKON_PEEL == 1 && EIKON_NEAR_TEST
 layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
 #endif
 
@@ -48,7 +52,7 @@ void main() {
     }
 #endif
     float distance = viewpoint_distance(view, x);
-#if EIKON_PEEL == 1
+#if EIKON_PEEL == 1 && EIKON_NEAR_TEST
     vec4 nearer = texelFetch(near_layer, ivec2(gl_FragCoord.xy), 0);
     if (distance <= nearer.z * (1.0f + 1e-5f) + 1e-6f) discard;
 #endif

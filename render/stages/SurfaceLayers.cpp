@@ -88,11 +88,12 @@ void SurfaceRaster::bindSurfaces() const {
 
 SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_(surfaceExtinction(scene)) {
     for (int exact = 0; exact < 2; ++exact)
-        for (int peel = 0; peel < 2; ++peel)
-            programs_[exact][peel] = gl::compileRasterProgram(
+        for (int variant = 0; variant < 3; ++variant)
+            programs_[exact][variant] = gl::compileRasterProgram(
                 "surface_layers.vert", "surface_layers.frag",
                 {{"EIKON_EXACT_SHAPES", std::to_string(exact)},
-                 {"EIKON_PEEL", std::to_string(peel)}});
+                 {"EIKON_PEEL", variant == 0 ? "0" : "1"},
+                 {"EIKON_NEAR_TEST", variant == 1 ? "1" : "0"}});
     const std::vector<float> shapes = shapeTriangles(scene);
     if (!shapes.empty())
         shapes_ = gl::Buffer(shapes.size() * sizeof(float), shapes.data(), GL_DYNAMIC_STORAGE_BIT,
@@ -150,8 +151,9 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
             glEnable(GL_CULL_FACE);
             glCullFace(peel == 0 ? GL_BACK : GL_FRONT);
         }
-        drawTriangles(programs_[1][peel], view, shapes_, shapeSurfaces_);
-        drawTriangles(programs_[0][peel], view, fields.surfaceTriangles(), meshSurfaces_);
+        const int variant = peel == 0 ? 0 : facingFaces ? 2 : 1;
+        drawTriangles(programs_[1][variant], view, shapes_, shapeSurfaces_);
+        drawTriangles(programs_[0][variant], view, fields.surfaceTriangles(), meshSurfaces_);
         glDisable(GL_CULL_FACE);
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }

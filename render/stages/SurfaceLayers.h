@@ -70,7 +70,9 @@ private:
 
     SharpSurfaceBuffer surfaces_;
     gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it
-    gl::Program programs_[2][2];  // [exact shapes: spheres and boxes; 0: meshes and water][peel]
+    // [exact shapes: spheres and boxes; 0: meshes and water][0: near layer;
+    // 1: far, peeled behind the near; 2: far, the faces away alone]
+    gl::Program programs_[2][3];
     gl::EmptyVertexArray vertexArray_;
     gl::Buffer shapes_;                     // the spheres' and boxes' triangles
     std::vector<int> shapeSurfaces_;        // identity: a shape's w is its surface number

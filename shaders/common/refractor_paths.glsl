@@ -55,18 +55,53 @@ bool inside_layers(Viewpoint view, vec3 x, int s) {
 }
 
 // The point of the layer nearest in distance to x, on x's line of sight, and its normal.
+// The layer (near or far) is the one whose surface at the texel holding x
+// lies nearer in distance to x. It is read between texel centres: bilinear
+// in normal and distance where the four texels around x show the same
+// surface as the texel holding it, else that texel's own. A texel's normal
+// and distance are its centre's; read at the nearest texel, a point half a
+// texel off takes a normal half a texel away on the surface, which at the
+// back of a glass sphere turns its ray by pixels. The texel holding x is
+// one of the four around it, so each layer is read at four texels, and only
+// the chosen layer's are decoded (a CPU rasterizer pays for every fetch and
+// decode of every lane).
 bool nearest_layer_point(Viewpoint view, vec3 x, out vec3 point, out vec3 normal) {
     vec2 coordinate;
+    point = x;
+    normal = vec3(0.0f);
     if (!viewpoint_coordinate(view, x, coordinate)) return false;
-    LayerSample near_ = layer_sample_between(near_layer, coordinate, view.size);
-    LayerSample far_ = layer_sample_between(far_layer, coordinate, view.size);
-    if (near_.surface < 0) return false;
+    ivec2 own = min(ivec2(coordinate), view.size - 1);
+    ivec2 base = ivec2(floor(coordinate - 0.5f));
+    bool interior = all(greaterThanEqual(base, ivec2(0))) && all(lessThan(base + 1, view.size));
+    ivec2 low = clamp(base, ivec2(0), view.size - 1), high = clamp(base + 1, ivec2(0), view.size - 1);
+    ivec2 corners[4] = ivec2[4](low, ivec2(high.x, low.y), ivec2(low.x, high.y), high);
+    vec4 near_corner[4], far_corner[4];
+    for (int k = 0; k < 4; ++k) {
+        near_corner[k] = texelFetch(near_layer, corners[k], 0);
+        far_corner[k] = texelFetch(far_layer, corners[k], 0);
+    }
+    // The texel holding x is a corner: own ∈ {base, base + 1} on each axis (clamped alike).
+    bool own_high_x = own.x == high.x && own.x != low.x, own_high_y = own.y == high.y && own.y != low.y;
+    vec4 own_near = own_high_y ? (own_high_x ? near_corner[3] : near_corner[2]) : (own_high_x ? near_corner[1] : near_corner[0]);
+    vec4 own_far = own_high_y ? (own_high_x ? far_corner[3] : far_corner[2]) : (own_high_x ? far_corner[1] : far_corner[0]);
+    if (own_near.w < 0.5f) return false;  // no surface here
     float d = viewpoint_distance(view, x);
-    bool use_far = far_.surface >= 0 && abs(d - far_.distance) < abs(d - near_.distance);
-    LayerSample chosen = use_far ? far_ : near_;
-    point = view.orthographic ? x + (chosen.distance - d) * view.axis
-                              : view.eye + normalize(x - view.eye) * chosen.distance;
-    normal = chosen.normal;
+    bool use_far = own_far.w > 0.5f && abs(d - own_far.z) < abs(d - own_near.z);
+    LayerSample own_chosen = layer_value(use_far ? own_far : own_near);
+    vec2 f = coordinate - 0.5f - vec2(base);
+    vec3 blended_normal = vec3(0.0f);
+    float blended_distance = 0.0f;
+    bool same_surface = interior;
+    for (int k = 0; k < 4; ++k) {
+        LayerSample s = layer_value(use_far ? far_corner[k] : near_corner[k]);
+        same_surface = same_surface && s.surface == own_chosen.surface;
+        float weight = ((k & 1) == 1 ? f.x : 1.0f - f.x) * ((k >> 1) == 1 ? f.y : 1.0f - f.y);
+        blended_normal += weight * (dot(s.normal, own_chosen.normal) < 0.0f ? -s.normal : s.normal);
+        blended_distance += weight * s.distance;
+    }
+    float distance = same_surface ? blended_distance : own_chosen.distance;
+    normal = same_surface ? normalize(blended_normal) : own_chosen.normal;
+    point = view.orthographic ? x + (distance - d) * view.axis : view.eye + normalize(x - view.eye) * distance;
     return true;
 }
 

@@ -57,33 +57,8 @@ struct LayerSample {
     int surface;  // -1: none
 };
 
-LayerSample layer_sample(sampler2D layer, ivec2 texel) {
-    vec4 value = texelFetch(layer, texel, 0);
+LayerSample layer_value(vec4 value) {
     return LayerSample(octahedral_decode(value.xy), value.z, int(value.w + 0.5f) - 1);
 }
 
-// The layer at a point between texel centres: bilinear in normal and
-// distance where the four texels around it show the same surface as the
-// texel holding it, else that texel's own. A texel's normal and distance
-// are its centre's; read at the nearest texel, a point half a texel off
-// takes a normal half a texel away on the surface, which at the back of a
-// glass sphere turns its ray by pixels.
-LayerSample layer_sample_between(sampler2D layer, vec2 coordinate, ivec2 size) {
-    ivec2 own = clamp(ivec2(coordinate), ivec2(0), size - 1);
-    LayerSample nearest = layer_sample(layer, own);
-    vec2 shifted = coordinate - 0.5f;
-    ivec2 base = ivec2(floor(shifted));
-    if (nearest.surface < 0 || any(lessThan(base, ivec2(0))) || any(greaterThanEqual(base + 1, size))) return nearest;
-    vec2 f = shifted - vec2(base);
-    vec3 normal = vec3(0.0f);
-    float distance = 0.0f;
-    for (int corner = 0; corner < 4; ++corner) {
-        ivec2 step_ = ivec2(corner & 1, corner >> 1);
-        LayerSample s = layer_sample(layer, base + step_);
-        if (s.surface != nearest.surface) return nearest;
-        float weight = (step_.x == 1 ? f.x : 1.0f - f.x) * (step_.y == 1 ? f.y : 1.0f - f.y);
-        normal += weight * (dot(s.normal, nearest.normal) < 0.0f ? -s.normal : s.normal);
-        distance += weight * s.distance;
-    }
-    return LayerSample(normalize(normal), distance, nearest.surface);
-}
+LayerSample layer_sample(sampler2D layer, ivec2 texel) { return layer_value(texelFetch(layer, texel, 0)); }
