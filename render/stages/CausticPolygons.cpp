@@ -58,10 +58,15 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
              gl::GpuResource{"receivers", "the atlas the caustic triangles are drawn into"}),
       cellProgram_(gl::compileComputeProgram(
           "caustic_polygons.comp",
-          {{"EIKON_PASS", "0"}, {"EIKON_CELL_RECEIVERS", std::to_string(receiversPerCell(receivers))}})),
-      gatherProgram_(gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "1"}})),
-      drawProgram_(gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag")),
-      splatProgram_(gl::compileRasterProgram("caustic_splats.vert", "caustic_splats.frag")) {}
+          {{"EIKON_PASS", "0"},
+           {"EIKON_CELL_RECEIVERS", std::to_string(receiversPerCell(receivers))},
+           receivers.countOption()})),
+      gatherProgram_(
+          gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "1"}, receivers.countOption()})),
+      drawProgram_(
+          gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag", {receivers.countOption()})),
+      splatProgram_(
+          gl::compileRasterProgram("caustic_splats.vert", "caustic_splats.frag", {receivers.countOption()})) {}
 
 void CausticPolygons::clear() {
     GLint previousFramebuffer = 0;
@@ -122,7 +127,6 @@ void CausticPolygons::addToTallies(const glm::vec3& powerUnit) {
     receivers_.bind();
     atlas_.bindColour(layout::kCausticAtlasTexture);
     gatherProgram_.use();
-    glUniform1ui(gatherProgram_.uniform("receiver_count"), receivers_.count());
     glUniform3fv(gatherProgram_.uniform("power_unit"), 1, glm::value_ptr(powerUnit));
     receivers_.dispatchOverTexels(gatherProgram_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

@@ -48,8 +48,10 @@ struct ImageSpaceCaustics::LightFrame {
 
 ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receivers, SurfaceRaster& raster)
     : scene_(scene), receivers_(receivers), raster_(raster), lights_(scene.lights),
-      directProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "0"}})),
-      photonProgram_(gl::compileComputeProgram("image_space_caustics.comp", {{"EIKON_PASS", "1"}})),
+      directProgram_(gl::compileComputeProgram("image_space_caustics.comp",
+                                               {{"EIKON_PASS", "0"}, receivers.countOption()})),
+      photonProgram_(gl::compileComputeProgram("image_space_caustics.comp",
+                                               {{"EIKON_PASS", "1"}, receivers.countOption()})),
       polygons_(scene.render.causticMapTexels, receivers) {
     const int texels = scene.render.causticMapTexels;
     for (std::size_t i = 0; i < lights_.size(); ++i)
@@ -160,7 +162,6 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
             glUniform2fv(program->uniform("spot_cosines"), 1, glm::value_ptr(spotCosines));
             glUniform2i(program->uniform("layer_size"), layers.width(), layers.height());
             glUniform3fv(program->uniform("power_unit"), 1, glm::value_ptr(powerUnit_));
-            glUniform1ui(program->uniform("receiver_count"), receivers_.count());
         }
         directProgram_.use();
         receivers_.dispatchOverTexels(directProgram_);

@@ -13,11 +13,12 @@ namespace eikon::render {
 
 namespace {
 
-gl::Program viewProgram(const Scene& scene, int pass, bool recordExit) {
+gl::Program viewProgram(const Scene& scene, const ReceiverMaps& receivers, int pass, bool recordExit) {
     return gl::compileComputeProgram("image_space_view.comp",
                                      {{"EIKON_PASS", std::to_string(pass)},
                                       {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
-                                      {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"}});
+                                      {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"},
+                                      receivers.countOption()});
 }
 
 }  // namespace
@@ -27,7 +28,8 @@ ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers
     : receivers_(receivers), raster_(raster),
       render_(scene.render), camera_(scene.camera),
       layers_(scene.render.width, scene.render.height, {"render.width × render.height", "the camera's surface layers"}),
-      backgroundProgram_(viewProgram(scene, 0, recordExit)), surfaceProgram_(viewProgram(scene, 1, recordExit)),
+      backgroundProgram_(viewProgram(scene, receivers, 0, recordExit)),
+      surfaceProgram_(viewProgram(scene, receivers, 1, recordExit)),
       surfacePixels_(static_cast<std::size_t>(scene.render.width) * static_cast<std::size_t>(scene.render.height) *
                          sizeof(GLuint),
                      {"render.width × render.height", "the list of pixels that see a surface"}),
@@ -56,13 +58,11 @@ void ImageSpaceView::run(const FieldTextures& fields) {
     surfacePixels_.bindStorage(layout::kSurfacePixels);
     surfacePixelCount_.bindStorage(layout::kSurfacePixelCount);
     backgroundProgram_.use();
-    glUniform1ui(backgroundProgram_.uniform("receiver_count"), receivers_.count());
     backgroundProgram_.dispatchCovering(static_cast<std::size_t>(render_.width),
                                         static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     surfaceProgram_.use();
     glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
-    glUniform1ui(surfaceProgram_.uniform("receiver_count"), receivers_.count());
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, surfacePixelCount_.id());
     glDispatchComputeIndirect(0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);

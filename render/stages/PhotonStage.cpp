@@ -147,6 +147,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_OCTREE_STEPS", tracer.stepPolicy == TracerDesc::StepPolicy::Octree ? "1" : "0"},
         {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
         {"EIKON_LOOP_BUDGET", std::to_string(loopBudget)},
+        receivers.countOption(),
         {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
         {"EIKON_LATTICE_SOURCE", feedsLattice(scene, fields) ? "1" : "0"}};
     fixedFluence_ = byWavefront && storeFluence_ > 0;
@@ -267,7 +268,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     resumeDispatches_ = 0;
     if (wavefront_) {
         stats.byWavefront = true;
-        stats.wavefront = wavefront_->run({emissionFaces_, receivers_.count(), surfaces_.empty() ? 0u : surfaces_.count(),
+        stats.wavefront = wavefront_->run({emissionFaces_, surfaces_.empty() ? 0u : surfaces_.count(),
                                            settings.maxSteps, settings.stepLength, dispersion_, powerUnit_,
                                            settings.share, fixedFluence_ ? fluenceUnits(fields) : FluenceUnits{},
                                            rawScattered_.id() != 0});
@@ -384,7 +385,6 @@ void PhotonStage::tracePhotons(const PhotonSettings& settings, std::size_t first
     glUniform1ui(program_.uniform("checkerboard"), checkerboard ? 1u : 0u);
     if (!surfaces_.empty()) glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
     glUniform1ui(program_.uniform("emitter_count"), emitterCount_);
-    glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
     glUniform1ui(program_.uniform("seed"), settings.seed);
     glUniform1f(program_.uniform("step_length"), static_cast<float>(settings.stepLength));
     glUniform1ui(program_.uniform("max_steps"), settings.maxSteps);

@@ -11,8 +11,10 @@
 #include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
 #include "gl/GlObjects.h"
+#include "gl/ShaderLibrary.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace eikon::render {
@@ -24,6 +26,9 @@ public:
     explicit ReceiverMaps(const std::vector<ReceiverDesc>& receivers);
 
     unsigned count() const { return static_cast<unsigned>(receivers_.size()); }
+    // The program option every shader that reads the receivers takes
+    // (shaders/common/receiver_blocks.glsl): their count, a constant there.
+    gl::ShaderDefines::value_type countOption() const { return {"EIKON_RECEIVERS", std::to_string(count())}; }
     // Texels of all receivers' maps together.
     unsigned texelCount() const { return texelCount_; }
     // Dispatches `program` (used, local size 8×8) once per texel of all the

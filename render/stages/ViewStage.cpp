@@ -103,7 +103,8 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                            {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
                            {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
                            {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"},
-                           {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())}});
+                           {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())},
+                           receivers.countOption()});
     environment_ = environmentTexture(scene);
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
@@ -143,7 +144,6 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
         glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
         glUniform1ui(program_.uniform("surface_depth"), static_cast<GLuint>(render_.surfaceDepth));
     }
-    glUniform1ui(program_.uniform("receiver_count"), receivers_.count());
     glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength_));
     glUniform1ui(program_.uniform("max_steps"), maxSteps_);
     glUniform1f(program_.uniform("interface_half_width"), interfaceHalfWidth_);

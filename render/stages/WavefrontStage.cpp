@@ -89,7 +89,6 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     chunk_ = 0;
     counters_.clearToZero();
     counters_.bindStorage(layout::kWavefrontCounters);
-    glUniform1ui(program_.uniform("receiver_count"), inputs.receiverCount);
     if (inputs.sharpSurfaceCount > 0)
         glUniform1ui(program_.uniform("sharp_surface_count"), inputs.sharpSurfaceCount);
     glUniform1ui(program_.uniform("max_steps"), inputs.maxSteps);

@@ -44,7 +44,6 @@ struct FluenceUnits {
 // The uniforms the wavefront shares with the photon pass.
 struct WavefrontInputs {
     std::vector<unsigned> emissionFaces;  // per emitter (emissionFaces)
-    unsigned receiverCount = 0;
     unsigned sharpSurfaceCount = 0;
     unsigned maxSteps = 0;
     double stepLength = 0.0;  // m

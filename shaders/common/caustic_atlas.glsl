@@ -5,6 +5,6 @@
 // The first row of receiver r's map in the atlas.
 int atlas_row(int r) {
     int row = 0;
-    for (int q = 0; q < r; ++q) row += int(receivers[q].map.y);
+    for (int q = 0; q < int(receiver_count); ++q) row += q < r ? int(receivers[q].map.y) : 0;
     return row;
 }

@@ -41,7 +41,7 @@ bool receiver_texel_of_invocation(uint texel_count, out int r, out ivec2 texel) 
     r = 0;
     texel = ivec2(0);
     if (index >= texel_count) return false;
-    while (r + 1 < int(receiver_count) && index >= receivers[r + 1].map.x) ++r;
+    for (int q = 1; q < int(receiver_count); ++q) r = index >= receivers[q].map.x ? q : r;  // maps in order
     uint resolution = receivers[r].map.y;
     uint local = index - receivers[r].map.x;
     texel = ivec2(local % resolution, local / resolution);

@@ -70,16 +70,14 @@ struct PlaneCrossing {
 };
 
 void note_plane_crossing(vec3 a, vec3 b, INOUT(PlaneCrossing) crossing) {
-    if (crossing.receiver >= 0) return;
     for (uint r = 0u; r < receiver_count; ++r) {
         float da = receiver_signed_distance(a, receivers[r].origin.xyz, receivers[r].normal.xyz);
         float db = receiver_signed_distance(b, receivers[r].origin.xyz, receivers[r].normal.xyz);
-        if (!(da > 0.0f && db <= 0.0f)) continue;  // lit side to back only
-        crossing.receiver = int(r);
-        crossing.map_uv = receiver_map_coordinates(mix(a, b, da / (da - db)), receivers[r].origin.xyz,
-                                                   receivers[r].axis_u.xyz, receivers[r].axis_v.xyz,
-                                                   receivers[r].origin.w);
-        return;
+        bool first = crossing.receiver < 0 && da > 0.0f && db <= 0.0f;  // lit side to back only, the first noted
+        vec2 uv = receiver_map_coordinates(mix(a, b, first ? da / (da - db) : 0.0f), receivers[r].origin.xyz,
+                                           receivers[r].axis_u.xyz, receivers[r].axis_v.xyz, receivers[r].origin.w);
+        crossing.receiver = first ? int(r) : crossing.receiver;
+        crossing.map_uv = first ? uv : crossing.map_uv;
     }
 }
 
