@@ -190,14 +190,17 @@ void main() {
             inside = path.hit;
             refracted_on = path.hit.receiver >= 0 || path.left;
         }
-        for (int sheet = refracted_on ? 0 : 1; sheet < 2; ++sheet) {
-            if (sheet == 1 && reflectance <= 0.0f) break;
+        // Both turns always run: a loop of a constant count unrolls, where
+        // one whose start or end differs between lanes costs a CPU
+        // rasterizer its bookkeeping every turn.
+        for (int sheet = 0; sheet < 2; ++sheet) {
+            bool on = sheet == 0 ? refracted_on : reflectance > 0.0f;
             ReceiverHit hit = sheet == 0 && inside.receiver >= 0
                                   ? inside
                                   : first_receiver_crossing(start[sheet], start[sheet] + kFarAway * heading[sheet]);
             CausticVertex landed = landing(hit, first.surface, start[sheet], heading[sheet], carried[sheet]);
-            if (sheet == 0) refracted_vertex = landed;
-            else reflected_vertex = landed;
+            if (on && sheet == 0) refracted_vertex = landed;
+            if (on && sheet == 1) reflected_vertex = landed;
         }
     }
     write_caustic_vertex(index, 0, refracted_vertex);

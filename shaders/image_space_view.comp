@@ -143,13 +143,16 @@ void main() {
     }
     vec3 radiance = vec3(0.0f);
     float kind[2] = float[2](1.0f, 0.0f);  // 1 escaped, 2 receiver, 0 lost inside
-    for (int branch = 0; branch < (refracted_on ? 2 : 1); ++branch) {
+    // Both turns always run (a loop of a constant count unrolls; one whose
+    // count differs between lanes is bookkeeping every turn on a CPU).
+    for (int branch = 0; branch < 2; ++branch) {
+        bool on = branch == 0 || refracted_on;
         ReceiverHit hit = branch == 1 && inside.receiver >= 0
                               ? inside
                               : first_receiver_crossing(origin[branch], origin[branch] + kFarAway * direction[branch]);
-        kind[branch] = hit.receiver >= 0 ? 2.0f : 1.0f;
-        radiance += weight[branch] * (hit.receiver >= 0 ? receiver_radiance(hit)
-                                                        : environment_radiance(origin[branch], direction[branch]));
+        kind[branch] = on ? (hit.receiver >= 0 ? 2.0f : 1.0f) : kind[branch];
+        vec3 seen = hit.receiver >= 0 ? receiver_radiance(hit) : environment_radiance(origin[branch], direction[branch]);
+        radiance += on ? weight[branch] * seen : vec3(0.0f);
     }
     // The exit recorded for tests: the refracted branch's where there is one.
     int recorded = reflectance < 1.0f ? 1 : 0;
