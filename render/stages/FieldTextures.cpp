@@ -44,7 +44,8 @@ void uploadField(gl::Texture3D& texture, const char* what, GLenum internalFormat
 
 // Copies `source` into the storage buffer `buffer` (made anew when its size
 // changes), from host memory or, on the GPU, from a GL buffer.
-void uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& bytes) {
+// Returns whether `buffer` was made anew (of another size).
+bool uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& bytes) {
     const std::size_t size = source.floats * sizeof(float);
     GLint64 largest = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
@@ -53,7 +54,8 @@ void uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& by
                          "at most " + std::to_string(largest) + " bytes of triangles or tree nodes "
                          "(GL_MAX_SHADER_STORAGE_BLOCK_SIZE; set \"surface\": \"smooth\" on some)",
                          std::to_string(size) + " bytes");
-    if (buffer.bytes() != size) buffer = gl::Buffer(size, {"objects", "the sharp surfaces' triangles and tree"});
+    const bool anew = buffer.bytes() != size;
+    if (anew) buffer = gl::Buffer(size, {"objects", "the sharp surfaces' triangles and tree"});
     if (source.buffer) {
         glCopyNamedBufferSubData(source.buffer, buffer.id(), 0, 0, static_cast<GLsizeiptr>(size));
         bytes.gpu += size;
@@ -61,6 +63,7 @@ void uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& by
         buffer.upload(source.host, size);
         bytes.host += size;
     }
+    return anew;
 }
 
 }  // namespace
@@ -130,10 +133,13 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
     scatteringVersion_ = fields.scatteringVersion;
     if (!fields.surfaceTriangles.floats) {
         surfaceNodes_ = {};
+        surfaceTriangleTexels_ = {};
         surfaceTriangles_ = {};
     } else if (fields.surfaceVersion != surfaceVersion_) {
         uploadBuffer(surfaceNodes_, fields.surfaceNodes, bytes);
-        uploadBuffer(surfaceTriangles_, fields.surfaceTriangles, bytes);
+        if (uploadBuffer(surfaceTriangles_, fields.surfaceTriangles, bytes))
+            surfaceTriangleTexels_ =
+                gl::BufferTexture(surfaceTriangles_, GL_RGBA32F, {"objects", "the sharp surfaces' triangles"});
     }
     surfaceVersion_ = fields.surfaceVersion;
     return bytes;

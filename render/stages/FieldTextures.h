@@ -60,6 +60,8 @@ public:
     std::uint64_t surfaceVersion() const { return surfaceVersion_; }
     // The sharp meshes' triangles (FieldSet.h's layout); no name when the scene has none.
     const gl::Buffer& surfaceTriangles() const { return surfaceTriangles_; }
+    // The same as a buffer texture, for the surface layers' vertex shader.
+    const gl::BufferTexture& surfaceTriangleTexels() const { return surfaceTriangleTexels_; }
     const gl::Buffer& surfaceNodes() const { return surfaceNodes_; }
     const GridSpec& grid() const { return grid_; }
     std::uint64_t indexVersion() const { return indexVersion_; }
@@ -78,6 +80,7 @@ private:
     gl::Texture3D emission_;
     gl::Buffer surfaceNodes_;
     gl::Buffer surfaceTriangles_;
+    gl::BufferTexture surfaceTriangleTexels_;
     std::uint64_t indexVersion_ = ~0ull;
     std::uint64_t extinctionVersion_ = ~0ull;  // also covers emission
     std::uint64_t scatteringVersion_ = ~0ull;  // also covers anisotropy, which scattering owns

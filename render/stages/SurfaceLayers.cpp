@@ -95,9 +95,11 @@ SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_
                  {"EIKON_PEEL", variant == 0 ? "0" : "1"},
                  {"EIKON_NEAR_TEST", variant == 1 ? "1" : "0"}});
     const std::vector<float> shapes = shapeTriangles(scene);
-    if (!shapes.empty())
+    if (!shapes.empty()) {
         shapes_ = gl::Buffer(shapes.size() * sizeof(float), shapes.data(), GL_DYNAMIC_STORAGE_BIT,
                              {"objects", "the spheres' and boxes' triangles"});
+        shapeTexels_ = gl::BufferTexture(shapes_, GL_RGBA32F, {"objects", "the spheres' and boxes' triangles"});
+    }
     shapeSurfaces_.resize(layout::kMaxSharpObjects);
     std::iota(shapeSurfaces_.begin(), shapeSurfaces_.end(), 0);
     meshSurfaces_.assign(layout::kMaxSharpObjects, 0);
@@ -120,14 +122,14 @@ bool SurfaceRaster::drawsFacingFaces(const Viewpoint& view) const {
 }
 
 void SurfaceRaster::drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
-                                  const std::vector<int>& surfaceOfOrdinal) const {
+                                  const gl::BufferTexture& texels, const std::vector<int>& surfaceOfOrdinal) const {
     if (!triangles.id()) return;
     program.use();
     glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
     glUniform3fv(program.uniform("view_eye"), 1, glm::value_ptr(view.eye));
     glUniform3fv(program.uniform("view_axis"), 1, glm::value_ptr(view.axis));
     glUniform1i(program.uniform("view_orthographic"), view.orthographic ? 1 : 0);
-    triangles.bindStorage(layout::kSurfaceTriangles);
+    texels.bindSampler(layout::kSurfaceTriangleTexture);
     glUniform1iv(program.uniform("surface_of_ordinal"), layout::kMaxSharpObjects, surfaceOfOrdinal.data());
     const auto corners = static_cast<GLsizei>(triangles.bytes() / (kSurfaceTriangleFloats * sizeof(float)) * 3);
     glDrawArrays(GL_TRIANGLES, 0, corners);
@@ -152,8 +154,9 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
             glCullFace(peel == 0 ? GL_BACK : GL_FRONT);
         }
         const int variant = peel == 0 ? 0 : facingFaces ? 2 : 1;
-        drawTriangles(programs_[1][variant], view, shapes_, shapeSurfaces_);
-        drawTriangles(programs_[0][variant], view, fields.surfaceTriangles(), meshSurfaces_);
+        drawTriangles(programs_[1][variant], view, shapes_, shapeTexels_, shapeSurfaces_);
+        drawTriangles(programs_[0][variant], view, fields.surfaceTriangles(), fields.surfaceTriangleTexels(),
+                      meshSurfaces_);
         glDisable(GL_CULL_FACE);
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }

@@ -66,7 +66,7 @@ public:
 
 private:
     void drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
-                       const std::vector<int>& surfaceOfOrdinal) const;
+                       const gl::BufferTexture& texels, const std::vector<int>& surfaceOfOrdinal) const;
 
     SharpSurfaceBuffer surfaces_;
     gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it
@@ -75,6 +75,7 @@ private:
     gl::Program programs_[2][3];
     gl::EmptyVertexArray vertexArray_;
     gl::Buffer shapes_;                     // the spheres' and boxes' triangles
+    gl::BufferTexture shapeTexels_;         // the same, read by the vertex shader
     std::vector<int> shapeSurfaces_;        // identity: a shape's w is its surface number
     std::vector<int> meshSurfaces_;         // the k-th mesh's surface number
     // The spheres' hulls', the boxes' and the water bodies' bounds, where

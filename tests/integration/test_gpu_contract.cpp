@@ -158,6 +158,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"near_layer", layout::kNearLayerTexture},          {"far_layer", layout::kFarLayerTexture},
         {"caustic_atlas", layout::kCausticAtlasTexture},    {"receiver_map_texels", layout::kReceiverMapTexture},
         {"caustic_vertex_texels", layout::kCausticVertexTexture},
+        {"surface_triangle_texels", layout::kSurfaceTriangleTexture},
     };
     return rows;
 }
@@ -173,11 +174,12 @@ const std::map<std::string, unsigned>& images() {
 }
 
 struct Variant {
-    std::string shader;
+    std::string shader;  // a compute shader, or a raster program's vertex shader
     gl::ShaderDefines defines;
+    std::string fragment = {};  // a raster program's fragment shader
 
     std::string label() const {
-        std::string text = shader;
+        std::string text = fragment.empty() ? shader : shader + " + " + fragment;
         for (const auto& [key, value] : defines) text += " " + key + "=" + value;
         return text;
     }
@@ -270,6 +272,15 @@ std::vector<Variant> productionVariants() {
           {"EIKON_RECORD_EXIT", "1"}}},
         {"caustic_polygons.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "0"}, {"EIKON_CELL_RECEIVERS", "4"}}},
         {"caustic_polygons.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "1"}}},
+        // Image space's raster programs (render/stages/SurfaceLayers, CausticPolygons).
+        {"surface_layers.vert",
+         {{"EIKON_EXACT_SHAPES", "1"}, {"EIKON_PEEL", "1"}, {"EIKON_NEAR_TEST", "1"}},
+         "surface_layers.frag"},
+        {"surface_layers.vert",
+         {{"EIKON_EXACT_SHAPES", "0"}, {"EIKON_PEEL", "0"}, {"EIKON_NEAR_TEST", "0"}},
+         "surface_layers.frag"},
+        {"caustic_polygons.vert", {{"EIKON_RECEIVERS", "2"}}, "caustic_polygons.frag"},
+        {"caustic_splats.vert", {{"EIKON_RECEIVERS", "2"}}, "caustic_splats.frag"},
         // The fluid solver's passes, each variant sim/gpu compiles.
         {"sim/apply_sources.comp", {}},
         {"sim/buoyancy.comp", {}},
@@ -492,7 +503,9 @@ TEST(GpuContract, EveryProgramBindsWhatGpuLayoutsNames) {
     std::set<std::string> seen;
     ContractCheck check(seen);
     for (const Variant& variant : productionVariants()) {
-        const gl::Program program = gl::compileComputeProgram(variant.shader, variant.defines);
+        const gl::Program program =
+            variant.fragment.empty() ? gl::compileComputeProgram(variant.shader, variant.defines)
+                                     : gl::compileRasterProgram(variant.shader, variant.fragment, variant.defines);
         check.blocks(program, variant.label(), GL_UNIFORM_BLOCK);
         check.blocks(program, variant.label(), GL_SHADER_STORAGE_BLOCK);
         check.opaqueUniforms(program, variant.label());
