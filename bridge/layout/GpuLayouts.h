@@ -99,7 +99,8 @@
     X(kCausticAtlasTexture, 10) /* rgba32f W per receiver texel, the receivers' maps stacked (image space, render/stages/CausticPolygons) */ \
     X(kReceiverMapTexture, 11)  /* rgb32f buffer texture of the ReceiverMaps buffer: the irradiance a view reads */     \
     X(kCausticVertexTexture, 12) /* rgba32f buffer texture of the CausticVertices buffer: the photon landings the cells read */ \
-    X(kSurfaceTriangleTexture, 13) /* rgba32f buffer texture of a SurfaceTriangles buffer: the corners the surface layers draw */
+    X(kSurfaceTriangleTexture, 13) /* rgba32f buffer texture of a SurfaceTriangles buffer: the corners the surface layers draw */ \
+    X(kSurfaceNodeTexture, 14)  /* rgba32f buffer texture of the SurfaceNodes buffer: image space reads the meshes' root boxes */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \

@@ -133,10 +133,12 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
     scatteringVersion_ = fields.scatteringVersion;
     if (!fields.surfaceTriangles.floats) {
         surfaceNodes_ = {};
+        surfaceNodeTexels_ = {};
         surfaceTriangleTexels_ = {};
         surfaceTriangles_ = {};
     } else if (fields.surfaceVersion != surfaceVersion_) {
-        uploadBuffer(surfaceNodes_, fields.surfaceNodes, bytes);
+        if (uploadBuffer(surfaceNodes_, fields.surfaceNodes, bytes))
+            surfaceNodeTexels_ = gl::BufferTexture(surfaceNodes_, GL_RGBA32F, {"objects", "the sharp surfaces' trees"});
         if (uploadBuffer(surfaceTriangles_, fields.surfaceTriangles, bytes))
             surfaceTriangleTexels_ =
                 gl::BufferTexture(surfaceTriangles_, GL_RGBA32F, {"objects", "the sharp surfaces' triangles"});
@@ -154,6 +156,7 @@ void FieldTextures::bindForTracing() const {
     if (hasEmission()) emission_.bindSampler(layout::kEmissionTexture);
     if (surfaceTriangles_.id()) {
         surfaceNodes_.bindStorage(layout::kSurfaceNodes);
+        surfaceNodeTexels_.bindSampler(layout::kSurfaceNodeTexture);
         surfaceTriangles_.bindStorage(layout::kSurfaceTriangles);
     }
 }

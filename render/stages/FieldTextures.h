@@ -66,7 +66,8 @@ public:
     const GridSpec& grid() const { return grid_; }
     std::uint64_t indexVersion() const { return indexVersion_; }
 
-    // Binds the grid block, the textures tracers sample and the surface buffers.
+    // Binds the grid block, the textures tracers sample and the surface
+    // buffers (the nodes also as a buffer texture, for image space).
     void bindForTracing() const;
 
 private:
@@ -81,6 +82,7 @@ private:
     gl::Buffer surfaceNodes_;
     gl::Buffer surfaceTriangles_;
     gl::BufferTexture surfaceTriangleTexels_;
+    gl::BufferTexture surfaceNodeTexels_;
     std::uint64_t indexVersion_ = ~0ull;
     std::uint64_t extinctionVersion_ = ~0ull;  // also covers emission
     std::uint64_t scatteringVersion_ = ~0ull;  // also covers anisotropy, which scattering owns

@@ -20,7 +20,10 @@
 #include "common/surface_layers.glsl"
 #include "common/sharp_surface_list.glsl"
 
-layout(std430, binding = kSurfaceNodes) readonly buffer SurfaceNodes { vec4 surface_nodes[]; };
+// The meshes' trees (bridge/grid/FieldSet.h), two texels per node, read as a
+// buffer texture: a CPU rasterizer gathers a texel for all lanes at once
+// where it loads a storage buffer a lane and a float at a time.
+layout(binding = kSurfaceNodeTexture) uniform samplerBuffer surface_node_texels;
 layout(std140, binding = kImageSpaceSurfaces) uniform ImageSpaceSurfaces { vec4 surface_extinction[kMaxSharpObjects]; };
 layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
 layout(binding = kFarLayerTexture) uniform sampler2D far_layer;
@@ -41,7 +44,7 @@ float surface_reach(int s) {
     if (kind == kSharpSphere) return 2.0f * shape.shape_b.x;
     if (kind == kSharpBox) return length(shape.shape_b.xyz - shape.shape_a.xyz);
     int root = int(shape.shape_b.w + 0.5f);
-    return length(surface_nodes[2 * root + 1].xyz - surface_nodes[2 * root].xyz);
+    return length(texelFetch(surface_node_texels, 2 * root + 1).xyz - texelFetch(surface_node_texels, 2 * root).xyz);
 }
 
 bool inside_layers(Viewpoint view, vec3 x, int s) {

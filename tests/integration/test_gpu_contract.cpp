@@ -159,6 +159,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"caustic_atlas", layout::kCausticAtlasTexture},    {"receiver_map_texels", layout::kReceiverMapTexture},
         {"caustic_vertex_texels", layout::kCausticVertexTexture},
         {"surface_triangle_texels", layout::kSurfaceTriangleTexture},
+        {"surface_node_texels", layout::kSurfaceNodeTexture},
     };
     return rows;
 }
