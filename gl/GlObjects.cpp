@@ -116,8 +116,12 @@ void Texture3D::bindImage(GLuint unit, GLenum access) const {
 }
 
 BufferTexture::BufferTexture(const Buffer& buffer, GLenum internalFormat, const GpuResource& resource) {
-    const std::size_t texelBytes = internalFormat == GL_RGB32F ? 12 : internalFormat == GL_RGBA32F ? 16 : 0;
-    if (texelBytes == 0) throw std::invalid_argument("BufferTexture: internalFormat must be GL_RGB32F or GL_RGBA32F");
+    const std::size_t texelBytes = internalFormat == GL_RGB32F    ? 12
+                                   : internalFormat == GL_RGBA32F ? 16
+                                   : internalFormat == GL_RG32UI  ? 8
+                                                                  : 0;
+    if (texelBytes == 0)
+        throw std::invalid_argument("BufferTexture: internalFormat must be GL_RGB32F, GL_RGBA32F or GL_RG32UI");
     GLint maxTexels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
     const std::uint64_t texels = buffer.bytes() / texelBytes;

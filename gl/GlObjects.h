@@ -95,7 +95,7 @@ private:
 // a storage buffer at lane-dependent offsets one lane and one component at
 // a time: read-mostly arrays that many invocations index apart (receiver
 // maps, caustic vertices) are read faster as textures. internalFormat:
-// GL_RGB32F or GL_RGBA32F. Passes that wrote the buffer need
+// GL_RGB32F, GL_RGBA32F or GL_RG32UI. Passes that wrote the buffer need
 // GL_TEXTURE_FETCH_BARRIER_BIT before the texels are read. Throws
 // GpuMemoryError where the buffer holds more texels than the driver's
 // GL_MAX_TEXTURE_BUFFER_SIZE.

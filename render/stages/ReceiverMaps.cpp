@@ -47,7 +47,11 @@ ReceiverMaps::ReceiverMaps(const std::vector<ReceiverDesc>& receivers) : receive
     tallies_ = gl::Buffer(6 * texels * sizeof(std::uint32_t), {"receivers[].resolution", "the receivers' tallies"});
     maps_ = gl::Buffer(3 * texels * sizeof(float), {"receivers[].resolution", "the receivers' maps"});
     mapTexels_ = gl::BufferTexture(maps_, GL_RGB32F, {"receivers[].resolution", "the receivers' maps"});
-    if (!receivers_.empty()) filterProgram_ = gl::compileComputeProgram("receiver_filter.comp");
+    tallyTexels_ = gl::BufferTexture(tallies_, GL_RG32UI, {"receivers[].resolution", "the receivers' tallies"});
+    for (const int radius : kernelRadius_)
+        if (!filterPrograms_.count(radius))
+            filterPrograms_.emplace(radius, gl::compileComputeProgram("receiver_filter.comp",
+                                                                      {{"EIKON_FILTER_RADIUS", std::to_string(radius)}}));
 }
 
 void ReceiverMaps::bind() const {
@@ -65,17 +69,20 @@ void ReceiverMaps::dispatchOverTexels(const gl::Program& program) const {
 
 void ReceiverMaps::filter(const glm::vec3& powerUnit) {
     if (receivers_.empty()) return;
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the passes that tallied wrote a storage buffer
     bind();
-    filterProgram_.use();
-    glUniform3f(filterProgram_.uniform("power_unit"), powerUnit.r, powerUnit.g, powerUnit.b);
-    glUniform1f(filterProgram_.uniform("units_per_photon"), static_cast<float>(layout::kPowerUnitsPerPhoton));
+    tallyTexels_.bindSampler(layout::kReceiverTallyTexture);
     for (std::size_t r = 0; r < receivers_.size(); ++r) {
         const layout::GpuReceiver& receiver = receivers_[r];
-        glUniform1i(filterProgram_.uniform("kernel_radius"), kernelRadius_[r]);
-        glUniform1ui(filterProgram_.uniform("first_texel"), receiver.map.x);
-        glUniform1i(filterProgram_.uniform("resolution"), static_cast<GLint>(receiver.map.y));
-        glUniform1f(filterProgram_.uniform("texel_area"), receiver.normal.w);
-        filterProgram_.dispatchCovering(receiver.map.y, receiver.map.y, 1, 8, 8, 1);
+        const gl::Program& program = filterPrograms_.at(kernelRadius_[r]);
+        program.use();
+        glUniform3f(program.uniform("power_unit"), powerUnit.r, powerUnit.g, powerUnit.b);
+        if (kernelRadius_[r] == kAdaptiveKernel)
+            glUniform1f(program.uniform("units_per_photon"), static_cast<float>(layout::kPowerUnitsPerPhoton));
+        glUniform1ui(program.uniform("first_texel"), receiver.map.x);
+        glUniform1i(program.uniform("resolution"), static_cast<GLint>(receiver.map.y));
+        glUniform1f(program.uniform("texel_area"), receiver.normal.w);
+        program.dispatchCovering(receiver.map.y, receiver.map.y, 1, 8, 8, 1);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("receiver filter");

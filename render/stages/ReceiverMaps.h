@@ -14,6 +14,7 @@
 #include "gl/ShaderLibrary.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -53,15 +54,17 @@ public:
 private:
     std::vector<layout::GpuReceiver> receivers_;
     // Per receiver: 1 the 3×3 binomial, 0 none, kAdaptiveKernel the
-    // density-adaptive tent (shaders/receiver_filter.comp).
+    // density-adaptive tent (shaders/receiver_filter.comp), each its own
+    // program: a fixed kernel's loops unroll.
     static constexpr int kAdaptiveKernel = -1;
     std::vector<int> kernelRadius_;
+    std::map<int, gl::Program> filterPrograms_;  // by kernel radius
     unsigned texelCount_ = 0;
     gl::Buffer geometry_;
     gl::Buffer tallies_;
     gl::Buffer maps_;
-    gl::BufferTexture mapTexels_;  // maps_, read by the views
-    gl::Program filterProgram_;
+    gl::BufferTexture mapTexels_;    // maps_, read by the views
+    gl::BufferTexture tallyTexels_;  // tallies_, read by the filter
 };
 
 }  // namespace eikon::render

@@ -160,6 +160,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"caustic_vertex_texels", layout::kCausticVertexTexture},
         {"surface_triangle_texels", layout::kSurfaceTriangleTexture},
         {"surface_node_texels", layout::kSurfaceNodeTexture},
+        {"receiver_tally_texels", layout::kReceiverTallyTexture},
     };
     return rows;
 }
@@ -196,7 +197,8 @@ std::vector<Variant> productionVariants() {
         {"octree_minmax.comp", {{"EIKON_HAS_EXTINCTION", "0"}}},
         {"octree_minmax.comp", {{"EIKON_HAS_EXTINCTION", "1"}, {"EIKON_HAS_EMISSION", "1"}}},
         {"octree_label.comp", {}},
-        {"receiver_filter.comp", {}},
+        {"receiver_filter.comp", {{"EIKON_FILTER_RADIUS", "1"}}},
+        {"receiver_filter.comp", {{"EIKON_FILTER_RADIUS", "-1"}}},
         {"fluence_smooth.comp", {}},
         {"fluence_smooth.comp", {{"EIKON_FIXED_FLUENCE", "1"}, {"EIKON_LATTICE_SOURCE", "1"}}},
         {"tonemap.comp", {}},
@@ -464,7 +466,8 @@ public:
 private:
     static bool isSampler(GLenum type) {
         static const std::set<GLenum> types = {GL_SAMPLER_1D, GL_SAMPLER_2D, GL_SAMPLER_3D, GL_SAMPLER_CUBE,
-                                               GL_SAMPLER_2D_ARRAY, GL_SAMPLER_BUFFER, GL_INT_SAMPLER_2D,
+                                               GL_SAMPLER_2D_ARRAY, GL_SAMPLER_BUFFER, GL_UNSIGNED_INT_SAMPLER_BUFFER,
+                                               GL_INT_SAMPLER_2D,
                                                GL_INT_SAMPLER_3D, GL_UNSIGNED_INT_SAMPLER_2D,
                                                GL_UNSIGNED_INT_SAMPLER_3D};
         return types.count(type) > 0;
