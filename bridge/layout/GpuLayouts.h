@@ -101,7 +101,8 @@
     X(kCausticVertexTexture, 12) /* rgba32f buffer texture of the CausticVertices buffer: the photon landings the cells read */ \
     X(kSurfaceTriangleTexture, 13) /* rgba32f buffer texture of a SurfaceTriangles buffer: the corners the surface layers draw */ \
     X(kSurfaceNodeTexture, 14)  /* rgba32f buffer texture of the SurfaceNodes buffer: image space reads the meshes' root boxes */ \
-    X(kReceiverTallyTexture, 15) /* rg32ui buffer texture of the ReceiverTallies buffer: (low, high) words, the filter reads */
+    X(kReceiverTallyTexture, 15) /* rg32ui buffer texture of the ReceiverTallies buffer: (low, high) words, the filter reads */ \
+    X(kHdrImageTexture, 16)     /* rgba32f buffer texture of an HdrImage buffer: the radiance the tone map reads */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \

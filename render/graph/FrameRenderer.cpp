@@ -159,7 +159,7 @@ FrameResult FrameRenderer::renderImageSpace(const FieldUpload& fields, FieldRing
     if (imageSpaceView_) {
         result.stages.push_back(runStage("image_space_view", viewNeeded, [&] { imageSpaceView_->run(fields_); }));
         result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
-            last_.image = post_.run(imageSpaceView_->hdrImage(), scene_.render.exposureEv);
+            last_.image = post_.run(imageSpaceView_->hdrTexels(), scene_.render.exposureEv);
         }));
     }
     markRendered(fields);
@@ -210,7 +210,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
                              lattice_ ? &lattice_->fluence() : nullptr});
     }));
     if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
-        last_.image = post_.run(view_->hdrImage(), scene_.render.exposureEv);
+        last_.image = post_.run(view_->hdrTexels(), scene_.render.exposureEv);
     }));
     // The estimate is of the full image, not of a preview.
     if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded && view_->pixelStride() == 1, [&] {

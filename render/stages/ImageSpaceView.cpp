@@ -35,6 +35,7 @@ ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers
                      {"render.width × render.height", "the list of pixels that see a surface"}),
       surfacePixelCount_(sizeof(glm::uvec4), {"render", "the count of pixels that see a surface"}),
       hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)) {
+    hdrTexels_ = gl::BufferTexture(hdr_, GL_RGBA32F, {"render.width × render.height", "the linear image"});
     if (recordExit) exits_ = pixelBuffer(scene, "the camera rays' exits");
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     cameraBlock_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);

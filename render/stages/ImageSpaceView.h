@@ -29,7 +29,8 @@ public:
     void run(const FieldTextures& fields);
     void setCamera(const CameraDesc& camera) { camera_ = camera; }
 
-    const gl::Buffer& hdrImage() const { return hdr_; }
+    // The linear image (HdrImage) as a buffer texture, for the tone map.
+    const gl::BufferTexture& hdrTexels() const { return hdrTexels_; }
     std::vector<float> downloadHdr() const;  // RGBA per pixel, row 0 at the top
     // Per pixel: the direction the refracted (else reflected) branch left in; w = 1 environment, 2 receiver.
     std::vector<glm::vec4> downloadExits() const;
@@ -44,6 +45,7 @@ private:
     gl::Buffer surfacePixels_, surfacePixelCount_;
     gl::Buffer cameraBlock_;
     gl::Buffer hdr_;
+    gl::BufferTexture hdrTexels_;
     gl::Buffer exits_;
     gl::Texture2D environment_;
 };

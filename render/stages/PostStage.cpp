@@ -12,9 +12,10 @@ PostStage::PostStage(int width, int height)
     : width_(width), height_(height), program_(gl::compileComputeProgram("tonemap.comp")),
       ldr_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {}
 
-Image8 PostStage::run(const gl::Buffer& hdrImage, double exposureEv) {
+Image8 PostStage::run(const gl::BufferTexture& hdrImage, double exposureEv) {
     const auto pixels = static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_);
-    hdrImage.bindStorage(layout::kHdrImage);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the view wrote the buffer as storage
+    hdrImage.bindSampler(layout::kHdrImageTexture);
     ldr_.bindStorage(layout::kLdrImage);
     program_.use();
     glUniform2ui(program_.uniform("image_size"), static_cast<GLuint>(width_), static_cast<GLuint>(height_));

@@ -17,7 +17,9 @@ struct Image8 {
 class PostStage {
 public:
     PostStage(int width, int height);
-    Image8 run(const gl::Buffer& hdrImage, double exposureEv);
+    // hdrImage: a view's HdrImage buffer as a buffer texture, written
+    // before this runs.
+    Image8 run(const gl::BufferTexture& hdrImage, double exposureEv);
 
 private:
     int width_, height_;

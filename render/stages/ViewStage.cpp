@@ -109,6 +109,7 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
     hdr_ = pixelBuffer(scene, "the linear image");
+    hdrTexels_ = gl::BufferTexture(hdr_, GL_RGBA32F, {"render.width × render.height", "the linear image"});
     if (recordExit) exits_ = pixelBuffer(scene, "the camera rays' exits");
 }
 

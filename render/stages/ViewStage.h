@@ -45,7 +45,8 @@ public:
     void setPixelStride(int stride);
     int pixelStride() const { return pixelStride_; }
 
-    const gl::Buffer& hdrImage() const { return hdr_; }
+    // The linear image (HdrImage) as a buffer texture, for the tone map.
+    const gl::BufferTexture& hdrTexels() const { return hdrTexels_; }
     std::vector<float> downloadHdr() const;  // RGBA per pixel, row 0 at the top
     // Per pixel: the direction the ray left in; w = 1 environment, 2 receiver, 0 step cap.
     std::vector<glm::vec4> downloadExits() const;
@@ -65,6 +66,7 @@ private:
     gl::Program program_;
     gl::Buffer camera_;
     gl::Buffer hdr_;
+    gl::BufferTexture hdrTexels_;
     gl::Buffer exits_;
     gl::Texture2D environment_;
 };

@@ -161,6 +161,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"surface_triangle_texels", layout::kSurfaceTriangleTexture},
         {"surface_node_texels", layout::kSurfaceNodeTexture},
         {"receiver_tally_texels", layout::kReceiverTallyTexture},
+        {"hdr_radiance", layout::kHdrImageTexture},
     };
     return rows;
 }
