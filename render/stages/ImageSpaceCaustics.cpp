@@ -40,12 +40,6 @@ struct Bounds {
 
 }  // namespace
 
-struct ImageSpaceCaustics::LightFrame {
-    Viewpoint view;
-    glm::vec3 right{0.0f}, up{0.0f};
-    double halfExtent = 1.0;  // perspective: tan of the half-angle; orthographic: half the width
-};
-
 ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receivers, SurfaceRaster& raster)
     : scene_(scene), receivers_(receivers), raster_(raster), lights_(scene.lights),
       directProgram_(gl::compileComputeProgram("image_space_caustics.comp",
@@ -69,6 +63,7 @@ ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receive
 void ImageSpaceCaustics::setLight(std::size_t index, const LightDesc& light) {
     EIKON_CHECK_MSG(index < lights_.size(), "no such light");
     lights_[index] = light;
+    lightFrames_.clear();  // its layers are drawn again
 }
 
 ImageSpaceCaustics::LightFrame ImageSpaceCaustics::frameOf(const LightDesc& light, const glm::dvec3& centre,
@@ -105,11 +100,7 @@ ImageSpaceCaustics::LightFrame ImageSpaceCaustics::frameOf(const LightDesc& ligh
     return frame;
 }
 
-void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
-    if (changed || frames_ >= kTemporalFrames) {
-        receivers_.clearTallies();
-        frames_ = 0;
-    }
+std::vector<ImageSpaceCaustics::LightFrame> ImageSpaceCaustics::lightFramesNow(const FieldTextures& fields) const {
     // The refractors' bounding sphere: shapes exactly, meshes by their trees' root boxes now.
     Bounds bounds;
     int meshes = 0;
@@ -131,13 +122,25 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
     const bool anyRefractor = bounds.min.x <= bounds.max.x;
     const glm::dvec3 centre = anyRefractor ? 0.5 * (bounds.min + bounds.max) : glm::dvec3(0.0);
     const double radius = anyRefractor ? 0.5 * glm::length(bounds.max - bounds.min) * 1.01 + 1e-6 : 1e-6;
+    std::vector<LightFrame> frames;
+    for (const LightDesc& light : lights_) frames.push_back(frameOf(light, centre, radius));
+    return frames;
+}
+
+void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
+    if (changed || frames_ >= kTemporalFrames) {
+        receivers_.clearTallies();
+        frames_ = 0;
+    }
+    const bool drawLayers = changed || lightFrames_.size() != lights_.size();
+    if (drawLayers) lightFrames_ = lightFramesNow(fields);
     const glm::vec2 jitter = jitterOf(frames_);
     polygons_.clear();
     for (std::size_t i = 0; i < lights_.size(); ++i) {
         const LightDesc& light = lights_[i];
-        const LightFrame frame = frameOf(light, centre, radius);
+        const LightFrame& frame = lightFrames_[i];
         SurfaceLayers& layers = *layers_[i];
-        raster_.draw(frame.view, layers, fields);
+        if (drawLayers) raster_.draw(frame.view, layers, fields);
         const bool spot = light.kind == LightDesc::Kind::Spot;
         const Rgb intensity = light.kind == LightDesc::Kind::Directional ? light.irradiance
                               : spot ? spotPeakIntensity(light)

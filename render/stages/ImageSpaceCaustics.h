@@ -44,14 +44,26 @@ public:
     int framesAveraged() const { return frames_; }
 
 private:
-    struct LightFrame;  // a light's layers and frame, drawn this run
+    // A light's view over the refractors' bounding sphere, and the frame of
+    // its layers' texels.
+    struct LightFrame {
+        Viewpoint view;
+        glm::vec3 right{0.0f}, up{0.0f};
+        double halfExtent = 1.0;  // perspective: tan of the half-angle; orthographic: half the width
+    };
     LightFrame frameOf(const LightDesc& light, const glm::dvec3& centre, double radius) const;
+    // Every light's frame over the refractors as they are now.
+    std::vector<LightFrame> lightFramesNow(const FieldTextures& fields) const;
 
     Scene scene_;
     ReceiverMaps& receivers_;
     SurfaceRaster& raster_;
     std::vector<LightDesc> lights_;
     std::vector<std::unique_ptr<SurfaceLayers>> layers_;  // one per light
+    // The lights' frames their layers were drawn in; empty: none drawn yet.
+    // Both hold while neither the surfaces nor the lights change, so the
+    // frames of one temporal mean draw the layers once.
+    std::vector<LightFrame> lightFrames_;
     gl::Program directProgram_, photonProgram_;
     CausticPolygons polygons_;
     glm::vec3 powerUnit_{1.0f};

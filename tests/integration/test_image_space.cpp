@@ -138,5 +138,44 @@ TEST(ImageSpace, DrawsFacingFacesOnlyWhereTheLayersStayTheSame) {
     EXPECT_FALSE(imported.drawsFacingFaces(viewpointAt({0.0f, 0.5f, 2.0f})));
 }
 
+// A glass sphere over a floor receiver, lit by a point light, in image space.
+Scene causticScene() {
+    const std::string path = ::testing::TempDir() + "image_space_caustic.json";
+    std::ofstream(path) << R"({
+      "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0.2, -0.5], "max": [0.5, 0.8, 0.5]}},
+      "objects": [{"type": "sphere", "center": [0.0, 0.5, 0.0], "radius": 0.25, "index": 1.5}],
+      "lights": [{"type": "point", "position": [0.0, 2.0, 0.0], "power": 10}],
+      "receivers": [{"type": "plane", "point": [0.0, 0.0, 0.0], "normal": [0, 1, 0], "size": 2.0, "resolution": 64}],
+      "camera": {"position": [0.0, 1.0, 2.0], "target": [0.0, 0.3, 0.0], "up": [0, 1, 0], "fov_deg": 40},
+      "render": {"method": "image_space", "width": 32, "height": 24, "caustic_map_texels": 64}
+    })";
+    return loadSceneFile(path);
+}
+
+// The frames of one temporal mean draw the lights' layers once; a light
+// that moves within the mean has its layers drawn again, so its caustic is
+// the one a renderer that began with the light there draws.
+TEST(ImageSpace, AMovedLightRedrawsItsLayersWithinATemporalMean) {
+    test::glContext();
+    const Scene scene = causticScene();
+    const FieldSet fields = sim::voxelizeScene(scene);
+    render::FrameRenderer renderer(scene, fields, {.photons = {}});
+    renderer.render(fields);
+    renderer.render(fields);  // the mean's second frame: the layers as they were
+    const std::vector<float> before = renderer.receivers().download(0);
+    LightDesc moved = scene.lights[0];
+    moved.position = glm::dvec3(0.4, 2.0, 0.1);
+    renderer.setLight(0, moved);
+    renderer.render(fields);
+    const std::vector<float> after = renderer.receivers().download(0);
+
+    Scene movedScene = scene;
+    movedScene.lights[0] = moved;
+    render::FrameRenderer fresh(movedScene, fields, {.photons = {}});
+    fresh.render(fields);
+    EXPECT_EQ(after, fresh.receivers().download(0));
+    EXPECT_NE(after, before);
+}
+
 }  // namespace
 }  // namespace eikon
