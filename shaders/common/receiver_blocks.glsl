@@ -18,12 +18,11 @@ layout(binding = kReceiverMapTexture) uniform samplerBuffer receiver_map_texels;
 // The scene's receivers: program option EIKON_RECEIVERS
 // (ReceiverMaps::countOption). A constant, so that the loops over the
 // receivers unroll and read the block at constant offsets: llvmpipe runs a
-// loop whose count it learns at run time with mask bookkeeping every turn
-// and reads the block at the loop's index by gathering, which took half of
-// the direct pass of image_space_caustics.comp (6.4 of 6.5 ms → 3.2 on
-// deforming_blob, two cores).
-// Loops over them unroll only without `continue` or `break`: their bodies
-// choose by selects.
+// loop whose count it learns at run time with mask bookkeeping every turn,
+// and reads the block at the loop's index by gathering (the direct pass of
+// image_space_caustics.comp on deforming_blob took 6.3 ms that way, 3.0
+// unrolled, on two cores). The loops unroll only without `continue` or
+// `break`: their bodies choose by selects.
 const uint receiver_count = uint(EIKON_RECEIVERS);
 
 // Where a segment from a to b first crosses a receiver square.
