@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bridge/scene/Scene.h"
+#include "io/scene/SceneOverride.h"  // applyOverride, which loadSceneFile applies
 
 #include <nlohmann/json.hpp>
 
@@ -18,10 +19,5 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName);
 
 // Reads the file at path, applies each `--set` override in order, then parses.
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
-
-// Applies one `--set key.path=value` assignment: '.' separates keys, numeric
-// keys index existing array elements, missing objects on the way are created.
-// The value is JSON if it parses as JSON and a string otherwise.
-void applyOverride(nlohmann::json& root, const std::string& assignment);
 
 }  // namespace eikon
