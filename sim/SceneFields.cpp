@@ -75,7 +75,9 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene), keepSharpCoverage_
         if (object.hasTriangleSurface())
             meshes_.back()->surface = std::make_unique<SharpMeshSurface>(meshes_.back()->shape.mesh());
     }
-    // The roots first (node k: the k-th sharp mesh), then each tree's other nodes.
+    // The roots first (node k: the k-th sharp mesh), then each tree's other
+    // nodes. The water bodies' triangles come after the other meshes': image
+    // space draws those alone (render/stages/SurfaceLayers.h).
     const auto roots = static_cast<std::size_t>(
         std::count_if(meshes_.begin(), meshes_.end(), [](const auto& mesh) { return mesh->surface != nullptr; }));
     std::size_t root = 0, nodes = roots, triangles = 0;
@@ -83,10 +85,14 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene), keepSharpCoverage_
         if (!mesh->surface) continue;
         mesh->root = root++;
         mesh->firstNode = nodes;
-        mesh->firstTriangle = triangles;
         nodes += mesh->surface->nodeCount() - 1;
-        triangles += mesh->surface->triangleCount();
     }
+    for (const bool water : {false, true})
+        for (auto& mesh : meshes_) {
+            if (!mesh->surface || (mesh->shape.water() != nullptr) != water) continue;
+            mesh->firstTriangle = triangles;
+            triangles += mesh->surface->triangleCount();
+        }
     fields_.surfaceNodes.resize(nodes * kSurfaceNodeFloats);
     fields_.surfaceTriangles.resize(triangles * kSurfaceTriangleFloats);
     updateMeshes();

@@ -38,6 +38,7 @@
 #define EIKON_LAYOUT_BINDINGS(X)                                                                                                \
     X(kGridBlock, 0)            /* uniform GridBlock (GpuGrid) */                                                               \
     X(kCameraBlock, 1)          /* uniform CameraBlock (GpuCamera) */                                                           \
+    X(kWaterBodies, 2)          /* uniform WaterBodies: per water body its basin and node grid (image space, render/stages/WaterHeightFields) */ \
     X(kEmitters, 2)             /* buffer Emitters { GpuEmitter emitters[]; } */                                                \
     X(kReceivers, 3)            /* uniform Receivers { GpuReceiver receivers[kMaxReceivers]; } */                               \
     X(kReceiverMaps, 4)         /* buffer ReceiverMaps { float irradiance[]; }: RGB per texel, W/m² */                          \
@@ -71,6 +72,8 @@
     X(kSuspendedOut, 24)        /* buffer SuspendedOut { GpuSuspendedPhoton[] }: photons it suspends */           \
     X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */                                           \
     X(kGlowCells, 26)           /* buffer GlowCells { GpuGlowCell cells[]; }: a glowing volume's emitting cells */ \
+    X(kWaterNodeGrids, 26)      /* buffer WaterNodeGrids { vec4 nodes[]; }: the water bodies' node grids, written (render/stages/WaterHeightFields) */ \
+    X(kWaterSlabs, 27)          /* buffer WaterSlabs { uvec2 slabs[]; }: per water body its nodes' lowest and highest y, ordered bits */ \
     X(kLatticeIn, 27)           /* buffer LatticeIn { float density[]; }: one channel's link densities, W, read */ \
     X(kLatticeOut, 28)          /* buffer LatticeOut { float density[]; }: the same after one step, written */ \
     X(kLatticeProbes, 28)       /* buffer LatticeProbes { float fluence[]; }: the lattice's fluence at its probes (probe pass) */ \
@@ -102,7 +105,8 @@
     X(kSurfaceTriangleTexture, 13) /* rgba32f buffer texture of a SurfaceTriangles buffer: the corners the surface layers draw */ \
     X(kSurfaceNodeTexture, 14)  /* rgba32f buffer texture of the SurfaceNodes buffer: image space reads the meshes' root boxes */ \
     X(kReceiverTallyTexture, 15) /* rg32ui buffer texture of the ReceiverTallies buffer: (low, high) words, the filter reads */ \
-    X(kHdrImageTexture, 16)     /* rgba32f buffer texture of an HdrImage buffer: the radiance the tone map reads */
+    X(kHdrImageTexture, 16)     /* rgba32f buffer texture of an HdrImage buffer: the radiance the tone map reads */ \
+    X(kWaterNodeTexture, 17)    /* rgba32f buffer texture of the WaterNodeGrids buffer: image space walks the water's height fields */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \
@@ -352,6 +356,15 @@ struct GpuSharpSurface {
     glm::vec4 optics;  // x: n_object − n_ref; y: 1 if Fresnel reflection is on; zw unused
 };
 static_assert(sizeof(GpuSharpSurface) == 48);
+
+// A water body as image space walks its height field (uniform WaterBodies,
+// std140; shaders/common/water_height_fields.glsl).
+struct GpuWaterHeightField {
+    glm::vec4 low;    // xyz: the basin's minimum corner (m); w unused
+    glm::vec4 high;   // xyz: its maximum corner (m); w unused
+    glm::ivec4 grid;  // x, y: nodes along x and z; z: its first node's texel in WaterNodeGrids; w unused
+};
+static_assert(sizeof(GpuWaterHeightField) == 48);
 
 
 // uniform CameraBlock (std140): a pinhole camera and the environment.

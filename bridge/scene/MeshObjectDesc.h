@@ -94,6 +94,11 @@ struct WaterDesc {
     // computed each frame (sim/gpu/GpuWaterBody.h: on the GPU when the water
     // is the scene's only object, sharp, and no field is exported).
     ComputeDevice device = ComputeDevice::Auto;
+
+    // The triangles of its body (sim/deform/WaterSurface::mesh): two per
+    // cell of the surface, and per cell of the boundary ring a wall's two
+    // and the bottom's one.
+    int triangleCount() const { return 2 * (cells.x - 1) * (cells.y - 1) + 6 * ((cells.x - 1) + (cells.y - 1)); }
 };
 
 }  // namespace eikon

@@ -30,6 +30,12 @@ glm::vec2 jitterOf(int frame) {
     return {offsets[frame % kTemporalFrames][0], offsets[frame % kTemporalFrames][1]};
 }
 
+gl::Program causticsProgram(const Scene& scene, const ReceiverMaps& receivers, int pass) {
+    gl::ShaderDefines options = WaterHeightFields::programOptions(scene);
+    options.insert({{"EIKON_PASS", std::to_string(pass)}, receivers.countOption()});
+    return gl::compileComputeProgram("image_space_caustics.comp", options);
+}
+
 struct Bounds {
     glm::dvec3 min{1e300}, max{-1e300};
     void add(const glm::dvec3& low, const glm::dvec3& high) {
@@ -42,11 +48,8 @@ struct Bounds {
 
 ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receivers, SurfaceRaster& raster)
     : scene_(scene), receivers_(receivers), raster_(raster), lights_(scene.lights),
-      directProgram_(gl::compileComputeProgram("image_space_caustics.comp",
-                                               {{"EIKON_PASS", "0"}, receivers.countOption()})),
-      photonProgram_(gl::compileComputeProgram("image_space_caustics.comp",
-                                               {{"EIKON_PASS", "1"}, receivers.countOption()})),
-      polygons_(scene.render.causticMapTexels, receivers) {
+      directProgram_(causticsProgram(scene, receivers, 0)), photonProgram_(causticsProgram(scene, receivers, 1)),
+      polygons_(scene.render.causticMapTexels, receivers), layerSurfaces_(WaterHeightFields::hasLayerSurfaces(scene)) {
     const int texels = scene.render.causticMapTexels;
     for (std::size_t i = 0; i < lights_.size(); ++i)
         layers_.push_back(std::make_unique<SurfaceLayers>(
@@ -155,8 +158,9 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         layers.bind();
         for (gl::Program* program : {&directProgram_, &photonProgram_}) {
             program->use();
-            glUniformMatrix4fv(program->uniform("view_projection"), 1, GL_FALSE,
-                               glm::value_ptr(frame.view.viewProjection));
+            if (program == &directProgram_ || layerSurfaces_)  // the photons read it in the layers alone
+                glUniformMatrix4fv(program->uniform("view_projection"), 1, GL_FALSE,
+                                   glm::value_ptr(frame.view.viewProjection));
             glUniform3fv(program->uniform("light_position"), 1, glm::value_ptr(frame.view.eye));
             glUniform3fv(program->uniform("light_axis"), 1, glm::value_ptr(frame.view.axis));
             glUniform1i(program->uniform("light_kind"), spot ? 1 : light.kind == LightDesc::Kind::Point ? 0 : 2);

@@ -14,11 +14,12 @@ namespace eikon::render {
 namespace {
 
 gl::Program viewProgram(const Scene& scene, const ReceiverMaps& receivers, int pass, bool recordExit) {
-    return gl::compileComputeProgram("image_space_view.comp",
-                                     {{"EIKON_PASS", std::to_string(pass)},
-                                      {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
-                                      {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"},
-                                      receivers.countOption()});
+    gl::ShaderDefines options = WaterHeightFields::programOptions(scene);
+    options.insert({{"EIKON_PASS", std::to_string(pass)},
+                    {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
+                    {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"},
+                    receivers.countOption()});
+    return gl::compileComputeProgram("image_space_view.comp", options);
 }
 
 }  // namespace
@@ -34,7 +35,8 @@ ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers
                          sizeof(GLuint),
                      {"render.width × render.height", "the list of pixels that see a surface"}),
       surfacePixelCount_(sizeof(glm::uvec4), {"render", "the count of pixels that see a surface"}),
-      hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)) {
+      hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)),
+      layerSurfaces_(WaterHeightFields::hasLayerSurfaces(scene)) {
     hdrTexels_ = gl::BufferTexture(hdr_, GL_RGBA32F, {"render.width × render.height", "the linear image"});
     if (recordExit) exits_ = pixelBuffer(scene, "the camera rays' exits");
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
@@ -63,7 +65,8 @@ void ImageSpaceView::run(const FieldTextures& fields) {
                                         static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     surfaceProgram_.use();
-    glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
+    if (layerSurfaces_)  // read in the layers alone
+        glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, surfacePixelCount_.id());
     glDispatchComputeIndirect(0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);

@@ -48,6 +48,7 @@ private:
     gl::BufferTexture hdrTexels_;
     gl::Buffer exits_;
     gl::Texture2D environment_;
+    bool layerSurfaces_;  // WaterHeightFields::hasLayerSurfaces
 };
 
 }  // namespace eikon::render

@@ -73,6 +73,18 @@ void appendBox(std::vector<float>& out, const BoxShape& box, int surface) {
 
 }  // namespace
 
+BoxShape waterHull(const WaterDesc& water) {
+    return {water.basinMin, water.basinMax + glm::dvec3(0.0, water.basinMax.y - water.basinMin.y, 0.0)};
+}
+
+std::vector<float> waterHullTriangles(const Scene& scene) {
+    std::vector<float> out;
+    int body = 0;
+    for (const ObjectDesc& object : scene.objects)
+        if (object.isSharp() && object.kind == ObjectDesc::Kind::Water) appendBox(out, waterHull(object.water), body++);
+    return out;
+}
+
 std::vector<float> shapeTriangles(const Scene& scene) {
     std::vector<float> out;
     int surface = 0;

@@ -24,4 +24,14 @@ constexpr double kSphereHullScale = 1.0016;
 
 std::vector<float> shapeTriangles(const Scene& scene);
 
+// The box that holds a water body however its waves rise: its basin, up to
+// a basin's depth above the rest level.
+BoxShape waterHull(const WaterDesc& water);
+
+// The hulls of the scene's sharp water bodies as the boxes' triangles, the
+// first corner's w holding the body's number among them
+// (render/stages/WaterHeightFields.h): the raster pass meets the water's
+// height field in each fragment (shaders/surface_layers.frag).
+std::vector<float> waterHullTriangles(const Scene& scene);
+
 }  // namespace eikon::render

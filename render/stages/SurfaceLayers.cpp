@@ -39,11 +39,15 @@ void SurfaceLayers::bind() const {
 
 namespace {
 
-// The uniform block ImageSpaceSurfaces: κ per sharp surface, in scene order.
+// The uniform block ImageSpaceSurfaces: κ per sharp surface, in scene
+// order, and its water body (WaterHeightFields) or −1.
 gl::Buffer surfaceExtinction(const Scene& scene) {
     std::vector<glm::vec4> extinction;
+    const std::vector<int> water = WaterHeightFields::waterOfSurface(scene);
     for (const ObjectDesc& object : scene.objects)
-        if (object.isSharp()) extinction.emplace_back(glm::vec3(object.material.extinction), 0.0f);
+        if (object.isSharp())
+            extinction.emplace_back(glm::vec3(object.material.extinction),
+                                    static_cast<float>(water[extinction.size()]));
     extinction.resize(layout::kMaxSharpObjects, glm::vec4(0.0f));
     return gl::Buffer(extinction.size() * sizeof(glm::vec4), extinction.data(), GL_DYNAMIC_STORAGE_BIT,
                       {"objects", "the surfaces' extinction"});
@@ -63,10 +67,7 @@ std::vector<BoxShape> apartShapeBounds(const Scene& scene) {
         } else if (object.kind == ObjectDesc::Kind::Box) {
             bounds.push_back(object.box);
         } else if (object.kind == ObjectDesc::Kind::Water) {
-            // Its waves stay well within the basin's depth above the rest level.
-            const WaterDesc& water = object.water;
-            bounds.push_back({water.basinMin,
-                              water.basinMax + glm::dvec3(0.0, water.basinMax.y - water.basinMin.y, 0.0)});
+            bounds.push_back(waterHull(object.water));
         } else {
             return {};  // an imported mesh: its triangles' winding is its author's
         }
@@ -79,16 +80,23 @@ std::vector<BoxShape> apartShapeBounds(const Scene& scene) {
     return bounds;
 }
 
+std::size_t trianglesIn(const gl::Buffer& triangles) {
+    return triangles.bytes() / (kSurfaceTriangleFloats * sizeof(float));
+}
+
 }  // namespace
 
 void SurfaceRaster::bindSurfaces() const {
     surfaces_.bind();
     extinction_.bindUniform(layout::kImageSpaceSurfaces);
+    water_.bind();
 }
 
-SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_(surfaceExtinction(scene)) {
-    for (int exact = 0; exact < 2; ++exact)
-        for (int variant = 0; variant < 3; ++variant)
+SurfaceRaster::SurfaceRaster(const Scene& scene)
+    : surfaces_(scene), extinction_(surfaceExtinction(scene)), water_(scene),
+      layerSurfaces_(WaterHeightFields::hasLayerSurfaces(scene)) {
+    for (int exact = 0; exact < 3; ++exact)
+        for (int variant = 0; variant < (exact == 2 ? 2 : 3); ++variant)
             programs_[exact][variant] = gl::compileRasterProgram(
                 "surface_layers.vert", "surface_layers.frag",
                 {{"EIKON_EXACT_SHAPES", std::to_string(exact)},
@@ -103,11 +111,24 @@ SurfaceRaster::SurfaceRaster(const Scene& scene) : surfaces_(scene), extinction_
     shapeSurfaces_.resize(layout::kMaxSharpObjects);
     std::iota(shapeSurfaces_.begin(), shapeSurfaces_.end(), 0);
     meshSurfaces_.assign(layout::kMaxSharpObjects, 0);
-    int surface = 0, meshes = 0;
+    waterSurfaces_.assign(layout::kMaxSharpObjects, 0);
+    waterOfSurface_ = WaterHeightFields::waterOfSurface(scene);
+    waterOfSurface_.resize(layout::kMaxSharpObjects, -1);
+    int surface = 0, meshes = 0, bodies = 0;
     for (const ObjectDesc& object : scene.objects) {
         if (!object.isSharp()) continue;
         if (object.hasTriangleSurface()) meshSurfaces_[static_cast<std::size_t>(meshes++)] = surface;
+        if (object.kind == ObjectDesc::Kind::Water) {
+            waterSurfaces_[static_cast<std::size_t>(bodies++)] = surface;
+            waterTriangles_ += static_cast<std::size_t>(object.water.triangleCount());
+        }
         ++surface;
+    }
+    const std::vector<float> hulls = waterHullTriangles(scene);
+    if (!hulls.empty()) {
+        waterHulls_ = gl::Buffer(hulls.size() * sizeof(float), hulls.data(), GL_DYNAMIC_STORAGE_BIT,
+                                 {"objects", "the water bodies' hulls"});
+        waterHullTexels_ = gl::BufferTexture(waterHulls_, GL_RGBA32F, {"objects", "the water bodies' hulls"});
     }
     apartShapeBounds_ = apartShapeBounds(scene);
 }
@@ -121,9 +142,9 @@ bool SurfaceRaster::drawsFacingFaces(const Viewpoint& view) const {
     });
 }
 
-void SurfaceRaster::drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
+void SurfaceRaster::drawTriangles(const gl::Program& program, const Viewpoint& view, std::size_t triangles,
                                   const gl::BufferTexture& texels, const std::vector<int>& surfaceOfOrdinal) const {
-    if (!triangles.id()) return;
+    if (triangles == 0) return;
     program.use();
     glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
     glUniform3fv(program.uniform("view_eye"), 1, glm::value_ptr(view.eye));
@@ -131,11 +152,12 @@ void SurfaceRaster::drawTriangles(const gl::Program& program, const Viewpoint& v
     glUniform1i(program.uniform("view_orthographic"), view.orthographic ? 1 : 0);
     texels.bindSampler(layout::kSurfaceTriangleTexture);
     glUniform1iv(program.uniform("surface_of_ordinal"), layout::kMaxSharpObjects, surfaceOfOrdinal.data());
-    const auto corners = static_cast<GLsizei>(triangles.bytes() / (kSurfaceTriangleFloats * sizeof(float)) * 3);
-    glDrawArrays(GL_TRIANGLES, 0, corners);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangles));
 }
 
 void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const FieldTextures& fields) {
+    water_.update(fields);
+    water_.bind();
     GLint previousFramebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
     vertexArray_.bind();
@@ -145,7 +167,10 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
     glDisable(GL_CULL_FACE);  // the peel finds front and back; facing faces alone only where drawsFacingFaces
     glDisable(GL_BLEND);
     const bool facingFaces = drawsFacingFaces(view);
-    for (int peel = 0; peel < 2; ++peel) {
+    // The far layer serves only the search for exits in the layers, which
+    // water bodies do without (their height fields).
+    const int peels = layerSurfaces_ ? 2 : 1;
+    for (int peel = 0; peel < peels; ++peel) {
         gl::RasterTarget& target = peel == 0 ? layers.near_ : layers.far_;
         target.beginDrawing(glm::vec4(0.0f));
         if (peel == 1) layers.near_.bindColour(layout::kNearLayerTexture);
@@ -154,9 +179,19 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
             glCullFace(peel == 0 ? GL_BACK : GL_FRONT);
         }
         const int variant = peel == 0 ? 0 : facingFaces ? 2 : 1;
-        drawTriangles(programs_[1][variant], view, shapes_, shapeTexels_, shapeSurfaces_);
-        drawTriangles(programs_[0][variant], view, fields.surfaceTriangles(), fields.surfaceTriangleTexels(),
-                      meshSurfaces_);
+        drawTriangles(programs_[1][variant], view, trianglesIn(shapes_), shapeTexels_, shapeSurfaces_);
+        const std::size_t meshTriangles = trianglesIn(fields.surfaceTriangles()) - waterTriangles_;
+        drawTriangles(programs_[0][variant], view, meshTriangles, fields.surfaceTriangleTexels(), meshSurfaces_);
+        if (waterHulls_.id()) {
+            // The hulls' faces away from the viewpoint: they cover the hulls
+            // once, seen from outside or in.
+            glEnable(GL_CULL_FACE);
+            glCullFace(GL_FRONT);
+            const gl::Program& water = programs_[2][peel];
+            water.use();
+            glUniform1iv(water.uniform("water_of_surface"), layout::kMaxSharpObjects, waterOfSurface_.data());
+            drawTriangles(water, view, trianglesIn(waterHulls_), waterHullTexels_, waterSurfaces_);
+        }
         glDisable(GL_CULL_FACE);
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }

@@ -3,8 +3,11 @@
 // surfaces, and by depth peeling the next surfaces behind them, each texel
 // holding normal, distance and surface number (shaders/common/
 // surface_layers.glsl). Spheres and boxes are drawn from their tessellation
-// (ShapeTriangles.h), meshes and the water surface from the triangles the
-// field buffers carry, frame by frame. The image-space camera view and
+// (ShapeTriangles.h), meshes from the triangles the field buffers carry,
+// frame by frame, and a water body as its hull, in which each fragment
+// finds the body's surface on its height field (WaterHeightFields.h): a
+// pool's 40 000 triangles cost a CPU rasterizer's single thread of vertex
+// work more than 20 ms a frame. The image-space camera view and
 // caustics read these layers to find where a ray leaves a refractor.
 #pragma once
 
@@ -13,6 +16,7 @@
 #include "gl/RasterTarget.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/SharpSurfaceBuffer.h"
+#include "render/stages/WaterHeightFields.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -46,11 +50,13 @@ private:
 class SurfaceRaster {
 public:
     explicit SurfaceRaster(const Scene& scene);
-    // Draws both layers of `layers` as `view` sees the surfaces now.
+    // Draws the layers of `layers` as `view` sees the surfaces now: the
+    // near, and the far where a surface other than water is there.
     void draw(const Viewpoint& view, SurfaceLayers& layers, const FieldTextures& fields);
     // Binds what the passes reading the layers need of the surfaces: their
-    // shapes and optics (kSharpSurfaces) and the extinction inside each
-    // (kImageSpaceSurfaces).
+    // shapes and optics (kSharpSurfaces), the extinction inside each and
+    // its water body (kImageSpaceSurfaces), and the water's height fields
+    // as `draw` last gathered them.
     void bindSurfaces() const;
     // Whether `view` may draw the surfaces by their faces toward it alone on
     // the near layer and away from it on the far. So it may when the
@@ -65,19 +71,27 @@ public:
     bool drawsFacingFaces(const Viewpoint& view) const;
 
 private:
-    void drawTriangles(const gl::Program& program, const Viewpoint& view, const gl::Buffer& triangles,
+    void drawTriangles(const gl::Program& program, const Viewpoint& view, std::size_t triangles,
                        const gl::BufferTexture& texels, const std::vector<int>& surfaceOfOrdinal) const;
 
     SharpSurfaceBuffer surfaces_;
-    gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it
-    // [exact shapes: spheres and boxes; 0: meshes and water][0: near layer;
-    // 1: far, peeled behind the near; 2: far, the faces away alone]
-    gl::Program programs_[2][3];
+    gl::Buffer extinction_;  // per sharp surface, κ rgb (1/m) inside it; w its water body, or −1
+    WaterHeightFields water_;
+    bool layerSurfaces_;  // WaterHeightFields::hasLayerSurfaces: the far layer is drawn
+    // [0: meshes; 1: exact shapes, spheres and boxes; 2: water hulls][0:
+    // near layer; 1: far, peeled behind the near; 2: far, the faces away
+    // alone (water: none, its peel always reads the near layer)]
+    gl::Program programs_[3][3];
     gl::EmptyVertexArray vertexArray_;
     gl::Buffer shapes_;                     // the spheres' and boxes' triangles
     gl::BufferTexture shapeTexels_;         // the same, read by the vertex shader
     std::vector<int> shapeSurfaces_;        // identity: a shape's w is its surface number
     std::vector<int> meshSurfaces_;         // the k-th mesh's surface number
+    std::size_t waterTriangles_ = 0;        // the water bodies', which follow the meshes' (sim/SceneFields)
+    gl::Buffer waterHulls_;                 // the water bodies' hulls' triangles
+    gl::BufferTexture waterHullTexels_;
+    std::vector<int> waterSurfaces_;        // the k-th water body's surface number
+    std::vector<int> waterOfSurface_;       // a surface's water body, or −1
     // The spheres' hulls', the boxes' and the water bodies' bounds, where
     // the scene's surfaces are all of these and apart; empty otherwise.
     std::vector<BoxShape> apartShapeBounds_;

@@ -15,15 +15,30 @@
 // meets ends it (the pool floor under water), and the object's extinction
 // weighs it by Beer–Lambert along the chord. The partial reflection inside
 // is not followed (its power is lost), and a ray meets no second refractor
-// after it leaves. GLSL only; needs grid_sampling.glsl (none of its
-// textures), fresnel.glsl, receiver.glsl, receiver_blocks.glsl.
+// after it leaves. A water body is the exception: its exit is found on its
+// height field (common/water_height_fields.glsl), exactly on its triangles.
+// Program options: EIKON_WATER_BODIES (how many the scene has) and
+// EIKON_LAYER_SURFACES (1: it has other sharp surfaces): a CPU rasterizer
+// runs both searches under a mask where both are compiled in.
+// GLSL only; needs grid_sampling.glsl (none of its textures), fresnel.glsl,
+// receiver.glsl, receiver_blocks.glsl.
+#ifndef EIKON_WATER_BODIES
+#define EIKON_WATER_BODIES 0
+#endif
+#ifndef EIKON_LAYER_SURFACES
+#define EIKON_LAYER_SURFACES 1
+#endif
 #include "common/surface_layers.glsl"
 #include "common/sharp_surface_list.glsl"
+#if EIKON_WATER_BODIES > 0
+#include "common/water_height_fields.glsl"
+#endif
 
 // The meshes' trees (bridge/grid/FieldSet.h), two texels per node, read as a
 // buffer texture: a CPU rasterizer gathers a texel for all lanes at once
 // where it loads a storage buffer a lane and a float at a time.
 layout(binding = kSurfaceNodeTexture) uniform samplerBuffer surface_node_texels;
+// Per sharp surface: κ rgb inside it; w its water body, or −1.
 layout(std140, binding = kImageSpaceSurfaces) uniform ImageSpaceSurfaces { vec4 surface_extinction[kMaxSharpObjects]; };
 layout(binding = kNearLayerTexture) uniform sampler2D near_layer;
 layout(binding = kFarLayerTexture) uniform sampler2D far_layer;
@@ -153,6 +168,28 @@ LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
     return LayerExit(true, t, dot(normal, d) < 0.0f ? -normal : normal);
 }
 
+// The exit of a ray inside surface s within `reach` of x: on its height
+// field for a water body, else in the layers. Another surface within the
+// water (a submerged object) shows in the layers alone: there the nearer
+// of the two exits holds.
+LayerExit find_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
+#if EIKON_WATER_BODIES > 0
+    int water = int(surface_extinction[s].w);
+    // Off the surface it entered by more than rounding (1 µm per metre of reach).
+    WaterCrossing crossing = water_crossing(max(water, 0), x, d, 1e-6f * reach, reach, true);
+    LayerExit on_water = LayerExit(crossing.found, crossing.t, crossing.normal);
+#if EIKON_LAYER_SURFACES
+    LayerExit in_layers = find_layer_exit(view, x, d, s, reach);
+    bool layers_nearer = in_layers.found && (!on_water.found || in_layers.t < on_water.t);
+    return water >= 0 && !layers_nearer ? on_water : in_layers;
+#else
+    return on_water;
+#endif
+#else
+    return find_layer_exit(view, x, d, s, reach);
+#endif
+}
+
 struct RefractorPath {
     vec3 x;           // where the ray left the surface, or where it ends inside
     vec3 d;           // the direction it leaves in (or ends in, at a receiver inside)
@@ -171,7 +208,7 @@ RefractorPath follow_through_refractor(Viewpoint view, vec3 x, vec3 d, int s) {
         float reach = surface_reach(s);
         ReceiverHit hit = first_receiver_crossing(x, x + reach * d);
         float to_receiver = hit.receiver >= 0 ? hit.fraction * reach : reach;
-        LayerExit exit_ = find_layer_exit(view, x, d, s, to_receiver);
+        LayerExit exit_ = find_exit(view, x, d, s, to_receiver);
         if (hit.receiver >= 0 && !exit_.found) {
             path.x = x + to_receiver * d;
             path.d = d;

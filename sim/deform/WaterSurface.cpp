@@ -1,5 +1,7 @@
 #include "sim/deform/WaterSurface.h"
 
+#include "bridge/core/Error.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -169,6 +171,8 @@ TriangleMesh WaterSurface::mesh() const {
         mesh.triangles.emplace_back(ta, bb, ba);
         mesh.triangles.emplace_back(centre, ba, bb);
     }
+    EIKON_CHECK_MSG(static_cast<int>(mesh.triangles.size()) == desc_.triangleCount(),
+                    "the water body's triangles are as many as WaterDesc::triangleCount says");
     return mesh;
 }
 

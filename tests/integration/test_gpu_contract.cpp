@@ -48,6 +48,7 @@ const std::map<std::string, BlockRow>& uniformBlocks() {
         {"Receivers", {layout::kReceivers, layout::kMaxReceivers * sizeof(layout::GpuReceiver), 0}},
         {"SharpSurfaces", {layout::kSharpSurfaces, layout::kMaxSharpObjects * sizeof(layout::GpuSharpSurface), 0}},
         {"ImageSpaceSurfaces", {layout::kImageSpaceSurfaces, layout::kMaxSharpObjects * sizeof(glm::vec4), 0}},
+        {"WaterBodies", {layout::kWaterBodies, layout::kMaxSharpObjects * sizeof(layout::GpuWaterHeightField), 0}},
     };
     return rows;
 }
@@ -68,6 +69,8 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"ViewExit", {layout::kViewExit, 0, sizeof(glm::vec4)}},
         {"PhotonPathPower", {layout::kPhotonPathPower, 0, sizeof(glm::vec4)}},
         {"SurfaceNodes", {layout::kSurfaceNodes, 0, sizeof(glm::vec4)}},
+        {"WaterNodeGrids", {layout::kWaterNodeGrids, 0, sizeof(glm::vec4)}},
+        {"WaterSlabs", {layout::kWaterSlabs, 0, sizeof(glm::uvec2)}},
         {"SurfaceTriangles", {layout::kSurfaceTriangles, 0, sizeof(glm::vec4)}},
         {"Patches", {layout::kWavefrontPatches, 0, sizeof(layout::GpuWavefrontPatch)}},
         {"Children", {layout::kWavefrontChildren, 0, sizeof(layout::GpuWavefrontPatch)}},
@@ -162,6 +165,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"surface_node_texels", layout::kSurfaceNodeTexture},
         {"receiver_tally_texels", layout::kReceiverTallyTexture},
         {"hdr_radiance", layout::kHdrImageTexture},
+        {"water_node_texels", layout::kWaterNodeTexture},
     };
     return rows;
 }
@@ -273,7 +277,13 @@ std::vector<Variant> productionVariants() {
          {{"EIKON_RECEIVERS", "4"},
           {"EIKON_PASS", "1"},
           {"EIKON_ENVIRONMENT", std::to_string(layout::kHdrEnvironment)},
-          {"EIKON_RECORD_EXIT", "1"}}},
+          {"EIKON_RECORD_EXIT", "1"},
+          {"EIKON_WATER_BODIES", "1"},
+          {"EIKON_LAYER_SURFACES", "1"}}},
+        {"image_space_caustics.comp",
+         {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "1"}, {"EIKON_WATER_BODIES", "2"}, {"EIKON_LAYER_SURFACES", "0"}}},
+        {"water_height_fields.comp", {{"EIKON_PASS", "0"}}},
+        {"water_height_fields.comp", {{"EIKON_PASS", "1"}}},
         {"caustic_polygons.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "0"}, {"EIKON_CELL_RECEIVERS", "4"}}},
         {"caustic_polygons.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "1"}}},
         // Image space's raster programs (render/stages/SurfaceLayers, CausticPolygons).
@@ -282,6 +292,9 @@ std::vector<Variant> productionVariants() {
          "surface_layers.frag"},
         {"surface_layers.vert",
          {{"EIKON_EXACT_SHAPES", "0"}, {"EIKON_PEEL", "0"}, {"EIKON_NEAR_TEST", "0"}},
+         "surface_layers.frag"},
+        {"surface_layers.vert",
+         {{"EIKON_EXACT_SHAPES", "2"}, {"EIKON_PEEL", "1"}, {"EIKON_NEAR_TEST", "0"}},
          "surface_layers.frag"},
         {"caustic_polygons.vert", {{"EIKON_RECEIVERS", "2"}}, "caustic_polygons.frag"},
         {"caustic_splats.vert", {{"EIKON_RECEIVERS", "2"}}, "caustic_splats.frag"},

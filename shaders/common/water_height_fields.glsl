@@ -1,0 +1,126 @@
+// The water bodies as height fields (render/stages/WaterHeightFields.h),
+// for image space: where a ray crosses a water body's boundary, found on
+// the node grid of its surface instead of in a viewpoint's layers. The body
+// is the basin's box cut by the surface: x and z within the basin, y from
+// the basin's bottom up to the surface, whose triangles are those of
+// sim/deform/WaterSurface::mesh (cell (i, k) cut along its diagonal from
+// node (i, k) to (i + 1, k + 1)), with the corner normals the tracers read
+// (FieldSet.h), interpolated by barycentric weights as the raster pipeline
+// interpolates them. Crossings are exact on those triangles: along a ray
+// the height above a triangle's plane is linear, so its root is found in
+// closed form. Only the slab between the lowest and the highest node is
+// walked, cell by cell (Amanatides and Woo 1987); below it a point is in
+// the water, above it outside. GLSL only.
+
+struct WaterBody {
+    vec4 low;     // the basin's minimum corner (its bottom's y); w unused
+    vec4 high;    // the basin's maximum corner; w unused
+    ivec4 grid;   // nodes along x and z, the first texel of its nodes (after its slab texel), unused
+};
+layout(std140, binding = kWaterBodies) uniform WaterBodies { WaterBody water_bodies[kMaxSharpObjects]; };
+// Per body: a texel (lowest node y, highest node y, 0, 0), then per node,
+// x fastest, (corner normal, y).
+layout(binding = kWaterNodeTexture) uniform samplerBuffer water_node_texels;
+
+struct WaterCrossing {
+    bool found;
+    float t;      // along the ray
+    vec3 normal;  // outward: out of the water
+};
+
+vec4 water_node(WaterBody body, int i, int k) { return texelFetch(water_node_texels, body.grid.z + k * body.grid.x + i); }
+
+vec2 water_spacing(WaterBody body) { return (body.high.xz - body.low.xz) / vec2(body.grid.xy - 1); }
+
+// Barycentric weights of cell-local (u, v) ∈ [0, 1]² for the corners
+// (0,0), the side corner, (1,1): the triangle v ≥ u has side corner (0,1),
+// the triangle u ≥ v has (1,0).
+vec3 water_weights(vec2 uv, bool upper) {
+    return upper ? vec3(1.0f - uv.y, uv.y - uv.x, uv.x) : vec3(1.0f - uv.x, uv.x - uv.y, uv.y);
+}
+
+// The first crossing of the water body's boundary by x + t·d for t in
+// (t_from, t_to]; t_from must lie off the boundary by more than rounding.
+// leaving_only: only where the ray leaves the water (a ray followed inside
+// from where a layer put its entry, which may lie a rounding above the
+// triangles: it enters them again first).
+// No return or branch skips work: a CPU rasterizer runs every path of a
+// SIMD group under a mask, so each event is a select, and the walk's loop
+// ends when its lanes have all found theirs.
+WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float t_to, bool leaving_only) {
+    WaterBody body = water_bodies[body_index];
+    vec2 slab = texelFetch(water_node_texels, body.grid.z - 1).xy;  // the lowest and the highest node's y
+    // The box that holds the water: the basin up to the highest node.
+    vec3 low = body.low.xyz, high = vec3(body.high.x, max(slab.y, body.low.y), body.high.z);
+    vec3 inverse = 1.0f / vec3(abs(d.x) > 1e-20f ? d.x : 1e-20f, abs(d.y) > 1e-20f ? d.y : 1e-20f,
+                               abs(d.z) > 1e-20f ? d.z : 1e-20f);
+    vec3 ta = (low - x) * inverse, tb = (high - x) * inverse;
+    vec3 near_ = min(ta, tb), far_ = max(ta, tb);
+    float box_in = max(max(near_.x, near_.y), near_.z), box_out = min(min(far_.x, far_.y), far_.z);
+    bool crosses_box = box_out >= box_in && box_out > t_from && box_in <= t_to;
+    vec3 in_axis = near_.x == box_in ? vec3(1, 0, 0) : near_.y == box_in ? vec3(0, 1, 0) : vec3(0, 0, 1);
+    vec3 out_axis = far_.x == box_out ? vec3(1, 0, 0) : far_.y == box_out ? vec3(0, 1, 0) : vec3(0, 0, 1);
+    // Whether the ray enters the box below the surface (through a wall or
+    // the bottom), and leaves it so: certainly where that point lies below
+    // the slab; within the slab the walk below tells.
+    bool enters = crosses_box && !leaving_only && box_in > t_from;
+    bool leaves = crosses_box && box_out <= t_to;
+    WaterCrossing crossing = WaterCrossing(enters && x.y + box_in * d.y < slab.x, box_in, -sign(d) * in_axis);
+    // The surface's crossings, in the slab where y lies between the lowest and the highest node.
+    float slab_a = (slab.x - x.y) * inverse.y, slab_b = (slab.y - x.y) * inverse.y;
+    float from = max(max(t_from, box_in), min(slab_a, slab_b));
+    float to = min(min(t_to, box_out), max(slab_a, slab_b));
+    vec2 spacing = water_spacing(body);
+    vec2 g = (x.xz + from * d.xz - body.low.xz) / spacing;  // grid coordinates where the walk starts
+    vec2 dg = d.xz / spacing;
+    ivec2 cell = clamp(ivec2(floor(g)), ivec2(0), body.grid.xy - 2);
+    ivec2 step_ = ivec2(dg.x >= 0.0f ? 1 : -1, dg.y >= 0.0f ? 1 : -1);
+    vec2 inverse_g = 1.0f / vec2(abs(dg.x) > 1e-20f ? dg.x : 1e-20f, abs(dg.y) > 1e-20f ? dg.y : 1e-20f);
+    float t = from;
+    bool walking = crosses_box && !crossing.found && from < to;
+    for (int c = 0; walking && c < body.grid.x + body.grid.y; ++c) {
+        // Where the ray leaves this cell, and where it crosses its diagonal u = v.
+        vec2 leave = (vec2(cell + max(step_, ivec2(0))) - g) * inverse_g + from;
+        float cell_end = min(min(leave.x, leave.y), to);
+        vec2 origin = g - vec2(cell) - from * dg;  // (u, v) at t = 0
+        float diagonal = abs(dg.x - dg.y) > 1e-20f ? (origin.y - origin.x) / (dg.x - dg.y) : -1.0f;
+        float split = diagonal > t && diagonal < cell_end ? diagonal : cell_end;
+        vec4 n00 = water_node(body, cell.x, cell.y), n11 = water_node(body, cell.x + 1, cell.y + 1);
+        vec4 n01 = water_node(body, cell.x, cell.y + 1), n10 = water_node(body, cell.x + 1, cell.y);
+        // Each part of the ray over the cell lies over one triangle, where
+        // its height above the triangle's plane is linear in t.
+        float ends[3] = float[3](t, split, cell_end);
+        for (int part = 0; part < 2; ++part) {
+            float a = ends[part], b = ends[part + 1];
+            vec2 ua = origin + a * dg, ub = origin + b * dg;
+            bool upper = ua.y + ub.y >= ua.x + ub.x;  // at the part's middle
+            vec4 side = upper ? n01 : n10;
+            vec3 wa = water_weights(ua, upper), wb = water_weights(ub, upper);
+            float ha = x.y + a * d.y - (wa.x * n00.w + wa.y * side.w + wa.z * n11.w);
+            float hb = x.y + b * d.y - (wb.x * n00.w + wb.y * side.w + wb.z * n11.w);
+            float root = a + (b - a) * ha / (ha - hb);
+            vec3 wr = water_weights(clamp(origin + root * dg, 0.0f, 1.0f), upper);
+            vec3 normal = normalize(wr.x * n00.xyz + wr.y * side.xyz + wr.z * n11.xyz);
+            bool open = !crossing.found && b > a;
+            // Entering the box below the surface, where the walk starts there.
+            bool wall_in = open && enters && a == box_in && ha < 0.0f;
+            bool surface = open && !wall_in && (ha > 0.0f) != (hb > 0.0f) && (!leaving_only || hb > 0.0f);
+            crossing = wall_in ? WaterCrossing(true, box_in, -sign(d) * in_axis)
+                       : surface ? WaterCrossing(true, root, normal.y < 0.0f ? -normal : normal)
+                                 : crossing;
+            // Leaving the box below the surface, where the walk ends there.
+            bool wall_out = open && !surface && !wall_in && leaves && b == box_out && hb < 0.0f;
+            crossing = wall_out ? WaterCrossing(true, box_out, sign(d) * out_axis) : crossing;
+        }
+        t = cell_end;
+        if (leave.x <= leave.y) cell.x += step_.x;
+        else cell.y += step_.y;
+        walking = !crossing.found && cell_end < to && all(greaterThanEqual(cell, ivec2(0))) &&
+                  all(lessThanEqual(cell, body.grid.xy - 2));
+    }
+    // Leaving the box below the slab: through a wall or the bottom.
+    bool deep_out = !crossing.found && leaves && x.y + box_out * d.y < slab.x;
+    crossing = deep_out ? WaterCrossing(true, box_out, sign(d) * out_axis) : crossing;
+    crossing.t = crossing.found ? crossing.t : t_to;
+    return crossing;
+}
