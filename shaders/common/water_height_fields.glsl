@@ -78,6 +78,9 @@ WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float
     vec2 inverse_g = 1.0f / vec2(abs(dg.x) > 1e-20f ? dg.x : 1e-20f, abs(dg.y) > 1e-20f ? dg.y : 1e-20f);
     float t = from;
     bool walking = crosses_box && !crossing.found && from < to;
+    bool on_surface = false;  // the crossing found is the surface's: its normal is taken after the walk
+    ivec2 hit_cell = cell;
+    bool hit_upper = false;
     for (int c = 0; walking && c < body.grid.x + body.grid.y; ++c) {
         // Where the ray leaves this cell, and where it crosses its diagonal u = v.
         vec2 leave = (vec2(cell + max(step_, ivec2(0))) - g) * inverse_g + from;
@@ -85,32 +88,33 @@ WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float
         vec2 origin = g - vec2(cell) - from * dg;  // (u, v) at t = 0
         float diagonal = abs(dg.x - dg.y) > 1e-20f ? (origin.y - origin.x) / (dg.x - dg.y) : -1.0f;
         float split = diagonal > t && diagonal < cell_end ? diagonal : cell_end;
-        vec4 n00 = water_node(body, cell.x, cell.y), n11 = water_node(body, cell.x + 1, cell.y + 1);
-        vec4 n01 = water_node(body, cell.x, cell.y + 1), n10 = water_node(body, cell.x + 1, cell.y);
-        // Each part of the ray over the cell lies over one triangle, where
-        // its height above the triangle's plane is linear in t.
+        float h00 = water_node(body, cell.x, cell.y).w, h11 = water_node(body, cell.x + 1, cell.y + 1).w;
+        float h01 = water_node(body, cell.x, cell.y + 1).w, h10 = water_node(body, cell.x + 1, cell.y).w;
+        // Over the triangle v ≥ u the surface rises h00 + u·(h11 − h01) +
+        // v·(h01 − h00), over u ≥ v h00 + u·(h10 − h00) + v·(h11 − h10); the
+        // ray's height above it is then linear in t over each part of the
+        // ray across the cell.
+        vec2 upper_slope = vec2(h11 - h01, h01 - h00), lower_slope = vec2(h10 - h00, h11 - h10);
         float ends[3] = float[3](t, split, cell_end);
         for (int part = 0; part < 2; ++part) {
             float a = ends[part], b = ends[part + 1];
-            vec2 ua = origin + a * dg, ub = origin + b * dg;
-            bool upper = ua.y + ub.y >= ua.x + ub.x;  // at the part's middle
-            vec4 side = upper ? n01 : n10;
-            vec3 wa = water_weights(ua, upper), wb = water_weights(ub, upper);
-            float ha = x.y + a * d.y - (wa.x * n00.w + wa.y * side.w + wa.z * n11.w);
-            float hb = x.y + b * d.y - (wb.x * n00.w + wb.y * side.w + wb.z * n11.w);
-            float root = a + (b - a) * ha / (ha - hb);
-            vec3 wr = water_weights(clamp(origin + root * dg, 0.0f, 1.0f), upper);
-            vec3 normal = normalize(wr.x * n00.xyz + wr.y * side.xyz + wr.z * n11.xyz);
+            vec2 middle = origin + 0.5f * (a + b) * dg;
+            bool upper = middle.y >= middle.x;
+            vec2 slope = upper ? upper_slope : lower_slope;
+            float above = x.y - h00 - dot(origin, slope), rate = d.y - dot(dg, slope);
+            float ha = above + rate * a, hb = above + rate * b;
             bool open = !crossing.found && b > a;
             // Entering the box below the surface, where the walk starts there.
             bool wall_in = open && enters && a == box_in && ha < 0.0f;
             bool surface = open && !wall_in && (ha > 0.0f) != (hb > 0.0f) && (!leaving_only || hb > 0.0f);
-            crossing = wall_in ? WaterCrossing(true, box_in, -sign(d) * in_axis)
-                       : surface ? WaterCrossing(true, root, normal.y < 0.0f ? -normal : normal)
-                                 : crossing;
             // Leaving the box below the surface, where the walk ends there.
             bool wall_out = open && !surface && !wall_in && leaves && b == box_out && hb < 0.0f;
-            crossing = wall_out ? WaterCrossing(true, box_out, sign(d) * out_axis) : crossing;
+            crossing.t = surface ? a + (b - a) * ha / (ha - hb) : wall_in ? box_in : wall_out ? box_out : crossing.t;
+            crossing.normal = wall_in ? -sign(d) * in_axis : wall_out ? sign(d) * out_axis : crossing.normal;
+            crossing.found = crossing.found || surface || wall_in || wall_out;
+            on_surface = on_surface || surface;
+            hit_cell = surface ? cell : hit_cell;
+            hit_upper = surface ? upper : hit_upper;
         }
         t = cell_end;
         if (leave.x <= leave.y) cell.x += step_.x;
@@ -118,6 +122,13 @@ WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float
         walking = !crossing.found && cell_end < to && all(greaterThanEqual(cell, ivec2(0))) &&
                   all(lessThanEqual(cell, body.grid.xy - 2));
     }
+    // The surface's normal at the crossing: its corners' normals, weighted as the raster pipeline weighs them.
+    vec2 uv = clamp(g - vec2(hit_cell) + (crossing.t - from) * dg, 0.0f, 1.0f);
+    vec3 w = water_weights(uv, hit_upper);
+    vec3 normal = normalize(w.x * water_node(body, hit_cell.x, hit_cell.y).xyz +
+                            w.y * water_node(body, hit_cell.x + (hit_upper ? 0 : 1), hit_cell.y + (hit_upper ? 1 : 0)).xyz +
+                            w.z * water_node(body, hit_cell.x + 1, hit_cell.y + 1).xyz);
+    crossing.normal = on_surface ? (normal.y < 0.0f ? -normal : normal) : crossing.normal;
     // Leaving the box below the slab: through a wall or the bottom.
     bool deep_out = !crossing.found && leaves && x.y + box_out * d.y < slab.x;
     crossing = deep_out ? WaterCrossing(true, box_out, sign(d) * out_axis) : crossing;
