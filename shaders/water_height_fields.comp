@@ -6,14 +6,16 @@
 //   EIKON_PASS 0, per triangle: a water body's surface triangle (all
 //     three corners above its basin's bottom; the walls' and the bottom's
 //     reach down to it) writes each corner's (normal, y) to its node, and
-//     widens its body's slab. A node's triangles agree on its normal: they
-//     are the surface's, within the crease angle of one another.
-//   EIKON_PASS 1, per body: the slab's lowest and highest y, into the
-//     texel before its nodes.
+//     widens its body's slab and raises its steepest slope (|∇y| of the
+//     triangle's plane). A node's triangles agree on its normal: they are
+//     the surface's, within the crease angle of one another.
+//   EIKON_PASS 1, per body: the slab's lowest and highest y and the
+//     steepest slope, into the texel before its nodes.
 layout(local_size_x = 64) in;
 
 layout(std430, binding = kWaterNodeGrids) buffer WaterNodeGrids { vec4 water_nodes[]; };
-layout(std430, binding = kWaterSlabs) buffer WaterSlabs { uvec2 water_slabs[]; };  // per body, ordered bits of (lowest, highest)
+// Per body, ordered bits of (lowest y, highest y, steepest slope, unused).
+layout(std430, binding = kWaterSlabs) buffer WaterSlabs { uvec4 water_slabs[]; };
 
 #include "common/water_height_fields.glsl"
 
@@ -51,8 +53,11 @@ void main() {
         vec3 normal = texelFetch(surface_triangle_texels, 6 * triangle + 3 + c).xyz;
         water_nodes[body.grid.z + node.y * body.grid.x + node.x] = vec4(normal, corners[c].y);
     }
+    vec3 facet = cross(corners[1] - corners[0], corners[2] - corners[0]);
+    float slope = length(facet.xz) / max(abs(facet.y), 1e-30f);
     atomicMin(water_slabs[water].x, ordered_bits(lowest));
     atomicMax(water_slabs[water].y, ordered_bits(highest));
+    atomicMax(water_slabs[water].z, ordered_bits(slope));
 }
 #else
 uniform int body_count;
@@ -60,8 +65,8 @@ uniform int body_count;
 void main() {
     int water = int(gl_GlobalInvocationID.x);
     if (water >= body_count) return;
-    uvec2 slab = water_slabs[water];
+    uvec4 slab = water_slabs[water];
     water_nodes[water_bodies[water].grid.z - 1] =
-        vec4(float_of_ordered_bits(slab.x), float_of_ordered_bits(slab.y), 0.0f, 0.0f);
+        vec4(float_of_ordered_bits(slab.x), float_of_ordered_bits(slab.y), float_of_ordered_bits(slab.z), 0.0f);
 }
 #endif

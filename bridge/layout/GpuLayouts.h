@@ -73,7 +73,7 @@
     X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */                                           \
     X(kGlowCells, 26)           /* buffer GlowCells { GpuGlowCell cells[]; }: a glowing volume's emitting cells */ \
     X(kWaterNodeGrids, 26)      /* buffer WaterNodeGrids { vec4 nodes[]; }: the water bodies' node grids, written (render/stages/WaterHeightFields) */ \
-    X(kWaterSlabs, 27)          /* buffer WaterSlabs { uvec2 slabs[]; }: per water body its nodes' lowest and highest y, ordered bits */ \
+    X(kWaterSlabs, 27)          /* buffer WaterSlabs { uvec4 slabs[]; }: per water body its nodes' lowest and highest y and steepest slope, ordered bits */ \
     X(kLatticeIn, 27)           /* buffer LatticeIn { float density[]; }: one channel's link densities, W, read */ \
     X(kLatticeOut, 28)          /* buffer LatticeOut { float density[]; }: the same after one step, written */ \
     X(kLatticeProbes, 28)       /* buffer LatticeProbes { float fluence[]; }: the lattice's fluence at its probes (probe pass) */ \

@@ -4,7 +4,6 @@
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/GlDebug.h"
 
-#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
@@ -61,7 +60,7 @@ WaterHeightFields::WaterHeightFields(const Scene& scene) {
                         {"objects", "the water bodies"});
     nodes_ = gl::Buffer(static_cast<std::size_t>(texels) * sizeof(glm::vec4), {"objects[].cells", "the water's node grids"});
     nodeTexels_ = gl::BufferTexture(nodes_, GL_RGBA32F, {"objects[].cells", "the water's node grids"});
-    slabs_ = gl::Buffer(static_cast<std::size_t>(bodies_) * sizeof(glm::uvec2), {"objects", "the water's slabs"});
+    slabs_ = gl::Buffer(static_cast<std::size_t>(bodies_) * sizeof(glm::uvec4), {"objects", "the water's slabs"});
     gatherProgram_ = gl::compileComputeProgram("water_height_fields.comp", {{"EIKON_PASS", "0"}});
     slabProgram_ = gl::compileComputeProgram("water_height_fields.comp", {{"EIKON_PASS", "1"}});
 }
@@ -70,9 +69,9 @@ void WaterHeightFields::update(const FieldTextures& fields) {
     if (empty() || (gathered_ && fields.surfaceVersion() == version_)) return;
     gathered_ = true;
     version_ = fields.surfaceVersion();
-    // The slabs start empty: lowest at the ordered bits' top, highest at their bottom.
-    const std::vector<glm::uvec2> emptySlabs(static_cast<std::size_t>(bodies_), glm::uvec2(0xffffffffu, 0u));
-    slabs_.upload(emptySlabs.data(), emptySlabs.size() * sizeof(glm::uvec2));
+    // The slabs start empty: lowest at the ordered bits' top, highest and steepest at their bottom.
+    const std::vector<glm::uvec4> emptySlabs(static_cast<std::size_t>(bodies_), glm::uvec4(0xffffffffu, 0u, 0u, 0u));
+    slabs_.upload(emptySlabs.data(), emptySlabs.size() * sizeof(glm::uvec4));
     block_.bindUniform(layout::kWaterBodies);
     nodes_.bindStorage(layout::kWaterNodeGrids);
     slabs_.bindStorage(layout::kWaterSlabs);

@@ -177,7 +177,10 @@ LayerExit find_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
     int water = int(surface_extinction[s].w);
     // Off the surface it entered by more than rounding (1 µm per metre of reach).
     WaterCrossing crossing = water_crossing(max(water, 0), x, d, 1e-6f * reach, reach, true);
-    LayerExit on_water = LayerExit(crossing.found, crossing.t, crossing.normal);
+    // The smooth normal may face the ray where it grazes out across a steep
+    // facet: it is turned along the ray, as the layers' is.
+    LayerExit on_water = LayerExit(crossing.found, crossing.t,
+                                   dot(crossing.normal, d) < 0.0f ? -crossing.normal : crossing.normal);
 #if EIKON_LAYER_SURFACES
     LayerExit in_layers = find_layer_exit(view, x, d, s, reach);
     bool layers_nearer = in_layers.found && (!on_water.found || in_layers.t < on_water.t);

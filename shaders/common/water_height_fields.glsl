@@ -18,8 +18,8 @@ struct WaterBody {
     ivec4 grid;   // nodes along x and z, the first texel of its nodes (after its slab texel), unused
 };
 layout(std140, binding = kWaterBodies) uniform WaterBodies { WaterBody water_bodies[kMaxSharpObjects]; };
-// Per body: a texel (lowest node y, highest node y, 0, 0), then per node,
-// x fastest, (corner normal, y).
+// Per body: a texel (lowest node y, highest node y, the steepest slope
+// |∇y| of a surface triangle, 0), then per node, x fastest, (corner normal, y).
 layout(binding = kWaterNodeTexture) uniform samplerBuffer water_node_texels;
 
 struct WaterCrossing {
@@ -49,7 +49,7 @@ vec3 water_weights(vec2 uv, bool upper) {
 // ends when its lanes have all found theirs.
 WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float t_to, bool leaving_only) {
     WaterBody body = water_bodies[body_index];
-    vec2 slab = texelFetch(water_node_texels, body.grid.z - 1).xy;  // the lowest and the highest node's y
+    vec3 slab = texelFetch(water_node_texels, body.grid.z - 1).xyz;  // the lowest and the highest node's y, the steepest slope
     // The box that holds the water: the basin up to the highest node.
     vec3 low = body.low.xyz, high = vec3(body.high.x, max(slab.y, body.low.y), body.high.z);
     vec3 inverse = 1.0f / vec3(abs(d.x) > 1e-20f ? d.x : 1e-20f, abs(d.y) > 1e-20f ? d.y : 1e-20f,
@@ -77,8 +77,19 @@ WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float
     ivec2 step_ = ivec2(dg.x >= 0.0f ? 1 : -1, dg.y >= 0.0f ? 1 : -1);
     vec2 inverse_g = 1.0f / vec2(abs(dg.x) > 1e-20f ? dg.x : 1e-20f, abs(dg.y) > 1e-20f ? dg.y : 1e-20f);
     float t = from;
-    bool walking = crosses_box && !crossing.found && from < to;
+    // A ray from within the water that descends more steeply than any
+    // triangle rises stays under the surface (y(t) ≤ y(0) + d.y·t < H(x0) −
+    // slope·|d.xz|·t ≤ H at the point below it): only the box's walls and
+    // bottom are left to cross.
+    bool stays_under = leaving_only && -d.y > slab.z * length(d.xz) * 1.0001f;
+    bool walking = crosses_box && !crossing.found && from < to && !stays_under;
     bool on_surface = false;  // the crossing found is the surface's: its normal is taken after the walk
+    // The ray's height above the surface where the walk has got to, as the
+    // last part reckoned it: the next part takes its side from there, so a
+    // crossing on a cell's edge, where two planes' roundings disagree on
+    // the side, is found once.
+    float end_height = 1.0f;
+    bool started = false;
     ivec2 hit_cell = cell;
     bool hit_upper = false;
     for (int c = 0; walking && c < body.grid.x + body.grid.y; ++c) {
@@ -106,12 +117,14 @@ WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float
             bool open = !crossing.found && b > a;
             // Entering the box below the surface, where the walk starts there.
             bool wall_in = open && enters && a == box_in && ha < 0.0f;
-            bool surface = open && !wall_in && (ha > 0.0f) != (hb > 0.0f) && (!leaving_only || hb > 0.0f);
-            // Leaving the box below the surface, where the walk ends there.
-            bool wall_out = open && !surface && !wall_in && leaves && b == box_out && hb < 0.0f;
-            crossing.t = surface ? a + (b - a) * ha / (ha - hb) : wall_in ? box_in : wall_out ? box_out : crossing.t;
-            crossing.normal = wall_in ? -sign(d) * in_axis : wall_out ? sign(d) * out_axis : crossing.normal;
-            crossing.found = crossing.found || surface || wall_in || wall_out;
+            bool above_at_a = started ? end_height > 0.0f : ha > 0.0f;
+            bool surface = open && !wall_in && above_at_a != (hb > 0.0f) && (!leaving_only || hb > 0.0f);
+            float root = ha != hb ? clamp(a + (b - a) * ha / (ha - hb), a, b) : a;
+            crossing.t = surface ? root : wall_in ? box_in : crossing.t;
+            crossing.normal = wall_in ? -sign(d) * in_axis : crossing.normal;
+            crossing.found = crossing.found || surface || wall_in;
+            end_height = open ? hb : end_height;
+            started = started || open;
             on_surface = on_surface || surface;
             hit_cell = surface ? cell : hit_cell;
             hit_upper = surface ? upper : hit_upper;
@@ -129,8 +142,12 @@ WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float
                             w.y * water_node(body, hit_cell.x + (hit_upper ? 0 : 1), hit_cell.y + (hit_upper ? 1 : 0)).xyz +
                             w.z * water_node(body, hit_cell.x + 1, hit_cell.y + 1).xyz);
     crossing.normal = on_surface ? (normal.y < 0.0f ? -normal : normal) : crossing.normal;
-    // Leaving the box below the slab: through a wall or the bottom.
-    bool deep_out = !crossing.found && leaves && x.y + box_out * d.y < slab.x;
+    // Leaving the box under the surface: where the walk ends on a wall (off
+    // the grid, or at the box's end), below the slab, or all the way under
+    // the surface; through a wall or the bottom.
+    bool off_grid = any(lessThan(cell, ivec2(0))) || any(greaterThan(cell, body.grid.xy - 2));
+    bool walked_out = end_height < 0.0f && (off_grid || t >= box_out);
+    bool deep_out = !crossing.found && leaves && (walked_out || x.y + box_out * d.y < slab.x || stays_under);
     crossing = deep_out ? WaterCrossing(true, box_out, sign(d) * out_axis) : crossing;
     crossing.t = crossing.found ? crossing.t : t_to;
     return crossing;

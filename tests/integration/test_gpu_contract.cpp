@@ -70,7 +70,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"PhotonPathPower", {layout::kPhotonPathPower, 0, sizeof(glm::vec4)}},
         {"SurfaceNodes", {layout::kSurfaceNodes, 0, sizeof(glm::vec4)}},
         {"WaterNodeGrids", {layout::kWaterNodeGrids, 0, sizeof(glm::vec4)}},
-        {"WaterSlabs", {layout::kWaterSlabs, 0, sizeof(glm::uvec2)}},
+        {"WaterSlabs", {layout::kWaterSlabs, 0, sizeof(glm::uvec4)}},
         {"SurfaceTriangles", {layout::kSurfaceTriangles, 0, sizeof(glm::vec4)}},
         {"Patches", {layout::kWavefrontPatches, 0, sizeof(layout::GpuWavefrontPatch)}},
         {"Children", {layout::kWavefrontChildren, 0, sizeof(layout::GpuWavefrontPatch)}},
