@@ -1,5 +1,6 @@
 #include "render/stages/SurfaceLayers.h"
 
+#include "bridge/core/Error.h"
 #include "bridge/grid/FieldSet.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/GlDebug.h"
@@ -180,6 +181,8 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
         }
         const int variant = peel == 0 ? 0 : facingFaces ? 2 : 1;
         drawTriangles(programs_[1][variant], view, trianglesIn(shapes_), shapeTexels_, shapeSurfaces_);
+        EIKON_CHECK_MSG(trianglesIn(fields.surfaceTriangles()) >= waterTriangles_,
+                        "the field buffers carry the water bodies' triangles after the meshes'");
         const std::size_t meshTriangles = trianglesIn(fields.surfaceTriangles()) - waterTriangles_;
         drawTriangles(programs_[0][variant], view, meshTriangles, fields.surfaceTriangleTexels(), meshSurfaces_);
         if (waterHulls_.id()) {
