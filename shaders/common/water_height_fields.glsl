@@ -9,7 +9,7 @@
 // interpolates them. Crossings are exact on those triangles: along a ray
 // the height above a triangle's plane is linear, so its root is found in
 // closed form. Only the slab between the lowest and the highest node is
-// walked, cell by cell (Amanatides and Woo 1987); below it a point is in
+// walked, cell by cell (2D DDA, [Amanatides87]); below it a point is in
 // the water, above it outside. GLSL only.
 
 struct WaterBody {
