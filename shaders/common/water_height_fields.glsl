@@ -50,6 +50,10 @@ vec3 water_weights(vec2 uv, bool upper) {
 WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float t_to, bool leaving_only) {
     WaterBody body = water_bodies[body_index];
     vec3 slab = texelFetch(water_node_texels, body.grid.z - 1).xyz;  // the lowest and the highest node's y, the steepest slope
+    // Widened by a hair (10 ppm of the basin's depth), so that still water,
+    // whose slab is a plane, is walked across too.
+    float hair = 1e-5f * (body.high.y - body.low.y) + 1e-7f;
+    slab.xy += vec2(-hair, hair);
     // The box that holds the water: the basin up to the highest node.
     vec3 low = body.low.xyz, high = vec3(body.high.x, max(slab.y, body.low.y), body.high.z);
     vec3 inverse = 1.0f / vec3(abs(d.x) > 1e-20f ? d.x : 1e-20f, abs(d.y) > 1e-20f ? d.y : 1e-20f,

@@ -41,14 +41,16 @@ namespace {
 
 constexpr double kWaterIndex = 1.333;
 
-// A rippled water body seen by the camera at `eye`, without receivers,
-// and `others`: more objects, each a JSON object followed by a comma.
-Scene rippledWater(const std::string& name, const std::string& eye, const std::string& others = "") {
+// A water body rippled to `swell` m (RMS) seen by the camera at `eye`,
+// without receivers, and `others`: more objects, each a JSON object
+// followed by a comma.
+Scene rippledWater(const std::string& name, const std::string& eye, const std::string& others = "",
+                   double swell = 0.006) {
     const std::string path = ::testing::TempDir() + name + ".json";
     std::ofstream(path) << R"({
       "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.6, -0.4, -0.6], "max": [0.6, 0.6, 0.6]}},
       "objects": [)" + others + R"({"type": "water", "basin": {"min": [-0.5, -0.3, -0.5], "max": [0.5, 0.0, 0.5]}, "cells": [40, 40],
-                   "swell": {"amplitude": 0.006, "wavelength": 0.2, "waves": 6, "seed": 3}, "index": 1.333}],
+                   "swell": {"amplitude": )" + std::to_string(swell) + R"(, "wavelength": 0.2, "waves": 6, "seed": 3}, "index": 1.333}],
       "lights": [{"type": "point", "position": [0.0, 2.0, 0.0], "power": 10}],
       "camera": {"position": )" + eye + R"(, "target": [0.0, -0.1, 0.0], "up": [0, 0, -1], "fov_deg": 30},
       "render": {"method": "image_space", "width": 160, "height": 120}
@@ -150,9 +152,9 @@ ExitAgreement compareExits(const Scene& scene) {
     return agreement;
 }
 
-// The view of rippled water from `eye`, whose figures are named after `side`.
-void expectExitsMatch(const std::string& side, const std::string& eye) {
-    const ExitAgreement agreement = compareExits(rippledWater("water_from_" + side, eye));
+// The view of water rippled to `swell` m from `eye`, whose figures are named after `side`.
+void expectExitsMatch(const std::string& side, const std::string& eye, double swell = 0.006) {
+    const ExitAgreement agreement = compareExits(rippledWater("water_from_" + side, eye, "", swell));
     const std::string figure = "image_space_water_" + side + "_";
     test::reportFigure((figure + "pixels").c_str(), agreement.pixels);
     test::reportFigure((figure + "fraction_within_one_pixel").c_str(), agreement.withinOnePixel);
@@ -164,6 +166,8 @@ void expectExitsMatch(const std::string& side, const std::string& eye) {
 TEST(ImageSpaceWater, RefractionThroughTheWavesMatchesTheTriangles) {
     expectExitsMatch("above", "[0.15, 1.4, 0.6]");
     expectExitsMatch("below", "[0.1, -1.6, 0.3]");
+    // Still water: its slab is a plane (the walk once missed it there).
+    expectExitsMatch("still", "[0.15, 1.4, 0.6]", 0.0);
 }
 
 // A glass box under the water shows through it: its faces are found in
