@@ -45,7 +45,7 @@ void main() {
                               texelFetch(surface_triangle_texels, 6 * triangle + 2).xyz);
     for (int c = 0; c < 3; ++c)
         if (!(corners[c].y > body.low.y)) return;  // a wall's or the bottom's
-    vec2 spacing = (body.high.xz - body.low.xz) / vec2(body.grid.xy - 1);
+    vec2 spacing = water_spacing(body);
     float lowest = min(min(corners[0].y, corners[1].y), corners[2].y);
     float highest = max(max(corners[0].y, corners[1].y), corners[2].y);
     for (int c = 0; c < 3; ++c) {

@@ -25,6 +25,8 @@ namespace eikon {
 // crease).
 constexpr std::size_t kSurfaceNodeFloats = 8;
 constexpr std::size_t kSurfaceTriangleFloats = 24;
+// The triangles `bytes` of that layout hold.
+constexpr std::size_t surfaceTrianglesIn(std::size_t bytes) { return bytes / (kSurfaceTriangleFloats * sizeof(float)); }
 
 // The cells in which version `version` of a volume field differs from the
 // version before it. A copy that holds the version before needs only these

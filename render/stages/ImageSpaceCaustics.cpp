@@ -49,7 +49,7 @@ struct Bounds {
 ImageSpaceCaustics::ImageSpaceCaustics(const Scene& scene, ReceiverMaps& receivers, SurfaceRaster& raster)
     : scene_(scene), receivers_(receivers), raster_(raster), lights_(scene.lights),
       directProgram_(causticsProgram(scene, receivers, 0)), photonProgram_(causticsProgram(scene, receivers, 1)),
-      polygons_(scene.render.causticMapTexels, receivers), layerSurfaces_(WaterHeightFields::hasLayerSurfaces(scene)) {
+      polygons_(scene.render.causticMapTexels, receivers) {
     const int texels = scene.render.causticMapTexels;
     for (std::size_t i = 0; i < lights_.size(); ++i)
         layers_.push_back(std::make_unique<SurfaceLayers>(
@@ -158,7 +158,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         layers.bind();
         for (gl::Program* program : {&directProgram_, &photonProgram_}) {
             program->use();
-            if (program == &directProgram_ || layerSurfaces_)  // the photons read it in the layers alone
+            if (program == &directProgram_ || raster_.hasLayerSurfaces())  // the photons read it in the layers alone
                 glUniformMatrix4fv(program->uniform("view_projection"), 1, GL_FALSE,
                                    glm::value_ptr(frame.view.viewProjection));
             glUniform3fv(program->uniform("light_position"), 1, glm::value_ptr(frame.view.eye));

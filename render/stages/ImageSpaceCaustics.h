@@ -66,7 +66,6 @@ private:
     std::vector<LightFrame> lightFrames_;
     gl::Program directProgram_, photonProgram_;
     CausticPolygons polygons_;
-    bool layerSurfaces_;  // WaterHeightFields::hasLayerSurfaces
     glm::vec3 powerUnit_{1.0f};
     int frames_ = 0;
 };

@@ -35,8 +35,7 @@ ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers
                          sizeof(GLuint),
                      {"render.width × render.height", "the list of pixels that see a surface"}),
       surfacePixelCount_(sizeof(glm::uvec4), {"render", "the count of pixels that see a surface"}),
-      hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)),
-      layerSurfaces_(WaterHeightFields::hasLayerSurfaces(scene)) {
+      hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)) {
     hdrTexels_ = gl::BufferTexture(hdr_, GL_RGBA32F, {"render.width × render.height", "the linear image"});
     if (recordExit) exits_ = pixelBuffer(scene, "the camera rays' exits");
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
@@ -65,7 +64,7 @@ void ImageSpaceView::run(const FieldTextures& fields) {
                                         static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     surfaceProgram_.use();
-    if (layerSurfaces_)  // read in the layers alone
+    if (raster_.hasLayerSurfaces())  // read in the layers alone
         glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, surfacePixelCount_.id());
     glDispatchComputeIndirect(0);

@@ -48,7 +48,6 @@ private:
     gl::BufferTexture hdrTexels_;
     gl::Buffer exits_;
     gl::Texture2D environment_;
-    bool layerSurfaces_;  // WaterHeightFields::hasLayerSurfaces
 };
 
 }  // namespace eikon::render

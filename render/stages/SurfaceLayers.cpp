@@ -81,10 +81,6 @@ std::vector<BoxShape> apartShapeBounds(const Scene& scene) {
     return bounds;
 }
 
-std::size_t trianglesIn(const gl::Buffer& triangles) {
-    return triangles.bytes() / (kSurfaceTriangleFloats * sizeof(float));
-}
-
 }  // namespace
 
 void SurfaceRaster::bindSurfaces() const {
@@ -168,6 +164,9 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
     glDisable(GL_CULL_FACE);  // the peel finds front and back; facing faces alone only where drawsFacingFaces
     glDisable(GL_BLEND);
     const bool facingFaces = drawsFacingFaces(view);
+    const std::size_t fieldTriangles = surfaceTrianglesIn(fields.surfaceTriangles().bytes());
+    EIKON_CHECK_MSG(fieldTriangles >= waterTriangles_, "the field buffers carry the water bodies' triangles after the meshes'");
+    const std::size_t meshTriangles = fieldTriangles - waterTriangles_;
     // The far layer serves only the search for exits in the layers, which
     // water bodies do without (their height fields).
     const int peels = layerSurfaces_ ? 2 : 1;
@@ -180,10 +179,7 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
             glCullFace(peel == 0 ? GL_BACK : GL_FRONT);
         }
         const int variant = peel == 0 ? 0 : facingFaces ? 2 : 1;
-        drawTriangles(programs_[1][variant], view, trianglesIn(shapes_), shapeTexels_, shapeSurfaces_);
-        EIKON_CHECK_MSG(trianglesIn(fields.surfaceTriangles()) >= waterTriangles_,
-                        "the field buffers carry the water bodies' triangles after the meshes'");
-        const std::size_t meshTriangles = trianglesIn(fields.surfaceTriangles()) - waterTriangles_;
+        drawTriangles(programs_[1][variant], view, surfaceTrianglesIn(shapes_.bytes()), shapeTexels_, shapeSurfaces_);
         drawTriangles(programs_[0][variant], view, meshTriangles, fields.surfaceTriangleTexels(), meshSurfaces_);
         if (waterHulls_.id()) {
             // The hulls' faces away from the viewpoint: they cover the hulls
@@ -193,7 +189,7 @@ void SurfaceRaster::draw(const Viewpoint& view, SurfaceLayers& layers, const Fie
             const gl::Program& water = programs_[2][peel];
             water.use();
             glUniform1iv(water.uniform("water_of_surface"), layout::kMaxSharpObjects, waterOfSurface_.data());
-            drawTriangles(water, view, trianglesIn(waterHulls_), waterHullTexels_, waterSurfaces_);
+            drawTriangles(water, view, surfaceTrianglesIn(waterHulls_.bytes()), waterHullTexels_, waterSurfaces_);
         }
         glDisable(GL_CULL_FACE);
         glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);

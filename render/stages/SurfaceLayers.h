@@ -69,6 +69,10 @@ public:
     // (a directional light's) always is outside: its near plane lies before
     // all the refractors. A CPU rasterizer then shades half the fragments.
     bool drawsFacingFaces(const Viewpoint& view) const;
+    // Whether a sharp surface other than water is there
+    // (WaterHeightFields::hasLayerSurfaces): exits are then searched in the
+    // layers, which reads the far layer and the viewpoint's view_projection.
+    bool hasLayerSurfaces() const { return layerSurfaces_; }
 
 private:
     void drawTriangles(const gl::Program& program, const Viewpoint& view, std::size_t triangles,

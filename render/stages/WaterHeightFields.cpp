@@ -76,7 +76,7 @@ void WaterHeightFields::update(const FieldTextures& fields) {
     nodes_.bindStorage(layout::kWaterNodeGrids);
     slabs_.bindStorage(layout::kWaterSlabs);
     fields.surfaceTriangleTexels().bindSampler(layout::kSurfaceTriangleTexture);
-    const auto triangles = static_cast<int>(fields.surfaceTriangles().bytes() / (kSurfaceTriangleFloats * sizeof(float)));
+    const auto triangles = static_cast<int>(surfaceTrianglesIn(fields.surfaceTriangles().bytes()));
     gatherProgram_.use();
     glUniform1i(gatherProgram_.uniform("triangle_count"), triangles);
     glUniform1iv(gatherProgram_.uniform("water_of_ordinal"), layout::kMaxSharpObjects, waterOfOrdinal_.data());
