@@ -12,14 +12,19 @@
 // sees no surface and lists those that do; pass 1 (64 listed pixels per
 // work group, dispatched indirectly) follows those through the surfaces.
 // A GPU gains too: its work groups no longer mix short and long rays.
+// Where the only sharp surfaces are water bodies, no layers are drawn:
+// pass 2 (a work group per 8×8 pixels) meets each pixel's first surface on
+// the bodies' height fields (common/water_height_fields.glsl), the walk the
+// hulls' fragments would run, and draws every pixel; its work groups mix
+// rays only along the water's edge.
 //
-// Program options: EIKON_PASS (0 or 1), EIKON_ENVIRONMENT
+// Program options: EIKON_PASS (0, 1 or 2), EIKON_ENVIRONMENT
 // (layout::EnvironmentKind), EIKON_RECORD_EXIT (1: write each pixel's exit
 // direction, for tests).
-#if EIKON_PASS == 0
-layout(local_size_x = 8, local_size_y = 8) in;
-#else
+#if EIKON_PASS == 1
 layout(local_size_x = 64) in;
+#else
+layout(local_size_x = 8, local_size_y = 8) in;
 #endif
 
 #include "common/grid_sampling.glsl"
@@ -67,8 +72,34 @@ void write_pixel(uvec2 pixel, vec3 radiance, vec3 exit_direction, float exit_kin
 #endif
 }
 
+#if EIKON_PASS == 2
+// The nearest water body's surface the pixel's ray meets, as the hulls'
+// fragments would have drawn it into the near layer.
+LayerSample first_surface(uvec2 pixel) {
+    vec3 d = camera_ray_direction(pixel);
+    LayerSample first = LayerSample(vec3(0.0f, 1.0f, 0.0f), 1e30f, -1);
+#if EIKON_WATER_BODIES > 0
+    for (int body = 0; body < EIKON_WATER_BODIES; ++body) {
+        WaterCrossing crossing = water_crossing(body, camera.position.xyz, d, 0.0f, first.distance, false);
+        first = crossing.found && crossing.t < first.distance
+                    ? LayerSample(crossing.normal, crossing.t, water_bodies[body].grid.w)
+                    : first;
+    }
+#endif
+    return first;
+}
+#else
 LayerSample first_surface(uvec2 pixel) {
     return layer_sample(near_layer, ivec2(pixel.x, camera.image.y - 1u - pixel.y));
+}
+#endif
+
+// A pixel whose ray meets no surface: straight on to a receiver or the environment.
+void draw_without_surface(uvec2 pixel) {
+    vec3 d = camera_ray_direction(pixel);
+    float kind;
+    vec3 radiance = straight_radiance(camera.position.xyz, d, kind);
+    write_pixel(pixel, radiance, d, kind);
 }
 
 #if EIKON_PASS == 0
@@ -98,16 +129,11 @@ void main() {
         surface_pixels[group_first + local_slot] = pixel.y * camera.image.x + pixel.x;
         return;
     }
-    vec3 d = camera_ray_direction(pixel);
-    float kind;
-    vec3 radiance = straight_radiance(camera.position.xyz, d, kind);
-    write_pixel(pixel, radiance, d, kind);
+    draw_without_surface(pixel);
 }
 #else
-void main() {
-    if (gl_GlobalInvocationID.x >= surface_pixel_groups.w) return;
-    uint index = surface_pixels[gl_GlobalInvocationID.x];
-    uvec2 pixel = uvec2(index % camera.image.x, index / camera.image.x);
+// Follows a pixel's ray from the first surface it sees.
+void draw_through_surface(uvec2 pixel, LayerSample first) {
     Viewpoint view;
     view.view_projection = view_projection;
     view.eye = camera.position.xyz;
@@ -115,7 +141,6 @@ void main() {
     view.orthographic = false;
     view.size = ivec2(camera.image.xy);
     vec3 d = camera_ray_direction(pixel);
-    LayerSample first = first_surface(pixel);
     vec3 x = view.eye + first.distance * d;
     vec3 normal = dot(first.normal, d) > 0.0f ? -first.normal : first.normal;
     float n_outside = reference_index(), n_inside = surface_index(first.surface);
@@ -158,4 +183,24 @@ void main() {
     int recorded = reflectance < 1.0f ? 1 : 0;
     write_pixel(pixel, radiance, direction[recorded], kind[recorded]);
 }
+
+#if EIKON_PASS == 1
+void main() {
+    if (gl_GlobalInvocationID.x >= surface_pixel_groups.w) return;
+    uint index = surface_pixels[gl_GlobalInvocationID.x];
+    uvec2 pixel = uvec2(index % camera.image.x, index / camera.image.x);
+    draw_through_surface(pixel, first_surface(pixel));
+}
+#else
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, camera.image.xy))) return;
+    LayerSample first = first_surface(pixel);
+    if (first.surface >= 0) {
+        draw_through_surface(pixel, first);
+        return;
+    }
+    draw_without_surface(pixel);
+}
+#endif
 #endif

@@ -362,7 +362,7 @@ static_assert(sizeof(GpuSharpSurface) == 48);
 struct GpuWaterHeightField {
     glm::vec4 low;    // xyz: the basin's minimum corner (m); w unused
     glm::vec4 high;   // xyz: its maximum corner (m); w unused
-    glm::ivec4 grid;  // x, y: nodes along x and z; z: its first node's texel in WaterNodeGrids; w unused
+    glm::ivec4 grid;  // x, y: nodes along x and z; z: its first node's texel in WaterNodeGrids; w: its sharp surface
 };
 static_assert(sizeof(GpuWaterHeightField) == 48);
 

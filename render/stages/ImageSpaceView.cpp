@@ -28,14 +28,19 @@ ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers
                                bool recordExit)
     : receivers_(receivers), raster_(raster),
       render_(scene.render), camera_(scene.camera),
-      layers_(scene.render.width, scene.render.height, {"render.width × render.height", "the camera's surface layers"}),
-      backgroundProgram_(viewProgram(scene, receivers, 0, recordExit)),
-      surfaceProgram_(viewProgram(scene, receivers, 1, recordExit)),
-      surfacePixels_(static_cast<std::size_t>(scene.render.width) * static_cast<std::size_t>(scene.render.height) *
-                         sizeof(GLuint),
-                     {"render.width × render.height", "the list of pixels that see a surface"}),
-      surfacePixelCount_(sizeof(glm::uvec4), {"render", "the count of pixels that see a surface"}),
       hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)) {
+    if (raster.hasLayerSurfaces()) {
+        layers_.emplace(scene.render.width, scene.render.height,
+                        gl::GpuResource{"render.width × render.height", "the camera's surface layers"});
+        listingProgram_ = viewProgram(scene, receivers, 0, recordExit);
+        surfaceProgram_ = viewProgram(scene, receivers, 1, recordExit);
+        surfacePixels_ = gl::Buffer(static_cast<std::size_t>(scene.render.width) *
+                                        static_cast<std::size_t>(scene.render.height) * sizeof(GLuint),
+                                    {"render.width × render.height", "the list of pixels that see a surface"});
+        surfacePixelCount_ = gl::Buffer(sizeof(glm::uvec4), {"render", "the count of pixels that see a surface"});
+    } else {
+        surfaceProgram_ = viewProgram(scene, receivers, 2, recordExit);
+    }
     hdrTexels_ = gl::BufferTexture(hdr_, GL_RGBA32F, {"render.width × render.height", "the linear image"});
     if (recordExit) exits_ = pixelBuffer(scene, "the camera rays' exits");
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
@@ -44,33 +49,43 @@ ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers
 
 void ImageSpaceView::run(const FieldTextures& fields) {
     const Viewpoint view = cameraViewpoint(camera_, render_, kRasterNearPlane, kRasterFarPlane);
-    raster_.draw(view, layers_, fields);
+    if (layers_) raster_.draw(view, *layers_, fields);
+    else raster_.updateWater(fields);
     const layout::GpuCamera block = cameraBlock(camera_, render_);
     cameraBlock_.upload(&block, sizeof block);
     fields.bindForTracing();
     receivers_.bind();
     raster_.bindSurfaces();
-    layers_.bind();
     cameraBlock_.bindUniform(layout::kCameraBlock);
     if (environment_.id()) environment_.bindSampler(layout::kEnvironmentTexture);
     hdr_.bindStorage(layout::kHdrImage);
     if (exits_.id()) exits_.bindStorage(layout::kViewExit);
+    if (layers_) {
+        drawThroughLayers(view);
+    } else {
+        surfaceProgram_.use();
+        surfaceProgram_.dispatchCovering(static_cast<std::size_t>(render_.width),
+                                         static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl::checkpoint("image-space view");
+}
+
+void ImageSpaceView::drawThroughLayers(const Viewpoint& view) {
+    layers_->bind();
     const glm::uvec4 noPixels(0u, 1u, 1u, 0u);  // pass 1's work groups (x, y, z) and the pixels listed
     surfacePixelCount_.upload(&noPixels, sizeof noPixels);
     surfacePixels_.bindStorage(layout::kSurfacePixels);
     surfacePixelCount_.bindStorage(layout::kSurfacePixelCount);
-    backgroundProgram_.use();
-    backgroundProgram_.dispatchCovering(static_cast<std::size_t>(render_.width),
-                                        static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
+    listingProgram_.use();
+    listingProgram_.dispatchCovering(static_cast<std::size_t>(render_.width),
+                                     static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     surfaceProgram_.use();
-    if (raster_.hasLayerSurfaces())  // read in the layers alone
-        glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
+    glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, surfacePixelCount_.id());
     glDispatchComputeIndirect(0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    gl::checkpoint("image-space view");
 }
 
 std::vector<float> ImageSpaceView::downloadHdr() const {

@@ -1,8 +1,10 @@
 // The image-space camera view (shaders/image_space_view.comp, [Hu07] §2):
 // the camera's surface layers drawn with the raster pipeline, then per
 // pixel Fresnel reflection and two-interface refraction found in those
-// layers, into the same linear HDR image as the eikonal ViewStage. Runs when
-// the camera, the surfaces or the receivers' maps change.
+// layers, into the same linear HDR image as the eikonal ViewStage. Where
+// the only sharp surfaces are water bodies, no layers are drawn: each
+// pixel meets the water on its height fields in one pass. Runs when the
+// camera, the surfaces or the receivers' maps change.
 #pragma once
 
 #include "bridge/layout/GpuLayouts.h"
@@ -14,6 +16,7 @@
 
 #include <glm/vec4.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace eikon::render {
@@ -36,12 +39,17 @@ public:
     std::vector<glm::vec4> downloadExits() const;
 
 private:
+    void drawThroughLayers(const Viewpoint& view);  // passes 0 and 1
+
     const ReceiverMaps& receivers_;
     SurfaceRaster& raster_;
     RenderDesc render_;
     CameraDesc camera_;
-    SurfaceLayers layers_;
-    gl::Program backgroundProgram_, surfaceProgram_;  // image_space_view.comp's passes 0 and 1
+    // With layers (SurfaceRaster::hasLayerSurfaces): image_space_view.comp's
+    // pass 0 lists the pixels that see a surface, pass 1 draws them; without,
+    // pass 2 draws every pixel, and the rest stays empty.
+    std::optional<SurfaceLayers> layers_;
+    gl::Program listingProgram_, surfaceProgram_;
     gl::Buffer surfacePixels_, surfacePixelCount_;
     gl::Buffer cameraBlock_;
     gl::Buffer hdr_;

@@ -53,10 +53,13 @@ public:
     // Draws the layers of `layers` as `view` sees the surfaces now: the
     // near, and the far where a surface other than water is there.
     void draw(const Viewpoint& view, SurfaceLayers& layers, const FieldTextures& fields);
+    // Gathers the water's height fields from `fields` as `draw` does, for
+    // passes that walk them with no layers drawn.
+    void updateWater(const FieldTextures& fields) { water_.update(fields); }
     // Binds what the passes reading the layers need of the surfaces: their
     // shapes and optics (kSharpSurfaces), the extinction inside each and
     // its water body (kImageSpaceSurfaces), and the water's height fields
-    // as `draw` last gathered them.
+    // as last gathered.
     void bindSurfaces() const;
     // Whether `view` may draw the surfaces by their faces toward it alone on
     // the near layer and away from it on the far. So it may when the

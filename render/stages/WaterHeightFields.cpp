@@ -39,7 +39,9 @@ gl::ShaderDefines WaterHeightFields::programOptions(const Scene& scene) {
 WaterHeightFields::WaterHeightFields(const Scene& scene) {
     std::vector<layout::GpuWaterHeightField> bodies;
     int texels = 0;
+    int surface = -1;  // the sharp surfaces' numbering (scene order)
     for (const ObjectDesc& object : scene.objects) {
+        if (object.isSharp()) ++surface;
         if (!object.hasTriangleSurface()) continue;
         if (!isWaterBody(object)) {
             waterOfOrdinal_.push_back(-1);
@@ -49,7 +51,7 @@ WaterHeightFields::WaterHeightFields(const Scene& scene) {
         const WaterDesc& water = object.water;
         ++texels;  // its slab
         bodies.push_back({glm::vec4(glm::vec3(water.basinMin), 0.0f), glm::vec4(glm::vec3(water.basinMax), 0.0f),
-                          glm::ivec4(water.cells.x, water.cells.y, texels, 0)});
+                          glm::ivec4(water.cells.x, water.cells.y, texels, surface)});
         texels += water.cells.x * water.cells.y;
     }
     bodies_ = static_cast<int>(bodies.size());

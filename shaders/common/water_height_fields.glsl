@@ -15,7 +15,7 @@
 struct WaterBody {
     vec4 low;     // the basin's minimum corner (its bottom's y); w unused
     vec4 high;    // the basin's maximum corner; w unused
-    ivec4 grid;   // nodes along x and z, the first texel of its nodes (after its slab texel), unused
+    ivec4 grid;   // nodes along x and z, the first texel of its nodes (after its slab texel), its sharp surface
 };
 layout(std140, binding = kWaterBodies) uniform WaterBodies { WaterBody water_bodies[kMaxSharpObjects]; };
 // Per body: a texel (lowest node y, highest node y, the steepest slope
