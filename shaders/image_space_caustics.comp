@@ -44,6 +44,12 @@ uniform ivec2 layer_size;
 uniform vec2 jitter;           // in texels, this frame's offset of the photons from the texel centres
 uniform uint texel_count;      // direct pass: receiver texels in all
 
+#if EIKON_PASS == 1
+// The cell pass's work groups (CausticPolygons.h): z, its sheets, becomes 2
+// once a reflected photon lands (a plain store: every writer writes 2).
+layout(std430, binding = kCausticCellGroups) writeonly buffer CausticCellGroups { uvec4 caustic_cell_groups; };
+#endif
+
 const float kFarAway = 1e4f;
 
 Viewpoint light_view() {
@@ -205,6 +211,7 @@ void main() {
     }
     write_caustic_vertex(index, 0, refracted_vertex);
     write_caustic_vertex(index, 1, reflected_vertex);
+    if (reflected_vertex.receiver >= 0) caustic_cell_groups.z = 2u;
     // caustic_polygons.comp spreads a quarter of each vertex's power over each
     // of the (up to four) cells of the light's grid it is a corner of; a
     // vertex on the grid's edge lands the share of the cells it lacks here.

@@ -68,6 +68,7 @@
     X(kCausticDraw, 22)         /* buffer CausticDraw { uvec4 }: image space, the caustic triangles' indirect draw */   \
     X(kCausticSplats, 23)       /* buffer CausticSplats { vec4 s[]; }: image space, the caustic splats to draw as points */ \
     X(kCausticSplatDraw, 24)    /* buffer CausticSplatDraw { uvec4 }: image space, the caustic splats' indirect draw */ \
+    X(kCausticCellGroups, 25)   /* buffer CausticCellGroups { uvec4 }: image space, the cell pass's work groups (x, y, sheets) */ \
     X(kSuspendedIn, 23)         /* buffer SuspendedIn { GpuSuspendedPhoton[] }: photons a dispatch resumes */      \
     X(kSuspendedOut, 24)        /* buffer SuspendedOut { GpuSuspendedPhoton[] }: photons it suspends */           \
     X(kSuspendedCount, 25)      /* buffer SuspendedCount (GpuSuspendedCount) */                                           \

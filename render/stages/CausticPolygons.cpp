@@ -13,6 +13,7 @@ namespace eikon::render {
 namespace {
 
 constexpr int kSheets = 2;  // refracted and reflected (common/caustic_vertices.glsl)
+constexpr int kCellGroupEdge = 8;  // caustic_polygons.comp's work groups: 8 × 8 cells of one sheet
 constexpr std::size_t kVertexBytes = 3 * 4 * sizeof(float);
 constexpr std::size_t kTriangleBytes = 3 * 4 * sizeof(float);
 constexpr std::size_t kSplatBytes = 2 * 4 * sizeof(float);
@@ -53,6 +54,7 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
               gl::GpuResource{"render.caustic_map_texels", "the caustic splats"}),
       drawCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
       splatCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
+      cellGroups_(sizeof(glm::uvec4), {"render.caustic_map_texels", "the caustic cell pass's work groups"}),
       vertexTexels_(vertices_, GL_RGBA32F, {"render.caustic_map_texels", "the caustic maps' photon landings"}),
       atlas_(atlasSize(receivers).x, atlasSize(receivers).y,
              gl::GpuResource{"receivers", "the atlas the caustic triangles are drawn into"}),
@@ -75,6 +77,14 @@ void CausticPolygons::clear() {
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
 }
 
+void CausticPolygons::bindVertices(const glm::ivec2& grid) {
+    vertices_.bindStorage(layout::kCausticVertices);
+    const auto groups = [](int texels) { return static_cast<unsigned>((texels - 1 + kCellGroupEdge - 1) / kCellGroupEdge); };
+    const glm::uvec4 refractedSheet(groups(grid.x), groups(grid.y), 1u, 0u);
+    cellGroups_.upload(&refractedSheet, sizeof refractedSheet);
+    cellGroups_.bindStorage(layout::kCausticCellGroups);
+}
+
 void CausticPolygons::drawLight(const glm::ivec2& grid) {
     drawCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
     splatCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
@@ -86,8 +96,9 @@ void CausticPolygons::drawLight(const glm::ivec2& grid) {
     splatCommand_.bindStorage(layout::kCausticSplatDraw);
     cellProgram_.use();
     glUniform2i(cellProgram_.uniform("layer_size"), grid.x, grid.y);
-    cellProgram_.dispatchCovering(static_cast<std::size_t>(grid.x - 1), static_cast<std::size_t>(grid.y - 1), kSheets,
-                                  8, 8, 1);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, cellGroups_.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
     GLint previousFramebuffer = 0;

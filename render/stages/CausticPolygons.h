@@ -35,10 +35,14 @@ public:
 
     // Clears the atlas: the start of a frame's lights.
     void clear();
-    // Where the photon pass writes its landings (kCausticVertices).
-    void bindVertices() const { vertices_.bindStorage(layout::kCausticVertices); }
+    // Where the photon pass over a layers' grid of `grid` texels writes its
+    // landings (kCausticVertices), and the cell pass's work groups
+    // (kCausticCellGroups): the refracted sheet's, and the reflected sheet's
+    // too once a reflected photon lands (a pool reflects the light to the
+    // sky: its reflected cells would cost half the cell pass for nothing).
+    void bindVertices(const glm::ivec2& grid);
     // After a light's photon pass over a layers' grid of `grid` texels, and
-    // a barrier for texel fetches: draws its cells into the atlas, as
+    // a barrier for texel fetches and commands: draws its cells into the atlas, as
     // triangles and as splats. The cell pass reads the landings as a buffer
     // texture, which a CPU rasterizer fetches for all lanes at once (its
     // storage-buffer loads at lane-dependent offsets go a lane and a float
@@ -49,7 +53,7 @@ public:
 
 private:
     const ReceiverMaps& receivers_;
-    gl::Buffer vertices_, triangles_, splats_, drawCommand_, splatCommand_;
+    gl::Buffer vertices_, triangles_, splats_, drawCommand_, splatCommand_, cellGroups_;
     gl::BufferTexture vertexTexels_;  // vertices_, read by the cell pass
     gl::RasterTarget atlas_;
     gl::Program cellProgram_, gatherProgram_, drawProgram_, splatProgram_;

@@ -173,14 +173,15 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         directProgram_.use();
         receivers_.dispatchOverTexels(directProgram_);
         photonProgram_.use();
-        polygons_.bindVertices();
+        polygons_.bindVertices({layers.width(), layers.height()});
         glUniform3fv(photonProgram_.uniform("frame_right"), 1, glm::value_ptr(frame.right));
         glUniform3fv(photonProgram_.uniform("frame_up"), 1, glm::value_ptr(frame.up));
         glUniform1f(photonProgram_.uniform("frame_half_extent"), static_cast<float>(frame.halfExtent));
         glUniform2fv(photonProgram_.uniform("jitter"), 1, glm::value_ptr(jitter));
         photonProgram_.dispatchCovering(static_cast<std::size_t>(layers.width()),
                                         static_cast<std::size_t>(layers.height()), 1, 8, 8, 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // the cells read the landings as texels
+        // The cells read the landings as texels, and their work groups as a command.
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
         polygons_.drawLight({layers.width(), layers.height()});
     }
     polygons_.addToTallies(powerUnit_);

@@ -93,6 +93,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"CausticDraw", {layout::kCausticDraw, sizeof(glm::uvec4), 0}},
         {"CausticSplats", {layout::kCausticSplats, 0, sizeof(glm::vec4)}},
         {"CausticSplatDraw", {layout::kCausticSplatDraw, sizeof(glm::uvec4), 0}},
+        {"CausticCellGroups", {layout::kCausticCellGroups, sizeof(glm::uvec4), 0}},
         // The fluid solver's passes (sim/gpu, shaders/sim).
         {"VelocityX", {layout::kSolverVelocityX, 0, sizeof(float)}},
         {"VelocityY", {layout::kSolverVelocityY, 0, sizeof(float)}},
