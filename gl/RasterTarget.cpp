@@ -12,7 +12,8 @@ void deleteRenderbuffer(GLuint id) { glDeleteRenderbuffers(1, &id); }
 void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 
 RasterTarget::RasterTarget(int width, int height, const GpuResource& resource)
-    : reservation_(resource, 20 * std::uint64_t(width) * std::uint64_t(height)), width_(width), height_(height) {
+    : reservation_(resource, 20 * std::uint64_t(width) * std::uint64_t(height)), width_(width), height_(height),
+      madeWidth_(width), madeHeight_(height) {
     GLuint id = 0;
     glCreateTextures(GL_TEXTURE_2D, 1, &id);
     colour_ = GlName<deleteTexture>(id);
@@ -31,6 +32,14 @@ RasterTarget::RasterTarget(int width, int height, const GpuResource& resource)
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("the framebuffer for " + resource.description + " (" + resource.keyPath +
                                  ") is incomplete: status " + std::to_string(status));
+}
+
+void RasterTarget::useCorner(int width, int height) {
+    if (width < 1 || height < 1 || width > madeWidth_ || height > madeHeight_)
+        throw std::logic_error("a raster target's corner of " + std::to_string(width) + "×" + std::to_string(height) +
+                               " does not fit its " + std::to_string(madeWidth_) + "×" + std::to_string(madeHeight_));
+    width_ = width;
+    height_ = height;
 }
 
 void RasterTarget::continueDrawing() {

@@ -26,6 +26,9 @@ public:
     void beginDrawing(const glm::vec4& clear);
     // Binds the framebuffer and viewport and keeps what it holds (drawing adds to it).
     void continueDrawing();
+    // Draws into, and says it is, only its first `width` × `height` texels
+    // from now on (at most the size it was made with).
+    void useCorner(int width, int height);
     void bindColour(GLuint unit) const { glBindTextureUnit(unit, colour_.id()); }
 
 private:
@@ -33,7 +36,8 @@ private:
     GlName<deleteTexture> colour_;
     GlName<deleteRenderbuffer> depth_;
     GlName<deleteFramebuffer> framebuffer_;
-    int width_ = 0, height_ = 0;
+    int width_ = 0, height_ = 0;            // in use
+    int madeWidth_ = 0, madeHeight_ = 0;    // allocated
 };
 
 class EmptyVertexArray {

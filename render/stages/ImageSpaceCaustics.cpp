@@ -8,7 +8,6 @@
 #include "render/stages/PhotonEmission.h"
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -18,11 +17,6 @@
 namespace eikon::render {
 
 namespace {
-
-// A point or spot light's frustum holds the refractors' bounding sphere,
-// but opens no wider than this (a light inside or close to the sphere sees
-// the part of it within 80° of the axis).
-constexpr double kWidestHalfAngleDeg = 80.0;
 
 // This frame's offset of the photons within their texels (a rotated 2×2 pattern).
 glm::vec2 jitterOf(int frame) {
@@ -35,14 +29,6 @@ gl::Program causticsProgram(const Scene& scene, const ReceiverMaps& receivers, i
     options.insert({{"EIKON_PASS", std::to_string(pass)}, receivers.countOption()});
     return gl::compileComputeProgram("image_space_caustics.comp", options);
 }
-
-struct Bounds {
-    glm::dvec3 min{1e300}, max{-1e300};
-    void add(const glm::dvec3& low, const glm::dvec3& high) {
-        min = glm::min(min, low);
-        max = glm::max(max, high);
-    }
-};
 
 }  // namespace
 
@@ -69,64 +55,35 @@ void ImageSpaceCaustics::setLight(std::size_t index, const LightDesc& light) {
     lightFrames_.clear();  // its layers are drawn again
 }
 
-ImageSpaceCaustics::LightFrame ImageSpaceCaustics::frameOf(const LightDesc& light, const glm::dvec3& centre,
-                                                           double radius) const {
-    LightFrame frame;
-    const bool directional = light.kind == LightDesc::Kind::Directional;
-    glm::dvec3 axis;
-    glm::dvec3 eye;
-    if (directional) {
-        axis = glm::normalize(light.direction);
-        eye = centre - axis * (2.0 * radius);
-        frame.halfExtent = radius;
-    } else {
-        const glm::dvec3 toward = centre - light.position;
-        const double distance = glm::length(toward);
-        axis = distance > 0.0 ? toward / distance : glm::dvec3(0, -1, 0);
-        eye = light.position;
-        const double widest = std::tan(glm::radians(kWidestHalfAngleDeg));
-        frame.halfExtent = distance > radius ? std::min(std::tan(std::asin(radius / distance)), widest) : widest;
-    }
-    const glm::dvec3 hint = std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 right = glm::normalize(glm::cross(axis, hint));
-    const glm::dvec3 up = glm::cross(right, axis);
-    const glm::dmat4 view = glm::lookAt(eye, eye + axis, up);
-    const glm::dmat4 projection =
-        directional ? glm::ortho(-radius, radius, -radius, radius, 0.0, kRasterFarPlane)
-                    : glm::perspective(2.0 * std::atan(frame.halfExtent), 1.0, kRasterNearPlane, kRasterFarPlane);
-    frame.view.viewProjection = glm::mat4(projection * view);
-    frame.view.eye = glm::vec3(eye);
-    frame.view.axis = glm::vec3(axis);
-    frame.view.orthographic = directional;
-    frame.right = glm::vec3(right);
-    frame.up = glm::vec3(up);
-    return frame;
-}
-
-std::vector<ImageSpaceCaustics::LightFrame> ImageSpaceCaustics::lightFramesNow(const FieldTextures& fields) const {
-    // The refractors' bounding sphere: shapes exactly, meshes by their trees' root boxes now.
-    Bounds bounds;
+std::vector<LightFrame> ImageSpaceCaustics::lightFramesNow(const FieldTextures& fields) const {
+    // The refractors: shapes exactly, meshes by their trees' root boxes now.
+    std::vector<RefractorExtent> refractors;
     int meshes = 0;
     for (const ObjectDesc& object : scene_.objects) {
         if (!object.isSharp()) continue;
-        if (object.kind == ObjectDesc::Kind::Sphere)
-            bounds.add(object.sphere.center - object.sphere.radius, object.sphere.center + object.sphere.radius);
-        else if (object.kind == ObjectDesc::Kind::Box) bounds.add(object.box.min, object.box.max);
-        else ++meshes;
+        if (object.kind == ObjectDesc::Kind::Sphere) {
+            RefractorExtent sphere;
+            sphere.sphere = true;
+            sphere.centre = object.sphere.center;
+            sphere.radius = object.sphere.radius;
+            refractors.push_back(sphere);
+        } else if (object.kind == ObjectDesc::Kind::Box) {
+            refractors.push_back({false, object.box.min, object.box.max});
+        } else {
+            ++meshes;
+        }
     }
     if (meshes > 0) {
         std::vector<float> roots(static_cast<std::size_t>(meshes) * kSurfaceNodeFloats);
         fields.surfaceNodes().download(roots.data(), roots.size() * sizeof(float));
         for (int k = 0; k < meshes; ++k) {
             const float* node = roots.data() + static_cast<std::size_t>(k) * kSurfaceNodeFloats;
-            bounds.add(glm::dvec3(node[0], node[1], node[2]), glm::dvec3(node[4], node[5], node[6]));
+            refractors.push_back({false, glm::dvec3(node[0], node[1], node[2]), glm::dvec3(node[4], node[5], node[6])});
         }
     }
-    const bool anyRefractor = bounds.min.x <= bounds.max.x;
-    const glm::dvec3 centre = anyRefractor ? 0.5 * (bounds.min + bounds.max) : glm::dvec3(0.0);
-    const double radius = anyRefractor ? 0.5 * glm::length(bounds.max - bounds.min) * 1.01 + 1e-6 : 1e-6;
     std::vector<LightFrame> frames;
-    for (const LightDesc& light : lights_) frames.push_back(frameOf(light, centre, radius));
+    for (const LightDesc& light : lights_)
+        frames.push_back(lightFrameOver(light, refractors, scene_.render.causticMapTexels));
     return frames;
 }
 
@@ -143,7 +100,10 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         const LightDesc& light = lights_[i];
         const LightFrame& frame = lightFrames_[i];
         SurfaceLayers& layers = *layers_[i];
-        if (drawLayers) raster_.draw(frame.view, layers, fields);
+        if (drawLayers) {
+            layers.useCorner(frame.texels);
+            raster_.draw(frame.view, layers, fields);
+        }
         const bool spot = light.kind == LightDesc::Kind::Spot;
         const Rgb intensity = light.kind == LightDesc::Kind::Directional ? light.irradiance
                               : spot ? spotPeakIntensity(light)

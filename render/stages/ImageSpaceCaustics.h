@@ -1,7 +1,7 @@
 // Image-space caustics (shaders/image_space_caustics.comp; [Wyman06] §3,
 // [Hu07]'s caustic maps): for each light, its surface layers are drawn over
-// the bounding sphere of the scene's refractors (a perspective frustum from
-// a point or spot light, an orthographic box along a directional light's
+// the scene's refractors (LightFrames.h: a perspective frustum from a point
+// or spot light, an orthographic box along a directional light's
 // direction), every texel becomes a photon with the power of its solid angle,
 // refracts through two interfaces and lands on a receiver; neighbouring
 // photons bound caustic polygons that carry the power between them onto the
@@ -20,6 +20,7 @@
 #include "gl/GlObjects.h"
 #include "render/stages/CausticPolygons.h"
 #include "render/stages/FieldTextures.h"
+#include "render/stages/LightFrames.h"
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SurfaceLayers.h"
 
@@ -44,14 +45,6 @@ public:
     int framesAveraged() const { return frames_; }
 
 private:
-    // A light's view over the refractors' bounding sphere, and the frame of
-    // its layers' texels.
-    struct LightFrame {
-        Viewpoint view;
-        glm::vec3 right{0.0f}, up{0.0f};
-        double halfExtent = 1.0;  // perspective: tan of the half-angle; orthographic: half the width
-    };
-    LightFrame frameOf(const LightDesc& light, const glm::dvec3& centre, double radius) const;
     // Every light's frame over the refractors as they are now.
     std::vector<LightFrame> lightFramesNow(const FieldTextures& fields) const;
 

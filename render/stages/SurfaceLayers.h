@@ -41,6 +41,11 @@ public:
     int width() const { return near_.width(); }
     int height() const { return near_.height(); }
     void bind() const;  // near layer → kNearLayerTexture, far layer → kFarLayerTexture
+    // Draws and is read in its first edge × edge texels only (LightFrames.h).
+    void useCorner(int edge) {
+        near_.useCorner(edge, edge);
+        far_.useCorner(edge, edge);
+    }
 
 private:
     friend class SurfaceRaster;
