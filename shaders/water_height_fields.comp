@@ -5,11 +5,15 @@
 // and corner normals the tracers and the raster pipeline read.
 //   EIKON_PASS 0, per triangle: a water body's surface triangle (all
 //     three corners above its basin's bottom; the walls' and the bottom's
-//     reach down to it) writes each corner's (normal, y) to its node, and
-//     widens its body's slab and raises its steepest slope (|∇y| of the
-//     triangle's plane). A node's triangles agree on its normal: they are
-//     the surface's, within the crease angle of one another.
-//   EIKON_PASS 1, per body: the slab's lowest and highest y and the
+//     reach down to it) writes each corner's (normal, y) to its node. A
+//     node's triangles agree on its normal: they are the surface's, within
+//     the crease angle of one another.
+//   EIKON_PASS 1, kCellGroups work groups per body, each invocation over a
+//     share of its cells: the lowest and highest node and the steepest
+//     slope (|∇y| of a triangle's plane) among them, into its body's slab
+//     by three atomics (one per triangle cost llvmpipe, which runs
+//     atomics a lane at a time, two thirds of the gather).
+//   EIKON_PASS 2, per body: the slab's lowest and highest y and the
 //     steepest slope, into the texel before its nodes.
 layout(local_size_x = 64) in;
 
@@ -46,18 +50,34 @@ void main() {
     for (int c = 0; c < 3; ++c)
         if (!(corners[c].y > body.low.y)) return;  // a wall's or the bottom's
     vec2 spacing = water_spacing(body);
-    float lowest = min(min(corners[0].y, corners[1].y), corners[2].y);
-    float highest = max(max(corners[0].y, corners[1].y), corners[2].y);
     for (int c = 0; c < 3; ++c) {
         ivec2 node = clamp(ivec2(round((corners[c].xz - body.low.xz) / spacing)), ivec2(0), body.grid.xy - 1);
         vec3 normal = texelFetch(surface_triangle_texels, 6 * triangle + 3 + c).xyz;
         water_nodes[body.grid.z + node.y * body.grid.x + node.x] = vec4(normal, corners[c].y);
     }
-    vec3 facet = cross(corners[1] - corners[0], corners[2] - corners[0]);
-    float slope = length(facet.xz) / max(abs(facet.y), 1e-30f);
+}
+#elif EIKON_PASS == 1
+void main() {
+    int water = int(gl_WorkGroupID.y);
+    WaterBody body = water_bodies[water];
+    int cells = (body.grid.x - 1) * (body.grid.y - 1);
+    int invocations = int(gl_NumWorkGroups.x * gl_WorkGroupSize.x);
+    vec2 spacing = water_spacing(body);
+    float lowest = 1e30f, highest = -1e30f, steepest = 0.0f;
+    for (int c = int(gl_GlobalInvocationID.x); c < cells; c += invocations) {
+        ivec2 cell = ivec2(c % (body.grid.x - 1), c / (body.grid.x - 1));
+        float h00 = water_node(body, cell.x, cell.y).w, h11 = water_node(body, cell.x + 1, cell.y + 1).w;
+        float h01 = water_node(body, cell.x, cell.y + 1).w, h10 = water_node(body, cell.x + 1, cell.y).w;
+        lowest = min(lowest, min(min(h00, h11), min(h01, h10)));
+        highest = max(highest, max(max(h00, h11), max(h01, h10)));
+        // The triangles v ≥ u (corners 00, 01, 11) and u ≥ v (00, 10, 11), as common/water_height_fields.glsl cuts the cell.
+        steepest = max(steepest, length(vec2(h11 - h01, h01 - h00) / spacing));
+        steepest = max(steepest, length(vec2(h10 - h00, h11 - h10) / spacing));
+    }
+    if (lowest > highest) return;  // no cells of its own
     atomicMin(water_slabs[water].x, ordered_bits(lowest));
     atomicMax(water_slabs[water].y, ordered_bits(highest));
-    atomicMax(water_slabs[water].z, ordered_bits(slope));
+    atomicMax(water_slabs[water].z, ordered_bits(steepest));
 }
 #else
 uniform int body_count;

@@ -15,6 +15,9 @@ namespace {
 
 bool isWaterBody(const ObjectDesc& object) { return object.isSharp() && object.kind == ObjectDesc::Kind::Water; }
 
+// Work groups of 64 per body that share its cells out in pass 1 of water_height_fields.comp.
+constexpr GLuint kCellGroups = 16;
+
 }  // namespace
 
 std::vector<int> WaterHeightFields::waterOfSurface(const Scene& scene) {
@@ -64,7 +67,8 @@ WaterHeightFields::WaterHeightFields(const Scene& scene) {
     nodeTexels_ = gl::BufferTexture(nodes_, GL_RGBA32F, {"objects[].cells", "the water's node grids"});
     slabs_ = gl::Buffer(static_cast<std::size_t>(bodies_) * sizeof(glm::uvec4), {"objects", "the water's slabs"});
     gatherProgram_ = gl::compileComputeProgram("water_height_fields.comp", {{"EIKON_PASS", "0"}});
-    slabProgram_ = gl::compileComputeProgram("water_height_fields.comp", {{"EIKON_PASS", "1"}});
+    cellProgram_ = gl::compileComputeProgram("water_height_fields.comp", {{"EIKON_PASS", "1"}});
+    slabProgram_ = gl::compileComputeProgram("water_height_fields.comp", {{"EIKON_PASS", "2"}});
 }
 
 void WaterHeightFields::update(const FieldTextures& fields) {
@@ -83,6 +87,10 @@ void WaterHeightFields::update(const FieldTextures& fields) {
     glUniform1i(gatherProgram_.uniform("triangle_count"), triangles);
     glUniform1iv(gatherProgram_.uniform("water_of_ordinal"), layout::kMaxSharpObjects, waterOfOrdinal_.data());
     gatherProgram_.dispatchCovering(static_cast<std::size_t>(triangles), 1, 1, 64, 1, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the cells read the nodes as texels
+    nodeTexels_.bindSampler(layout::kWaterNodeTexture);
+    cellProgram_.use();
+    glDispatchCompute(kCellGroups, static_cast<GLuint>(bodies_), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     slabProgram_.use();
     glUniform1i(slabProgram_.uniform("body_count"), bodies_);

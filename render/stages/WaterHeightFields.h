@@ -44,7 +44,7 @@ private:
     std::vector<int> waterOfOrdinal_;  // a mesh's ordinal among the sharp meshes → its water body, or −1
     gl::Buffer block_, nodes_, slabs_;
     gl::BufferTexture nodeTexels_;
-    gl::Program gatherProgram_, slabProgram_;
+    gl::Program gatherProgram_, cellProgram_, slabProgram_;  // water_height_fields.comp's passes 0, 1, 2
     std::uint64_t version_ = 0;
     bool gathered_ = false;
 };
