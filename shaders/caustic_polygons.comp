@@ -10,7 +10,7 @@
 // with that receiver's plane, and the triangles, clipped to its square
 // (caustic_polygons.vert), carry their irradiance, power over landing area,
 // so a cell across two receivers' seam or a square's edge lands on each in
-// proportion. A triangle on less than half a texel is splatted at
+// proportion. A triangle on less than a quarter of a texel is splatted at
 // its centroid instead (the whole cell at once where both are), when that
 // lies on the square. On a refractor's silhouette, where one corner's texel
 // shows no surface, the triangle of the other three carries their
@@ -58,12 +58,8 @@ const int kSplatSlots = max(4, 2 * kCellReceivers);
 // raster pipeline samples coverage at texel centres, which a swarm of tiny
 // triangles at a caustic's focus can all miss (the default scene's peak
 // then falls to 0.6 of the reference), while drawing every larger one keeps
-// a uniform beam flat (CausticPolygons.CarryAUniformBeamThroughASlabUniformly;
-// splatting those under a whole texel breaks it by 30%). Half a texel
-// rather than a quarter: the default caustic's errors do not move (1.59% /
-// 1.68% inside the disk against 1.57% / 1.72%), and the pool's 58 000
-// triangles take 1.5 ms less to draw for 0.4 ms more of splats.
-const float kSmallestDrawnTexels = 0.5f;
+// a uniform beam flat (CausticPolygons.CarryAUniformBeamThroughASlabUniformly).
+const float kSmallestDrawnTexels = 0.25f;
 
 // The area of the triangle between three map points, in texels of receiver r.
 float texels_between(vec2 a, vec2 b, vec2 c, int r) {

@@ -9,7 +9,7 @@
 // pipeline, with additive blending and clipped to each receiver's square,
 // into an atlas that stacks the receivers' maps a texel per pixel, at the
 // irradiance of their power over their landing area. Triangles smaller than
-// half a receiver texel are splatted at their middle; cells whose
+// a quarter of a receiver texel are splatted at their middle; cells whose
 // photons left through different surfaces (no smooth map there) are
 // splatted corner by corner, except that a cell on a silhouette keeps the
 // triangle of its three corners on the surface. A splat is drawn too, as a
