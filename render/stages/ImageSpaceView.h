@@ -46,8 +46,9 @@ private:
     RenderDesc render_;
     CameraDesc camera_;
     // With layers (SurfaceRaster::hasLayerSurfaces): image_space_view.comp's
-    // pass 0 lists the pixels that see a surface, pass 1 draws them; without,
-    // pass 2 draws every pixel, and the rest stays empty.
+    // pass 0 (listingProgram_) lists the pixels that see a surface, pass 1
+    // (surfaceProgram_) draws them; without, pass 2 (surfaceProgram_) draws
+    // every pixel, and the listing program and buffers stay empty.
     std::optional<SurfaceLayers> layers_;
     gl::Program listingProgram_, surfaceProgram_;
     gl::Buffer surfacePixels_, surfacePixelCount_;

@@ -5,9 +5,9 @@
 // seen from a point or spot light as a cone, along a directional light as
 // a disc — and the layers then cover only as many of them as the
 // refractors' own outline needs: spheres exactly, anything else by its box.
-// A pool (a flat box) fits in about 185² of 256² texels, a sphere in 148²,
-// where the bounding sphere of its box spent the other texels' photons,
-// work and all, on nothing.
+// A pool (a flat box) fits in 186² of 256² texels, the default scene's
+// sphere in 142², where the bounding sphere of its box spent the other
+// texels' photons, work and all, on nothing.
 #pragma once
 
 #include "bridge/scene/Scene.h"
