@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <vector>
 
 namespace eikon::render {
 namespace {
@@ -51,6 +52,32 @@ TEST(LightFrames, ASphereUnderAPointLightFillsItsFrame) {
                                 std::sin(tangentAngle) * std::sin(around));
         const glm::dvec2 ndc = ndcOf(frame, light.position + toward);
         EXPECT_LE(std::max(std::abs(ndc.x), std::abs(ndc.y)), 1.0);
+    }
+}
+
+TEST(LightFrames, TwoSpheresBesideTheAxisStayInsideTheFrame) {
+    // The axis aims between them, so each sphere's cone lies off it.
+    LightDesc light;
+    light.position = glm::dvec3(0.2, 2.0, -0.1);
+    const std::vector<RefractorExtent> spheres = {sphereAt({-0.6, 0.4, 0.2}, 0.2), sphereAt({0.5, 0.3, -0.3}, 0.1)};
+    const LightFrame frame = lightFrameOver(light, spheres, kMapTexels);
+    EXPECT_LT(frame.texels, kMapTexels);
+    for (const RefractorExtent& sphere : spheres) {
+        // Points of the sphere's outline seen from the light: on its tangent cone.
+        const glm::dvec3 toward = sphere.centre - light.position;
+        const double distance = glm::length(toward);
+        const glm::dvec3 axis = toward / distance;
+        const glm::dvec3 side = glm::normalize(glm::cross(axis, glm::dvec3(0.0, 0.0, 1.0)));
+        const glm::dvec3 other = glm::cross(axis, side);
+        const double tangent = std::sqrt(distance * distance - sphere.radius * sphere.radius);
+        const double angle = std::asin(sphere.radius / distance);
+        for (int k = 0; k < 32; ++k) {
+            const double around = 2.0 * 3.14159265358979 * k / 32.0;
+            const glm::dvec3 ray = std::cos(angle) * axis +
+                                   std::sin(angle) * (std::cos(around) * side + std::sin(around) * other);
+            const glm::dvec2 ndc = ndcOf(frame, light.position + tangent * ray);
+            EXPECT_LE(std::max(std::abs(ndc.x), std::abs(ndc.y)), 1.0) << "sphere at x " << sphere.centre.x;
+        }
     }
 }
 
