@@ -66,13 +66,12 @@ void main() {
     float lowest = 1e30f, highest = -1e30f, steepest = 0.0f;
     for (int c = int(gl_GlobalInvocationID.x); c < cells; c += invocations) {
         ivec2 cell = ivec2(c % (body.grid.x - 1), c / (body.grid.x - 1));
-        float h00 = water_node(body, cell.x, cell.y).w, h11 = water_node(body, cell.x + 1, cell.y + 1).w;
-        float h01 = water_node(body, cell.x, cell.y + 1).w, h10 = water_node(body, cell.x + 1, cell.y).w;
-        lowest = min(lowest, min(min(h00, h11), min(h01, h10)));
-        highest = max(highest, max(max(h00, h11), max(h01, h10)));
-        // The triangles v ≥ u (corners 00, 01, 11) and u ≥ v (00, 10, 11), as common/water_height_fields.glsl cuts the cell.
-        steepest = max(steepest, length(vec2(h11 - h01, h01 - h00) / spacing));
-        steepest = max(steepest, length(vec2(h10 - h00, h11 - h10) / spacing));
+        WaterCell surface = water_cell(body, cell);
+        vec4 h = surface.heights;
+        lowest = min(lowest, min(min(h.x, h.y), min(h.z, h.w)));
+        highest = max(highest, max(max(h.x, h.y), max(h.z, h.w)));
+        steepest = max(steepest, length(surface.upper_slope / spacing));
+        steepest = max(steepest, length(surface.lower_slope / spacing));
     }
     if (lowest > highest) return;  // no cells of its own
     atomicMin(water_slabs[water].x, ordered_bits(lowest));

@@ -61,24 +61,19 @@ std::vector<LightFrame> ImageSpaceCaustics::lightFramesNow(const FieldTextures& 
     int meshes = 0;
     for (const ObjectDesc& object : scene_.objects) {
         if (!object.isSharp()) continue;
-        if (object.kind == ObjectDesc::Kind::Sphere) {
-            RefractorExtent sphere;
-            sphere.sphere = true;
-            sphere.centre = object.sphere.center;
-            sphere.radius = object.sphere.radius;
-            refractors.push_back(sphere);
-        } else if (object.kind == ObjectDesc::Kind::Box) {
-            refractors.push_back({false, object.box.min, object.box.max});
-        } else {
-            ++meshes;
-        }
+        if (object.kind == ObjectDesc::Kind::Sphere)
+            refractors.push_back(RefractorExtent::ofSphere(object.sphere.center, object.sphere.radius));
+        else if (object.kind == ObjectDesc::Kind::Box)
+            refractors.push_back(RefractorExtent::ofBox(object.box.min, object.box.max));
+        else ++meshes;
     }
     if (meshes > 0) {
         std::vector<float> roots(static_cast<std::size_t>(meshes) * kSurfaceNodeFloats);
         fields.surfaceNodes().download(roots.data(), roots.size() * sizeof(float));
         for (int k = 0; k < meshes; ++k) {
             const float* node = roots.data() + static_cast<std::size_t>(k) * kSurfaceNodeFloats;
-            refractors.push_back({false, glm::dvec3(node[0], node[1], node[2]), glm::dvec3(node[4], node[5], node[6])});
+            refractors.push_back(
+                RefractorExtent::ofBox(glm::dvec3(node[0], node[1], node[2]), glm::dvec3(node[4], node[5], node[6])));
         }
     }
     std::vector<LightFrame> frames;

@@ -6,6 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace eikon::render {
@@ -19,11 +20,11 @@ constexpr double kWidestHalfAngleDeg = 80.0;
 // The margin around the refractors, of their size (1%).
 constexpr double kMargin = 1.01;
 
-std::vector<glm::dvec3> cornersOf(const RefractorExtent& box) {
-    std::vector<glm::dvec3> corners;
+std::array<glm::dvec3, 8> cornersOf(const RefractorExtent& box) {
+    std::array<glm::dvec3, 8> corners;
     for (int k = 0; k < 8; ++k)
-        corners.emplace_back(k & 1 ? box.high.x : box.low.x, k & 2 ? box.high.y : box.low.y,
-                             k & 4 ? box.high.z : box.low.z);
+        corners[static_cast<std::size_t>(k)] =
+            glm::dvec3(k & 1 ? box.high.x : box.low.x, k & 2 ? box.high.y : box.low.y, k & 4 ? box.high.z : box.low.z);
     return corners;
 }
 

@@ -25,6 +25,9 @@ struct RefractorExtent {
     glm::dvec3 low{0.0}, high{0.0};  // a box's corners
     glm::dvec3 centre{0.0};          // a sphere's
     double radius = 0.0;
+
+    static RefractorExtent ofBox(const glm::dvec3& low, const glm::dvec3& high) { return {false, low, high, {}, 0.0}; }
+    static RefractorExtent ofSphere(const glm::dvec3& centre, double radius) { return {true, {}, {}, centre, radius}; }
 };
 
 struct LightFrame {

@@ -108,17 +108,16 @@ SurfaceRaster::SurfaceRaster(const Scene& scene)
     shapeSurfaces_.resize(layout::kMaxSharpObjects);
     std::iota(shapeSurfaces_.begin(), shapeSurfaces_.end(), 0);
     meshSurfaces_.assign(layout::kMaxSharpObjects, 0);
-    waterSurfaces_.assign(layout::kMaxSharpObjects, 0);
+    waterSurfaces_ = WaterHeightFields::surfaceOfWater(scene);
+    waterSurfaces_.resize(layout::kMaxSharpObjects, 0);
     waterOfSurface_ = WaterHeightFields::waterOfSurface(scene);
     waterOfSurface_.resize(layout::kMaxSharpObjects, -1);
-    int surface = 0, meshes = 0, bodies = 0;
+    int surface = 0, meshes = 0;
     for (const ObjectDesc& object : scene.objects) {
         if (!object.isSharp()) continue;
         if (object.hasTriangleSurface()) meshSurfaces_[static_cast<std::size_t>(meshes++)] = surface;
-        if (object.kind == ObjectDesc::Kind::Water) {
-            waterSurfaces_[static_cast<std::size_t>(bodies++)] = surface;
+        if (object.kind == ObjectDesc::Kind::Water)
             waterTriangles_ += static_cast<std::size_t>(object.water.triangleCount());
-        }
         ++surface;
     }
     const std::vector<float> hulls = waterHullTriangles(scene);

@@ -28,6 +28,14 @@ std::vector<int> WaterHeightFields::waterOfSurface(const Scene& scene) {
     return water;
 }
 
+std::vector<int> WaterHeightFields::surfaceOfWater(const Scene& scene) {
+    const std::vector<int> water = waterOfSurface(scene);
+    std::vector<int> surfaces;
+    for (std::size_t surface = 0; surface < water.size(); ++surface)
+        if (water[surface] >= 0) surfaces.push_back(static_cast<int>(surface));
+    return surfaces;
+}
+
 bool WaterHeightFields::hasLayerSurfaces(const Scene& scene) {
     return std::any_of(scene.objects.begin(), scene.objects.end(),
                        [](const ObjectDesc& object) { return object.isSharp() && !isWaterBody(object); });
@@ -41,10 +49,9 @@ gl::ShaderDefines WaterHeightFields::programOptions(const Scene& scene) {
 
 WaterHeightFields::WaterHeightFields(const Scene& scene) {
     std::vector<layout::GpuWaterHeightField> bodies;
+    const std::vector<int> surfaceOfBody = surfaceOfWater(scene);
     int texels = 0;
-    int surface = -1;  // the sharp surfaces' numbering (scene order)
     for (const ObjectDesc& object : scene.objects) {
-        if (object.isSharp()) ++surface;
         if (!object.hasTriangleSurface()) continue;
         if (!isWaterBody(object)) {
             waterOfOrdinal_.push_back(-1);
@@ -54,7 +61,7 @@ WaterHeightFields::WaterHeightFields(const Scene& scene) {
         const WaterDesc& water = object.water;
         ++texels;  // its slab
         bodies.push_back({glm::vec4(glm::vec3(water.basinMin), 0.0f), glm::vec4(glm::vec3(water.basinMax), 0.0f),
-                          glm::ivec4(water.cells.x, water.cells.y, texels, surface)});
+                          glm::ivec4(water.cells.x, water.cells.y, texels, surfaceOfBody.at(bodies.size()))});
         texels += water.cells.x * water.cells.y;
     }
     bodies_ = static_cast<int>(bodies.size());

@@ -32,6 +32,8 @@ public:
     static bool hasLayerSurfaces(const Scene& scene);
     // The water body of each sharp surface in scene order, or −1.
     static std::vector<int> waterOfSurface(const Scene& scene);
+    // The sharp surface number of each water body, in body order.
+    static std::vector<int> surfaceOfWater(const Scene& scene);
 
     bool empty() const { return bodies_ == 0; }
     // Gathers the grids from `fields`' surface triangles, where they changed since.

@@ -32,6 +32,23 @@ vec4 water_node(WaterBody body, int i, int k) { return texelFetch(water_node_tex
 
 vec2 water_spacing(WaterBody body) { return (body.high.xz - body.low.xz) / vec2(body.grid.xy - 1); }
 
+// Cell (i, k)'s surface, cut along its diagonal from node (i, k) to
+// (i + 1, k + 1): its corners' heights, and the rise per cell along (u, v)
+// of its two triangles. Over the triangle v ≥ u the surface rises h00 +
+// u·(h11 − h01) + v·(h01 − h00), over u ≥ v h00 + u·(h10 − h00) + v·(h11 −
+// h10).
+struct WaterCell {
+    vec4 heights;      // h00, h10, h01, h11
+    vec2 upper_slope;  // the triangle v ≥ u
+    vec2 lower_slope;  // the triangle u ≥ v
+};
+
+WaterCell water_cell(WaterBody body, ivec2 cell) {
+    float h00 = water_node(body, cell.x, cell.y).w, h11 = water_node(body, cell.x + 1, cell.y + 1).w;
+    float h01 = water_node(body, cell.x, cell.y + 1).w, h10 = water_node(body, cell.x + 1, cell.y).w;
+    return WaterCell(vec4(h00, h10, h01, h11), vec2(h11 - h01, h01 - h00), vec2(h10 - h00, h11 - h10));
+}
+
 // Barycentric weights of cell-local (u, v) ∈ [0, 1]² for the corners
 // (0,0), the side corner, (1,1): the triangle v ≥ u has side corner (0,1),
 // the triangle u ≥ v has (1,0).
@@ -103,13 +120,11 @@ WaterCrossing water_crossing(int body_index, vec3 x, vec3 d, float t_from, float
         vec2 origin = g - vec2(cell) - from * dg;  // (u, v) at t = 0
         float diagonal = abs(dg.x - dg.y) > 1e-20f ? (origin.y - origin.x) / (dg.x - dg.y) : -1.0f;
         float split = diagonal > t && diagonal < cell_end ? diagonal : cell_end;
-        float h00 = water_node(body, cell.x, cell.y).w, h11 = water_node(body, cell.x + 1, cell.y + 1).w;
-        float h01 = water_node(body, cell.x, cell.y + 1).w, h10 = water_node(body, cell.x + 1, cell.y).w;
-        // Over the triangle v ≥ u the surface rises h00 + u·(h11 − h01) +
-        // v·(h01 − h00), over u ≥ v h00 + u·(h10 − h00) + v·(h11 − h10); the
-        // ray's height above it is then linear in t over each part of the
-        // ray across the cell.
-        vec2 upper_slope = vec2(h11 - h01, h01 - h00), lower_slope = vec2(h10 - h00, h11 - h10);
+        // The ray's height above the cell's triangles is linear in t over
+        // each part of the ray across the cell.
+        WaterCell surface_here = water_cell(body, cell);
+        float h00 = surface_here.heights.x;
+        vec2 upper_slope = surface_here.upper_slope, lower_slope = surface_here.lower_slope;
         float ends[3] = float[3](t, split, cell_end);
         for (int part = 0; part < 2; ++part) {
             float a = ends[part], b = ends[part + 1];

@@ -22,19 +22,11 @@ glm::dvec2 ndcOf(const LightFrame& frame, const glm::dvec3& x) {
     return glm::dvec2(clip) / clip.w;
 }
 
-RefractorExtent sphereAt(const glm::dvec3& centre, double radius) {
-    RefractorExtent sphere;
-    sphere.sphere = true;
-    sphere.centre = centre;
-    sphere.radius = radius;
-    return sphere;
-}
-
 TEST(LightFrames, ASphereUnderAPointLightFillsItsFrame) {
     LightDesc light;
     light.position = glm::dvec3(0.0, 1.8, 0.0);
     const double r = 0.25, distance = 1.25;
-    const LightFrame frame = lightFrameOver(light, {sphereAt({0.0, 0.55, 0.0}, r)}, kMapTexels);
+    const LightFrame frame = lightFrameOver(light, {RefractorExtent::ofSphere({0.0, 0.55, 0.0}, r)}, kMapTexels);
     // The bounding sphere of the sphere's box sets the texels' size; the
     // sphere's own cone (1% margin) how many are used.
     const double bounding = std::tan(std::asin((std::sqrt(3.0) * r * 1.01 + 1e-6) / distance));
@@ -59,7 +51,8 @@ TEST(LightFrames, TwoSpheresBesideTheAxisStayInsideTheFrame) {
     // The axis aims between them, so each sphere's cone lies off it.
     LightDesc light;
     light.position = glm::dvec3(0.2, 2.0, -0.1);
-    const std::vector<RefractorExtent> spheres = {sphereAt({-0.6, 0.4, 0.2}, 0.2), sphereAt({0.5, 0.3, -0.3}, 0.1)};
+    const std::vector<RefractorExtent> spheres = {RefractorExtent::ofSphere({-0.6, 0.4, 0.2}, 0.2),
+                                                  RefractorExtent::ofSphere({0.5, 0.3, -0.3}, 0.1)};
     const LightFrame frame = lightFrameOver(light, spheres, kMapTexels);
     EXPECT_LT(frame.texels, kMapTexels);
     for (const RefractorExtent& sphere : spheres) {
@@ -85,9 +78,7 @@ TEST(LightFrames, AFlatBoxUnderTheSunFitsItsOutline) {
     LightDesc sun;
     sun.kind = LightDesc::Kind::Directional;
     sun.direction = glm::normalize(glm::dvec3(-0.15, -1.0, -0.1));
-    RefractorExtent pool;
-    pool.low = glm::dvec3(-0.52, -0.02, -0.52);
-    pool.high = glm::dvec3(0.52, 0.3, 0.52);
+    const RefractorExtent pool = RefractorExtent::ofBox({-0.52, -0.02, -0.52}, {0.52, 0.3, 0.52});
     const LightFrame frame = lightFrameOver(sun, {pool}, kMapTexels);
     const double bounding = 0.5 * glm::length(pool.high - pool.low) * 1.01 + 1e-6;
     EXPECT_NEAR(2.0 * frame.halfExtent / frame.texels, 2.0 * bounding / kMapTexels, 1e-12);
@@ -107,9 +98,7 @@ TEST(LightFrames, AFlatBoxUnderTheSunFitsItsOutline) {
 TEST(LightFrames, ALightAmongTheRefractorsUsesEveryTexel) {
     LightDesc light;
     light.position = glm::dvec3(0.0, 0.1, 0.0);
-    RefractorExtent box;
-    box.low = glm::dvec3(-1.0, -1.0, -1.0);
-    box.high = glm::dvec3(1.0, 0.5, 1.0);
+    const RefractorExtent box = RefractorExtent::ofBox({-1.0, -1.0, -1.0}, {1.0, 0.5, 1.0});
     const LightFrame frame = lightFrameOver(light, {box}, kMapTexels);
     EXPECT_EQ(frame.texels, kMapTexels);
 }
