@@ -19,14 +19,29 @@
 // is no smooth map (the paper culls such polygons or draws them anyway):
 // each corner that lands splats its quarter where it lands, so no power is
 // lost. Where two receivers face each other, a cell drawn on both is not
-// shadowed by either. Both are drawn by the raster pipeline: the triangles
-// by caustic_polygons.vert, the splats as points by caustic_splats.vert.
+// shadowed by either.
+//
+// A triangle is added where it covers a texel centre, as the raster
+// pipeline samples it. Most are small: a CPU rasterizer's cost is per
+// primitive (pool_caustics' 56 000 triangles, most within two texels,
+// took a quarter of its frame), so those whose box holds at most
+// kDepositWindow centres along each axis, and the splats, are listed for
+// pass 2, which tests the few centres in integers and adds the power to
+// the tallies by atomics; the larger ones are drawn into an atlas of the
+// receivers' maps by caustic_polygons.vert, which pass 1 adds in.
 //
 // Program options: EIKON_PASS (0: one invocation per grid cell and sheet,
-// listing the triangles and splats to draw; 1: one per receiver texel,
-// adding the drawn atlas to the tallies); EIKON_CELL_RECEIVERS (pass 0:
-// the scene's receivers, up to four).
+// listing the triangles to draw and the deposits; 1: one per receiver
+// texel, adding the drawn atlas to the tallies; 2: one per deposit);
+// EIKON_CELL_RECEIVERS (pass 0: the scene's receivers, up to four).
+#if EIKON_PASS == 2
+layout(local_size_x = 64) in;
+#else
 layout(local_size_x = 8, local_size_y = 8) in;
+#endif
+
+// The texel centres along each axis a deposited triangle's box holds at most.
+const int kDepositWindow = 3;
 
 #include "common/receiver.glsl"
 #include "common/receiver_blocks.glsl"
@@ -40,22 +55,31 @@ layout(std430, binding = kCausticTriangles) writeonly buffer CausticTriangles {
 layout(std430, binding = kCausticDraw) buffer CausticDraw {
     uvec4 caustic_draw;  // glDrawArraysIndirect's (count, instances, first, base instance)
 };
-layout(std430, binding = kCausticSplats) writeonly buffer CausticSplats {
-    vec4 caustic_splats[];  // per splat: (map uv, receiver, 0), (W rgb, 0)
+layout(std430, binding = kCausticDeposits) writeonly buffer CausticDeposits {
+    vec4 caustic_deposits[];  // per deposit, as a triangle's; a splat: (map uv, 0, 0), (0, 0, receiver, 1), (W rgb, 0)
 };
-layout(std430, binding = kCausticSplatDraw) buffer CausticSplatDraw {
-    uvec4 caustic_splat_draw;  // glDrawArraysIndirect's (count, instances, first, base instance)
+layout(std430, binding = kCausticDepositCount) buffer CausticDepositCount {
+    uvec4 caustic_deposit_count;  // x: work groups of pass 2 (y = z = 1); w: deposits listed
 };
 
 uniform ivec2 layer_size;
+
+// Whether a triangle's bounding box holds at most kDepositWindow texel
+// centres of receiver r along each axis: pass 2 deposits it.
+bool within_deposit_window(vec2 a, vec2 b, vec2 c, int r) {
+    float edge = float(receivers[r].map.y);
+    vec2 low = min(a, min(b, c)) * edge, high = max(a, max(b, c)) * edge;
+    ivec2 span = ivec2(floor(high - 0.5f)) - ivec2(ceil(low - 0.5f));
+    return all(lessThan(span, ivec2(kDepositWindow)));
+}
 
 // The most receivers one cell is drawn on: the scene's, up to four (program
 // option EIKON_CELL_RECEIVERS); and the most splats a cell makes.
 const int kCellReceivers = EIKON_CELL_RECEIVERS;
 const int kSplatSlots = max(4, 2 * kCellReceivers);
 
-// Triangles landing on less of a receiver texel than this are splatted: the
-// raster pipeline samples coverage at texel centres, which a swarm of tiny
+// Triangles landing on less of a receiver texel than this are splatted: a
+// triangle adds its power at the texel centres it covers, which a swarm of tiny
 // triangles at a caustic's focus can all miss (the default scene's peak
 // then falls to 0.6 of the reference), while drawing every larger one keeps
 // a uniform beam flat (CausticPolygons.CarryAUniformBeamThroughASlabUniformly).
@@ -176,37 +200,111 @@ void main() {
             splat_watts[slot] = (whole_cell ? 2.0f : 1.0f) * triangle_watts;
         }
     }
-    // One atomic per cell for its triangles and one for its splats: llvmpipe
-    // runs a work group's barriers so slowly that counting per group first
-    // cost more than the pass.
-    int triangle_count = 0;
+    // One atomic per cell for its drawn triangles and one for its deposits:
+    // llvmpipe runs a work group's barriers so slowly that counting per
+    // group first cost more than the pass.
+    bool deposited[kCellReceivers][2];
+    int triangle_count = 0, deposit_count = 0;
     for (int q = 0; q < kCellReceivers; ++q)
-        for (int t = 0; t < 2; ++t) triangle_count += drawn[q][t] ? 1 : 0;
+        for (int t = 0; t < 2; ++t) {
+            deposited[q][t] = drawn[q][t] && within_deposit_window(uvs[q][0], uvs[q][t + 1], uvs[q][t + 2], max(target[q], 0));
+            triangle_count += drawn[q][t] && !deposited[q][t] ? 1 : 0;
+            deposit_count += deposited[q][t] ? 1 : 0;
+        }
+    for (int j = 0; j < kSplatSlots; ++j) deposit_count += splat_on[j] ? 1 : 0;
     uint triangle_slot = triangle_count > 0 ? atomicAdd(caustic_draw.x, 3u * uint(triangle_count)) : 0u;
+    uint deposit_slot = deposit_count > 0 ? atomicAdd(caustic_deposit_count.w, uint(deposit_count)) : 0u;
+    // Pass 2's work groups start at each multiple of 64 this range holds.
+    uint groups = (deposit_slot + uint(deposit_count) + 63u) / 64u - (deposit_slot + 63u) / 64u;
+    if (groups > 0u) atomicAdd(caustic_deposit_count.x, groups);
     for (int q = 0; q < kCellReceivers; ++q)
         for (int t = 0; t < 2; ++t) {
             if (!drawn[q][t]) continue;
-            caustic_triangles[triangle_slot] = vec4(uvs[q][0], uvs[q][t + 1]);
-            caustic_triangles[triangle_slot + 1u] = vec4(uvs[q][t + 2], float(target[q]), 0.0f);
-            caustic_triangles[triangle_slot + 2u] = vec4(drawn_watts[q][t], 0.0f);
-            triangle_slot += 3u;
+            vec4 corners_ab = vec4(uvs[q][0], uvs[q][t + 1]);
+            vec4 corner_c = vec4(uvs[q][t + 2], float(target[q]), 0.0f);
+            vec4 watts = vec4(drawn_watts[q][t], 0.0f);
+            if (deposited[q][t]) {
+                caustic_deposits[3u * deposit_slot] = corners_ab;
+                caustic_deposits[3u * deposit_slot + 1u] = corner_c;
+                caustic_deposits[3u * deposit_slot + 2u] = watts;
+                ++deposit_slot;
+            } else {
+                caustic_triangles[triangle_slot] = corners_ab;
+                caustic_triangles[triangle_slot + 1u] = corner_c;
+                caustic_triangles[triangle_slot + 2u] = watts;
+                triangle_slot += 3u;
+            }
         }
-    // The splats are drawn as points rather than added here by atomics: a
-    // CPU rasterizer ran a splat's dozens of atomics under a mask for every
-    // cell of a work group that had one (half the pass on the default scene).
-    int splat_count = 0;
-    for (int j = 0; j < kSplatSlots; ++j) splat_count += splat_on[j] ? 1 : 0;
-    uint splat_slot = splat_count > 0 ? atomicAdd(caustic_splat_draw.x, uint(splat_count)) : 0u;
     for (int j = 0; j < kSplatSlots; ++j) {
         if (!splat_on[j]) continue;
-        caustic_splats[2u * splat_slot] = vec4(splat_uv[j], float(splat_receiver[j]), 0.0f);
-        caustic_splats[2u * splat_slot + 1u] = vec4(splat_watts[j], 0.0f);
-        ++splat_slot;
+        caustic_deposits[3u * deposit_slot] = vec4(splat_uv[j], 0.0f, 0.0f);
+        caustic_deposits[3u * deposit_slot + 1u] = vec4(0.0f, 0.0f, float(splat_receiver[j]), 1.0f);
+        caustic_deposits[3u * deposit_slot + 2u] = vec4(splat_watts[j], 0.0f);
+        ++deposit_slot;
     }
 }
 #else
 #include "common/wide_units.glsl"
 #include "common/caustic_deposits.glsl"
+#if EIKON_PASS == 2
+layout(std430, binding = kCausticDeposits) readonly buffer CausticDeposits { vec4 caustic_deposits[]; };
+layout(std430, binding = kCausticDepositCount) readonly buffer CausticDepositCount { uvec4 caustic_deposit_count; };
+
+// Twice the signed area of the triangle (a, b, c), in fixed point.
+int fixed_cross(ivec2 a, ivec2 b, ivec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+
+// The texel centres of the kDepositWindow² window from texel `first` that
+// the triangle with corners a, b, c (in texels) covers: bit y·window + x.
+// As the raster pipeline samples them: the corners snapped to 1/256 of a
+// texel, so that the edge tests are exact in integers, and a centre on an
+// edge belongs to the one of its two triangles on whose side of it the
+// edge runs up (or left, when level): a uniform beam's cells neither lose
+// nor double the centres on their shared edges.
+uint centres_covered(vec2 a, vec2 b, vec2 c, ivec2 first) {
+    ivec2 centre_fixed = first * 256 + 128;
+    ivec2 corner[3] = ivec2[3](ivec2(round(a * 256.0f)) - centre_fixed, ivec2(round(b * 256.0f)) - centre_fixed,
+                               ivec2(round(c * 256.0f)) - centre_fixed);
+    int area = fixed_cross(corner[0], corner[1], corner[2]);
+    // Counter-clockwise: a fold of the caustic turns triangles over.
+    ivec2 second = area < 0 ? corner[2] : corner[1], third = area < 0 ? corner[1] : corner[2];
+    corner[1] = second;
+    corner[2] = third;
+    uint covered = 0u;
+    for (int k = 0; k < kDepositWindow * kDepositWindow; ++k) {
+        ivec2 centre = ivec2(k % kDepositWindow, k / kDepositWindow) * 256;
+        bool inside = area != 0;
+        for (int e = 0; e < 3; ++e) {
+            ivec2 from = corner[e], to = corner[(e + 1) % 3];
+            int side = fixed_cross(from, to, centre);
+            bool owns_edge = to.y > from.y || (to.y == from.y && to.x < from.x);
+            inside = inside && (side > 0 || (side == 0 && owns_edge));
+        }
+        covered |= inside ? 1u << uint(k) : 0u;
+    }
+    return covered;
+}
+
+void main() {
+    uint deposit = gl_GlobalInvocationID.x;
+    if (deposit >= caustic_deposit_count.w) return;
+    vec4 ab = caustic_deposits[3u * deposit], c = caustic_deposits[3u * deposit + 1u];
+    vec3 watts = caustic_deposits[3u * deposit + 2u].rgb;
+    bool splat = c.w > 0.5f;
+    int r = int(round(c.z));
+    int resolution = int(receivers[r].map.y);
+    vec2 a = ab.xy * float(resolution), b = ab.zw * float(resolution), c_ = c.xy * float(resolution);
+    // A splat's four texels around it, a triangle's window from the first centre its box holds.
+    BilinearSplat around = bilinear_splat(ab.xy, resolution);
+    ivec2 first = splat ? around.base : ivec2(ceil(min(a, min(b, c_)) - 0.5f));
+    uint covered = splat ? (around.on_map > 0.0f ? 3u | (3u << uint(kDepositWindow)) : 0u) : centres_covered(a, b, c_, first);
+    // One deposit in a loop: a CPU rasterizer runs every call site under a mask.
+    for (; covered != 0u; covered &= covered - 1u) {
+        int k = findLSB(covered);
+        ivec2 offset = ivec2(k % kDepositWindow, k / kDepositWindow);
+        deposit_texel(r, first + offset, (splat ? bilinear_splat_share(around, offset) : 1.0f) * watts);
+    }
+}
+#else
 #include "common/caustic_atlas.glsl"
 
 layout(binding = kCausticAtlasTexture) uniform sampler2D caustic_atlas;
@@ -219,4 +317,5 @@ void main() {
     if (!receiver_texel_of_invocation(texel_count, r, texel)) return;
     deposit_texel(r, texel, texelFetch(caustic_atlas, texel + ivec2(0, atlas_row(r)), 0).rgb);
 }
+#endif
 #endif

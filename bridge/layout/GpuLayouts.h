@@ -66,8 +66,8 @@
     X(kCausticVertices, 20)     /* buffer CausticVertices { vec4 v[]; }: image space, per light texel and sheet, its photon's landing */ \
     X(kCausticTriangles, 21)    /* buffer CausticTriangles { vec4 t[]; }: image space, the caustic triangles to draw */  \
     X(kCausticDraw, 22)         /* buffer CausticDraw { uvec4 }: image space, the caustic triangles' indirect draw */   \
-    X(kCausticSplats, 23)       /* buffer CausticSplats { vec4 s[]; }: image space, the caustic splats to draw as points */ \
-    X(kCausticSplatDraw, 24)    /* buffer CausticSplatDraw { uvec4 }: image space, the caustic splats' indirect draw */ \
+    X(kCausticDeposits, 23)     /* buffer CausticDeposits { vec4 d[]; }: image space, the small caustic triangles and splats added by compute */ \
+    X(kCausticDepositCount, 24) /* buffer CausticDepositCount { uvec4 }: image space, their work groups (x, 1, 1) and count (w) */ \
     X(kCausticCellGroups, 25)   /* buffer CausticCellGroups { uvec4 }: image space, the cell pass's work groups (x, y, sheets) */ \
     X(kSuspendedIn, 23)         /* buffer SuspendedIn { GpuSuspendedPhoton[] }: photons a dispatch resumes */      \
     X(kSuspendedOut, 24)        /* buffer SuspendedOut { GpuSuspendedPhoton[] }: photons it suspends */           \

@@ -16,8 +16,9 @@ constexpr int kSheets = 2;  // refracted and reflected (common/caustic_vertices.
 constexpr int kCellGroupEdge = 8;  // caustic_polygons.comp's work groups: 8 × 8 cells of one sheet
 constexpr std::size_t kVertexBytes = 3 * 4 * sizeof(float);
 constexpr std::size_t kTriangleBytes = 3 * 4 * sizeof(float);
-constexpr std::size_t kSplatBytes = 2 * 4 * sizeof(float);
-constexpr unsigned kNothingToDraw[4] = {0u, 1u, 0u, 0u};  // glDrawArraysIndirect's count, instances, first, base
+constexpr std::size_t kDepositBytes = 3 * 4 * sizeof(float);
+constexpr unsigned kNothingToDraw[4] = {0u, 1u, 0u, 0u};     // glDrawArraysIndirect's count, instances, first, base
+constexpr unsigned kNothingToDeposit[4] = {0u, 1u, 1u, 0u};  // pass 2's work groups (x, y, z), deposits
 
 // The atlas stacks the receivers' maps: as wide as the widest, as tall as all together.
 glm::ivec2 atlasSize(const ReceiverMaps& receivers) {
@@ -49,11 +50,12 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
       // Two triangles per cell and sheet on each receiver its photons land on (at most four).
       triangles_(cellsOf(texels) * 2 * receiversPerCell(receivers) * kTriangleBytes,
                  gl::GpuResource{"render.caustic_map_texels", "the caustic triangles"}),
-      // A splat per corner of a cell with no smooth map, or two per receiver of one with.
-      splats_(cellsOf(texels) * std::max<std::size_t>(4, 2 * receiversPerCell(receivers)) * kSplatBytes,
-              gl::GpuResource{"render.caustic_map_texels", "the caustic splats"}),
+      // A splat per corner of a cell with no smooth map, or a triangle or a
+      // splat in each of a smooth one's two per receiver.
+      deposits_(cellsOf(texels) * std::max<std::size_t>(4, 2 * receiversPerCell(receivers)) * kDepositBytes,
+                gl::GpuResource{"render.caustic_map_texels", "the caustic deposits"}),
       drawCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
-      splatCommand_(sizeof kNothingToDraw, kNothingToDraw, GL_DYNAMIC_STORAGE_BIT),
+      depositCount_(sizeof kNothingToDeposit, kNothingToDeposit, GL_DYNAMIC_STORAGE_BIT),
       cellGroups_(sizeof(glm::uvec4), {"render.caustic_map_texels", "the caustic cell pass's work groups"}),
       vertexTexels_(vertices_, GL_RGBA32F, {"render.caustic_map_texels", "the caustic maps' photon landings"}),
       atlas_(atlasSize(receivers).x, atlasSize(receivers).y,
@@ -65,10 +67,10 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
            receivers.countOption()})),
       gatherProgram_(
           gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "1"}, receivers.countOption()})),
+      depositProgram_(
+          gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "2"}, receivers.countOption()})),
       drawProgram_(
-          gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag", {receivers.countOption()})),
-      splatProgram_(
-          gl::compileRasterProgram("caustic_splats.vert", "caustic_splats.frag", {receivers.countOption()})) {}
+          gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag", {receivers.countOption()})) {}
 
 void CausticPolygons::clear() {
     GLint previousFramebuffer = 0;
@@ -85,15 +87,15 @@ void CausticPolygons::bindVertices(const glm::ivec2& grid) {
     cellGroups_.bindStorage(layout::kCausticCellGroups);
 }
 
-void CausticPolygons::drawLight(const glm::ivec2& grid) {
+void CausticPolygons::drawLight(const glm::ivec2& grid, const glm::vec3& powerUnit) {
     drawCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
-    splatCommand_.upload(kNothingToDraw, sizeof kNothingToDraw);
+    depositCount_.upload(kNothingToDeposit, sizeof kNothingToDeposit);
     receivers_.bind();
     vertexTexels_.bindSampler(layout::kCausticVertexTexture);
     triangles_.bindStorage(layout::kCausticTriangles);
     drawCommand_.bindStorage(layout::kCausticDraw);
-    splats_.bindStorage(layout::kCausticSplats);
-    splatCommand_.bindStorage(layout::kCausticSplatDraw);
+    deposits_.bindStorage(layout::kCausticDeposits);
+    depositCount_.bindStorage(layout::kCausticDepositCount);
     cellProgram_.use();
     glUniform2i(cellProgram_.uniform("layer_size"), grid.x, grid.y);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, cellGroups_.id());
@@ -101,6 +103,14 @@ void CausticPolygons::drawLight(const glm::ivec2& grid) {
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
+    // The small triangles and the splats, straight into the tallies.
+    depositProgram_.use();
+    glUniform3fv(depositProgram_.uniform("power_unit"), 1, glm::value_ptr(powerUnit));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, depositCount_.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+
+    // The larger triangles, into the atlas.
     GLint previousFramebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFramebuffer);
     atlas_.continueDrawing();
@@ -117,24 +127,13 @@ void CausticPolygons::drawLight(const glm::ivec2& grid) {
     glDrawArraysIndirect(GL_TRIANGLES, nullptr);
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
     for (GLenum plane = 0; plane < 4; ++plane) glDisable(GL_CLIP_DISTANCE0 + plane);
-
-    // The splats, as points two texels wide in a viewport a texel wider on
-    // every side than the atlas (caustic_splats.vert).
-    splatProgram_.use();
-    glUniform2i(splatProgram_.uniform("atlas_size"), atlas_.width(), atlas_.height());
-    glViewport(-1, -1, atlas_.width() + 2, atlas_.height() + 2);
-    glEnable(GL_PROGRAM_POINT_SIZE);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, splatCommand_.id());
-    glDrawArraysIndirect(GL_POINTS, nullptr);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-    glDisable(GL_PROGRAM_POINT_SIZE);
     glDisable(GL_BLEND);
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previousFramebuffer));
     gl::checkpoint("caustic polygons");
 }
 
-void CausticPolygons::addToTallies(const glm::vec3& powerUnit) {
+void CausticPolygons::addAtlasToTallies(const glm::vec3& powerUnit) {
     receivers_.bind();
     atlas_.bindColour(layout::kCausticAtlasTexture);
     gatherProgram_.use();

@@ -137,9 +137,9 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
                                         static_cast<std::size_t>(layers.height()), 1, 8, 8, 1);
         // The cells read the landings as texels, and their work groups as a command.
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-        polygons_.drawLight({layers.width(), layers.height()});
+        polygons_.drawLight({layers.width(), layers.height()}, powerUnit_);
     }
-    polygons_.addToTallies(powerUnit_);
+    polygons_.addAtlasToTallies(powerUnit_);
     ++frames_;
     receivers_.filter(powerUnit_ / static_cast<float>(frames_));
     gl::checkpoint("image-space caustics");

@@ -16,20 +16,36 @@ void deposit_texel(int r, ivec2 texel, vec3 watts) {
         if (watts[c] > 0.0f) ADD_WIDE_UNITS(receiver_tallies, base + uint(2 * c), wide_units(watts[c] / power_unit[c]));
 }
 
-// Power landing at map_uv on receiver r, shared bilinearly between the four
-// texels around it (those of them on the receiver, at its edge: none is
-// lost). One deposit in a loop: a CPU rasterizer runs every call site a
-// shader has under a mask, lanes that take it or not.
-void splat_at(int r, vec2 map_uv, vec3 watts) {
-    int resolution = int(receivers[r].map.y);
+// Power landing at map_uv on a map of `resolution` texels, shared
+// bilinearly between the four texels around it: those of them on the map
+// (at its edge, not all are) take their weights over the sum of theirs, so
+// none is lost.
+struct BilinearSplat {
+    ivec2 base;    // the lowest of the four texels
+    vec2 f;        // map_uv's place between their centres, in [0, 1)²
+    float on_map;  // the weights of those on the map, summed (0: none is)
+};
+
+BilinearSplat bilinear_splat(vec2 map_uv, int resolution) {
     vec2 texel = map_uv * float(resolution) - 0.5f;
     ivec2 base = ivec2(floor(texel));
-    vec2 f = texel - vec2(base);
-    float on_receiver = bilinear_share_on_map(map_uv, resolution);
-    for (int k = 0; k < 4 && on_receiver > 0.0f; ++k) {
+    return BilinearSplat(base, texel - vec2(base), bilinear_share_on_map(map_uv, resolution));
+}
+
+// The share of texel base + offset (offset ∈ {0, 1}²), if it lies on the map.
+float bilinear_splat_share(BilinearSplat splat, ivec2 offset) {
+    vec2 weight = mix(1.0f - splat.f, splat.f, vec2(offset));
+    return splat.on_map > 0.0f ? weight.x * weight.y / splat.on_map : 0.0f;
+}
+
+// Power landing at map_uv on receiver r, splatted there. One deposit in a
+// loop: a CPU rasterizer runs every call site a shader has under a mask,
+// lanes that take it or not.
+void splat_at(int r, vec2 map_uv, vec3 watts) {
+    BilinearSplat splat = bilinear_splat(map_uv, int(receivers[r].map.y));
+    for (int k = 0; k < 4 && splat.on_map > 0.0f; ++k) {
         ivec2 offset = ivec2(k & 1, k >> 1);
-        vec2 weight = mix(1.0f - f, f, vec2(offset));
-        deposit_texel(r, base + offset, weight.x * weight.y / on_receiver * watts);
+        deposit_texel(r, splat.base + offset, bilinear_splat_share(splat, offset) * watts);
     }
 }
 

@@ -96,6 +96,21 @@ TEST(CausticPolygons, CarryAUniformBeamThroughASlabUniformly) {
         1000);
 }
 
+// On finer floors the cells span more texels: at 160² they are drawn by the
+// raster pipeline or deposited by compute by their size, side by side, and
+// the two must sample the same texel centres and cover each once across
+// the edges the paths share; at 256² nearly every cell is drawn.
+TEST(CausticPolygons, CarryAUniformBeamUniformlyWhetherItsCellsAreDrawnOrDeposited) {
+    test::glContext();
+    for (const int resolution : {160, 256}) {
+        const std::string name = "image_space_slab_" + std::to_string(resolution);
+        expectFlatFloor(name,
+                        R"([{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "size": 1.0, "resolution": )" +
+                            std::to_string(resolution) + R"(, "filter": "none"}])",
+                        1000);
+    }
+}
+
 // The same floor as two receivers of different resolutions side by side,
 // the slab across their seam and past their far edges: each cell is drawn
 // on every receiver its photons land on, clipped to each square, into each

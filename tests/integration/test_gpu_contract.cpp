@@ -91,8 +91,8 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"CausticVertices", {layout::kCausticVertices, 0, sizeof(glm::vec4)}},
         {"CausticTriangles", {layout::kCausticTriangles, 0, sizeof(glm::vec4)}},
         {"CausticDraw", {layout::kCausticDraw, sizeof(glm::uvec4), 0}},
-        {"CausticSplats", {layout::kCausticSplats, 0, sizeof(glm::vec4)}},
-        {"CausticSplatDraw", {layout::kCausticSplatDraw, sizeof(glm::uvec4), 0}},
+        {"CausticDeposits", {layout::kCausticDeposits, 0, sizeof(glm::vec4)}},
+        {"CausticDepositCount", {layout::kCausticDepositCount, sizeof(glm::uvec4), 0}},
         {"CausticCellGroups", {layout::kCausticCellGroups, sizeof(glm::uvec4), 0}},
         // The fluid solver's passes (sim/gpu, shaders/sim).
         {"VelocityX", {layout::kSolverVelocityX, 0, sizeof(float)}},
@@ -295,6 +295,7 @@ std::vector<Variant> productionVariants() {
         {"water_height_fields.comp", {{"EIKON_PASS", "2"}}},
         {"caustic_polygons.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "0"}, {"EIKON_CELL_RECEIVERS", "4"}}},
         {"caustic_polygons.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "1"}}},
+        {"caustic_polygons.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_PASS", "2"}}},
         // Image space's raster programs (render/stages/SurfaceLayers, CausticPolygons).
         {"surface_layers.vert",
          {{"EIKON_EXACT_SHAPES", "1"}, {"EIKON_PEEL", "1"}, {"EIKON_NEAR_TEST", "1"}},
@@ -306,7 +307,6 @@ std::vector<Variant> productionVariants() {
          {{"EIKON_EXACT_SHAPES", "2"}, {"EIKON_PEEL", "1"}, {"EIKON_NEAR_TEST", "0"}},
          "surface_layers.frag"},
         {"caustic_polygons.vert", {{"EIKON_RECEIVERS", "2"}}, "caustic_polygons.frag"},
-        {"caustic_splats.vert", {{"EIKON_RECEIVERS", "2"}}, "caustic_splats.frag"},
         // The fluid solver's passes, each variant sim/gpu compiles.
         {"sim/apply_sources.comp", {}},
         {"sim/buoyancy.comp", {}},
