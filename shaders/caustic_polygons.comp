@@ -67,7 +67,7 @@ uniform ivec2 layer_size;
 // Whether a triangle's bounding box holds at most kDepositWindow texel
 // centres of receiver r along each axis: pass 2 deposits it.
 bool within_deposit_window(vec2 a, vec2 b, vec2 c, int r) {
-    float edge = float(receivers[r].map.y);
+    float edge = float(receivers[receiver_slot(r)].map.y);
     vec2 low = min(a, min(b, c)) * edge, high = max(a, max(b, c)) * edge;
     ivec2 span = ivec2(floor(high - 0.5f)) - ivec2(ceil(low - 0.5f));
     return all(lessThan(span, ivec2(kDepositWindow)));
@@ -88,7 +88,7 @@ const float kSmallestDrawnTexels = 0.25f;
 // The area of the triangle between three map points, in texels of receiver r.
 float texels_between(vec2 a, vec2 b, vec2 c, int r) {
     vec2 ab = b - a, ac = c - a;
-    float edge = float(receivers[r].map.y);
+    float edge = float(receivers[receiver_slot(r)].map.y);
     return 0.5f * abs(ab.x * ac.y - ab.y * ac.x) * edge * edge;
 }
 
@@ -145,7 +145,7 @@ void main() {
     vec2 uvs[kCellReceivers][4];  // [target][corner]
     bool reached = true;
     for (int q = 0; q < kCellReceivers; ++q) {
-        ReceiverPlane plane = receiver_plane(max(target[q], 0));
+        ReceiverPlane plane = receiver_plane(receiver_slot(max(target[q], 0)));
         for (int k = 0; k < 4; ++k) {
             bool meets = flight_on_plane(corner[k], plane, uvs[q][k]);
             reached = (q >= targets || meets || corner[k].surface < 0) && reached;
@@ -291,7 +291,7 @@ void main() {
     vec3 watts = caustic_deposits[3u * deposit + 2u].rgb;
     bool splat = c.w > 0.5f;
     int r = int(round(c.z));
-    int resolution = int(receivers[r].map.y);
+    int resolution = int(receivers[receiver_slot(r)].map.y);
     vec2 a = ab.xy * float(resolution), b = ab.zw * float(resolution), c_ = c.xy * float(resolution);
     // A splat's four texels around it, a triangle's window from the first centre its box holds.
     BilinearSplat around = bilinear_splat(ab.xy, resolution);

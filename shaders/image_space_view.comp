@@ -55,7 +55,7 @@ const float kFarAway = 1e4f;  // metres; farther than any scene
 
 vec3 receiver_radiance(ReceiverHit hit) {
     if (!hit.lit_side) return vec3(0.0f);
-    return receivers[hit.receiver].albedo.rgb / 3.14159265358979f * receiver_irradiance_at(hit.receiver, hit.map_uv);
+    return receivers[receiver_slot(hit.receiver)].albedo.rgb / 3.14159265358979f * receiver_irradiance_at(hit.receiver, hit.map_uv);
 }
 
 // What a ray from x along d sees in the uniform medium: the first receiver, or the environment.

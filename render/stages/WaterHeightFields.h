@@ -24,7 +24,8 @@ public:
 
     // The program options of passes that follow rays through the sharp
     // surfaces (shaders/common/refractor_paths.glsl): EIKON_WATER_BODIES,
-    // how many; EIKON_LAYER_SURFACES, 1 where other sharp surfaces are.
+    // how many; EIKON_LAYER_SURFACES, 1 where other sharp surfaces are;
+    // EIKON_SHARP_SURFACES, how many sharp surfaces in all.
     static gl::ShaderDefines programOptions(const Scene& scene);
     // Whether a sharp surface other than water is there, whose exits are
     // searched in a viewpoint's layers (the programs then read its

@@ -9,6 +9,7 @@ layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receive
 uniform vec3 power_unit;  // W per tally unit
 
 void deposit_texel(int r, ivec2 texel, vec3 watts) {
+    r = receiver_slot(r);
     int resolution = int(receivers[r].map.y);
     if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, ivec2(resolution)))) return;
     uint base = 6u * (receivers[r].map.x + uint(texel.y * resolution + texel.x));
@@ -42,7 +43,7 @@ float bilinear_splat_share(BilinearSplat splat, ivec2 offset) {
 // loop: a CPU rasterizer runs every call site a shader has under a mask,
 // lanes that take it or not.
 void splat_at(int r, vec2 map_uv, vec3 watts) {
-    BilinearSplat splat = bilinear_splat(map_uv, int(receivers[r].map.y));
+    BilinearSplat splat = bilinear_splat(map_uv, int(receivers[receiver_slot(r)].map.y));
     for (int k = 0; k < 4 && splat.on_map > 0.0f; ++k) {
         ivec2 offset = ivec2(k & 1, k >> 1);
         deposit_texel(r, splat.base + offset, bilinear_splat_share(splat, offset) * watts);

@@ -25,6 +25,12 @@ layout(binding = kReceiverMapTexture) uniform samplerBuffer receiver_map_texels;
 // `break`: their bodies choose by selects.
 const uint receiver_count = uint(EIKON_RECEIVERS);
 
+// Receiver r's place in the block as a lane-varying index reads it: the
+// constant 0 where the scene has one receiver, so that its fields are
+// loaded once for all lanes (llvmpipe gathers a block's fields lane by
+// lane at an index it cannot tell is the same in every lane).
+int receiver_slot(int r) { return receiver_count == 1u ? 0 : r; }
+
 // Where a segment from a to b first crosses a receiver square.
 struct ReceiverHit {
     int receiver;   // -1: none
@@ -50,6 +56,7 @@ ReceiverHit first_receiver_crossing(vec3 a, vec3 b) {
 
 // Irradiance of a receiver's map at uv, bilinear between texel centres.
 vec3 receiver_irradiance_at(int r, vec2 uv) {
+    r = receiver_slot(r);
     uint resolution = receivers[r].map.y;
     vec2 texel = uv * float(resolution) - 0.5f;
     ivec2 base = ivec2(floor(texel));

@@ -17,9 +17,10 @@
 // is not followed (its power is lost), and a ray meets no second refractor
 // after it leaves. A water body is the exception: its exit is found on its
 // height field (common/water_height_fields.glsl), exactly on its triangles.
-// Program options: EIKON_WATER_BODIES (how many the scene has) and
-// EIKON_LAYER_SURFACES (1: it has other sharp surfaces): a CPU rasterizer
-// runs both searches under a mask where both are compiled in.
+// Program options: EIKON_WATER_BODIES (how many the scene has),
+// EIKON_LAYER_SURFACES (1: it has other sharp surfaces; a CPU rasterizer
+// runs both searches under a mask where both are compiled in) and
+// EIKON_SHARP_SURFACES (how many in all).
 // GLSL only; needs grid_sampling.glsl (none of its textures), fresnel.glsl,
 // receiver.glsl, receiver_blocks.glsl.
 #ifndef EIKON_WATER_BODIES
@@ -27,6 +28,9 @@
 #endif
 #ifndef EIKON_LAYER_SURFACES
 #define EIKON_LAYER_SURFACES 1
+#endif
+#ifndef EIKON_SHARP_SURFACES
+#define EIKON_SHARP_SURFACES kMaxSharpObjects
 #endif
 #include "common/surface_layers.glsl"
 #include "common/sharp_surface_list.glsl"
@@ -48,13 +52,18 @@ const int kLayerBisections = 10;
 const int kTangentPlaneSteps = 2;
 const int kInternalBounces = 2;
 
-float surface_index(int s) { return reference_index() + sharp_surfaces[s].optics.x; }
-bool surface_reflects(int s) { return sharp_surfaces[s].optics.y > 0.5f; }
+// Surface s's place in the blocks as a lane-varying index reads it: the
+// constant 0 where the scene has one sharp surface, so that its fields are
+// loaded once for all lanes (as receiver_slot, common/receiver_blocks.glsl).
+int surface_slot(int s) { return EIKON_SHARP_SURFACES == 1 ? 0 : s; }
+
+float surface_index(int s) { return reference_index() + sharp_surfaces[surface_slot(s)].optics.x; }
+bool surface_reflects(int s) { return sharp_surfaces[surface_slot(s)].optics.y > 0.5f; }
 
 // The longest chord of surface s: a sphere's diameter, a box's or a mesh's
 // root box's diagonal.
 float surface_reach(int s) {
-    SharpSurface shape = sharp_surfaces[s];
+    SharpSurface shape = sharp_surfaces[surface_slot(s)];
     int kind = int(shape.shape_a.w + 0.5f);
     if (kind == kSharpSphere) return 2.0f * shape.shape_b.x;
     if (kind == kSharpBox) return length(shape.shape_b.xyz - shape.shape_a.xyz);
@@ -174,7 +183,7 @@ LayerExit find_layer_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
 // of the two exits holds.
 LayerExit find_exit(Viewpoint view, vec3 x, vec3 d, int s, float reach) {
 #if EIKON_WATER_BODIES > 0
-    int water = int(surface_extinction[s].w);
+    int water = int(surface_extinction[surface_slot(s)].w);
     // Off the surface it entered by more than rounding (1 µm per metre of reach).
     WaterCrossing crossing = water_crossing(max(water, 0), x, d, 1e-6f * reach, reach, true);
     // The smooth normal may face the ray where it grazes out across a steep
@@ -204,7 +213,7 @@ struct RefractorPath {
 // Follows a ray that entered surface s at x going d (already refracted into it).
 RefractorPath follow_through_refractor(Viewpoint view, vec3 x, vec3 d, int s) {
     float n_inside = surface_index(s), n_outside = reference_index();
-    vec3 kappa = surface_extinction[s].rgb;
+    vec3 kappa = surface_extinction[surface_slot(s)].rgb;
     RefractorPath path = RefractorPath(x, d, vec3(1.0f), ReceiverHit(-1, 2.0f, false, vec2(0.0f)), false);
     for (int bounce = 0; bounce <= kInternalBounces; ++bounce) {
         // A receiver inside ends the search there: the march covers only the way to it.
