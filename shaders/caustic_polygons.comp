@@ -18,7 +18,9 @@
 // two or more corners on no surface, or whose flight cannot reach a plane,
 // is no smooth map (the paper culls such polygons or draws them anyway):
 // each corner that lands splats its quarter where it lands, so no power is
-// lost. Where two receivers face each other, a cell drawn on both is not
+// lost. Nor is a cell whose photons met or left the surface on facets more
+// than a crease apart (bridge/mesh/Creases.h), where it lands beyond a few
+// texels: drawn, it would spread across the gap under a bar's edge. Where two receivers face each other, a cell drawn on both is not
 // shadowed by either.
 //
 // A triangle is added where it covers a texel centre, as the raster
@@ -63,6 +65,7 @@ layout(std430, binding = kCausticDepositCount) buffer CausticDepositCount {
 };
 
 uniform ivec2 layer_size;
+uniform float crease_cosine;  // bridge/mesh/Creases.h
 
 // Whether a triangle's bounding box holds at most kDepositWindow texel
 // centres of receiver r along each axis: pass 2 deposits it.
@@ -127,6 +130,18 @@ void main() {
         one_surface = one_surface && (corner[k].surface < 0 || surface < 0 || corner[k].surface == surface);
         surface = corner[k].surface >= 0 ? corner[k].surface : surface;
     }
+    // Photons that met, or left, the surface on facets more than a crease
+    // apart (bridge/mesh/Creases.h) part at its edge: the map from the light
+    // to the receivers breaks there, and the cell between them is drawn
+    // across whatever lies between their landings.
+    bool creased = false;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j) {
+            bool both = corner[i].surface >= 0 && corner[j].surface >= 0;
+            bool same_patch = dot(corner[i].entry_normal, corner[j].entry_normal) >= crease_cosine &&
+                              dot(corner[i].exit_normal, corner[j].exit_normal) >= crease_cosine;
+            creased = creased || (both && !same_patch);
+        }
     // The receivers the cell's photons land on, each once: corner k's is
     // target rank[k] (−1: it lands on none), target q's receiver target[q].
     int targets = 0;
@@ -151,7 +166,19 @@ void main() {
             reached = (q >= targets || meets || corner[k].surface < 0) && reached;
         }
     }
-    bool smooth_map = one_surface && shown >= 3 && targets > 0 && reached;
+    // Its triangles within the deposit window on every receiver.
+    bool within[kCellReceivers][2];
+    bool compact = true;
+    for (int q = 0; q < kCellReceivers; ++q)
+        for (int t = 0; t < 2; ++t) {
+            within[q][t] = within_deposit_window(uvs[q][0], uvs[q][t + 1], uvs[q][t + 2], max(target[q], 0));
+            compact = compact && (q >= targets || within[q][t]);
+        }
+    // A creased cell is drawn where it lands within a few texels, which
+    // misplaces its power by no more than splats at its corners would (and
+    // keeps a seam smooth); a larger one (a bar's edge spreads such cells
+    // over the floor, 5.4 million texels of triangles) is splatted.
+    bool smooth_map = one_surface && (!creased || compact) && shown >= 3 && targets > 0 && reached;
     // Its triangles: corners 0 1 2 and 0 2 3 with half the cell's power
     // each, or on a silhouette 0 1 2 with the three corners' quarters.
     vec3 all_watts = corner[0].watts + corner[1].watts + corner[2].watts + corner[3].watts;
@@ -207,7 +234,7 @@ void main() {
     int triangle_count = 0, deposit_count = 0;
     for (int q = 0; q < kCellReceivers; ++q)
         for (int t = 0; t < 2; ++t) {
-            deposited[q][t] = drawn[q][t] && within_deposit_window(uvs[q][0], uvs[q][t + 1], uvs[q][t + 2], max(target[q], 0));
+            deposited[q][t] = drawn[q][t] && within[q][t];
             triangle_count += drawn[q][t] && !deposited[q][t] ? 1 : 0;
             deposit_count += deposited[q][t] ? 1 : 0;
         }

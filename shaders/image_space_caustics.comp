@@ -139,15 +139,18 @@ void main() {
 // A photon's last straight flight, from `origin` along `direction`, the
 // receiver it lands on (`hit`, if on its lit side) and the power it carries:
 // the cells it bounds carry that power whether or not it lands itself.
-CausticVertex landing(ReceiverHit hit, int surface, vec3 origin, vec3 direction, vec3 watts) {
-    return CausticVertex(hit.receiver >= 0 && hit.lit_side ? hit.receiver : -1, surface, origin, direction, watts);
+CausticVertex landing(ReceiverHit hit, int surface, vec3 origin, vec3 direction, vec3 watts, vec3 entry_normal,
+                     vec3 exit_normal) {
+    return CausticVertex(hit.receiver >= 0 && hit.lit_side ? hit.receiver : -1, surface, origin, direction, watts,
+                         entry_normal, exit_normal);
 }
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, layer_size))) return;
     uint index = uint(texel.y * layer_size.x + texel.x);
-    CausticVertex refracted_vertex = CausticVertex(-1, -1, vec3(0.0f), vec3(0.0f, -1.0f, 0.0f), vec3(0.0f));
+    CausticVertex refracted_vertex =
+        CausticVertex(-1, -1, vec3(0.0f), vec3(0.0f, -1.0f, 0.0f), vec3(0.0f), vec3(0.0f, 0.0f, 1.0f), vec3(0.0f, 0.0f, 1.0f));
     CausticVertex reflected_vertex = refracted_vertex;
     LayerSample first = layer_sample(near_layer, texel);
     if (first.surface >= 0) {  // otherwise this light reaches the receivers directly
@@ -186,6 +189,7 @@ void main() {
         vec3 start[2] = vec3[2](x, x + 1e-5f * normal);
         vec3 heading[2] = vec3[2](d, reflect(d, normal));
         vec3 carried[2] = vec3[2](vec3(0.0f), reflectance * watts);
+        vec3 left_through[2] = vec3[2](normal, normal);  // the refraction's exit normal, once found
         ReceiverHit inside = ReceiverHit(-1, 2.0f, false, vec2(0.0f));
         bool refracted_on = reflectance < 1.0f;
         if (refracted_on) {
@@ -195,6 +199,7 @@ void main() {
             carried[0] = (1.0f - reflectance) * path.throughput * watts;
             inside = path.hit;
             refracted_on = path.hit.receiver >= 0 || path.left;
+            left_through[0] = path.left ? path.exit_normal : normal;
         }
         // Both turns always run: a loop of a constant count unrolls, where
         // one whose start or end differs between lanes costs a CPU
@@ -204,7 +209,8 @@ void main() {
             ReceiverHit hit = sheet == 0 && inside.receiver >= 0
                                   ? inside
                                   : first_receiver_crossing(start[sheet], start[sheet] + kFarAway * heading[sheet]);
-            CausticVertex landed = landing(hit, first.surface, start[sheet], heading[sheet], carried[sheet]);
+            CausticVertex landed =
+                landing(hit, first.surface, start[sheet], heading[sheet], carried[sheet], normal, left_through[sheet]);
             if (on && sheet == 0) refracted_vertex = landed;
             if (on && sheet == 1) reflected_vertex = landed;
         }

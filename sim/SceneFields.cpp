@@ -9,6 +9,7 @@
 #include "sim/voxelize/VolumePainter.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/mesh/Creases.h"
 
 #include <algorithm>
 #include <chrono>
@@ -157,7 +158,7 @@ std::string SceneFields::placeWater(bool hardwareGpu) {
     gpuWater_ = std::make_unique<gpu::GpuWaterBody>(
         object, *water->shape.water(),
         gpu::SharpSurfaceTopology{surface.bvh(), surface.cornerStart(), surface.cornerTriangles(),
-                                  SharpMeshSurface::creaseCosine()},
+                                  creaseCosine()},
         fields_, medium);
     return "gpu";
 }

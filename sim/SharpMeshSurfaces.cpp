@@ -2,6 +2,7 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/grid/FieldSet.h"
+#include "bridge/mesh/Creases.h"
 
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
@@ -54,8 +55,6 @@ void put(float* out, const glm::dvec3& v, float w) {
 }
 
 }  // namespace
-
-double SharpMeshSurface::creaseCosine() { return std::cos(kCreaseDegrees * M_PI / 180.0); }
 
 SharpMeshSurface::SharpMeshSurface(const TriangleMesh& mesh) : bvh_(mesh) {
     EIKON_CHECK_MSG(bvh_.nodes().size() < kLargestIndex && mesh.triangles.size() < kLargestIndex,

@@ -5,13 +5,10 @@
 // its topology and refitted to the deformed vertices every frame, and at
 // each triangle corner the normal of the smooth surface the facets stand
 // for: the mean of the normals of the corner's triangles that meet this
-// one at less than kCreaseDegrees, weighted by their angles at the corner
-// (Thürmer and Wüthrich 1998: unlike area weights, it does not depend on
-// how the surface was cut into triangles). 50° smooths any surface cut into
-// eight or more facets per turn — a sphere's, a deformed blob's (whose
-// coarse facets an as-rigid-as-possible bend folds by up to 47°), a water
-// surface's — and keeps the edges of a hexagonal prism (60°) or a bar
-// (90°) sharp. Triangles are exact: crossings lie on the mesh, and a
+// one at less than kCreaseDegrees (bridge/mesh/Creases.h), weighted by
+// their angles at the corner (Thürmer and Wüthrich 1998: unlike area
+// weights, it does not depend on how the surface was cut into triangles).
+// Triangles are exact: crossings lie on the mesh, and a
 // step needs one traversal of the tree along its chord.
 #pragma once
 
@@ -25,9 +22,6 @@ namespace eikon::sim {
 
 class SharpMeshSurface {
 public:
-    static constexpr double kCreaseDegrees = 50.0;
-    static double creaseCosine();  // cos kCreaseDegrees
-
     explicit SharpMeshSurface(const TriangleMesh& mesh);
 
     std::size_t nodeCount() const { return bvh_.nodes().size(); }

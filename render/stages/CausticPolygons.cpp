@@ -1,5 +1,6 @@
 #include "render/stages/CausticPolygons.h"
 
+#include "bridge/mesh/Creases.h"
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
 
@@ -98,6 +99,7 @@ void CausticPolygons::drawLight(const glm::ivec2& grid, const glm::vec3& powerUn
     depositCount_.bindStorage(layout::kCausticDepositCount);
     cellProgram_.use();
     glUniform2i(cellProgram_.uniform("layer_size"), grid.x, grid.y);
+    glUniform1f(cellProgram_.uniform("crease_cosine"), static_cast<float>(creaseCosine()));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, cellGroups_.id());
     glDispatchComputeIndirect(0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);

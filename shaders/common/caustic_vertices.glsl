@@ -10,7 +10,10 @@
 // buffer texture (render/stages/CausticPolygons.h says why). GLSL only;
 // needs receiver.glsl and receiver_blocks.glsl.
 
-// [3·(2·texel + sheet)]: (flight origin, surface); [+ 1]: (direction, receiver or −1); [+ 2]: (W rgb, 0)
+#include "common/surface_layers.glsl"
+
+// [3·(2·texel + sheet)]: (flight origin, surface); [+ 1]: (direction, receiver or −1);
+// [+ 2]: (W rgb, the facet normals packed: an integer under 2^24, exact as a float)
 layout(std430, binding = kCausticVertices) writeonly buffer CausticVertices { vec4 caustic_vertices[]; };
 layout(binding = kCausticVertexTexture) uniform samplerBuffer caustic_vertex_texels;
 
@@ -22,7 +25,25 @@ struct CausticVertex {
     vec3 origin;     // its last straight flight: from here
     vec3 direction;  // along this (unit)
     vec3 watts;      // the power of the texel's photon on landing
+    // The surface's normal where the photon met it and where it last left
+    // it (both the first for a reflection, or for a photon that ends
+    // inside), each oriented along the photon's flight there: neighbours
+    // whose normals differ by more than a crease met the surface on
+    // different facets of an edge (caustic_polygons.comp).
+    vec3 entry_normal;
+    vec3 exit_normal;
 };
+
+// A unit normal in 12 bits: its octahedral coordinates at 6 bits each, to
+// a few degrees, which tells facets apart at a crease.
+uint pack_facet_normal(vec3 n) {
+    uvec2 q = uvec2(round((octahedral_encode(n) * 0.5f + 0.5f) * 63.0f));
+    return q.x | (q.y << 6);
+}
+
+vec3 unpack_facet_normal(uint bits) {
+    return octahedral_decode(vec2(uvec2(bits, bits >> 6) & 63u) / 63.0f * 2.0f - 1.0f);
+}
 
 uint caustic_vertex_slot(uint texel, int sheet) { return 3u * (uint(kCausticSheets) * texel + uint(sheet)); }
 
@@ -30,7 +51,8 @@ void write_caustic_vertex(uint texel, int sheet, CausticVertex v) {
     uint slot = caustic_vertex_slot(texel, sheet);
     caustic_vertices[slot] = vec4(v.origin, float(v.surface));
     caustic_vertices[slot + 1u] = vec4(v.direction, float(v.receiver));
-    caustic_vertices[slot + 2u] = vec4(v.watts, 0.0f);
+    uint facets = pack_facet_normal(v.entry_normal) | (pack_facet_normal(v.exit_normal) << 12);
+    caustic_vertices[slot + 2u] = vec4(v.watts, float(facets));
 }
 
 // The sharp surface a vertex's light texel shows (−1: none), read alone.
@@ -42,7 +64,9 @@ CausticVertex read_caustic_vertex(uint texel, int sheet) {
     int slot = int(caustic_vertex_slot(texel, sheet));
     vec4 a = texelFetch(caustic_vertex_texels, slot), b = texelFetch(caustic_vertex_texels, slot + 1),
          c = texelFetch(caustic_vertex_texels, slot + 2);
-    return CausticVertex(int(round(b.w)), int(round(a.w)), a.xyz, b.xyz, c.rgb);
+    uint facets = uint(c.w);
+    return CausticVertex(int(round(b.w)), int(round(a.w)), a.xyz, b.xyz, c.rgb, unpack_facet_normal(facets),
+                         unpack_facet_normal(facets >> 12));
 }
 
 // A receiver's plane and square, read once for the flights met with it.

@@ -208,13 +208,14 @@ struct RefractorPath {
     vec3 throughput;  // Fresnel transmittance at the exit × Beer–Lambert inside
     ReceiverHit hit;  // a receiver met inside (hit.receiver ≥ 0): the ray ends there
     bool left;        // false: no way out was found (or the bounces ran out); the ray carries nothing on
+    vec3 exit_normal; // where it left: the surface's normal, along the ray (left only)
 };
 
 // Follows a ray that entered surface s at x going d (already refracted into it).
 RefractorPath follow_through_refractor(Viewpoint view, vec3 x, vec3 d, int s) {
     float n_inside = surface_index(s), n_outside = reference_index();
     vec3 kappa = surface_extinction[surface_slot(s)].rgb;
-    RefractorPath path = RefractorPath(x, d, vec3(1.0f), ReceiverHit(-1, 2.0f, false, vec2(0.0f)), false);
+    RefractorPath path = RefractorPath(x, d, vec3(1.0f), ReceiverHit(-1, 2.0f, false, vec2(0.0f)), false, vec3(0.0f));
     for (int bounce = 0; bounce <= kInternalBounces; ++bounce) {
         // A receiver inside ends the search there: the march covers only the way to it.
         float reach = surface_reach(s);
@@ -239,6 +240,7 @@ RefractorPath follow_through_refractor(Viewpoint view, vec3 x, vec3 d, int s) {
             path.d = normalize(out_d);
             path.throughput *= 1.0f - reflectance;
             path.left = true;
+            path.exit_normal = exit_.normal;
             return path;
         }
         x = end;  // totally reflected: on inside

@@ -2,6 +2,7 @@
 // caustic maps, against a closed form the renderer's code does not share.
 #include "io/scene/SceneParser.h"
 #include "render/graph/FrameRenderer.h"
+#include "sim/SceneFields.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -150,6 +152,85 @@ TEST(CausticPolygons, SplatCellsTooSmallToDrawWithoutLosingPower) {
     test::reportFigure("image_space_splats_worst_relative_error", figures.worstUnder);
     EXPECT_EQ(figures.under, 4 * 4 + 7 * 7);
     EXPECT_LE(figures.worstUnder, 0.005);
+}
+
+// Sunlight straight down through a glass bar (n = 1.5, |x|, |z| ≤ 0.2 m,
+// flat top at y = 0.5) whose underside is a V-notch: two facets rising at
+// α = 30° from its bottom edges (y = 0.3) to a ridge along z at x = 0. Each
+// facet bends its light away from the ridge, by δ = asin(n sin α) − α, so
+// under the ridge the floor gets no light between the two beams' inner
+// edges, x = ±y_ridge·tan δ. The facets meet at 60°, a crease
+// (bridge/mesh/Creases.h): the cells of photons that left on either side of
+// the ridge must not be drawn across the gap. Each beam is uniform: E·T_top
+// ·T_exit over its compression 1 − tan α·tan δ along x (T by Fresnel,
+// unpolarized). Both to 1% of E on a 64² floor.
+TEST(CausticPolygons, KeepTheGapUnderACreaseDark) {
+    test::glContext();
+    const double n = 1.5, alpha = 30.0 * std::numbers::pi / 180.0;
+    const double ridge = 0.3 + 0.2 * std::tan(alpha);
+    const std::string obj = ::testing::TempDir() + "notched_bar.obj";
+    {
+        // The cross-section, counter-clockwise from +z, at z = +0.2 (1–5) and −0.2 (6–10).
+        const double section[5][2] = {{-0.2, 0.3}, {0.0, ridge}, {0.2, 0.3}, {0.2, 0.5}, {-0.2, 0.5}};
+        std::ofstream out(obj);
+        out.precision(17);
+        for (const double z : {0.2, -0.2})
+            for (const auto& p : section) out << "v " << p[0] << " " << p[1] << " " << z << "\n";
+        out << "f 5 1 2\nf 5 2 4\nf 2 3 4\n";     // front cap (+z)
+        out << "f 10 7 6\nf 10 9 7\nf 7 9 8\n";  // back cap (−z)
+        for (int i = 0; i < 5; ++i) {              // the sides, edge i → i + 1
+            const int a = i + 1, b = (i + 1) % 5 + 1;
+            out << "f " << a + 5 << " " << b + 5 << " " << b << "\nf " << a + 5 << " " << b << " " << a << "\n";
+        }
+    }
+    const std::string path = ::testing::TempDir() + "notched_bar.json";
+    std::ofstream(path) << R"({
+      "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0.0, -0.5], "max": [0.5, 1.0, 0.5]}},
+      "objects": [{"type": "mesh", "mesh": {"path": ")" + obj + R"("}, "index": 1.5}],
+      "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1.0}],
+      "receivers": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "size": 1.0, "resolution": 64, "filter": "none"}],
+      "camera": {"position": [0.0, 2.0, 1.5], "target": [0.0, 0.0, 0.0], "up": [0, 1, 0], "fov_deg": 40},
+      "render": {"method": "image_space", "width": 64, "height": 48, "caustic_map_texels": 48}
+    })";
+    const Scene scene = loadSceneFile(path);
+    const sim::SceneFields fields(scene);
+    render::FrameRenderer renderer(scene, fields.fields());
+    renderer.render(fields.fields());
+
+    const auto reflectance = [](double cosI, double cosT, double n1, double n2) {
+        const double s = (n1 * cosI - n2 * cosT) / (n1 * cosI + n2 * cosT), p = (n2 * cosI - n1 * cosT) / (n2 * cosI + n1 * cosT);
+        return 0.5 * (s * s + p * p);
+    };
+    const double exitAngle = std::asin(n * std::sin(alpha)), delta = exitAngle - alpha;
+    const double beam = (1.0 - reflectance(1.0, 1.0, 1.0, n)) *
+                        (1.0 - reflectance(std::cos(alpha), std::cos(exitAngle), n, 1.0)) /
+                        (1.0 - std::tan(alpha) * std::tan(delta));
+    const double gapEdge = ridge * std::tan(delta);  // 0.14 m
+    const layout::GpuReceiver& floor = renderer.receivers().receiver(0);
+    const std::vector<float> rgb = renderer.receivers().download(0);
+    double brightestInGap = 0.0, worstInBeam = 0.0;
+    int inGap = 0, inBeam = 0;
+    for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i) {
+            const glm::vec3 centre = glm::vec3(floor.origin) + ((i + 0.5f) / 64.0f - 0.5f) * glm::vec3(floor.axisU) +
+                                     ((j + 0.5f) / 64.0f - 0.5f) * glm::vec3(floor.axisV);
+            const double x = centre.x, z = centre.z;
+            if (std::abs(z) > 0.17) continue;
+            const double irradiance = rgb[3 * (static_cast<std::size_t>(j) * 64 + i) + 1];
+            if (std::abs(x) < gapEdge - 0.03) {
+                brightestInGap = std::max(brightestInGap, irradiance);
+                ++inGap;
+            } else if (std::abs(x) > gapEdge + 0.01 && std::abs(x) < 0.19) {
+                worstInBeam = std::max(worstInBeam, std::abs(irradiance / beam - 1.0));
+                ++inBeam;
+            }
+        }
+    test::reportFigure("image_space_crease_gap_brightest", brightestInGap);
+    test::reportFigure("image_space_crease_beam_worst_relative_error", worstInBeam);
+    EXPECT_GT(inGap, 200);
+    EXPECT_GT(inBeam, 60);
+    EXPECT_LE(brightestInGap, 0.01);
+    EXPECT_LE(worstInBeam, 0.01);
 }
 
 }  // namespace
