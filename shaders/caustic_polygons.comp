@@ -133,15 +133,14 @@ void main() {
     // Photons that met, or left, the surface on facets more than a crease
     // apart (bridge/mesh/Creases.h) part at its edge: the map from the light
     // to the receivers breaks there, and the cell between them is drawn
-    // across whatever lies between their landings.
+    // across whatever lies between their landings. Each corner is compared
+    // with corner 0, which shows the surface wherever three or more do.
     bool creased = false;
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j) {
-            bool both = corner[i].surface >= 0 && corner[j].surface >= 0;
-            bool same_patch = dot(corner[i].entry_normal, corner[j].entry_normal) >= crease_cosine &&
-                              dot(corner[i].exit_normal, corner[j].exit_normal) >= crease_cosine;
-            creased = creased || (both && !same_patch);
-        }
+    for (int k = 1; k < 4; ++k) {
+        bool same_patch = dot(corner[0].entry_normal, corner[k].entry_normal) >= crease_cosine &&
+                          dot(corner[0].exit_normal, corner[k].exit_normal) >= crease_cosine;
+        creased = creased || (corner[0].surface >= 0 && corner[k].surface >= 0 && !same_patch);
+    }
     // The receivers the cell's photons land on, each once: corner k's is
     // target rank[k] (−1: it lands on none), target q's receiver target[q].
     int targets = 0;
