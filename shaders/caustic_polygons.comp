@@ -68,12 +68,18 @@ uniform ivec2 layer_size;
 uniform float crease_cosine;  // bridge/mesh/Creases.h
 
 // Whether a triangle's bounding box holds at most kDepositWindow texel
-// centres of receiver r along each axis: pass 2 deposits it.
+// centres of receiver r along each axis: pass 2 deposits it (in floats:
+// a flight that grazes the plane lands where an integer would overflow).
 bool within_deposit_window(vec2 a, vec2 b, vec2 c, int r) {
     float edge = float(receivers[receiver_slot(r)].map.y);
     vec2 low = min(a, min(b, c)) * edge, high = max(a, max(b, c)) * edge;
-    ivec2 span = ivec2(floor(high - 0.5f)) - ivec2(ceil(low - 0.5f));
-    return all(lessThan(span, ivec2(kDepositWindow)));
+    return all(lessThan(floor(high - 0.5f) - ceil(low - 0.5f), vec2(kDepositWindow)));
+}
+
+// Whether a triangle's bounding box meets its receiver's square: one that
+// does not covers no texel centre of it, and is neither drawn nor deposited.
+bool meets_square(vec2 a, vec2 b, vec2 c) {
+    return all(lessThan(min(a, min(b, c)), vec2(1.0f))) && all(greaterThan(max(a, max(b, c)), vec2(0.0f)));
 }
 
 // The most receivers one cell is drawn on: the scene's, up to four (program
@@ -216,7 +222,8 @@ void main() {
                                  (uvs[q][0] + uvs[q][2] + uvs[q][3]) / 3.0f);
         for (int t = 0; t < 2; ++t) {
             bool exists = on && (t == 0 || (shown == 4 && !whole_cell));
-            drawn[q][t] = exists && !whole_cell && texels[t] >= kSmallestDrawnTexels;
+            drawn[q][t] = exists && !whole_cell && texels[t] >= kSmallestDrawnTexels &&
+                          meets_square(uvs[q][0], uvs[q][t + 1], uvs[q][t + 2]);
             drawn_watts[q][t] = triangle_watts / max(texels[t], 1e-30f);
             int slot = 2 * q + t;
             if (!exists) continue;
