@@ -85,8 +85,12 @@ bool light_blocked(int r, vec3 x) {
     vec3 normal = receivers[r].normal.xyz;
     vec3 from = light_kind == 2 ? x - kFarAway * light_axis : light_position;
     float distance = length(from - x);
-    ReceiverHit blocker = first_receiver_crossing(from, x + 1e-5f * normal);
-    if (blocker.receiver >= 0 && blocker.fraction * distance < distance * (1.0f - 1e-5f)) return true;
+    // Another receiver (a lone one stands only before its own back, where
+    // unblocked_irradiance gives nothing).
+    if (receiver_count > 1u) {
+        ReceiverHit blocker = first_receiver_crossing(from, x + 1e-5f * normal);
+        if (blocker.receiver >= 0 && blocker.fraction * distance < distance * (1.0f - 1e-5f)) return true;
+    }
     ivec2 texel;
     Viewpoint view = light_view();
     if (!viewpoint_texel(view, x, texel)) return false;
