@@ -20,13 +20,14 @@
 // each corner that lands splats its quarter where it lands, so no power is
 // lost. Nor is a cell whose photons met or left the surface on facets more
 // than a crease apart (bridge/mesh/Creases.h), where it lands beyond a few
-// texels: drawn, it would spread across the gap under a bar's edge. Where two receivers face each other, a cell drawn on both is not
-// shadowed by either.
+// texels: drawn, it would spread across the gap under a bar's edge. Where
+// two receivers face each other, a cell drawn on both is not shadowed by
+// either.
 //
 // A triangle is added where it covers a texel centre, as the raster
 // pipeline samples it. Most are small: a CPU rasterizer's cost is per
 // primitive (pool_caustics' 56 000 triangles, most within two texels,
-// took a quarter of its frame), so those whose box holds at most
+// took a fifth of its frame), so those whose box holds at most
 // kDepositWindow centres along each axis, and the splats, are listed for
 // pass 2, which tests the few centres in integers and adds the power to
 // the tallies by atomics; the larger ones are drawn into an atlas of the

@@ -25,11 +25,11 @@ struct CausticVertex {
     vec3 origin;     // its last straight flight: from here
     vec3 direction;  // along this (unit)
     vec3 watts;      // the power of the texel's photon on landing
-    // The surface's normal where the photon met it and where it last left
-    // it (both the first for a reflection, or for a photon that ends
-    // inside), each oriented along the photon's flight there: neighbours
-    // whose normals differ by more than a crease met the surface on
-    // different facets of an edge (caustic_polygons.comp).
+    // The surface's normal where the photon met it (facing the light) and
+    // where it last left it (along its flight; the first again for a
+    // reflection, or for a photon that ends inside): neighbours whose
+    // normals differ by more than a crease met the surface on different
+    // facets of an edge (caustic_polygons.comp).
     vec3 entry_normal;
     vec3 exit_normal;
 };
