@@ -51,6 +51,7 @@ const int kDepositWindow = 3;
 
 #if EIKON_PASS == 0
 #include "common/caustic_vertices.glsl"
+#include "common/listed_work_groups.glsl"
 
 layout(std430, binding = kCausticTriangles) writeonly buffer CausticTriangles {
     vec4 caustic_triangles[];  // per triangle: (uv a, uv b), (uv c, receiver, 0), (W per receiver texel rgb, 0)
@@ -66,7 +67,7 @@ layout(std430, binding = kCausticDepositCount) buffer CausticDepositCount {
 };
 
 uniform ivec2 layer_size;
-uniform float crease_cosine;  // bridge/mesh/Creases.h
+uniform float crease_cosine;  // bridge/mesh/Creases.h, set once
 
 // Whether a triangle's bounding box holds at most kDepositWindow texel
 // centres of receiver r along each axis: pass 2 deposits it (in floats:
@@ -248,8 +249,7 @@ void main() {
     for (int j = 0; j < kSplatSlots; ++j) deposit_count += splat_on[j] ? 1 : 0;
     uint triangle_slot = triangle_count > 0 ? atomicAdd(caustic_draw.x, 3u * uint(triangle_count)) : 0u;
     uint deposit_slot = deposit_count > 0 ? atomicAdd(caustic_deposit_count.w, uint(deposit_count)) : 0u;
-    // Pass 2's work groups start at each multiple of 64 this range holds.
-    uint groups = (deposit_slot + uint(deposit_count) + 63u) / 64u - (deposit_slot + 63u) / 64u;
+    uint groups = work_groups_started(deposit_slot, uint(deposit_count), 64u);  // pass 2's work group: 64
     if (groups > 0u) atomicAdd(caustic_deposit_count.x, groups);
     for (int q = 0; q < kCellReceivers; ++q)
         for (int t = 0; t < 2; ++t) {

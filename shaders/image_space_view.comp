@@ -103,6 +103,8 @@ void draw_without_surface(uvec2 pixel) {
 }
 
 #if EIKON_PASS == 0
+#include "common/listed_work_groups.glsl"
+
 shared uint group_listed;  // this work group's pixels that see a surface
 shared uint group_first;   // where they go in the list
 
@@ -120,8 +122,7 @@ void main() {
         uint first = atomicAdd(surface_pixel_groups.w, group_listed);
         group_first = first;
         uint size = gl_WorkGroupSize.x * gl_WorkGroupSize.y;  // pass 1's work group, 64
-        // Pass 1's work groups start at each multiple of 64 this range holds.
-        atomicAdd(surface_pixel_groups.x, (first + group_listed + size - 1u) / size - (first + size - 1u) / size);
+        atomicAdd(surface_pixel_groups.x, work_groups_started(first, group_listed, size));
     }
     barrier();
     if (!inside_image) return;

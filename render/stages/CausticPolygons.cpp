@@ -71,7 +71,9 @@ CausticPolygons::CausticPolygons(int texels, const ReceiverMaps& receivers)
       depositProgram_(
           gl::compileComputeProgram("caustic_polygons.comp", {{"EIKON_PASS", "2"}, receivers.countOption()})),
       drawProgram_(
-          gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag", {receivers.countOption()})) {}
+          gl::compileRasterProgram("caustic_polygons.vert", "caustic_polygons.frag", {receivers.countOption()})) {
+    glProgramUniform1f(cellProgram_.id(), cellProgram_.uniform("crease_cosine"), static_cast<float>(creaseCosine()));
+}
 
 void CausticPolygons::clear() {
     GLint previousFramebuffer = 0;
@@ -99,7 +101,6 @@ void CausticPolygons::drawLight(const glm::ivec2& grid, const glm::vec3& powerUn
     depositCount_.bindStorage(layout::kCausticDepositCount);
     cellProgram_.use();
     glUniform2i(cellProgram_.uniform("layer_size"), grid.x, grid.y);
-    glUniform1f(cellProgram_.uniform("crease_cosine"), static_cast<float>(creaseCosine()));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, cellGroups_.id());
     glDispatchComputeIndirect(0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);

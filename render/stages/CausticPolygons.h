@@ -8,16 +8,16 @@
 // with every receiver one of the photons lands on, clipped to each
 // receiver's square, at the irradiance of their power over their landing
 // area. Triangles smaller than a quarter of a receiver texel are splatted
-// at their middle; cells whose photons left through different surfaces,
-// or met or left one on facets more than a crease apart (an edge of a bar:
-// no smooth map there; the paper culls such polygons or draws them), are
-// splatted corner by corner, except that a cell on a silhouette keeps the
-// triangle of its three corners on the surface, and a creased cell that
-// lands within a few texels is drawn. A creased cell drawn across the gap
-// under a bar's edge lit the gap (4% of the light, CausticPolygons.
-// KeepTheGapUnderACreaseDark) and cost twisting_glass 5.4 million texels of
-// triangles a frame.
-// A splat shares its power bilinearly among the four texels around it.
+// at their middle. Cells with no smooth map are splatted corner by corner:
+// those whose photons left through different surfaces, and those whose
+// photons met or left one on facets more than a crease apart (an edge of a
+// bar; the paper culls such polygons or draws them), unless they land
+// within a few texels. Drawn, a creased cell spreads its power across the
+// gap under the edge (4% of the light there, CausticPolygons.
+// KeepTheGapUnderACreaseDark), and twisting_glass's cost 5.4 million
+// texels of triangles a frame. A cell on a silhouette keeps the triangle of
+// its three corners on the surface. A splat shares its power bilinearly
+// among the four texels around it.
 //
 // A triangle adds its irradiance to the texels whose centres it covers.
 // The larger ones are drawn by the raster pipeline, with additive

@@ -43,11 +43,9 @@ bool WaterHeightFields::hasLayerSurfaces(const Scene& scene) {
 
 gl::ShaderDefines WaterHeightFields::programOptions(const Scene& scene) {
     const auto bodies = std::count_if(scene.objects.begin(), scene.objects.end(), isWaterBody);
-    const auto surfaces = std::count_if(scene.objects.begin(), scene.objects.end(),
-                                        [](const ObjectDesc& object) { return object.isSharp(); });
     return {{"EIKON_WATER_BODIES", std::to_string(bodies)},
             {"EIKON_LAYER_SURFACES", hasLayerSurfaces(scene) ? "1" : "0"},
-            {"EIKON_SHARP_SURFACES", std::to_string(surfaces)}};
+            {"EIKON_SHARP_SURFACES", std::to_string(waterOfSurface(scene).size())}};
 }
 
 WaterHeightFields::WaterHeightFields(const Scene& scene) {

@@ -5,6 +5,7 @@
 #include "sim/SceneFields.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
+#include "tests/integration/TraceHelpers.h"
 
 #include <gtest/gtest.h>
 
@@ -42,6 +43,13 @@ struct SlabFigures {
     int under = 0, beside = 0;
 };
 
+// The centre of texel (i, j) of a receiver's map.
+glm::vec3 texelCentre(const layout::GpuReceiver& receiver, int i, int j) {
+    const auto n = static_cast<float>(receiver.map.y);
+    return glm::vec3(receiver.origin) + ((i + 0.5f) / n - 0.5f) * receiver.origin.w * glm::vec3(receiver.axisU) +
+           ((j + 0.5f) / n - 0.5f) * receiver.origin.w * glm::vec3(receiver.axisV);
+}
+
 SlabFigures slabFigures(const Scene& scene) {
     const FieldSet fields = sim::voxelizeScene(scene);
     render::FrameRenderer renderer(scene, fields);
@@ -54,9 +62,7 @@ SlabFigures slabFigures(const Scene& scene) {
         const auto n = static_cast<int>(receiver.map.y);
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
-                const glm::vec3 x = glm::vec3(receiver.origin) +
-                                    ((i + 0.5f) / n - 0.5f) * receiver.origin.w * glm::vec3(receiver.axisU) +
-                                    ((j + 0.5f) / n - 0.5f) * receiver.origin.w * glm::vec3(receiver.axisV);
+                const glm::vec3 x = texelCentre(receiver, i, j);
                 const double irradiance = rgb[3 * (static_cast<std::size_t>(j) * n + i) + 1];
                 const double off = std::max(std::abs(x.x), std::abs(x.z));
                 if (off < 0.27) {
@@ -168,21 +174,18 @@ TEST(CausticPolygons, KeepTheGapUnderACreaseDark) {
     test::glContext();
     const double n = 1.5, alpha = 30.0 * std::numbers::pi / 180.0;
     const double ridge = 0.3 + 0.2 * std::tan(alpha);
-    const std::string obj = ::testing::TempDir() + "notched_bar.obj";
-    {
-        // The cross-section, counter-clockwise from +z, at z = +0.2 (1–5) and −0.2 (6–10).
-        const double section[5][2] = {{-0.2, 0.3}, {0.0, ridge}, {0.2, 0.3}, {0.2, 0.5}, {-0.2, 0.5}};
-        std::ofstream out(obj);
-        out.precision(17);
-        for (const double z : {0.2, -0.2})
-            for (const auto& p : section) out << "v " << p[0] << " " << p[1] << " " << z << "\n";
-        out << "f 5 1 2\nf 5 2 4\nf 2 3 4\n";     // front cap (+z)
-        out << "f 10 7 6\nf 10 9 7\nf 7 9 8\n";  // back cap (−z)
-        for (int i = 0; i < 5; ++i) {              // the sides, edge i → i + 1
-            const int a = i + 1, b = (i + 1) % 5 + 1;
-            out << "f " << a + 5 << " " << b + 5 << " " << b << "\nf " << a + 5 << " " << b << " " << a << "\n";
-        }
+    // The cross-section, counter-clockwise from +z, at z = +0.2 (0–4) and −0.2 (5–9).
+    const double section[5][2] = {{-0.2, 0.3}, {0.0, ridge}, {0.2, 0.3}, {0.2, 0.5}, {-0.2, 0.5}};
+    TriangleMesh bar;
+    for (const double z : {0.2, -0.2})
+        for (const auto& p : section) bar.vertices.emplace_back(p[0], p[1], z);
+    bar.triangles = {{4, 0, 1}, {4, 1, 3}, {1, 2, 3}, {9, 6, 5}, {9, 8, 6}, {6, 8, 7}};  // the caps
+    for (int i = 0; i < 5; ++i) {  // the sides, edge i → i + 1
+        const int a = i, b = (i + 1) % 5;
+        bar.triangles.emplace_back(a + 5, b + 5, b);
+        bar.triangles.emplace_back(a + 5, b, a);
     }
+    const std::string obj = test::meshObject(bar, "notched_bar.obj", n).mesh.path;
     const std::string path = ::testing::TempDir() + "notched_bar.json";
     std::ofstream(path) << R"({
       "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0.0, -0.5], "max": [0.5, 1.0, 0.5]}},
@@ -212,8 +215,7 @@ TEST(CausticPolygons, KeepTheGapUnderACreaseDark) {
     int inGap = 0, inBeam = 0;
     for (int j = 0; j < 64; ++j)
         for (int i = 0; i < 64; ++i) {
-            const glm::vec3 centre = glm::vec3(floor.origin) + ((i + 0.5f) / 64.0f - 0.5f) * glm::vec3(floor.axisU) +
-                                     ((j + 0.5f) / 64.0f - 0.5f) * glm::vec3(floor.axisV);
+            const glm::vec3 centre = texelCentre(floor, i, j);
             const double x = centre.x, z = centre.z;
             if (std::abs(z) > 0.17) continue;
             const double irradiance = rgb[3 * (static_cast<std::size_t>(j) * 64 + i) + 1];
