@@ -42,10 +42,11 @@
 // (every probe_stride-th cell on each axis); 2 the fluence of every cell
 // into MultipleFluence and per work group the power ledger (source,
 // absorbed, escaped through each grid face), summed on the host in a fixed
-// order so that a run gives the same bits every time; 3 whether the three
-// channels differ anywhere (medium, or source by more than float rounding):
-// where they do not, one channel is solved and its densities copied to the
-// other two.
+// order so that a run gives the same bits every time; 3, the survey, whether
+// the three channels differ anywhere (medium, or source by more than float
+// rounding): where they do not, one channel is solved and its densities
+// copied to the other two; and the voxels too thick for the lattice's float
+// arithmetic (LatticeScattering.h, the depth limit).
 // Program options: EIKON_LATTICE_DIRECTIONS (6, 14 or 18), EIKON_LATTICE_PASS,
 // EIKON_HAS_ANISOTROPY, EIKON_LATTICE_INTERFACES.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
@@ -90,7 +91,12 @@ layout(std430, binding = kLatticeOut) writeonly buffer LatticeOut { float densit
 layout(std430, binding = kLatticeProbes) writeonly buffer LatticeProbes { float probe_fluence[]; };
 uniform int probe_stride;
 #elif EIKON_LATTICE_PASS == 3
-layout(std430, binding = kLatticeGrey) buffer LatticeGrey { uint channels_differ; };
+// channels_differ: 1 where the channels' media or sources differ; thick_voxels
+// and deepest_depth (float bits): the cells whose retention is below
+// min_retention in some channel, and the largest optical depth across the
+// shortest voxel edge among them.
+layout(std430, binding = kLatticeSurvey) buffer LatticeSurvey { uint channels_differ; uint thick_voxels; uint deepest_depth; };
+uniform float min_retention;
 #else
 layout(std430, binding = kMultipleFluence) writeonly buffer MultipleFluence { float multiple_fluence[]; };
 layout(std430, binding = kLatticeTallies) writeonly buffer LatticeTallies { vec4 group_tallies[]; };
@@ -132,17 +138,32 @@ struct Collision {
     float fluence;               // W/m²
 };
 
-Collision collide(ivec3 cell) {
-    float kappa = texelFetch(extinction_texture, cell, 0)[channel];
-    float sigma_s = texelFetch(scattering_texture, cell, 0)[channel];
+// A cell's medium as the lattice sees it in channel `c`: extinction and
+// albedo after the similarity relation.
+struct LatticeMedium {
+    float sigma_t;  // 1/m
+    float albedo;
+};
+
+LatticeMedium medium_at(ivec3 cell, int c) {
+    float kappa = texelFetch(extinction_texture, cell, 0)[c];
+    float sigma_s = texelFetch(scattering_texture, cell, 0)[c];
 #if EIKON_HAS_ANISOTROPY
     float g = texelFetch(anisotropy_texture, cell, 0).r;
 #else
     float g = 0.0f;
 #endif
     float reduced = sigma_s * (1.0f - g);
-    float sigma_t = max(kappa - sigma_s + reduced, 0.0f);
-    float albedo = sigma_t > 0.0f ? min(reduced / sigma_t, 1.0f) : 0.0f;
+    LatticeMedium m;
+    m.sigma_t = max(kappa - sigma_s + reduced, 0.0f);
+    m.albedo = m.sigma_t > 0.0f ? min(reduced / m.sigma_t, 1.0f) : 0.0f;
+    return m;
+}
+
+Collision collide(ivec3 cell) {
+    LatticeMedium medium = medium_at(cell, channel);
+    float sigma_t = medium.sigma_t;
+    float albedo = medium.albedo;
     float volume = grid.voxel_size.w;
     int index = grid_linear_index(cell);
 
@@ -196,7 +217,9 @@ Collision collide(ivec3 cell) {
     }
     float born = albedo * interactions + c.source;
     // All generations born here: born / (1 − a(1 − escape)). A voxel so
-    // thick that its escape underflows keeps its born light (absorbed).
+    // thick that its escape underflows keeps its born light (absorbed); the
+    // survey pass finds voxels whose retention is too small for float
+    // (LatticeScattering.h, the depth limit).
     float retention = max(1.0f - albedo * (1.0f - escape), 1e-7f);
     float escaping = born * (escape / retention);
     for (int i = 0; i < DIRECTIONS; ++i) c.outgoing[i] += escape > 0.0f ? escaping * (half_link[i] / escape) : 0.0f;
@@ -237,6 +260,29 @@ void main() {
 #elif EIKON_LATTICE_PASS == 3
     ivec3 cell = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(cell, grid.resolution.xyz))) return;
+    // Light born here leaves in the share escape / (1 − a(1 − escape)) per
+    // generation, its denominator rounded to float near 1 (collide).
+    bool thick = false;
+    float deepest = 0.0f;
+    float shortest_edge = min(grid.voxel_size.x, min(grid.voxel_size.y, grid.voxel_size.z));
+    for (int c = 0; c < 3; ++c) {
+        LatticeMedium m = medium_at(cell, c);
+        if (m.albedo == 0.0f) continue;
+        float escape = 0.0f;
+        for (int i = 0; i < DIRECTIONS; ++i) {
+            int d = lattice_link(i, DIRECTIONS);
+            float depth = m.sigma_t * length(vec3(lattice_offset(d)) * grid.voxel_size.xyz);
+            escape += lattice_weight(d, DIRECTIONS) * exp(-0.5f * depth);
+        }
+        if (1.0f - m.albedo * (1.0f - escape) < min_retention) {
+            thick = true;
+            deepest = max(deepest, m.sigma_t * shortest_edge);
+        }
+    }
+    if (thick) {
+        atomicAdd(thick_voxels, 1u);
+        atomicMax(deepest_depth, floatBitsToUint(deepest));  // non-negative floats order as their bits
+    }
     int index = 3 * grid_linear_index(cell);
     vec3 kappa = texelFetch(extinction_texture, cell, 0).rgb;
     vec3 sigma_s = texelFetch(scattering_texture, cell, 0).rgb;

@@ -4,6 +4,7 @@
 #include "apps/eikon/ErrorWarning.h"
 #include "apps/eikon/FrameOutputs.h"
 #include "apps/eikon/FrameShareLoop.h"
+#include "apps/eikon/LatticeWarning.h"
 #include "apps/eikon/PowerWarning.h"
 #include "apps/eikon/Ranks.h"
 #include "bridge/grid/FieldViews.h"
@@ -60,6 +61,16 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
     return json;
 }
 
+// Voxels beyond the lattice's depth limit, and the warning they give.
+nlohmann::json depthLimitJson(const render::LatticeDepth& depth) {
+    nlohmann::json json = {{"optical_depth_per_voxel", depth.limit}, {"voxels_beyond", depth.thickVoxels}};
+    if (depth.thickVoxels > 0) {
+        json["deepest_beyond"] = depth.deepest;
+        json["warning"] = describeDepthLimit(depth);
+    }
+    return json;
+}
+
 // The lattice's steps and ledger per channel (render/stages/LatticeScattering.h).
 nlohmann::json latticeJson(const render::LatticeStats& lattice) {
     auto perChannel = [&](auto value) {
@@ -74,6 +85,8 @@ nlohmann::json latticeJson(const render::LatticeStats& lattice) {
             {"warm_start", lattice.warmStart},
             {"iterations", perChannel([](const render::LatticeChannel& c) { return c.iterations; })},
             {"capped", lattice.capped()},
+            {"converged", lattice.converged()},
+            {"depth_limit", depthLimitJson(lattice.depth)},
             {"change_per_iteration", perChannel([&](const render::LatticeChannel& c) { return finite(c.change); })},
             {"estimated_remaining", perChannel([&](const render::LatticeChannel& c) { return finite(c.remaining); })},
             {"power_w",
@@ -126,6 +139,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
     const bool simulated = fields.changesOverTime();
     PowerWarning warning;
     ErrorWarning errorWarning(scene.render.warnError);
+    LatticeWarning latticeWarning;
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
         const bool more = frame + 1 < frames;
@@ -141,6 +155,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
         if (writes) {
             warning.check(frame, result);
             errorWarning.check(frame, result);
+            latticeWarning.check(frame, result);
             if (!outputs) outputs.emplace(scene, openOutput());
             outputs->write(frame, result,
                            frameReportJson(frame, current, simulated, result, timing,

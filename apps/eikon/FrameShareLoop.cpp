@@ -4,6 +4,7 @@
 #include "apps/eikon/FrameExport.h"
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/FrameOutputs.h"
+#include "apps/eikon/LatticeWarning.h"
 #include "apps/eikon/ErrorWarning.h"
 #include "apps/eikon/PowerWarning.h"
 #include "apps/eikon/Ranks.h"
@@ -47,6 +48,7 @@ void renderFrameShare(const Scene& scene, sim::SceneFields& fields, int frames,
     const bool simulated = fields.changesOverTime();
     PowerWarning warning;
     ErrorWarning errorWarning(scene.render.warnError);
+    LatticeWarning latticeWarning;
     for (int frame = ranks.rank(); frame < frames; frame += ranks.size()) {
         const auto start = std::chrono::steady_clock::now();
         if (frame > 0) source.seekFrame(frame);  // frame 0's fields are the initial ones
@@ -55,6 +57,7 @@ void renderFrameShare(const Scene& scene, sim::SceneFields& fields, int frames,
         const LoopTiming timing{millisecondsSince(start), renderMilliseconds(result), 0.0};
         warning.check(frame, result);
         errorWarning.check(frame, result);
+        latticeWarning.check(frame, result);
         if (!outputs) openOutputs();
         outputs->write(frame, result,
                        frameReportJson(frame, current, simulated, result, timing, false, Distribution::Frames),

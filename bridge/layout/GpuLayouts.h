@@ -79,7 +79,7 @@
     X(kLatticeOut, 28)          /* buffer LatticeOut { float density[]; }: the same after one step, written */ \
     X(kLatticeProbes, 28)       /* buffer LatticeProbes { float fluence[]; }: the lattice's fluence at its probes (probe pass) */ \
     X(kLatticeTallies, 28)      /* buffer LatticeTallies { vec4 tallies[]; }: per work group, the lattice's ledger (result pass) */ \
-    X(kLatticeGrey, 28)         /* buffer LatticeGrey { uint differ; }: 1 where the channels' media or sources differ (grey pass) */ \
+    X(kLatticeSurvey, 28)       /* buffer LatticeSurvey { GpuLatticeSurvey }: whether the channels differ, the voxels beyond the depth limit (survey pass) */ \
     X(kRawScattered, 29)        /* buffer RawScattered { float scattered[]; }: RGB per cell, W the photons lost to scattering */ \
     X(kMultipleFluence, 30)     /* buffer MultipleFluence { float fluence[]; }: RGB per cell, W/m², light scattered ≥ once */ \
     X(kScatteredPower, 31)      /* buffer ScatteredPower { float scattered[]; }: RGB per cell, W, from the wavefront's fixed-point tallies */ \
@@ -320,6 +320,14 @@ struct GpuWavefrontCounters {
     std::uint32_t unused[2];
 };
 static_assert(sizeof(GpuWavefrontCounters) == 32);
+
+// The lattice's survey pass (shaders/lattice_scattering.comp, pass 3).
+struct GpuLatticeSurvey {
+    std::uint32_t channelsDiffer;  // 1 where the channels' media or sources differ
+    std::uint32_t thickVoxels;     // cells beyond the depth limit (render/stages/LatticeScattering.h)
+    std::uint32_t deepestDepth;    // float bits: the largest optical depth across a voxel among them
+};
+static_assert(sizeof(GpuLatticeSurvey) == 12);
 
 // A photon suspended at the driver's loop cap, to be resumed by the next
 // dispatch (shaders/common/suspended_photons.glsl).

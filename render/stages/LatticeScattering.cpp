@@ -5,8 +5,10 @@
 #include "gl/GlDebug.h"
 #include "gl/GpuMemory.h"
 #include "gl/ShaderLibrary.h"
+#include "shaders/common/cpp_shim.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -24,7 +26,30 @@ int groupCount(const glm::ivec3& resolution) {
     return groups.x * groups.y * groups.z;
 }
 
+// The share of light born in a voxel of extinction σt that leaves its half
+// link unscattered (collide in lattice_scattering.comp), in double.
+double escapeShare(int directions, const glm::dvec3& voxelSize, double sigmaT) {
+    double escape = 0.0;
+    for (int i = 0; i < directions; ++i) {
+        const int d = shader::lattice_link(i, directions);
+        const double length = glm::length(glm::dvec3(shader::lattice_offset(d)) * voxelSize);
+        escape += shader::lattice_weight(d, directions) * std::exp(-0.5 * sigmaT * length);
+    }
+    return escape;
+}
+
 }  // namespace
+
+double latticeDepthLimit(int directions, const glm::dvec3& voxelSize) {
+    const double edge = std::min(voxelSize.x, std::min(voxelSize.y, voxelSize.z));
+    // The escape falls monotonically with σt: bisect on the depth across the shortest edge.
+    double thin = 0.0, thick = 1000.0;
+    for (int step = 0; step < 60; ++step) {
+        const double middle = 0.5 * (thin + thick);
+        (escapeShare(directions, voxelSize, middle / edge) > kMinRetention ? thin : thick) = middle;
+    }
+    return 0.5 * (thin + thick);
+}
 
 LatticeSettings LatticeSettings::of(const TracerDesc& tracer) {
     LatticeSettings settings;
@@ -41,6 +66,8 @@ int LatticeStats::iterations() const {
 }
 
 bool LatticeStats::capped() const { return channels[0].capped || channels[1].capped || channels[2].capped; }
+
+bool LatticeStats::converged() const { return !capped() && depth.thickVoxels == 0; }
 
 double LatticeStats::balanceError() const {
     double worst = 0.0;
@@ -95,9 +122,10 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     step_ = compile(0);
     probe_ = compile(1);
     result_ = compile(2);
-    grey_ = compile(3);
+    survey_ = compile(3);
     if (interfaces) interfacePass_ = compile(4);
-    greyFlag_ = gl::Buffer(sizeof(std::uint32_t));
+    surveyValues_ = gl::Buffer(sizeof(layout::GpuLatticeSurvey));
+    depthLimit_ = latticeDepthLimit(settings.directions, grid.voxelSize());
 }
 
 // Which links cross a sharp surface, once a frame (a mesh may move).
@@ -111,13 +139,18 @@ void LatticeScattering::findInterfaces() {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-bool LatticeScattering::channelsDiffer() {
-    greyFlag_.clearToZero();
-    greyFlag_.bindStorage(layout::kLatticeGrey);
-    grey_.use();
-    grey_.dispatchOverCells(grid_.resolution);
+LatticeScattering::Survey LatticeScattering::survey() {
+    surveyValues_.clearToZero();
+    surveyValues_.bindStorage(layout::kLatticeSurvey);
+    survey_.use();
+    glUniform1f(survey_.uniform("min_retention"), static_cast<float>(kMinRetention));
+    survey_.dispatchOverCells(grid_.resolution);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    return greyFlag_.downloadAs<std::uint32_t>() != 0;
+    const auto values = surveyValues_.downloadAs<layout::GpuLatticeSurvey>();
+    Survey result;
+    result.channelsDiffer = values.channelsDiffer != 0;
+    result.depth = {depthLimit_, values.thickVoxels, static_cast<double>(std::bit_cast<float>(values.deepestDepth))};
+    return result;
 }
 
 LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffer& scatteredPower) {
@@ -127,7 +160,9 @@ LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffe
     fields.bindForTracing();
     if (!surfaces_.empty()) findInterfaces();
     scatteredPower.bindStorage(layout::kRawScattered);
-    stats.grey = !channelsDiffer();
+    const Survey surveyed = survey();
+    stats.grey = !surveyed.channelsDiffer;
+    stats.depth = surveyed.depth;
     if (stats.grey) {
         // The same bits in every channel: solve one, copy its densities, and
         // take the others' fluence and ledger from them.

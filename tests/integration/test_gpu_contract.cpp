@@ -83,7 +83,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"LatticeTallies", {layout::kLatticeTallies, 0, sizeof(glm::vec4)}},
         {"RawScattered", {layout::kRawScattered, 0, sizeof(float)}},
         {"ScatteredPower", {layout::kScatteredPower, 0, sizeof(float)}},
-        {"LatticeGrey", {layout::kLatticeGrey, sizeof(std::uint32_t), 0}},
+        {"LatticeSurvey", {layout::kLatticeSurvey, sizeof(layout::GpuLatticeSurvey), 0}},
         {"LatticeInterfaces", {layout::kLatticeInterfaces, 0, sizeof(glm::uvec4)}},
         // Image space (render/stages/ImageSpace*, CausticPolygons).
         {"SurfacePixels", {layout::kSurfacePixels, 0, sizeof(std::uint32_t)}},

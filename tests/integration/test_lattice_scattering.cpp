@@ -8,7 +8,9 @@
 //   transmittance from the power the lattice lets out of each face, and as
 //   the view pass renders them from its fluence;
 // - its ledger: source = absorbed + escaped at convergence; albedo 1 (no
-//   blow-up), warm starts, the same bits every run.
+//   blow-up), warm starts, the same bits every run;
+// - its depth limit: voxels too thick for its float arithmetic are found,
+//   and a lattice that holds them is never converged.
 #include "bridge/grid/FieldSet.h"
 #include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
@@ -420,6 +422,32 @@ TEST(LatticeScattering, AlbedoOneAndOpaqueVoxelsStayBounded) {
     EXPECT_LT(opaque.reflected, 1.0);
     EXPECT_EQ(opaque.transmitted, 0.0);
     EXPECT_LT(opaque.stats.balanceError(), 1e-4);
+}
+
+// The depth limit (LatticeScattering.h), on slabs of albedo 1, 20 cubic
+// voxels thick. At an optical depth of 40 per voxel the float transfer
+// counts nearly all the light as absorbed and the state stops moving: the
+// probes see no change and the ledger balances, yet the lattice must not be
+// reported converged, and every voxel is counted beyond the limit with its
+// depth. At 10 per voxel, within the limit, it converges as before and lets
+// out all the light to 1e-3.
+TEST(LatticeScattering, VoxelsBeyondTheDepthLimitAreNeverConverged) {
+    EXPECT_NEAR(render::latticeDepthLimit(14, glm::dvec3(0.05)), 13.96, 0.01);
+    EXPECT_NEAR(render::latticeDepthLimit(6, glm::dvec3(0.05)), 16.24, 0.01);
+    EXPECT_NEAR(render::latticeDepthLimit(18, glm::dvec3(0.05)), 13.46, 0.01);
+    const int cells = 20;
+    const SlabResult thick = latticeSlab(40.0 * cells, 1.0, 14, 1e-3, cells);
+    EXPECT_FALSE(thick.stats.capped());  // it stopped: nothing moved
+    EXPECT_LT(thick.reflected + thick.transmitted, 0.01);
+    EXPECT_FALSE(thick.stats.converged());
+    EXPECT_EQ(thick.stats.depth.thickVoxels, static_cast<std::uint64_t>(cells));
+    EXPECT_NEAR(thick.stats.depth.deepest, 40.0, 1e-3);
+    EXPECT_NEAR(thick.stats.depth.limit, 13.96, 0.01);
+
+    const SlabResult thin = latticeSlab(10.0 * cells, 1.0, 14, 1e-3, cells);
+    EXPECT_TRUE(thin.stats.converged());
+    EXPECT_EQ(thin.stats.depth.thickVoxels, 0u);
+    EXPECT_NEAR(thin.reflected + thin.transmitted, 1.0, 1e-3);
 }
 
 // A frame starts from the last one's densities: the same source again is

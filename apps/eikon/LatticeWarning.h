@@ -1,0 +1,24 @@
+// Says on stderr, once a run, when a frame's multiple-scattering lattice
+// holds voxels beyond its depth limit (render/stages/LatticeScattering.h):
+// their light is lost or gained by rounding, the lattice is not converged,
+// and the report's multiple_scattering.depth_limit carries the same words.
+#pragma once
+
+#include "render/graph/FrameRenderer.h"
+
+#include <string>
+
+namespace eikon::app {
+
+// What is wrong and what to change; empty where no voxel is beyond the limit.
+std::string describeDepthLimit(const render::LatticeDepth& depth);
+
+class LatticeWarning {
+public:
+    void check(int frame, const render::FrameResult& result);
+
+private:
+    bool warned_ = false;
+};
+
+}  // namespace eikon::app
