@@ -2,9 +2,7 @@
 
 #include <epoxy/gl.h>
 
-#include <sys/sysinfo.h>
-
-#include <sstream>
+#include <optional>
 #include <utility>
 
 namespace eikon::gl {
@@ -14,19 +12,10 @@ namespace {
 GpuMemoryLimit currentLimit;
 std::uint64_t held = 0;
 
-std::string mebibytes(std::uint64_t bytes) {
-    std::ostringstream text;
-    text.precision(4);
-    text << static_cast<double>(bytes) / (1024.0 * 1024.0) << " MiB";
-    return text.str();
-}
-
-// The machine's memory and swap: more than that, Linux can only promise by
-// overcommitting, and a renderer on the CPU that touches it is killed.
-std::uint64_t systemMemory() {
-    struct sysinfo machine {};
-    if (sysinfo(&machine) != 0) return 0;
-    return (std::uint64_t(machine.totalram) + machine.totalswap) * machine.mem_unit;
+// The GPU's own memory, lowered to EIKON_MEMORY_LIMIT_MB where that is less.
+GpuMemoryLimit lowered(GpuMemoryLimit limit) {
+    const std::optional<MemoryLimit> environment = memoryLimitFromEnvironment();
+    return environment && environment->bytes < limit.bytes ? *environment : limit;
 }
 
 }  // namespace
@@ -37,23 +26,23 @@ GpuMemoryError::GpuMemoryError(std::string keyPath, std::string resource, std::u
 
 GpuMemoryLimit queryGpuMemoryLimit(const std::string& renderer, bool rendersOnCpu) {
     if (rendersOnCpu) {
-        const std::uint64_t memory = systemMemory();
-        if (memory) return {memory, renderer + " renders on the CPU, in the machine's " + mebibytes(memory) +
-                                        " of memory and swap"};
+        const MemoryLimit machine = machineMemoryLimit();
+        if (machine.bytes) return {machine.bytes, renderer + " renders on the CPU, within " + machine.source};
     }
     if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
         GLint kibibytes = 0;
         glGetIntegerv(GL_GPU_MEMORY_INFO_CURRENT_AVAILABLE_VIDMEM_NVX, &kibibytes);
         const std::uint64_t available = std::uint64_t(kibibytes) * 1024;
-        if (available) return {available, renderer + " had " + mebibytes(available) + " free (GL_NVX_gpu_memory_info)"};
+        if (available)
+            return lowered({available, renderer + " had " + mebibytes(available) + " free (GL_NVX_gpu_memory_info)"});
     }
     if (epoxy_has_gl_extension("GL_ATI_meminfo")) {
         GLint free[4] = {};
         glGetIntegerv(GL_TEXTURE_FREE_MEMORY_ATI, free);
         const std::uint64_t available = std::uint64_t(free[0]) * 1024;
-        if (available) return {available, renderer + " had " + mebibytes(available) + " free (GL_ATI_meminfo)"};
+        if (available) return lowered({available, renderer + " had " + mebibytes(available) + " free (GL_ATI_meminfo)"});
     }
-    return {};
+    return memoryLimitFromEnvironment().value_or(GpuMemoryLimit{});
 }
 
 GpuResource gridResource(const std::string& what, int cellsX, int cellsY, int cellsZ) {

@@ -3,14 +3,17 @@
 // refused, with the size asked, the bytes already held and the limit, where
 // the context's memory cannot hold it — the GPU memory still free when the
 // context was made (GL_NVX_gpu_memory_info, GL_ATI_meminfo), or for a
-// renderer on the CPU the machine's memory and swap, which Linux would
-// otherwise overcommit until the process is killed. A 3D texture
+// renderer on the CPU the machine's memory limit (bridge/core/MemoryLimit.h:
+// its memory and swap, which Linux would otherwise overcommit until the
+// process is killed). EIKON_MEMORY_LIMIT_MB lowers either. A 3D texture
 // is also asked of the driver first by a proxy texture, and a creation the
 // driver answers with GL_OUT_OF_MEMORY is refused the same way.
 //
 // Each object names the scene key that sized it ("grid.resolution"), so
 // that `eikon run` can refuse the scene at that key before it writes a file.
 #pragma once
+
+#include "bridge/core/MemoryLimit.h"
 
 #include <cstdint>
 #include <stdexcept>
@@ -42,10 +45,7 @@ struct GpuResource {
 GpuResource gridResource(const std::string& what, int cellsX, int cellsY, int cellsZ);
 
 // The memory the current context may take; 0: unknown (no limit is applied).
-struct GpuMemoryLimit {
-    std::uint64_t bytes = 0;
-    std::string source;  // how it was found, for messages
-};
+using GpuMemoryLimit = MemoryLimit;
 // Reads the limit of the current context (called once it is made current).
 GpuMemoryLimit queryGpuMemoryLimit(const std::string& renderer, bool rendersOnCpu);
 void setGpuMemoryLimit(const GpuMemoryLimit& limit);

@@ -9,6 +9,7 @@
 #include "io/scene/SceneParser.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMemory.h"
+#include "render/graph/MemoryEstimate.h"
 #include "render/stages/PhotonStage.h"
 #include "sim/SceneFields.h"
 
@@ -79,6 +80,7 @@ int runCommand(const RunOptions& options) {
             scene.exports.vtk.enabled = true;
         }
         if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
+        render::requireMemoryFits(scene);  // before the fields, the GL context or anything the scene sizes
         fields = std::make_unique<sim::SceneFields>(scene);
         distribution = chooseDistribution(options, scene, *fields, ranks);
         outDir = options.outDir.empty()

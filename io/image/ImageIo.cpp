@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <stdexcept>
+#include <system_error>
 #include <string>
 
 namespace eikon::io {
@@ -100,6 +101,15 @@ FloatImage readFloatImage(const std::filesystem::path& path) {
     FloatImage image;
     image.rgba = loadRgba<float>(path, bytes, image.width, image.height, kExpected, stbi_loadf_from_memory);
     return image;
+}
+
+std::uint64_t floatImageDecodingBytes(const std::filesystem::path& path) {
+    int width = 0, height = 0, channels = 0;
+    std::error_code error;
+    const std::uintmax_t fileBytes = std::filesystem::file_size(path, error);
+    if (error || !stbi_info(path.c_str(), &width, &height, &channels)) return 0;
+    const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
+    return fileBytes + 2 * pixels * 4 * sizeof(float);
 }
 
 Rgba8Image readImage(const std::filesystem::path& path) {

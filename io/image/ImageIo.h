@@ -34,4 +34,10 @@ void writeHdr(const std::filesystem::path& path, int width, int height, const st
 // floats. Throws InputError naming the path when it cannot be read.
 FloatImage readFloatImage(const std::filesystem::path& path);
 
+// The memory readFloatImage takes for this file at its peak — the file's
+// bytes, stb_image's float RGBA decoding and the copy returned — from the
+// image's header alone; 0 where the header does not say (readFloatImage
+// then says what is wrong).
+std::uint64_t floatImageDecodingBytes(const std::filesystem::path& path);
+
 }  // namespace eikon::io

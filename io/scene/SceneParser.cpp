@@ -1,6 +1,7 @@
 #include "io/scene/SceneParser.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/core/MemoryLimit.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "io/files/FileBytes.h"
 #include "io/image/ImageIo.h"
@@ -298,6 +299,10 @@ EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& scene
         if (!std::filesystem::is_regular_file(environment.path))
             pathNode.fail("an existing .hdr file (relative paths start at the scene file's folder)",
                           "\"" + environment.path + "\", which does not exist");
+        const MemoryLimit limit = machineMemoryLimit();  // checked before the image is decoded
+        const std::uint64_t decoding = io::floatImageDecodingBytes(environment.path);
+        if (limit.bytes && decoding > limit.bytes)
+            pathNode.fail("an image whose decoding fits " + limit.source, mebibytes(decoding) + " to decode");
         environment.image = std::make_shared<const FloatImage>(io::readFloatImage(environment.path));
         if (auto value = fields.optional("intensity")) environment.intensity = value->number(kNonNegative);
         if (auto value = fields.optional("rotation_deg")) environment.rotationDeg = value->number();

@@ -282,6 +282,7 @@ struct Walk {
     Cursor& cursor;
     TreeShape shape;
     std::vector<Mask> leafMasks;  // in the order readBuffers visits them
+    std::uint64_t internalNodes[3] = {};  // per level (1: 16³, 2: 32³)
 
     // InternalNode<ChildT, Log2>::readTopology (format >= 222); level 2 is
     // the 32³ node, 1 the 16³ node, 0 a leaf (8³).
@@ -291,6 +292,7 @@ struct Walk {
             return;
         }
         const std::size_t values = level == 2 ? 32768 : 4096;
+        ++internalNodes[level];
         const Mask childMask = cursor.take(values / 8, "a node's child mask");
         const Mask valueMask = cursor.take(values / 8, "a node's value mask");
         checkCompressedValues(cursor, shape, values, valueMask);
@@ -413,7 +415,13 @@ VdbFileLayout checkVdbHeader(std::string_view bytes, const std::string& fileName
     return layout;
 }
 
-void checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName) {
+std::uint64_t VdbTreeSize::memoryBytes() const {
+    const std::uint64_t slot = std::max<std::uint64_t>(8, (valueBytes + 7) / 8 * 8);
+    return leaves * (512 * valueBytes + 512 / 8 + 12 + 8) + lowerNodes * (4096 * slot + 2 * 4096 / 8 + 12) +
+           upperNodes * (32768 * slot + 2 * 32768 / 8 + 12);
+}
+
+VdbTreeSize checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName) {
     EIKON_CHECK(grid.endPos <= bytes.size() && grid.gridPos <= grid.blockPos && grid.blockPos <= grid.endPos);
     Cursor cursor(bytes, grid.gridPos, grid.blockPos, fileName);
     const std::string where = "grid \"" + grid.name + "\"";
@@ -436,10 +444,12 @@ void checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::s
     walk.root();
     cursor.expectAt(grid.blockPos, "the tree topology");
 
+    const VdbTreeSize size{walk.leafMasks.size(), walk.internalNodes[1], walk.internalNodes[2], valueBytes};
     Cursor blocks(bytes, grid.blockPos, grid.endPos, fileName);
     Walk leaves{blocks, walk.shape, std::move(walk.leafMasks)};
     leaves.buffers();
     blocks.expectAt(grid.endPos, "the leaf buffers");
+    return size;
 }
 
 }  // namespace eikon::io

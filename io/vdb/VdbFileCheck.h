@@ -40,7 +40,18 @@ struct VdbFileLayout {
 // Checks the header, the file metadata and the table of grids.
 VdbFileLayout checkVdbHeader(std::string_view bytes, const std::string& fileName);
 
+// A grid's tree as checkVdbGrid walked it: its nodes, which OpenVDB
+// allocates whole however few of their voxels are active.
+struct VdbTreeSize {
+    std::uint64_t leaves = 0, lowerNodes = 0, upperNodes = 0;  // 8³, 16³ and 32³ nodes
+    std::size_t valueBytes = 0;  // a value in memory: 4 (float; half floats are read as float) or 12 (vec3s)
+    // OpenVDB's node sizes: a leaf's values, value mask, origin and buffer
+    // pointer; an internal node's table of child pointers or tile values (a
+    // union of at least 8 bytes each), its two masks and origin.
+    std::uint64_t memoryBytes() const;
+};
+
 // Walks one grid (float or vec3s, not an instance) from gridPos to endPos.
-void checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName);
+VdbTreeSize checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName);
 
 }  // namespace eikon::io

@@ -1,6 +1,7 @@
 #include "io/vdb/VdbVolumeFile.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/core/MemoryLimit.h"
 #include "io/vdb/VdbFileCheck.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -142,7 +143,15 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     const std::string wanted = components == 1 ? "float" : "vec3s";
     if (entry->valueType != wanted)
         throw InputError(where, "a " + wanted + " grid", "a grid of type \"" + entry->treeType + "\"");
-    checkVdbGrid(grids_->bytes, *entry, path_.string());
+    // OpenVDB allocates every node of the tree whole: a sparse file of
+    // scattered voxels holds a few bytes for each 2 KiB leaf.
+    const VdbTreeSize tree = checkVdbGrid(grids_->bytes, *entry, path_.string());
+    const MemoryLimit limit = machineMemoryLimit();
+    if (limit.bytes && grids_->bytes.size() + tree.memoryBytes() > limit.bytes)
+        throw InputError(where, "a grid whose tree fits " + limit.source + " as OpenVDB reads it (volume.path)",
+                         std::to_string(tree.leaves) + " leaves and " +
+                             std::to_string(tree.lowerNodes + tree.upperNodes) + " internal nodes, " +
+                             mebibytes(tree.memoryBytes()) + " beside the file's " + mebibytes(grids_->bytes.size()));
 
     openvdb::GridBase::Ptr base;
     try {

@@ -1,15 +1,26 @@
-// What `eikon run` says where a scene goes past what eikon can compute: a
-// multiple-scattering lattice whose voxels are too thick for its float
-// arithmetic (render/stages/LatticeScattering.h, the depth limit).
+// What `eikon run` says where a scene goes past what eikon can compute or
+// hold: a multiple-scattering lattice whose voxels are too thick for its
+// float arithmetic (render/stages/LatticeScattering.h, the depth limit), and
+// documented sizes that need more memory than the machine's limit
+// (bridge/core/MemoryLimit.h, render/graph/MemoryEstimate.h), lowered here
+// by EIKON_MEMORY_LIMIT_MB: refused before the big allocation.
 #include "tests/integration/CliRun.h"
+#include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -99,6 +110,156 @@ TEST_F(CliLimits, LatticeBeyondItsDepthLimitIsWarnedAndNotConverged) {
     EXPECT_TRUE(lattice.at("converged").get<bool>()) << lattice;
     EXPECT_EQ(lattice.at("depth_limit").at("voxels_beyond").get<int>(), 0) << lattice;
     EXPECT_FALSE(lattice.at("depth_limit").contains("warning")) << lattice;
+}
+
+// ---- Memory -----------------------------------------------------------------
+
+struct MeasuredRun {
+    int exitCode = -1;
+    std::string output;          // stdout and stderr together
+    long peakResidentKiB = 0;    // the process's peak resident set (wait4)
+};
+
+// `eikon run` with EIKON_MEMORY_LIMIT_MB set, its peak memory measured.
+MeasuredRun runUnderLimit(const std::vector<std::string>& runArguments, const std::string& limitMiB) {
+    std::vector<std::string> arguments{EIKON_EXECUTABLE, "run"};
+    arguments.insert(arguments.end(), runArguments.begin(), runArguments.end());
+    int ends[2];
+    EXPECT_EQ(pipe(ends), 0);
+    const pid_t child = fork();
+    if (child == 0) {
+        setenv("EIKON_MEMORY_LIMIT_MB", limitMiB.c_str(), 1);
+        dup2(ends[1], STDOUT_FILENO);
+        dup2(ends[1], STDERR_FILENO);
+        close(ends[0]);
+        std::vector<char*> argv;
+        for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    close(ends[1]);
+    MeasuredRun run;
+    char buffer[4096];
+    for (ssize_t got; (got = read(ends[0], buffer, sizeof buffer)) > 0;) run.output.append(buffer, got);
+    close(ends[0]);
+    int status = 0;
+    rusage usage{};
+    wait4(child, &status, 0, &usage);
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.peakResidentKiB = usage.ru_maxrss;
+    return run;
+}
+
+// A glass sphere over a floor, 16³ cells; `renderKeys` are added to its render section.
+std::string sphereScene(const std::string& renderKeys = "") {
+    return R"({
+  "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
+  "medium": {"index": 1.0},
+  "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5}],
+  "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
+  "receivers": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 1, 0], "size": 1.0, "resolution": 32}],
+  "camera": {"position": [0, 1, 2], "target": [0, 0.3, 0], "up": [0, 1, 0], "fov_deg": 45},
+  "render": {"photons": 4096, "width": 32, "height": 24, "seed": 3, "error_estimate": false)" +
+           renderKeys + "}\n}";
+}
+
+// A Radiance .hdr of width × height pixels of radiance 1, run-length
+// encoded (four channels of runs of at most 127 bytes a scanline): a few
+// MiB on disk for an image whose float decoding takes gigabytes.
+void writeFlatHdr(const fs::path& path, int width, int height) {
+    std::ofstream out(path, std::ios::binary);
+    out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " << height << " +X " << width << "\n";
+    const unsigned char rgbe[4] = {128, 128, 128, 129};  // 0.5·2^(129−128) = 1
+    std::string scanline = {2, 2, static_cast<char>(width >> 8), static_cast<char>(width & 255)};
+    for (unsigned char value : rgbe)
+        for (int left = width; left > 0; left -= 127) {
+            scanline += static_cast<char>(128 + std::min(left, 127));
+            scanline += static_cast<char>(value);
+        }
+    for (int row = 0; row < height; ++row) out << scanline;
+}
+
+// The refusal of a size past the limit: exit code 2, one line naming the
+// scene file, the key, the bytes needed and the limit, no output folder,
+// and a peak memory of the process far below what the old path allocated
+// (gigabytes) before it refused or was killed.
+void expectRefusedEarly(const MeasuredRun& run, const std::string& key, const fs::path& out, long boundKiB) {
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+    EXPECT_NE(run.output.find(key), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(" MiB (EIKON_MEMORY_LIMIT_MB)"), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_LT(run.peakResidentKiB, boundKiB) << run.output;
+}
+
+// Documented sizes that cost gigabytes, under a limit of 1 GiB: a 512³
+// grid (4.2 GB of fields before the driver refused its octree), caustic
+// maps of 4096² texels (4.7 GB before GL_OUT_OF_MEMORY), an 8192²
+// environment map (4.4 GB decoded and uploaded): each refused from the
+// parsed scene, the process under 256 MiB. The scene itself still runs
+// under that limit.
+TEST_F(CliLimits, SizesPastTheMemoryLimitAreRefusedBeforeTheyAreAllocated) {
+    const std::string scene = writeScene("sphere.json", sphereScene());
+    const fs::path out = dir_ / "out";
+    const long bound = 256 * 1024;
+
+    const MeasuredRun grid = runUnderLimit({scene, "--out", out.string(), "--quiet", "--set",
+                                            "grid.resolution=[512,512,512]"}, "1024");
+    expectRefusedEarly(grid, "sphere.json: grid.resolution: expected sizes whose memory fits 1024 MiB", out, bound);
+    EXPECT_NE(grid.output.find("the fields over 512×512×512 cells, at least "), std::string::npos) << grid.output;
+
+    const MeasuredRun caustics = runUnderLimit({scene, "--out", out.string(), "--quiet", "--set",
+                                                "render.method=\"image_space\"", "--set",
+                                                "render.caustic_map_texels=4096"}, "1024");
+    expectRefusedEarly(caustics, "sphere.json: render.caustic_map_texels: expected sizes whose memory fits", out,
+                       bound);
+    EXPECT_NE(caustics.output.find("the caustic maps of 4096² texels"), std::string::npos) << caustics.output;
+
+    writeFlatHdr(dir_ / "sky.hdr", 8192, 8192);
+    const std::string environment = writeScene(
+        "environment.json", sphereScene(R"(, "environment": {"type": "hdr", "path": "sky.hdr"})"));
+    const MeasuredRun sky = runUnderLimit({environment, "--out", out.string(), "--quiet"}, "1024");
+    expectRefusedEarly(sky, "environment.json: render.environment.path: expected an image whose decoding fits 1024 MiB",
+                       out, bound);
+
+    const MeasuredRun fits = runUnderLimit({scene, "--out", out.string(), "--quiet"}, "1024");
+    EXPECT_EQ(fits.exitCode, 0) << fits.output;
+}
+
+// A sparse OpenVDB file of 1000 voxels, each in nodes of its own: a few MiB
+// on disk, about 300 MiB as OpenVDB reads it (the campaign's 194 MB file
+// scattered so took 6.1 GB). Under a limit of 128 MiB it is refused as the
+// grid is about to be read, naming the grid and its nodes; the process stays
+// under 96 MiB.
+TEST_F(CliLimits, ASparseVolumeWhoseTreePassesTheLimitIsRefusedBeforeItIsRead) {
+    eikon::test::writeScatteredVdbFile(dir_ / "scattered.vdb", "density", 10);
+    std::string text = sphereScene();
+    text.insert(text.rfind('}'), R"(, "volume": {"path": "scattered.vdb", "density_extinction": 0.5})");
+    const std::string volume = writeScene("volume.json", text);
+    const fs::path out = dir_ / "out";
+    const MeasuredRun run = runUnderLimit({volume, "--out", out.string(), "--quiet"}, "128");
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find("scattered.vdb: grid \"density\": expected a grid whose tree fits 128 MiB"),
+              std::string::npos)
+        << run.output;
+    EXPECT_NE(run.output.find("1000 leaves and 2000 internal nodes"), std::string::npos) << run.output;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_LT(run.peakResidentKiB, 96 * 1024) << run.output;
+}
+
+// EIKON_MEMORY_LIMIT_MB that is not a whole number of MiB is an error of the
+// environment (exit code 1), named.
+TEST_F(CliLimits, AMalformedMemoryLimitIsNamed) {
+    const std::string scene = writeScene("sphere.json", sphereScene());
+    for (const std::string limit : {"lots", "0", "-5", "12x"}) {
+        const MeasuredRun run = runUnderLimit({scene, "--out", (dir_ / "out").string(), "--quiet"}, limit);
+        EXPECT_EQ(run.exitCode, 1) << limit << ": " << run.output;
+        EXPECT_NE(run.output.find("EIKON_MEMORY_LIMIT_MB: expected a whole number of MiB of at least 1, found \"" +
+                                  limit + "\""),
+                  std::string::npos)
+            << run.output;
+    }
 }
 
 }  // namespace

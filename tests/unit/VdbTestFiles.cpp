@@ -48,4 +48,17 @@ void writeVdbFile(const std::filesystem::path& path, const std::vector<VdbTestGr
     file.close();
 }
 
+void writeScatteredVdbFile(const std::filesystem::path& path, const std::string& name, int perAxis) {
+    openvdb::initialize();
+    auto grid = openvdb::FloatGrid::create();
+    grid->setName(name);
+    auto accessor = grid->getAccessor();
+    for (int k = 0; k < perAxis; ++k)
+        for (int j = 0; j < perAxis; ++j)
+            for (int i = 0; i < perAxis; ++i) accessor.setValue(openvdb::Coord(4096 * i, 4096 * j, 4096 * k), 1.0f);
+    openvdb::io::File file(path.string());
+    file.write({grid});
+    file.close();
+}
+
 }  // namespace eikon::test

@@ -25,4 +25,10 @@ struct VdbTestGrid {
 void writeVdbFile(const std::filesystem::path& path, const std::vector<VdbTestGrid>& grids, double voxel,
                   double lo, double hi, unsigned compression = 0x3);
 
+// Writes a .vdb of one float grid `name`, voxel size 1, with perAxis³
+// active voxels of value 1 spaced 4096 apart: each in a 32³ node, a 16³
+// node and a leaf of its own, so that OpenVDB reading it allocates about
+// 300 KiB a voxel from a file of a few KiB a voxel.
+void writeScatteredVdbFile(const std::filesystem::path& path, const std::string& name, int perAxis);
+
 }  // namespace eikon::test

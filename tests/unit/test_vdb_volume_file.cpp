@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <openvdb/io/File.h>
+
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -100,6 +102,25 @@ TEST(VdbVolumeFile, ChecksAcceptEveryCompressionOpenVdbWrites) {
         ASSERT_EQ(layout.grids.size(), 4u);
         for (const VdbGridEntry& grid : layout.grids) EXPECT_NO_THROW(checkVdbGrid(bytes, grid, path.string())) << grid.name;
         expectLinearSamples(VdbVolumeFile(path), (compression & 1) ? 3.5 / 2048 : 1e-5, glm::dvec3(0.0));
+    }
+}
+
+// The tree size the walk reports is what OpenVDB allocates reading the grid
+// (its own memUsage) within 10%: dense grids of float and vec3s values, and
+// a file of 64 voxels each in nodes of its own (about 300 KiB a voxel).
+TEST(VdbVolumeFile, TheWalkSizesTheTreeOpenVdbReads) {
+    const fs::path dense = tempPath("tree_dense.vdb"), scattered = tempPath("tree_scattered.vdb");
+    test::writeVdbFile(dense, linearGrids(true), 0.05, -0.6, 0.6);
+    test::writeScatteredVdbFile(scattered, "density", 4);
+    for (const fs::path& path : {dense, scattered}) {
+        const std::string bytes = readAll(path);
+        openvdb::io::File file(path.string());
+        file.open();
+        for (const VdbGridEntry& grid : checkVdbHeader(bytes, path.string()).grids) {
+            const VdbTreeSize size = checkVdbGrid(bytes, grid, path.string());
+            const double openVdb = static_cast<double>(file.readGrid(grid.name)->memUsage());
+            EXPECT_NEAR(static_cast<double>(size.memoryBytes()) / openVdb, 1.0, 0.1) << path << " " << grid.name;
+        }
     }
 }
 
