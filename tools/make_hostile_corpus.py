@@ -56,22 +56,26 @@ def scene_text(scene):
     return json.dumps(scene, indent=1)
 
 
-def add_case(name, text, exit_code, message="", overrides=()):
-    """One case: its scene written as text (bytes or str) under `name`.json."""
+def add_case(name, text, exit_code, message="", overrides=(), env=None):
+    """One case: its scene written as text (bytes or str) under `name`.json;
+    `env`: environment variables eikon runs with."""
     if not re.fullmatch(r"[A-Za-z0-9_]+", name):
         raise ValueError(name + ": a case's name is letters, digits and '_' (it names a test)")
     path = SCENES / (name + ".json")
     path.write_bytes(text if isinstance(text, bytes) else text.encode())
     if exit_code == 2 and not message:
         raise ValueError(name + ": a refusal needs the text its message must hold")
-    cases.append({"name": name, "scene": "scenes/" + path.name, "set": list(overrides), "exit": exit_code,
-                  "message": message})
+    case = {"name": name, "scene": "scenes/" + path.name, "set": list(overrides), "exit": exit_code,
+            "message": message}
+    if env:
+        case["env"] = env
+    cases.append(case)
 
 
-def add_scene_case(name, scene, exit_code, message_path="", overrides=()):
+def add_scene_case(name, scene, exit_code, message_path="", overrides=(), env=None):
     """A scene case whose refusal names this scene's file and `message_path`."""
     message = f"{name}.json: {message_path}" if exit_code == 2 and message_path else ""
-    add_case(name, scene_text(scene), exit_code, message, overrides)
+    add_case(name, scene_text(scene), exit_code, message, overrides, env)
 
 
 def leaves(node, path=""):
@@ -535,6 +539,44 @@ def vdb_cases(eikon, kept):
 FOUND = HOSTILE / "found"  # committed as found (tests/fuzz), never rewritten here
 
 
+# --- sizes past the memory limit, and past what the lattice computes ----------
+
+
+def memory_cases():
+    """Documented sizes whose memory passes a limit lowered by
+    EIKON_MEMORY_LIMIT_MB (docs/scene-format.md, Memory): refused from the
+    parsed scene, naming the size's key, before anything is allocated."""
+    limit = {"EIKON_MEMORY_LIMIT_MB": "256"}
+    clear = copy.deepcopy(BASE)
+    clear["medium"] = {"index": 1.0}  # nothing image space would drop
+    add_scene_case("memory_grid_512", BASE, 2, "grid.resolution", ["grid.resolution=[512,512,512]"], limit)
+    add_scene_case("memory_receiver_4096", BASE, 2, "receivers[0].resolution", ["receivers.0.resolution=4096"], limit)
+    add_scene_case("memory_image_16384", BASE, 2, "render.width × render.height",
+                   ["render.width=16384", "render.height=16384"], limit)
+    add_scene_case("memory_caustic_maps_4096", clear, 2, "render.caustic_map_texels",
+                   ['render.method="image_space"', "render.caustic_map_texels=4096"], limit)
+    add_scene_case("memory_wavefront_patches", BASE, 2, "tracer.wavefront.max_patches",
+                   ['tracer.estimator="wavefront"', "tracer.wavefront.max_patches=16777216"], limit)
+    (FILES / "images" / "sky_4096.hdr").write_bytes(hdr_flat_rle(4096, 4096))
+    add_scene_case("memory_environment_4096", environment_scene("sky_4096.hdr"), 2, "render.environment.path",
+                   env=limit)
+    add_scene_case("memory_within_the_limit", BASE, 0, env=limit)
+    # Voxels of albedo 1 forty optical depths thick: the lattice runs, says
+    # it is not converged and warns.
+    thick = copy.deepcopy(clear)
+    thick["medium"] = {"index": 1.0, "extinction": 640, "scattering": 640}
+    thick["tracer"]["multiple_scattering"] = "lbm"
+    add_scene_case("lattice_albedo_one_beyond_its_depth_limit", thick, 0)
+
+
+def hdr_flat_rle(width, height):
+    """An image of radiance 1 run-length encoded: a few bytes a scanline."""
+    out = hdr_header(width, height)
+    runs = b"".join(bytes((128 + min(127, width - start), value))
+                    for value in rgbe(1, 1, 1) for start in range(0, width, 127))
+    return out + (bytes((2, 2, width >> 8, width & 255)) + runs) * height
+
+
 def found_cases():
     """Each file the fuzzers found a crash, hang or leak with: refused, naming it."""
     for path in sorted(FOUND.iterdir()):
@@ -574,6 +616,7 @@ def main():
     mesh_cases()
     image_cases()
     vdb_cases(arguments.eikon, kept_vdb)
+    memory_cases()
     found_cases()
     with open(HOSTILE / "cases.jsonl", "w") as out:
         for case in cases:

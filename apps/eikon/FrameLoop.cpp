@@ -7,6 +7,7 @@
 #include "apps/eikon/LatticeWarning.h"
 #include "apps/eikon/PowerWarning.h"
 #include "apps/eikon/Ranks.h"
+#include "apps/eikon/WavefrontCostWarning.h"
 #include "bridge/grid/FieldViews.h"
 #include "bridge/scene/ImageSpaceScope.h"
 
@@ -52,12 +53,16 @@ nlohmann::json photonsJson(const render::PhotonStats& p) {
             {"max_invariant_error", p.maxInvariantError},
             {"mean_invariant_error", p.meanInvariantError},
             {"resumed", {{"photons", p.photonsResumed}, {"dispatches", p.resumeDispatches}}}};
-    if (p.byWavefront)
+    if (p.byWavefront) {
         json["wavefront"] = {{"patches", p.wavefront.patches},
                              {"splits", p.wavefront.splits},
                              {"patches_at_limit", p.wavefront.atLimit},
                              {"rays", p.wavefront.rays},
-                             {"tubes", p.wavefront.tubes}};
+                             {"tubes", p.wavefront.tubes},
+                             {"start_patches", p.wavefront.startPatches}};
+        const std::string warning = describeWavefrontStart(p.wavefront.startPatches);
+        if (!warning.empty()) json["wavefront"]["cost_warning"] = warning;
+    }
     return json;
 }
 
@@ -240,6 +245,7 @@ void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, const O
     if (Ranks::world().first() && scene.render.method == RenderDesc::Method::ImageSpace &&
         !imageSpaceOmissions(scene).empty())
         std::cerr << "eikon: warning: " << describeImageSpaceOmissions(scene) << "\n";
+    if (Ranks::world().first()) warnWavefrontStart(scene, fields.fields().hasScattering());
     if (options.distribution == Distribution::Frames)
         renderFrameShare(scene, fields, frames, openOutput, progress, options.outputRoot);
     else

@@ -24,6 +24,10 @@ StageReport runStage(const char* name, bool needed, Work&& work) {
 
 }  // namespace
 
+bool tracesLight(const Scene& scene, bool scatters) {
+    return !scene.receivers.empty() || scatters || scene.tracer.storeFluence;
+}
+
 FrameRenderer::FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options)
     : FrameRenderer(scene, hostUpload(fields), nullptr, options) {}
 
@@ -50,8 +54,7 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
                                                               fields_.hasEmission());
     // Photons light receivers and in-scattering; a scene with neither has no
     // photon stage unless the caller asks for the photons' tallies.
-    const bool photonsWanted =
-        !scene.receivers.empty() || fields_.hasScattering() || scene.tracer.storeFluence || options.tracePhotons;
+    const bool photonsWanted = tracesLight(scene, fields_.hasScattering()) || options.tracePhotons;
     if (photonsWanted)
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
     // The lattice diffuses what the photons scattered, on the share that holds the whole pass.

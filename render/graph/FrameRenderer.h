@@ -76,6 +76,10 @@ struct RendererOptions {
     bool temporalMean = true;
 };
 
+// Whether a scene's frames trace light (photons or the wavefront): to light
+// receivers or in-scattering, or to keep the fluence it asks for.
+bool tracesLight(const Scene& scene, bool scatters);
+
 class FrameRenderer {
 public:
     FrameRenderer(const Scene& scene, const FieldSet& fields, RendererOptions options = {});

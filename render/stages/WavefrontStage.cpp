@@ -3,6 +3,8 @@
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/GlDebug.h"
+#include "render/stages/PhotonEmission.h"
+#include "render/stages/SharpSurfaceBuffer.h"
 
 #include <algorithm>
 #include <string>
@@ -34,6 +36,27 @@ unsigned levelCapacity(long long maxPatches) {
 unsigned emissionFaces(const layout::GpuEmitter& emitter) {
     const bool cone = emitter.origin.w == 0.0f;
     return cone && emitter.axis.w < 0.5f ? 6u : 1u;
+}
+
+int wavefrontBranches(const TracerDesc::Wavefront& settings, bool sharpSurfaces) {
+    return sharpSurfaces ? settings.reflections : 0;
+}
+
+std::uint64_t wavefrontStartPatches(const TracerDesc::Wavefront& settings, bool dispersive,
+                                    const std::vector<unsigned>& emissionFaces, bool sharpSurfaces) {
+    const std::uint64_t cells = std::uint64_t(settings.gridCells) * std::uint64_t(settings.gridCells);
+    const std::uint64_t wavefronts = (dispersive ? 3 : 1) * std::uint64_t(1 + wavefrontBranches(settings, sharpSurfaces));
+    std::uint64_t faces = 0;
+    for (const unsigned emitterFaces : emissionFaces) faces += emitterFaces;
+    return faces * cells * 2 * wavefronts;
+}
+
+std::uint64_t wavefrontStartPatches(const Scene& scene) {
+    std::vector<unsigned> faces;
+    for (const layout::GpuEmitter& emitter : buildEmitters(scene.lights, emissionRegion(scene), scene.render.photons))
+        faces.push_back(emissionFaces(emitter));
+    return wavefrontStartPatches(scene.tracer.wavefront, scene.tracer.dispersive(), faces,
+                                 !buildSharpSurfaces(scene).empty());
 }
 
 WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines, bool storesFluence)
@@ -112,14 +135,15 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     }
 
     const int channels = dispersive_ ? 3 : 1;
-    const int branches = inputs.sharpSurfaceCount > 0 ? settings_.reflections : 0;
+    const int branches = wavefrontBranches(settings_, inputs.sharpSurfaceCount > 0);
     for (unsigned emitter = 0; emitter < inputs.emissionFaces.size(); ++emitter)
         for (int channel = 0; channel < channels; ++channel)
             for (int branch = -1; branch < branches; ++branch)
                 traceWavefront(emitter, inputs.emissionFaces[emitter], dispersive_ ? channel : -1, branch, inputs.share);
     gl::checkpoint("wavefront stage");
     const auto counters = counters_.downloadAs<layout::GpuWavefrontCounters>();
-    return {counters.finished, counters.splits, counters.atLimit, counters.rays, counters.tubes};
+    return {counters.finished, counters.splits, counters.atLimit, counters.rays, counters.tubes,
+            wavefrontStartPatches(settings_, dispersive_, inputs.emissionFaces, inputs.sharpSurfaceCount > 0)};
 }
 
 }  // namespace eikon::render

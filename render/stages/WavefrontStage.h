@@ -31,6 +31,7 @@ struct WavefrontCounts {
     std::uint64_t atLimit = 0;  // finished though they wanted to split (depth or count limit)
     std::uint64_t rays = 0;     // rays traced (patch corners)
     std::uint64_t tubes = 0;    // tube axes traced: fluence in the grid
+    std::uint64_t startPatches = 0;  // seeded at depth 0 (wavefrontStartPatches)
 };
 
 // The units of the wavefront's fixed-point fluence tallies
@@ -59,6 +60,19 @@ struct WavefrontInputs {
 // 60° wide, whose gnomonic square stays well shaped; six, the cube about the
 // light, for a wider one.
 unsigned emissionFaces(const layout::GpuEmitter& emitter);
+
+// The reflected branches a frame traces besides each main wavefront:
+// tracer.wavefront.reflections where there are sharp surfaces.
+int wavefrontBranches(const TracerDesc::Wavefront& settings, bool sharpSurfaces);
+
+// The patches a frame's wavefronts start with, whatever they refine to: each
+// emitter face's grid_cells² cells of two patches, in the main wavefront and
+// each branch, per channel where the medium disperses. The first cost of a
+// wavefront pass, known before it runs.
+std::uint64_t wavefrontStartPatches(const TracerDesc::Wavefront& settings, bool dispersive,
+                                    const std::vector<unsigned>& emissionFaces, bool sharpSurfaces);
+// The same for a scene, its emitters as the light pass builds them.
+std::uint64_t wavefrontStartPatches(const Scene& scene);
 
 class WavefrontStage {
 public:

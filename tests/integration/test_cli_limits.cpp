@@ -262,4 +262,35 @@ TEST_F(CliLimits, AMalformedMemoryLimitIsNamed) {
     }
 }
 
+// ---- Cost -------------------------------------------------------------------
+
+// A wavefront of grid_cells 512 starts with over a million patches a frame
+// (512² cells of two, in the main wavefront and the glass sphere's reflected
+// branch): said once on stderr before the run, and in each frame's report
+// beside its start_patches; the default 64 starts with 16 384, unremarked.
+TEST_F(CliLimits, AWavefrontThatStartsWithAMillionPatchesIsWarnedOfItsCost) {
+    const std::string scene = writeScene("sphere.json", sphereScene());
+    const fs::path out = dir_ / "out";
+    const Outcome costly = runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet" +
+                                    " --set 'tracer.estimator=\"wavefront\"' --set tracer.wavefront.grid_cells=512");
+    ASSERT_EQ(costly.exitCode, 0) << costly.output;
+    EXPECT_EQ(count(costly.output, "eikon: warning:"), 1) << costly.output;
+    EXPECT_NE(costly.output.find("the wavefronts start with 1.05 million patches a frame (tracer.wavefront.grid_cells)"),
+              std::string::npos)
+        << costly.output;
+    for (const nlohmann::json& line : reportLines(out)) {
+        const nlohmann::json& wavefront = line.at("photons").at("wavefront");
+        EXPECT_EQ(wavefront.at("start_patches").get<long long>(), 512 * 512 * 2 * 2) << wavefront;
+        EXPECT_NE(wavefront.at("cost_warning").get<std::string>().find("1.05 million patches"), std::string::npos);
+    }
+
+    const Outcome usual = runEikon("run " + scene + " --out " + (dir_ / "usual").string() + " --quiet" +
+                                   " --set 'tracer.estimator=\"wavefront\"'");
+    ASSERT_EQ(usual.exitCode, 0) << usual.output;
+    EXPECT_EQ(count(usual.output, "eikon: warning:"), 0) << usual.output;
+    const nlohmann::json wavefront = reportLines(dir_ / "usual").at(0).at("photons").at("wavefront");
+    EXPECT_EQ(wavefront.at("start_patches").get<long long>(), 64 * 64 * 2 * 2) << wavefront;
+    EXPECT_FALSE(wavefront.contains("cost_warning")) << wavefront;
+}
+
 }  // namespace

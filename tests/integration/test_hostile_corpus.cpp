@@ -13,9 +13,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -30,6 +32,7 @@ struct HostileCase {
     std::string name, scene, message;
     std::vector<std::string> overrides;
     int exit = 0;  // 0 runs, 2 is refused, -1 either (a flipped byte that may leave a valid file)
+    std::map<std::string, std::string> environment;  // variables eikon runs with (EIKON_MEMORY_LIMIT_MB)
 };
 
 void PrintTo(const HostileCase& hostile, std::ostream* out) { *out << hostile.name; }
@@ -39,7 +42,8 @@ std::vector<HostileCase> loadCases() {
     std::ifstream lines(kCorpus / "cases.jsonl");
     for (std::string line; std::getline(lines, line);) {
         const nlohmann::json entry = nlohmann::json::parse(line);
-        cases.push_back({entry.at("name"), entry.at("scene"), entry.at("message"), entry.at("set"), entry.at("exit")});
+        cases.push_back({entry.at("name"), entry.at("scene"), entry.at("message"), entry.at("set"), entry.at("exit"),
+                         entry.value("env", std::map<std::string, std::string>{})});
     }
     return cases;
 }
@@ -56,12 +60,14 @@ struct Outcome {
 };
 
 // Runs the command without a shell (overrides hold quotes and long values),
-// killing it when it outlives `deadline`.
-Outcome runWithDeadline(const std::vector<std::string>& arguments, std::chrono::seconds deadline) {
+// with `environment` added, killing it when it outlives `deadline`.
+Outcome runWithDeadline(const std::vector<std::string>& arguments, std::chrono::seconds deadline,
+                        const std::map<std::string, std::string>& environment) {
     int pipeEnds[2];
     EXPECT_EQ(pipe(pipeEnds), 0);
     const pid_t child = fork();
     if (child == 0) {
+        for (const auto& [name, value] : environment) setenv(name.c_str(), value.c_str(), 1);
         dup2(pipeEnds[1], STDOUT_FILENO);
         dup2(pipeEnds[1], STDERR_FILENO);
         close(pipeEnds[0]);
@@ -108,7 +114,7 @@ TEST_P(HostileCorpus, RefusedCleanlyOrRendered) {
         arguments.push_back("--set");
         arguments.push_back(assignment);
     }
-    const Outcome outcome = runWithDeadline(arguments, std::chrono::seconds(120));
+    const Outcome outcome = runWithDeadline(arguments, std::chrono::seconds(120), hostile.environment);
     ASSERT_TRUE(outcome.finished) << "still running after 120 s";
     ASSERT_TRUE(WIFEXITED(outcome.status)) << "ended by signal " << WTERMSIG(outcome.status) << ":\n" << outcome.output;
     const int code = WEXITSTATUS(outcome.status);
