@@ -79,7 +79,7 @@
     X(kLatticeOut, 28)          /* buffer LatticeOut { float density[]; }: the same after one step, written */ \
     X(kLatticeProbes, 28)       /* buffer LatticeProbes { float fluence[]; }: the lattice's fluence at its probes (probe pass) */ \
     X(kLatticeTallies, 28)      /* buffer LatticeTallies { vec4 tallies[]; }: per work group, the lattice's ledger (result pass) */ \
-    X(kLatticeSurvey, 28)       /* buffer LatticeSurvey { GpuLatticeSurvey }: whether the channels differ, the voxels beyond the depth limit (survey pass) */ \
+    X(kLatticeSurvey, 28)       /* buffer LatticeSurvey { GpuLatticeSurvey }: channels that differ, voxels past the depth limit */ \
     X(kRawScattered, 29)        /* buffer RawScattered { float scattered[]; }: RGB per cell, W the photons lost to scattering */ \
     X(kMultipleFluence, 30)     /* buffer MultipleFluence { float fluence[]; }: RGB per cell, W/m², light scattered ≥ once */ \
     X(kScatteredPower, 31)      /* buffer ScatteredPower { float scattered[]; }: RGB per cell, W, from the wavefront's fixed-point tallies */ \

@@ -2,6 +2,7 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
+#include "render/graph/FrameRenderer.h"
 
 #include <algorithm>
 #include <string>
@@ -28,8 +29,9 @@ Bytes receiverCopies(const Scene& scene) { return estimatesErrors(scene) ? 4 : 1
 
 Bytes environmentCopies(const Scene& scene) {
     if (!estimatesErrors(scene)) return 1;
-    const bool lightPass = !scene.receivers.empty() || scene.tracer.storeFluence || any(scene.medium.scattering);
-    return lightPass && scene.tracer.estimator == TracerDesc::Estimator::Photons ? 4 : 3;
+    const bool byBatches = tracesLight(scene, any(scene.medium.scattering)) &&
+                           scene.tracer.estimator == TracerDesc::Estimator::Photons;  // a view of the even half
+    return byBatches ? 4 : 3;
 }
 
 std::string cellsText(const glm::ivec3& r) {
