@@ -90,7 +90,6 @@ int convergeCommand(const ConvergeOptions& options) {
     converge::writePlot(result, out);
     io::writeFileAtomically(out / "converge.md",
                             converge::markdownText(result, commandLine(options), context->info().renderer));
-    folder.recordWrittenFiles();
     std::printf("%zu settings and the reference in %.0f s: %s\n", result.rungs.size(), result.wallSeconds,
                 out.string().c_str());
     return 0;
