@@ -84,10 +84,14 @@ nlohmann::json withoutTimings(nlohmann::json line, bool framesShared = false) {
     return line;
 }
 
+// The output files below `root`; not the run's journals (.eikon-run, and
+// one per other rank where ranks share the frames), which name each file's
+// inode.
 std::set<std::string> filesBelow(const fs::path& root) {
     std::set<std::string> files;
     for (const auto& entry : fs::recursive_directory_iterator(root))
-        if (entry.is_regular_file()) files.insert(fs::relative(entry.path(), root).string());
+        if (entry.is_regular_file() && entry.path().filename().string().rfind(".eikon-run", 0) != 0)
+            files.insert(fs::relative(entry.path(), root).string());
     return files;
 }
 
@@ -232,6 +236,12 @@ TEST_F(Mpi, TwoRanksSharingFramesWriteTheFilesOfOneProcess) {
         EXPECT_EQ(pvd.find(name), pvd.rfind(name)) << name << " once";
         EXPECT_NE(pvd.find(name), std::string::npos) << name;
     }
+    // Each rank recorded the files it wrote: --force clears rank 1's too.
+    const Outcome forced = runCommand(eikon() + "run " + scene + " --frames 1 --quiet --force --out " + shared.string());
+    ASSERT_EQ(forced.exitCode, 0) << forced.output;
+    EXPECT_FALSE(fs::exists(shared / "frames/frame_00001.png"));
+    EXPECT_FALSE(fs::exists(shared / "vdb/fields_00003.vdb"));
+    EXPECT_FALSE(fs::exists(shared / ".eikon-run.rank1"));
 }
 
 // Frame 3's file is cut short: rank 1 meets it alone, after the inputs were
