@@ -50,7 +50,7 @@ std::optional<JournalEntry> parseEntry(const std::string& line) {
 
 std::string journalHeader(pid_t pid) {
     return std::string(kHeaderStart) + std::to_string(pid) +
-           ": the files and folders eikon created in this folder, by device and inode; `eikon run --force` removes "
+           ": the files and folders eikon created in this folder, by device and inode; `--force` removes "
            "each only while it is still the same file\n";
 }
 
