@@ -2,8 +2,10 @@
 // mpirun): sharing the photons gives the default scene's frame and report
 // figures bit for bit; sharing the frames of a volume sequence gives the
 // same files, with series indexes that list every frame once; a bad scene
-// is reported once; a rank that fails on its own, or is killed, ends the
-// run with a message and leaves neither processes nor temporaries behind.
+// is reported once; a bad option one rank alone sees ends the job; ranks
+// given different arguments, scenes or files are refused before any
+// output; a rank that fails on its own, or is killed, ends the run with a
+// message and leaves neither processes nor temporaries behind.
 #include "io/vdb/VdbVolumeFile.h"
 #include "tests/unit/VdbTestFiles.h"
 
