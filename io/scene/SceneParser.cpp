@@ -635,10 +635,14 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     return scene;
 }
 
-Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+nlohmann::json loadSceneDocument(const std::string& path, const std::vector<std::string>& overrides) {
     nlohmann::json root = parseJsonText(readTextFile(path), path);
     for (const std::string& assignment : overrides) applyOverride(root, assignment);
-    return parseScene(root, path);
+    return root;
+}
+
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+    return parseScene(loadSceneDocument(path, overrides), path);
 }
 
 }  // namespace eikon

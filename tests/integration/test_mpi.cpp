@@ -2,8 +2,10 @@
 // mpirun): sharing the photons gives the default scene's frame and report
 // figures bit for bit; sharing the frames of a volume sequence gives the
 // same files, with series indexes that list every frame once; a bad scene
-// is reported once; a rank that fails on its own, or is killed, ends the
-// run with a message and leaves neither processes nor temporaries behind.
+// is reported once; a bad option one rank alone sees ends the job; ranks
+// given different arguments, scenes or files are refused before any
+// output; a rank that fails on its own, or is killed, ends the run with a
+// message and leaves neither processes nor temporaries behind.
 #include "io/vdb/VdbVolumeFile.h"
 #include "tests/unit/VdbTestFiles.h"
 
@@ -53,6 +55,10 @@ std::string mpirun(int ranks) {
 }
 
 std::string eikon() { return std::string(EIKON_EXECUTABLE) + " "; }
+
+// An mpirun whose job is stopped after two minutes, so that a job that hangs
+// fails its test (timeout's exit 124) instead of holding ctest.
+std::string boundedMpirun() { return "timeout --kill-after=10 120 " + mpirun(1); }
 
 std::string fileBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -270,6 +276,89 @@ TEST_F(Mpi, ABadSceneIsReportedOnceWithExitTwoAndNothingWritten) {
     ASSERT_NE(first, std::string::npos) << outcome.output;
     EXPECT_EQ(outcome.output.find("eikon: error: ", first + 1), std::string::npos) << "once: " << outcome.output;
     EXPECT_NE(outcome.output.find("grid.resolution"), std::string::npos) << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// A small scene, cheap to check: the refusals below come before any frame.
+void writeSmallScene(const fs::path& path, long long photons, const std::string& mesh = "") {
+    fs::create_directories(path.parent_path());
+    const std::string object =
+        mesh.empty() ? R"({"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5})"
+                     : R"({"type": "mesh", "mesh": {"path": ")" + mesh + R"("}, "index": 1.5})";
+    std::ofstream(path) << R"({
+  "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
+  "objects": [)" << object << R"(],
+  "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
+  "camera": {"position": [0, 1, 2], "target": [0, 0.3, 0], "up": [0, 1, 0], "fov_deg": 45},
+  "render": {"photons": )" << photons << R"(, "width": 32, "height": 24}
+})";
+}
+
+// The launcher's MPMD form gives each rank its own command line: a bad
+// option that rank 1 alone sees (or rank 0 alone) is refused by that rank,
+// and the job ends at once with exit 2 — before, rank 0 waited for rank 1
+// for ever.
+TEST_F(Mpi, ABadOptionOnlyOneRankSeesEndsTheJobWithExitTwo) {
+    const fs::path scene = dir_ / "scene.json", out = dir_ / "out";
+    writeSmallScene(scene, 4096);
+    const std::string good = eikon() + "run " + scene.string() + " --quiet --out " + out.string();
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {good + " : -n 1 " + good + " --frames 0", "eikon: error (rank 1 of 2): --frames: Value 0 not in range"},
+        {good + " : -n 1 " + good + " --distribute bogus", "eikon: error (rank 1 of 2): --distribute: bogus not in"},
+        {good + " --frames 0 : -n 1 " + good, "eikon: error: --frames: Value 0 not in range"}};
+    for (const auto& [job, message] : cases) {
+        const Outcome outcome = runCommand(boundedMpirun() + job);
+        EXPECT_EQ(outcome.exitCode, 2) << job << "\n" << outcome.output;
+        EXPECT_NE(outcome.output.find(message), std::string::npos) << outcome.output;
+        EXPECT_FALSE(fs::exists(out)) << job;
+    }
+}
+
+TEST_F(Mpi, RanksGivenDifferentFramesAreRefused) {
+    const fs::path scene = dir_ / "scene.json", out = dir_ / "out";
+    writeSmallScene(scene, 4096);
+    const std::string run = eikon() + "run " + scene.string() + " --quiet --out " + out.string();
+    const Outcome outcome = runCommand(boundedMpirun() + run + " --frames 4 : -n 1 " + run + " --frames 2");
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("eikon: error: ranks disagree: rank 1's --frames is 2, rank 0's is 4"),
+              std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// The same relative scene path in two working folders: two machines whose
+// copies of a scene differ.
+TEST_F(Mpi, RanksReadingDifferentScenesAreRefused) {
+    writeSmallScene(dir_ / "a" / "scene.json", 4096);
+    writeSmallScene(dir_ / "b" / "scene.json", 8192);
+    const fs::path out = dir_ / "out";
+    const std::string run = eikon() + "run scene.json --quiet --out " + out.string();
+    const Outcome outcome = runCommand(boundedMpirun() + "-wdir " + (dir_ / "a").string() + " " + run +
+                                       " : -n 1 -wdir " + (dir_ / "b").string() + " " + run);
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("rank 1's scene differs from rank 0's at render.photons (8192, rank 0's 4096)"),
+              std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// The same scene over meshes of the same size whose bytes differ.
+TEST_F(Mpi, RanksReadingDifferentCopiesOfAMeshAreRefused) {
+    const std::string mesh = fileBytes(fs::path(EIKON_SOURCE_DIR) / "scenes/meshes/glass_bar.obj");
+    std::string changed = mesh;
+    changed.replace(changed.find("v -0.06 "), 8, "v -0.05 ");  // one vertex moved
+    for (const auto& [folder, bytes] : {std::pair{"a", mesh}, std::pair{"b", changed}}) {
+        writeSmallScene(dir_ / folder / "scene.json", 4096, "bar.obj");
+        std::ofstream(dir_ / folder / "bar.obj", std::ios::binary) << bytes;
+    }
+    const fs::path out = dir_ / "out";
+    const std::string run = eikon() + "run scene.json --quiet --out " + out.string();
+    const Outcome outcome = runCommand(boundedMpirun() + "-wdir " + (dir_ / "a").string() + " " + run +
+                                       " : -n 1 -wdir " + (dir_ / "b").string() + " " + run);
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("rank 1's file for objects[0].mesh.path differs from rank 0's in its bytes"),
+              std::string::npos)
+        << outcome.output;
     EXPECT_FALSE(fs::exists(out));
 }
 
