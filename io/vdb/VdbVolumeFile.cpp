@@ -1,6 +1,7 @@
 #include "io/vdb/VdbVolumeFile.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/core/NumberFormat.h"
 #include "io/vdb/VdbFileCheck.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -130,10 +131,9 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     return sample(name, components, spec, glm::translate(glm::dmat4(1.0), offset));
 }
 
-std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
-                                         const glm::dmat4& placement) const {
+void VdbVolumeFile::check(const std::string& name, int components, const GridSpec& spec,
+                          const glm::dmat4& placement) const {
     EIKON_CHECK(components == 1 || components == 3);
-    const glm::dmat4 sceneToFile = glm::inverse(placement);
     const std::string where = path_.string() + ": grid \"" + name + "\"";
     const VdbGridEntry* entry = nullptr;
     for (const VdbGridEntry& grid : grids_->layout.grids)
@@ -144,13 +144,13 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
         throw InputError(where, "a " + wanted + " grid", "a grid of type \"" + entry->treeType + "\"");
     checkVdbGrid(grids_->bytes, *entry, path_.string());
 
-    openvdb::GridBase::Ptr base;
+    openvdb::GridBase::Ptr metadata;
     try {
-        base = grids_->file->readGrid(name);
+        metadata = grids_->file->readGridMetadata(name);
     } catch (const std::exception& error) {
-        throw InputError(where, "a readable grid", std::string("OpenVDB: ") + error.what());
+        throw InputError(where, "readable metadata", std::string("OpenVDB: ") + error.what());
     }
-    const openvdb::math::Transform& transform = base->transform();
+    const openvdb::math::Transform& transform = metadata->transform();
     const openvdb::Vec3d voxel = transform.voxelSize();
     if (!transform.isLinear() || !std::isfinite(voxel[0] * voxel[1] * voxel[2]) ||
         !(std::abs(transform.baseMap()->determinant()) > 0.0) || !std::isfinite(transform.baseMap()->determinant()))
@@ -161,6 +161,7 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     // the file's index space, must lie well within them (a voxel of 1e-220 m
     // put cells at index 1e222; found by fuzz_vdb). The map is affine, so its
     // corners bound it.
+    const glm::dmat4 sceneToFile = glm::inverse(placement);
     for (int corner = 0; corner < 8; ++corner) {
         const glm::dvec3 world = glm::dvec3(
             sceneToFile * glm::dvec4(corner & 1 ? spec.boundsMax.x : spec.boundsMin.x,
@@ -170,10 +171,23 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
         for (int axis = 0; axis < 3; ++axis)
             if (!(std::abs(index[axis]) < kMaxIndexCoordinate))
                 throw InputError(where,
-                                 "a transform that maps the render grid within OpenVDB's index range (|index| < 2^30)",
-                                 "index " + std::to_string(index[axis]) + " at a corner of grid.bounds");
+                                 "a voxel size and placement (the scene's volume.transform, offset and up_axis) "
+                                 "that map the render grid within OpenVDB's index range (|index| < 2^30)",
+                                 "index " + formatRounded(index[axis]) + " at a corner of grid.bounds");
     }
+}
 
+std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
+                                         const glm::dmat4& placement) const {
+    check(name, components, spec, placement);
+    const std::string where = path_.string() + ": grid \"" + name + "\"";
+    openvdb::GridBase::Ptr base;
+    try {
+        base = grids_->file->readGrid(name);
+    } catch (const std::exception& error) {
+        throw InputError(where, "a readable grid", std::string("OpenVDB: ") + error.what());
+    }
+    const glm::dmat4 sceneToFile = glm::inverse(placement);
     std::vector<float> values(static_cast<std::size_t>(components) * spec.cellCount());
     if (components == 1) {
         const auto grid = openvdb::gridConstPtrCast<openvdb::FloatGrid>(base);
@@ -195,9 +209,10 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     if (bad != values.end()) {
         const auto cell = static_cast<std::size_t>(bad - values.begin()) / static_cast<std::size_t>(components);
         const auto nx = static_cast<std::size_t>(spec.resolution.x), ny = static_cast<std::size_t>(spec.resolution.y);
-        throw InputError(where, "finite values",
-                         "a non-finite value sampled at render cell (" + std::to_string(cell % nx) + ", " +
-                             std::to_string(cell / nx % ny) + ", " + std::to_string(cell / (nx * ny)) + ")");
+        const glm::dvec3 at = spec.cellCentre(static_cast<int>(cell % nx), static_cast<int>(cell / nx % ny),
+                                              static_cast<int>(cell / (nx * ny)));
+        throw InputError(where, "finite values", "a non-finite value sampled at " + formatPosition(at) +
+                                                     " (the render grid's cell centre, in the scene's world)");
     }
     return values;
 }
