@@ -63,7 +63,7 @@ public:
     // type, a damaged tree (every node, size and compressed chunk, as
     // VdbFileCheck walks them), a transform that is not affine and
     // invertible or that maps the render grid outside OpenVDB's index range.
-    // Reads the grid's metadata and transform only: a few milliseconds for
+    // Walks the file's bytes only, building no tree: a few milliseconds for
     // a file whose grids take a second to sample (bench/vdb_check_bench.cpp).
     void check(const std::string& name, int components, const GridSpec& grid, const glm::dmat4& placement) const;
     // Grid `name`'s voxel size (its transform's, per axis) and Mantaflow's
