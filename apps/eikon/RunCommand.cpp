@@ -6,12 +6,12 @@
 #include "bridge/core/Error.h"
 #include "apps/eikon/ProgressBar.h"
 #include "io/files/OutputFolder.h"
-#include "io/scene/ExportParser.h"
 #include "io/scene/SceneParser.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMemory.h"
 #include "render/stages/PhotonStage.h"
 #include "sim/SceneFields.h"
+#include "sim/volume/VolumeSequence.h"
 
 #include <filesystem>
 #include <memory>
@@ -81,7 +81,7 @@ int runCommand(const RunOptions& options) {
             scene.exports.vtk = VtkExportDesc{};
             scene.exports.vtk.enabled = true;
         }
-        if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
+        if (scene.volume) sim::checkVolumeFrames(*scene.volume, scene.grid.spec(), options.frames, scene.sourcePath);
         fields = std::make_unique<sim::SceneFields>(scene);
         distribution = chooseDistribution(options, scene, *fields, ranks);
         outDir = options.outDir.empty()

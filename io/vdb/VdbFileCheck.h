@@ -17,6 +17,8 @@
 // offset, what was expected and what was found.
 #pragma once
 
+#include <glm/mat4x4.hpp>
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -41,6 +43,8 @@ struct VdbFileLayout {
 VdbFileLayout checkVdbHeader(std::string_view bytes, const std::string& fileName);
 
 // Walks one grid (float or vec3s, not an instance) from gridPos to endPos.
-void checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName);
+// Returns its transform's map from world to index coordinates, as OpenVDB
+// will apply it when it reads the grid (index = map · (world, 1)).
+glm::dmat4 checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName);
 
 }  // namespace eikon::io

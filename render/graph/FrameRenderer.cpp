@@ -32,6 +32,15 @@ FrameRenderer::FrameRenderer(const Scene& scene, FieldRing& ring, RendererOption
 
 FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, FieldRing* ring, RendererOptions options)
     : scene_(scene), receivers_(scene.receivers), post_(scene.render.width, scene.render.height) {
+    try {
+        buildStages(fields, ring, options);
+    } catch (const InputError& error) {  // a size the GL limits refuse: the stages know the key, not the file
+        throw InputError(scene.sourcePath + ": " + error.what());
+    }
+}
+
+void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, const RendererOptions& options) {
+    const Scene& scene = scene_;
     pendingUpload_ = fields_.upload(fields);  // before the stages: they compile for the fields present
     if (ring) ring->fenceCurrent();
     if (scene.render.method == RenderDesc::Method::ImageSpace) {

@@ -118,6 +118,9 @@ public:
 private:
     const gl::Texture3D* stepTexture() const;  // null for uniform steps
     FrameRenderer(const Scene& scene, const FieldUpload& fields, FieldRing* ring, RendererOptions options);
+    // The first upload and the stages the scene needs. Their InputErrors name
+    // key paths; the constructor adds the scene file.
+    void buildStages(const FieldUpload& fields, FieldRing* ring, const RendererOptions& options);
     // Uploads, then the stages that depend on what changed.
     FrameResult render(const FieldUpload& fields, FieldRing* ring);
     // The image-space frame (render.method "image_space"): layers, caustic maps, view, post.

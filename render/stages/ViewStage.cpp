@@ -36,7 +36,7 @@ gl::Texture2D environmentTexture(const Scene& scene) {
     GLint largest = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
     if (image->width > largest || image->height > largest)
-        throw InputError(scene.sourcePath + ": render.environment.path",
+        throw InputError("render.environment.path",
                          "an image at most " + std::to_string(largest) + " pixels a side (GL_MAX_TEXTURE_SIZE)",
                          std::to_string(image->width) + " × " + std::to_string(image->height));
     return gl::Texture2D(image->width, image->height, image->rgba.data(),
@@ -49,7 +49,7 @@ gl::Buffer pixelBuffer(const Scene& scene, const std::string& description) {
     GLint64 largestBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largestBlock);
     if (pixels * sizeof(glm::vec4) > static_cast<std::size_t>(largestBlock))
-        throw InputError(scene.sourcePath + ": render.width × render.height",
+        throw InputError("render.width × render.height",
                          "at most " + std::to_string(static_cast<std::size_t>(largestBlock) / sizeof(glm::vec4)) +
                              " pixels (the linear image takes 16 bytes a pixel; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " +
                              std::to_string(largestBlock) + " bytes)",

@@ -1,8 +1,9 @@
 // `mpirun -n 2 eikon run`, against the same run in one process (no
 // mpirun): sharing the photons gives the default scene's frame and report
 // figures bit for bit; sharing the frames of a volume sequence gives the
-// same files, with series indexes that list every frame once; a bad scene
-// is reported once; a bad option one rank alone sees ends the job; ranks
+// same files, with series indexes that list every frame once; a bad scene,
+// or a damaged later file of a volume sequence, is reported once before
+// anything is written; a bad option one rank alone sees ends the job; ranks
 // given different arguments, scenes or files are refused before any
 // output; a rank that fails on its own, or is killed, ends the run with a
 // message and leaves neither processes nor temporaries behind.
@@ -18,6 +19,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +28,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -250,20 +253,49 @@ TEST_F(Mpi, TwoRanksSharingFramesWriteTheFilesOfOneProcess) {
     EXPECT_FALSE(fs::exists(shared / ".eikon-run.rank1"));
 }
 
-// Frame 3's file is cut short: rank 1 meets it alone, after the inputs were
-// agreed on, and ends the job with its rank, the file and exit 2 — no rank
-// is left waiting.
+// Frame 3's file holds a NaN temperature: its structure passes the check
+// before frame 0, and rank 1 meets the value alone, after the inputs were
+// agreed on, and ends the job with its rank, the file and exit 2 — no rank is
+// left waiting.
 TEST_F(Mpi, AFailureOfOneRankEndsTheJobWithItsRankAndMessage) {
     const std::string scene = writeVolumeScene(dir_, 4);
     const fs::path damaged = dir_ / "fluid_data_0004.vdb";
-    fs::resize_file(damaged, fs::file_size(damaged) / 2);
+    eikon::test::writeVdbFile(damaged,
+                              {{"density", 1, [](double, double, double, int) { return 0.5f; }},
+                               {"temperature", 1, [](double, double, double, int) { return std::nanf(""); }}},
+                              0.05, -0.6, 0.6);
     const fs::path out = dir_ / "out";
     const Outcome outcome = runCommand(mpirun(2) + eikon() + "run " + scene +
                                        " --frames 4 --quiet --distribute frames --out " + out.string());
     EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
-    EXPECT_NE(outcome.output.find("eikon: error (rank 1 of 2): " + damaged.string()), std::string::npos)
+    EXPECT_NE(outcome.output.find("eikon: error (rank 1 of 2): " + scene + ": volume.path: " + damaged.string()),
+              std::string::npos)
         << outcome.output;
     EXPECT_TRUE(processesMentioning(out.string()).empty());
+}
+
+// The last file of a three-file sequence cut short, or overwritten with
+// text: every rank checks every file before frame 0, so the job ends at once
+// with exit 2, the file named once, and nothing written — though rank 0's
+// frames (0 and 2) would not read it.
+TEST_F(Mpi, ADamagedLaterFileOfASequenceStopsTheJobBeforeFrameZero) {
+    const std::string scene = writeVolumeScene(dir_, 3);
+    const fs::path last = dir_ / "fluid_data_0003.vdb", out = dir_ / "out";
+    const std::string whole = fileBytes(last);
+    for (const auto& [label, bytes] : {std::pair<std::string, std::string>{"truncated", whole.substr(0, whole.size() / 2)},
+                                       {"garbage", std::string(whole.size(), 'x')}}) {
+        SCOPED_TRACE(label);
+        std::ofstream(last, std::ios::binary | std::ios::trunc) << bytes;
+        const Outcome outcome = runCommand(mpirun(2) + eikon() + "run " + scene +
+                                           " --frames 3 --quiet --distribute frames --out " + out.string());
+        EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+        const std::string named = "eikon: error: " + scene + ": volume.path: " + last.string() + ": ";
+        const std::size_t first = outcome.output.find(named);
+        EXPECT_NE(first, std::string::npos) << outcome.output;
+        EXPECT_EQ(outcome.output.find("eikon: error", first + 1), std::string::npos) << "once: " << outcome.output;
+        EXPECT_FALSE(fs::exists(out));
+        EXPECT_TRUE(processesMentioning(out.string()).empty());
+    }
 }
 
 TEST_F(Mpi, ABadSceneIsReportedOnceWithExitTwoAndNothingWritten) {
