@@ -2,7 +2,7 @@
 // the test volume, one ray per pixel from the orthographic camera's image
 // plane along its axis, marched through the graded field by the camera
 // rays' leapfrog (common/integrators.glsl; view_rays.comp) with fixed steps
-// of `step_length`, the last one cut at the grid's face. Along the way it
+// of `step_length`, the last one cut at the grid's far face. Along the way it
 // sums the optical path difference OPD = ∫ (n − n_ref) ds by the trapezoid
 // rule over each step (second order, as the leapfrog is); where it leaves
 // the grid (the medium is uniform beyond) its deflection ε is the change of
@@ -80,17 +80,28 @@ void main() {
         vec3 kappa_before = sample_extinction(ray_origin);
 #endif
         float exit_tolerance = 1e-3f * min(min(grid.voxel_size.x, grid.voxel_size.y), grid.voxel_size.z);
+        // The straight ray's way through the grid. A bent ray needs at least
+        // as long to reach the far face, so the face is looked for along the
+        // ray's own direction only over its last two steps (a slab test each
+        // step cost a fifth of the pass); one that leaves by another face
+        // first ends where its step took it out.
+        float chord = span.y - max(span.x, 0.0f);
+        float travelled = 0.0f;
         for (uint steps = 0u; steps < max_steps; ++steps) {
             spend_loops(1u);
             if (!loops_left()) break;
-            // To the grid's face along the ray's direction; NaN (a ray along a face) counts as out.
-            float remaining = grid_ray_interval(ray_origin + world_direction(x), world_direction(normalize(v))).y;
-            if (!(remaining > exit_tolerance)) {
-                ended = kRayCrossed;
-                break;
+            float ds = step_length;
+            if (travelled + 2.0f * step_length >= chord) {
+                // NaN (a ray along a face) counts as out.
+                float remaining = grid_ray_interval(ray_origin + world_direction(x), world_direction(normalize(v))).y;
+                if (!(remaining > exit_tolerance)) {
+                    ended = kRayCrossed;
+                    break;
+                }
+                ds = min(step_length, remaining);
             }
-            float ds = min(step_length, remaining);
             integrate_leapfrog(x, x_lost, v, field, ds);
+            travelled += ds;
             opd += 0.5f * (delta_before + sampled_delta) * ds;
             delta_before = sampled_delta;
 #if EIKON_HAS_EXTINCTION
@@ -98,6 +109,10 @@ void main() {
             optical_depth += 0.5f * (kappa_before + kappa) * ds;
             kappa_before = kappa;
 #endif
+            if (!grid_contains(ray_origin + world_direction(x))) {
+                ended = kRayCrossed;
+                break;
+            }
         }
         deflection = normalize(v).xy;
     }
