@@ -3,8 +3,9 @@
 // VTK export holds its measurements — vtk/diagnostic_NNNNN.vti with
 // `deflection` (rad) and `optical_path_difference` (m) on the image plane,
 // upright, each with its unit — listed in diagnostic.pvd, its .series and
-// the ParaView state. The index is a Gaussian bump off the axis, imported
-// as a delta_index grid; `--set` switches the instrument.
+// the ParaView state (valid Python, the orthographic camera's scale). The
+// index is a Gaussian bump off the axis, imported as a delta_index grid;
+// `--set` switches the instrument.
 #include "tests/integration/CliRun.h"
 #include "tests/unit/VdbTestFiles.h"
 
@@ -19,10 +20,12 @@
 #include <vtkXMLImageDataReader.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <numbers>
+#include <regex>
 #include <string>
 
 namespace {
@@ -86,7 +89,14 @@ TEST_F(DiagnosticCli, WritesThePictureAndTheMeasurementsForParaView) {
     EXPECT_EQ(text(out / "report.jsonl").find("\"name\":\"view\""), std::string::npos);
     for (const char* index : {"diagnostic.pvd", "diagnostic.vti.series"})
         EXPECT_NE(text(out / "vtk" / index).find("diagnostic_00000.vti"), std::string::npos) << index;
-    EXPECT_NE(text(out / "vtk" / "open_in_paraview.py").find("collection('diagnostic')"), std::string::npos);
+    const fs::path script = out / "vtk" / "open_in_paraview.py";
+    EXPECT_NE(text(script).find("collection('diagnostic')"), std::string::npos);
+    std::smatch scale;
+    const std::string state = text(script);
+    ASSERT_TRUE(std::regex_search(state, scale, std::regex(R"(camera_parallel_scale = (\S+))")));
+    EXPECT_NEAR(std::stod(scale[1]), 0.3, 1e-12) << "half the height of a view 0.8 m wide, 40 × 30 pixels";
+    const std::string parse = "python3 -c \"import ast, sys; ast.parse(open(sys.argv[1]).read())\" " + script.string();
+    EXPECT_EQ(std::system(parse.c_str()), 0) << text(script);
 
     vtkNew<vtkXMLImageDataReader> reader;
     reader->SetFileName((out / "vtk" / "diagnostic_00000.vti").string().c_str());
