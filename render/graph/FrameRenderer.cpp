@@ -217,8 +217,8 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrTexels(), scene_.render.exposureEv);
     }));
-    // A diagnostic sees the index field alone.
-    const bool diagnosticNeeded = diagnostic_ && (indexChanged || cameraChanged_);
+    // A diagnostic sees the index and, through its transmittance, the extinction.
+    const bool diagnosticNeeded = diagnostic_ && (indexChanged || extinctionChanged || cameraChanged_);
     if (diagnostic_) result.stages.push_back(runStage("diagnostic", diagnosticNeeded, [&] {
         last_.image = diagnostic_->run(fields_);
     }));

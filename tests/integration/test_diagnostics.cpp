@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -282,24 +283,32 @@ TEST(Diagnostics, KnifeEdgeContrastIsFocalLengthTimesDeflectionOverSourceHeight)
 
 // An absorbing medium (κ per channel, over the grid's 1 m depth) dims each
 // ray's light by T = exp(−κ·1 m): the knife edge's undeflected half to
-// T/2, the interferometer's bright field (OPD 0) to (1 + √T)²/4.
+// T/2, the interferometer's bright field (OPD 0) to (1 + √T)²/4. New κ
+// alone (the index as it was) draws the picture again.
 TEST(Diagnostics, AbsorptionDimsTheLightByItsTransmittance) {
-    const Rgb kappa(0.5, 1.0, 2.0);
+    glContext();
     for (const DiagnosticDesc& diagnostic : {knifeEdge(1.0, 1e-3), kInterferometer}) {
-        Scene scene = bumpScene(16, 16, diagnostic);
-        scene.medium.extinction = kappa;
+        const Scene scene = bumpScene(16, 16, diagnostic);
         FieldSet fields = sampledBump(scene, Bump{0.0});
-        fields.extinction.assign(3 * fields.grid.cellCount(), 0.0f);
-        for (std::size_t c = 0; c < fields.grid.cellCount(); ++c)
-            for (int channel = 0; channel < 3; ++channel) fields.extinction[3 * c + channel] = float(kappa[channel]);
-        fields.extinctionVersion = 1;
-        const Diagnosed diagnosed = diagnose(scene, fields);
-        for (int channel = 0; channel < 3; ++channel) {
-            const double t = std::exp(-kappa[channel]);
-            const double expected = diagnostic.type == DiagnosticDesc::Type::Schlieren
-                                        ? 0.5 * t
-                                        : 0.25 * (1.0 + std::sqrt(t)) * (1.0 + std::sqrt(t));
-            EXPECT_NEAR(diagnosed.intensity[4 * 136 + channel], expected, 1e-5 * expected) << "channel " << channel;
+        std::unique_ptr<render::FrameRenderer> renderer;
+        for (const double scale : {1.0, 2.0}) {
+            const Rgb kappa = scale * Rgb(0.5, 1.0, 2.0);
+            fields.extinction.assign(3 * fields.grid.cellCount(), 0.0f);
+            for (std::size_t c = 0; c < fields.grid.cellCount(); ++c)
+                for (int channel = 0; channel < 3; ++channel)
+                    fields.extinction[3 * c + channel] = static_cast<float>(kappa[channel]);
+            ++fields.extinctionVersion;
+            if (!renderer) renderer = std::make_unique<render::FrameRenderer>(scene, fields);
+            renderer->render(fields);
+            const std::vector<float> intensity = renderer->diagnosticStage()->downloadHdr();
+            for (int channel = 0; channel < 3; ++channel) {
+                const double t = std::exp(-kappa[channel]);
+                const double expected = diagnostic.type == DiagnosticDesc::Type::Schlieren
+                                            ? 0.5 * t
+                                            : 0.25 * (1.0 + std::sqrt(t)) * (1.0 + std::sqrt(t));
+                EXPECT_NEAR(intensity[4 * 136 + channel], expected, 1e-5 * expected)
+                    << "κ × " << scale << ", channel " << channel;
+            }
         }
     }
 }
