@@ -2,6 +2,8 @@
 // of the ACES reference rendering transform) → sRGB encoding → RGBA8.
 layout(local_size_x = 8, local_size_y = 8) in;  // over the image, so a wide one stays within the work-group count
 
+#include "common/srgb.glsl"
+
 // The HdrImage buffer read as a buffer texture: a CPU rasterizer fetches
 // texels for all lanes at once, where it loads a storage buffer a lane and a
 // float at a time (0.5 ms of 1.9 at 640×480 on two cores).
@@ -15,9 +17,6 @@ vec3 aces_filmic(vec3 x) {
     return clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
 }
 
-vec3 srgb_encode(vec3 linear) {
-    return mix(12.92f * linear, 1.055f * pow(linear, vec3(1.0f / 2.4f)) - 0.055f, greaterThan(linear, vec3(0.0031308f)));
-}
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;

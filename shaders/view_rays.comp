@@ -252,7 +252,7 @@ void main() {
     uvec2 pixel = min(block + pixel_stride / 2u, camera.image.xy - 1u);
     vec3 direction = camera_ray_direction(pixel);
     ViewRay ray;
-    ray.x = camera.position.xyz;
+    ray.x = camera_ray_origin(pixel);
     ray.inside_mask = 0u;
 #if EIKON_SHARP_SURFACES
     if (grid_contains(ray.x)) ray.inside_mask = inside_mask_at(ray.x);

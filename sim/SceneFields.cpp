@@ -1,5 +1,6 @@
 #include "sim/SceneFields.h"
 
+#include "sim/FieldOrigins.h"
 #include "sim/SharpMeshSurfaces.h"
 #include "sim/deform/AnimatedMesh.h"
 #include "sim/fluid/SolverExport.h"
@@ -55,6 +56,17 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Runs `work` of the fluid solver, whose refusals name key paths and its
+// own cells, not the file: they are told the scene file.
+template <typename Work>
+void inSceneFile(const Scene& scene, Work&& work) {
+    try {
+        work();
+    } catch (const InputError& error) {
+        throw InputError(scene.sourcePath + ": " + error.what());
+    }
+}
+
 }  // namespace
 
 bool SceneFields::needsSharpCoverage(const Scene& scene) {
@@ -99,22 +111,18 @@ SceneFields::SceneFields(const Scene& scene) : scene_(scene), keepSharpCoverage_
     updateMeshes();
     fillMedium(scene_, fields_, CellBox::whole(fields_.grid));
     if (scene.sim) {
-        try {
-            fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid);
-        } catch (const InputError& error) {  // the solver knows key paths, not the file
-            throw InputError(scene.sourcePath + ": " + error.what());
-        }
+        inSceneFile(scene, [&] { fluid_ = std::make_unique<FluidSimulation>(*scene.sim, fields_.grid); });
         fluidOptics_ = std::make_unique<OpticalModel>(*scene.sim);
         refreshFromSimulation();
     } else if (scene.volume) {
-        volume_ = std::make_unique<VolumeSequence>(*scene.volume, scene.medium, fields_.grid);
+        volume_ = std::make_unique<VolumeSequence>(*scene.volume, scene.medium, fields_.grid, scene.sourcePath);
         refreshFromSimulation();
     } else {
         paintObjects(scene_, fields_, coverageGrids());
         paintStrokes(scene_, fields_);
     }
     fields_.indexVersion = fields_.extinctionVersion = fields_.scatteringVersion = fields_.surfaceVersion = 1;
-    validateFields(fields_, scene.sourcePath);
+    validateFields(fields_, sceneFieldOrigin(scene_, volume_ ? volume_->currentFile() : ""));
 }
 
 SceneFields::~SceneFields() = default;
@@ -257,7 +265,7 @@ void SceneFields::publishSurface(MeshObject& mesh, bool moved) {
 void SceneFields::advanceFrame() {
     if (!changesOverTime()) return;
     if (fluid_) {
-        fluid_->advanceFrame();
+        inSceneFile(scene_, [&] { fluid_->advanceFrame(); });
     } else if (volume_ && volume_->isSequence()) {
         volume_->advanceFrame();
     } else {
@@ -321,7 +329,7 @@ void SceneFields::refreshFromSimulation() {
     else volume_->writeFields(fields_);
     paintObjects(scene_, fields_, coverageGrids());
     paintStrokes(scene_, fields_);
-    validateFields(fields_, volume_ ? volume_->currentFile() : scene_.sourcePath);
+    validateFields(fields_, sceneFieldOrigin(scene_, volume_ ? volume_->currentFile() : ""));
 }
 
 std::vector<NamedArray> SceneFields::exportArrays(const std::vector<std::string>& names) const {
@@ -346,7 +354,7 @@ CoverageGrids SceneFields::coverageGrids() const {
 
 void SceneFields::simulateFrame() {
     EIKON_CHECK_MSG(fluid_, "only a scene with a fluid solver writes its frames into GPU memory");
-    fluid_->advanceFrame();
+    inSceneFile(scene_, [&] { fluid_->advanceFrame(); });
     updateMeshes();
 }
 
@@ -366,7 +374,7 @@ void SceneFields::writeFrameInto(const FieldViews& target) const {
     mapOpticalFields(*fluidOptics_, fluid_->scalars(), frame);
     paintObjects(scene_, frame, coverageGrids());
     paintStrokes(scene_, frame);
-    validateFields(frame, scene_.sourcePath);
+    validateFields(frame, sceneFieldOrigin(scene_));
 }
 
 }  // namespace eikon::sim

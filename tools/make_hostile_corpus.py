@@ -6,7 +6,8 @@ Every case is a scene file (tests/hostile/scenes), optional `--set`
 overrides, and the files it names (tests/hostile/files: meshes in every
 format, environment maps, OpenVDB volumes). tests/hostile/cases.jsonl gives
 per case the exit code it must end in and, for a refusal (exit 2), text its
-one-line message must contain: the file and the JSON path or line at fault.
+one-line message must contain: the file and the JSON path or line at fault;
+"frames", where present, is the run's --frames (default 1).
 test_hostile_corpus runs them all and checks, besides, that a refused case
 writes nothing. The same files seed the fuzzers (./dev.sh fuzz), and what
 the fuzzers find goes into tests/hostile/found, one case each.
@@ -56,9 +57,10 @@ def scene_text(scene):
     return json.dumps(scene, indent=1)
 
 
-def add_case(name, text, exit_code, message="", overrides=(), env=None):
-    """One case: its scene written as text (bytes or str) under `name`.json;
-    `env`: environment variables eikon runs with."""
+def add_case(name, text, exit_code, message="", overrides=(), frames=1, env=None):
+    """One case: its scene written as text (bytes or str) under `name`.json,
+    run for `frames` frames (`eikon run --frames`); `env`: environment
+    variables eikon runs with."""
     if not re.fullmatch(r"[A-Za-z0-9_]+", name):
         raise ValueError(name + ": a case's name is letters, digits and '_' (it names a test)")
     path = SCENES / (name + ".json")
@@ -67,6 +69,8 @@ def add_case(name, text, exit_code, message="", overrides=(), env=None):
         raise ValueError(name + ": a refusal needs the text its message must hold")
     case = {"name": name, "scene": "scenes/" + path.name, "set": list(overrides), "exit": exit_code,
             "message": message}
+    if frames != 1:
+        case["frames"] = frames
     if env:
         case["env"] = env
     cases.append(case)
@@ -596,6 +600,73 @@ def found_cases():
         add_case("found_" + path.stem, scene_text(scene), 2, path.name)
 
 
+# --- values within their ranges that together cannot be -------------------------
+
+def message_cases():
+    """Keys each within its documented range whose combination, or whose
+    mapping of a volume's values, makes a field impossible (n <= 0, a value
+    past float32): refused naming the scene file, the keys a user edits and
+    the position, never an internal cell; and GL limits met by a render
+    stage, refused naming the scene file too."""
+    def volume_case(name, keys, grids, message):
+        scene = volume_scene("smoke.vdb")
+        scene["volume"]["grids"] = grids
+        scene["volume"].update(keys)
+        add_case(name, scene_text(scene), 2, f"{name}.json: {message}")
+
+    heat = {"density": "delta_index", "temperature": "index"}  # the index grid (about 1 to 1.5) read as heat
+    volume_case("keys_volume_refractivity_turns_index_negative", {"temperature_scale": 1000, "refractivity": 10}, heat,
+                "medium.index, volume.refractivity, volume.pressure, volume.reference_temperature (the refractive "
+                "index at (")
+    volume_case("keys_volume_pressure_overflows_index", {"pressure": 1e300}, heat, "medium.index, volume.refractivity, "
+                "volume.pressure, volume.reference_temperature (the refractive index at (")
+    volume_case("keys_volume_emission_scale_overflows", {"emission": "blackbody", "emission_scale": 1e300,
+                                                         "temperature_scale": 3000}, heat,
+                "volume.emission_scale, volume.temperature_scale, volume.ambient_temperature, "
+                "volume.density_extinction, medium.extinction (the emission ε at (")
+    volume_case("keys_volume_index_grid_reads_zero", {}, {"density": "", "temperature": "", "index": "delta_index"},
+                'volume.grids.index (grid "delta_index" at (')
+    volume_case("keys_volume_transform_scale_past_index_range", {"transform": {"scale": 1e-9}}, heat,
+                "volume.path: ")
+    scene = copy.deepcopy(BASE)
+    scene["paint"] = [{"path": [[0, 0.5, 0]], "radius": 0.3, "index": -5}]
+    add_scene_case("keys_paint_index_below_zero", scene, 2, "paint[0].index, medium.index (the refractive index at (")
+    scene = copy.deepcopy(BASE)
+    scene["medium"]["air_temperature_profile"] = {"ground_temperature": 400, "air_temperature": 300,
+                                                  "scale_height": 0.1, "pressure": 1e300}
+    add_scene_case("keys_air_profile_pressure_overflows_index", scene, 2,
+                   "medium.air_temperature_profile, medium.index (the refractive index at (")
+    scene = copy.deepcopy(BASE)
+    scene["sim"] = {"fluid": "air", "resolution": [8, 8, 8], "optics": {"refractivity": 1e300},
+                    "sources": [{"type": "hot_plate", "min": [-0.2, 0, -0.2], "max": [0.2, 0.2, 0.2],
+                                 "temperature": 450}]}
+    add_scene_case("keys_sim_refractivity_overflows_index", scene, 2, "sim.optics.refractivity")
+    scene = copy.deepcopy(BASE)
+    # 16 777 216 patches of 256 bytes: past the storage block a GL driver gives
+    # (llvmpipe's 128 MiB), documented as the range's other bound.
+    scene["tracer"] = {"estimator": "wavefront", "wavefront": {"max_patches": 16777216}}
+    add_scene_case("keys_wavefront_max_patches_past_storage_block", scene, 2, "tracer.wavefront.max_patches")
+
+
+# --- a volume sequence whose later file is damaged ------------------------------
+
+def sequence_cases():
+    """Three-file sequences of the seed volume run for three frames, the last
+    file cut short, overwritten with text, or overwritten inside its last
+    grid's leaf buffers (its length kept): every file is checked before frame
+    0 is written, so each is refused naming that file, with nothing written."""
+    data = (FILES / "vdb" / "smoke.vdb").read_bytes()
+    damaged = bytearray(data)
+    damaged[-400:-8] = b"\x55" * 392
+    for label, last in (("cut", data[:len(data) // 2]), ("text", b"x" * len(data)), ("tree", bytes(damaged))):
+        for number, content in ((1, data), (2, data), (3, last)):
+            (FILES / "vdb" / f"seq_{label}_{number:04d}.vdb").write_bytes(content)
+        scene = volume_scene(f"seq_{label}_####.vdb")
+        scene["volume"]["grids"]["temperature"] = "index"  # both grids read: the damaged tree is the last
+        add_case(f"vdb_sequence_last_file_{label}", scene_text(scene), 2, f"../files/vdb/seq_{label}_0003.vdb: byte ",
+                 frames=3)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--eikon", help="the eikon executable, to write the OpenVDB seed")
@@ -618,6 +689,8 @@ def main():
     vdb_cases(arguments.eikon, kept_vdb)
     memory_cases()
     found_cases()
+    message_cases()
+    sequence_cases()
     with open(HOSTILE / "cases.jsonl", "w") as out:
         for case in cases:
             out.write(json.dumps(case) + "\n")

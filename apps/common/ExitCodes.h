@@ -2,6 +2,8 @@
 // scene file, --set), 1 anything else. Parses the command line and runs
 // `body`, mapping each failure to its code with one message; SIGINT and
 // SIGTERM remove the temporaries being written before the program ends.
+// eikon parses inside its ranks' check of their inputs (apps/eikon/Ranks.h),
+// so it takes the two steps apart.
 #pragma once
 
 #include "bridge/core/Error.h"
@@ -11,6 +13,7 @@
 
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
 
 namespace eikon::app {
@@ -23,18 +26,23 @@ struct ReportedElsewhere : std::exception {
     int code;
 };
 
-template <typename Body>
-int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program, Body&& body) {
+// Parses the command line. --help and --version print their text and give
+// the exit code to end with (0); a line CLI11 refuses is bad input, an
+// InputError with CLI11's message and its hint.
+inline std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& success) {
         return app.exit(success);
     } catch (const CLI::ParseError& error) {
-        // One line in eikon's own form, then CLI11's hint.
-        std::cerr << program << ": error: " << error.what() << "\n"
-                  << "Run with --help for more information.\n";
-        return 2;
+        throw InputError(std::string(error.what()) + "\nRun with --help for more information.");
     }
+    return std::nullopt;
+}
+
+// Runs `body`, mapping each failure to its exit code with one message.
+template <typename Body>
+int runReportingFailures(const std::string& program, Body&& body) {
     io::removeTemporariesOnSignals();  // an interrupted run leaves no half-written files
     try {
         return body();
@@ -47,6 +55,14 @@ int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program
         std::cerr << program << ": error: " << error.what() << "\n";
         return 1;
     }
+}
+
+template <typename Body>
+int parseAndRun(CLI::App& app, int argc, char** argv, const std::string& program, Body&& body) {
+    return runReportingFailures(program, [&] {
+        if (const std::optional<int> printed = parseCommandLine(app, argc, argv)) return *printed;
+        return body();
+    });
 }
 
 }  // namespace eikon::app

@@ -6,6 +6,7 @@
 #include "io/files/OutputFolder.h"
 #include "io/scene/SceneParser.h"
 #include "gl/GlContext.h"
+#include "gl/GpuMemory.h"
 #include "verify/converge/ConvergeReport.h"
 #include "verify/converge/ConvergeStudy.h"
 
@@ -36,6 +37,19 @@ converge::Outputs requestedOutputs(const std::string& list, const converge::Outp
     return requested;
 }
 
+// The scene file with a rung's settings written into it, as the scene
+// loader makes it: every documented range applies to a reference too.
+Scene loadedScene(const nlohmann::json& document, const ConvergeOptions& options, const converge::Rung& rung) {
+    nlohmann::json refined = document;
+    for (const std::string& assignment : rung.overrides) applyOverride(refined, assignment);
+    try {
+        return parseScene(refined, options.scenePath);
+    } catch (const InputError& error) {
+        throw InputError((options.reference.empty() ? "the default --reference: its " : "--reference: the reference's ") +
+                         rung.setting + " is refused as the scene file would be: " + error.what());
+    }
+}
+
 std::string commandLine(const ConvergeOptions& options) {
     std::string command = "eikon converge " + options.scenePath + " --budget-s " + formatNumber(options.budgetSeconds);
     if (options.frame > 0) command += " --frame " + std::to_string(options.frame);
@@ -59,9 +73,11 @@ void addConvergeCommand(CLI::App& app, ConvergeOptions& options) {
         ->check(CLI::Range(0, 1000000));
     converge->add_option("--outputs", options.outputs,
                          "Outputs to compare, comma-separated: receivers, image, fluence (default: all the scene has)");
+    const converge::Refinement& most = converge::kFinestReference;
     converge->add_option("--reference", options.reference,
-                         "How much finer the reference is, e.g. photons=16,step=4,grid=1.5 (default: as fits the "
-                         "budget)");
+                         "How much finer the reference is, e.g. photons=16,step=4,grid=1.5, each from 1 to " +
+                             formatNumber(most.photons) + ", " + formatNumber(most.step) + " and " +
+                             formatNumber(most.grid) + " (default: as fits the budget)");
     converge->add_option("--set", options.overrides, "Override a scene value, e.g. --set render.photons=100000")
         ->type_name("KEY.PATH=VALUE");
     converge->add_flag("--force", options.force, "Clear the output folder if it holds an earlier study");
@@ -73,7 +89,8 @@ int convergeCommand(const ConvergeOptions& options) {
         throw InputError("--budget-s", "a number of seconds > 0", formatNumber(options.budgetSeconds));
     std::optional<converge::Refinement> reference;
     if (!options.reference.empty()) reference = converge::parseReference(options.reference, "--reference");
-    const Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    const nlohmann::json document = loadSceneDocument(options.scenePath, options.overrides);
+    const Scene scene = parseScene(document, options.scenePath);
     const auto context = gl::createHeadlessContext();
     const converge::Outputs outputs = requestedOutputs(options.outputs, converge::outputsOf(scene));
     const std::filesystem::path out(options.outDir);
@@ -83,14 +100,18 @@ int convergeCommand(const ConvergeOptions& options) {
         std::printf("%-10s %-70s %8.3f s  worst error %.3g\n", m.rung.knob.c_str(), m.rung.setting.c_str(), m.seconds,
                     m.worst());
         std::fflush(stdout);
-    }};
-    const converge::Study result = converge::runStudy(scene, study);
+    }, [&](const converge::Rung& rung) { return loadedScene(document, options, rung); }};
+    converge::Study result;
+    try {
+        result = converge::runStudy(scene, study);
+    } catch (const gl::GpuMemoryError& error) {  // a size the scene or --reference asked for, too large for this machine
+        throw InputError(scene.sourcePath + ": " + error.what());
+    }
     io::OutputFolder folder(out, options.force, /*withFrames=*/false);
     io::writeFileAtomically(out / "converge.csv", converge::csvText(result));
     converge::writePlot(result, out);
     io::writeFileAtomically(out / "converge.md",
                             converge::markdownText(result, commandLine(options), context->info().renderer));
-    folder.recordWrittenFiles();
     std::printf("%zu settings and the reference in %.0f s: %s\n", result.rungs.size(), result.wallSeconds,
                 out.string().c_str());
     return 0;

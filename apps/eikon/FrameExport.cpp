@@ -1,5 +1,6 @@
 #include "apps/eikon/FrameExport.h"
 
+#include "apps/eikon/DiagnosticExport.h"
 #include "bridge/core/PrimeStride.h"
 
 #include "io/vtk/ExportGeometry.h"
@@ -54,10 +55,8 @@ render::RendererOptions rendererOptionsFor(const Scene& scene) {
 }
 
 FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder, bool deferIndexes)
-    : exports_(scene.exports), deferIndexes_(deferIndexes) {
-    paraview_.camera = scene.camera;
-    paraview_.gridMin = scene.grid.boundsMin;
-    paraview_.gridMax = scene.grid.boundsMax;
+    : exports_(scene.exports), camera_(scene.camera), paraview_(io::paraViewStateOf(scene)),
+      deferIndexes_(deferIndexes) {
     if (exports_.vtk.enabled) {
         vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
         if (exports_.vtk.receivers && !scene.receivers.empty())
@@ -67,6 +66,7 @@ FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& ou
         });
         if (exports_.vtk.meshes && hasMeshes) meshes_.emplace(outputFolder, "meshes", exports_.vtk.compression);
         if (exports_.vtk.photonPaths > 0) paths_.emplace(outputFolder, "photon_paths", exports_.vtk.compression);
+        if (scene.diagnostic) diagnostic_.emplace(outputFolder, "diagnostic", exports_.vtk.compression);
     }
     if (exports_.vdb.enabled)
         vdb_.emplace(outputFolder, "fields", std::filesystem::path(scene.sourcePath).stem().string(),
@@ -79,6 +79,7 @@ std::vector<io::VtkSeriesIndex*> FrameExporter::seriesIndexes() {
     if (vtk_) indexes.push_back(&vtk_->index());
     for (auto* series : {&receivers_, &meshes_, &paths_})
         if (*series) indexes.push_back(&(*series)->index());
+    if (diagnostic_) indexes.push_back(&diagnostic_->index());
     return indexes;
 }
 
@@ -121,6 +122,8 @@ void FrameExporter::write(int frame, const ExportInputs& inputs, const render::F
                                io::photonPolylines(photons->downloadPaths(), photons->downloadPathPower(),
                                                    exports_.vtk.pathVertices));
         }
+        if (const render::DiagnosticStage* diagnostic = renderer.diagnosticStage(); diagnostic_ && diagnostic)
+            diagnostic_->writeFrame(frame, time, diagnosticExportFrame(diagnostic->downloadMeasurements(), camera_));
         if (!deferIndexes_) writeParaViewState();
     }
     if (vdb_ && exports_.vdb.exportsFrame(frame))

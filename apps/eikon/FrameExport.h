@@ -1,7 +1,9 @@
 // Per-frame export of a run for analysis, as the scene's `export` section
 // asks: the arrays of a frame (optical fields, fluence and mean photon
 // direction, the simulation's or volume's own fields) are gathered once,
-// then each enabled writer takes its selection of fields and cells.
+// then each enabled writer takes its selection of fields and cells. A
+// diagnostic's measurements go whole into a series of their own
+// (DiagnosticExport.h) on the frames the VTK export writes.
 #pragma once
 
 #include "bridge/grid/FieldViews.h"
@@ -59,6 +61,7 @@ private:
     void writeParaViewState();  // once, after the first indexes, so it names only collections that exist
 
     ExportDesc exports_;
+    CameraDesc camera_;
     io::ParaViewState paraview_;
     bool paraviewWritten_ = false;  // every collection has its index from the first exported frame on
     bool deferIndexes_;
@@ -67,6 +70,7 @@ private:
     std::optional<io::PolyDataSeries> receivers_;
     std::optional<io::PolyDataSeries> meshes_;
     std::optional<io::PolyDataSeries> paths_;
+    std::optional<io::VtkSeriesWriter> diagnostic_;
 };
 
 }  // namespace eikon::app

@@ -36,14 +36,22 @@ void renderFrameShare(const Scene& scene, sim::SceneFields& fields, int frames,
                       const std::filesystem::path& outputRoot) {
     Ranks& ranks = Ranks::world();
     FrameSource source(scene, fields, rendererOptionsFor(scene), /*pipelined=*/false, ExportNeeds(scene.exports));
+    std::optional<io::OutputFolderShare> share;  // outlives the writers
     std::optional<FrameOutputs> outputs;
-    // Rank 0 opens the folder once its frame 0 is rendered; the others wait
-    // for that before they write (one barrier, reached by every rank, even
-    // one without frames).
+    // Rank 0 opens the folder once its frame 0 is rendered, with a journal
+    // for each other rank's files; the others wait for that before they
+    // write (one barrier, reached by every rank, even one without frames).
     const auto openOutputs = [&] {
-        if (ranks.first()) outputs.emplace(scene, outputRoot, &openOutput());
+        if (ranks.first()) {
+            io::OutputFolder& folder = openOutput();
+            folder.shareWith(ranks.size());
+            outputs.emplace(scene, outputRoot, &folder);
+        }
         ranks.barrier();
-        if (!ranks.first()) outputs.emplace(scene, outputRoot, nullptr);
+        if (!ranks.first()) {
+            share.emplace(outputRoot, ranks.rank());
+            outputs.emplace(scene, outputRoot, nullptr);
+        }
     };
     const bool simulated = fields.changesOverTime();
     PowerWarning warning;

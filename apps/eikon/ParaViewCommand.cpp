@@ -23,10 +23,7 @@ void addParaViewCommand(CLI::App& app, ParaViewOptions& options) {
 int paraviewCommand(const ParaViewOptions& options) {
     const Scene scene = loadSceneFile(options.scenePath, options.overrides);
     const fs::path vtk = fs::path(options.runDir) / "vtk";
-    io::ParaViewState state;
-    state.camera = scene.camera;
-    state.gridMin = scene.grid.boundsMin;
-    state.gridMax = scene.grid.boundsMax;
+    const io::ParaViewState state = io::paraViewStateOf(scene);
     if (io::collectionsIn(vtk, io::kParaViewCollections).empty())
         throw InputError(options.runDir, "a run folder whose vtk/ holds fields.pvd, receivers.pvd, meshes.pvd or "
                                          "photon_paths.pvd (eikon run --vtk)",

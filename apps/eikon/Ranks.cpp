@@ -6,6 +6,7 @@
 
 #include <mpi.h>
 #include <tbb/global_control.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -140,7 +141,8 @@ render::LightPassExchange& Ranks::lightPassExchange() {
     return *exchange_;
 }
 
-void Ranks::checkInputsTogether(const std::function<void()>& checks) {
+void Ranks::checkInputsTogether(const std::function<void()>& checks, const Agreement& agreement) {
+    inputsChecked_ = false;  // a failure from here on is the ranks' together, not one rank's
     std::exception_ptr failure;
     int code = 0;
     try {
@@ -154,18 +156,44 @@ void Ranks::checkInputsTogether(const std::function<void()>& checks) {
     }
     if (!distributed()) {
         if (failure) std::rethrow_exception(failure);
+        inputsChecked_ = true;
         return;
     }
     // [0]: the worst exit code of any rank; [1]: rank 0 failed.
     const int mine[2] = {code, first() && failure ? 1 : 0};
     int all[2] = {0, 0};
     check(MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
-    if (all[0] == 0) {
-        inputsChecked_ = true;
-        return;
+    if (all[0] != 0) {
+        if (failure && first()) std::rethrow_exception(failure);
+        if (failure && all[1] == 0) {  // met by this rank, not by rank 0: say which rank
+            try {
+                std::rethrow_exception(failure);
+            } catch (const std::exception& error) {
+                reportError(error.what());
+            }
+        }
+        throw ReportedElsewhere(all[0]);
     }
-    if (failure && (first() || all[1] == 0)) std::rethrow_exception(failure);
-    throw ReportedElsewhere(all[0]);
+    requireAgreement(agreement);
+    inputsChecked_ = true;
+}
+
+void Ranks::requireAgreement(const Agreement& agreement) const {
+    // Equal everywhere exactly where the largest hash and the largest
+    // complement (the complement of the smallest) are complements: one call.
+    const std::uint32_t hash = static_cast<std::uint32_t>(
+        crc32_z(0L, reinterpret_cast<const Bytef*>(agreement.text.data()), agreement.text.size()));
+    const std::uint32_t mine[2] = {hash, ~hash};
+    std::uint32_t largest[2] = {0, 0};
+    check(MPI_Allreduce(mine, largest, 2, MPI_UINT32_T, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+    if (largest[0] == static_cast<std::uint32_t>(~largest[1])) return;
+    const std::vector<std::string> texts = gatherToFirst(agreement.text);
+    if (!first()) throw ReportedElsewhere(2);
+    for (int r = 1; r < size_; ++r)
+        if (texts[static_cast<std::size_t>(r)] != agreement.text)
+            throw InputError("ranks disagree: " + agreement.difference(texts[static_cast<std::size_t>(r)], r) +
+                             "; every rank must be started with the same arguments and read the same scene");
+    EIKON_CHECK_MSG(false, "texts whose hashes differ differ");
 }
 
 int Ranks::runGuarded(const std::function<int()>& body) {

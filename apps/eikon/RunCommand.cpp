@@ -2,16 +2,17 @@
 
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/Ranks.h"
+#include "apps/eikon/RunAgreement.h"
 #include "bridge/core/Error.h"
 #include "apps/eikon/ProgressBar.h"
 #include "io/files/OutputFolder.h"
-#include "io/scene/ExportParser.h"
 #include "io/scene/SceneParser.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMemory.h"
 #include "render/graph/MemoryEstimate.h"
 #include "render/stages/PhotonStage.h"
 #include "sim/SceneFields.h"
+#include "sim/volume/VolumeSequence.h"
 
 #include <filesystem>
 #include <memory>
@@ -72,27 +73,30 @@ int runCommand(const RunOptions& options) {
     std::filesystem::path outDir;
     Distribution distribution = Distribution::None;
     // Everything the user supplied is checked before anything is written,
-    // by every rank alike (Ranks::checkInputsTogether).
+    // by every rank alike, and the ranks agree on it (Ranks::checkInputsTogether).
+    Ranks::Agreement agreement;
     ranks.checkInputsTogether([&] {
-        scene = loadSceneFile(options.scenePath, options.overrides);
+        const nlohmann::json document = loadSceneDocument(options.scenePath, options.overrides);
+        scene = parseScene(document, options.scenePath);
         if (options.vtk) {  // the default field set, whatever the scene says
             scene.exports.vtk = VtkExportDesc{};
             scene.exports.vtk.enabled = true;
         }
-        if (scene.volume) requireVolumeFrames(*scene.volume, options.frames);
+        if (scene.volume) sim::checkVolumeFrames(*scene.volume, scene.grid.spec(), options.frames, scene.sourcePath);
         render::requireMemoryFits(scene);  // before the fields, the GL context or anything the scene sizes
         fields = std::make_unique<sim::SceneFields>(scene);
         distribution = chooseDistribution(options, scene, *fields, ranks);
         outDir = options.outDir.empty()
                      ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
                      : std::filesystem::path(options.outDir);
+        if (ranks.distributed()) agreement = runAgreement(options, outDir, document, scene);
         if (ranks.first()) io::OutputFolder::requireUsable(outDir, options.force);
         // Before the folder: a machine without GL leaves nothing behind. A
         // rank takes the GPU of its local rank where a machine has several.
         context = gl::createHeadlessContext(static_cast<unsigned>(ranks.localRank()));
         fields->placeFluidSolver(!context->info().rendersOnCpu());
         fields->placeWater(!context->info().rendersOnCpu());
-    });
+    }, agreement);
     const int ownFrames =
         distribution == Distribution::Frames ? (options.frames + ranks.size() - 1) / ranks.size() : options.frames;
     ProgressBar progress(ownFrames, options.quiet || !ranks.first());

@@ -13,6 +13,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
+#include <string>
+
 namespace {
 
 // bench, accuracy and converge measure one process, and paraview writes one
@@ -42,8 +45,24 @@ int main(int argc, char** argv) {
     eikon::app::addConvergeCommand(app, convergeOptions);
     eikon::app::ParaViewOptions paraviewOptions;
     eikon::app::addParaViewCommand(app, paraviewOptions);
-    return eikon::app::parseAndRun(app, argc, argv, "eikon", [&] {
+    return eikon::app::runReportingFailures("eikon", [&] {
         return ranks.runGuarded([&] {
+            // Every rank parses its own command line (a launcher may give each
+            // its own): one that refuses it ends them all, and ranks started
+            // with different commands are refused before any command starts.
+            std::optional<int> printed;  // --help, --version
+            eikon::app::Ranks::Agreement sameCommand;
+            sameCommand.difference = [&](const std::string& theirs, int rank) {
+                return "rank " + std::to_string(rank) + "'s command is " + theirs + ", rank 0's is " +
+                       sameCommand.text;
+            };
+            ranks.checkInputsTogether(
+                [&] {
+                    printed = eikon::app::parseCommandLine(app, argc, argv);
+                    sameCommand.text = printed ? "--help" : app.get_subcommands().front()->get_name();
+                },
+                sameCommand);
+            if (printed) return *printed;
             if (app.got_subcommand("run")) return eikon::app::runCommand(runOptions);
             if (app.got_subcommand("bench")) {
                 requireOneProcess(ranks, "bench");

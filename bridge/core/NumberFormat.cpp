@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
@@ -41,6 +42,17 @@ std::string formatNumber(double value) {
     else if (k == 1) out = digits + exponentText(n - 1);
     else out = digits.substr(0, 1) + "." + digits.substr(1) + exponentText(n - 1);
     return negative ? "-" + out : out;
+}
+
+std::string formatRounded(double value) {
+    if (!std::isfinite(value)) return formatNumber(value);
+    char rounded[32];
+    std::snprintf(rounded, sizeof rounded, "%.6g", value);
+    return formatNumber(std::strtod(rounded, nullptr));
+}
+
+std::string formatPosition(const glm::dvec3& position) {
+    return "(" + formatRounded(position.x) + ", " + formatRounded(position.y) + ", " + formatRounded(position.z) + ") m";
 }
 
 }  // namespace eikon

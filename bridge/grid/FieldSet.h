@@ -8,8 +8,12 @@
 #include "bridge/grid/CellBox.h"
 #include "bridge/grid/GridSpec.h"
 
+#include <glm/vec3.hpp>
+
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace eikon {
@@ -75,9 +79,18 @@ struct FieldSet {
 // Replaces `current` with `next` and bumps `version` if their values differ.
 void publishField(std::vector<float>& current, std::vector<float>&& next, std::uint64_t& version);
 
-// Throws InputError naming the field and cell of the first value that is not
-// finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ, ε < 0, a surface vertex or normal not finite): fields are checked
-// where they enter the bridge, never traced silently.
-void validateFields(const FieldSet& fields, const std::string& source);
+// Where a field's values came from, for a refusal of one: given the field
+// ("index", "extinction", "scattering", "anisotropy", "emission" or
+// "surfaces") and the world position of the refused value (its cell's
+// centre; null for a refusal of the whole field), the file and the key paths
+// a user edits to change it: "scene.json: paint[0].index, medium.index".
+using FieldOrigin = std::function<std::string(std::string_view field, const glm::dvec3* at)>;
+
+// Throws InputError naming, through `origin`, the keys behind the first value
+// that is not finite or out of range (n ≤ 0, κ < 0, σs < 0, σs > κ, |g| ≥ 1,
+// ε < 0, a surface vertex or normal not finite), with its world position, or
+// behind a field of the wrong size: fields are checked where they enter the
+// bridge, never traced silently.
+void validateFields(const FieldSet& fields, const FieldOrigin& origin);
 
 }  // namespace eikon

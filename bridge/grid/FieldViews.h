@@ -44,6 +44,6 @@ FieldViews viewsOf(FieldSet& fields);
 ConstFieldViews viewsOf(const FieldSet& fields);
 
 // validateFields (FieldSet.h) for fields in any memory.
-void validateFields(const ConstFieldViews& fields, const std::string& source);
+void validateFields(const ConstFieldViews& fields, const FieldOrigin& origin);
 
 }  // namespace eikon

@@ -56,6 +56,7 @@
     X(kRawFluence, 13)          /* buffer RawFluence: the light pass's unsmoothed fluence, RGB per cell (float, or 64-bit units) */ \
     X(kRawFluenceDirection, 14) /* buffer RawFluenceDirection: and its unsmoothed direction sums */                             \
     X(kViewExit, 15)            /* buffer ViewExit { vec4 exit[]; }: per pixel, direction leaving the scene, w: how (tests) */  \
+    X(kDiagnosticRays, 15)      /* buffer DiagnosticRays { vec4 rays[]; }: per pixel (deflection on the image axes in rad, OPD in m, how it ended) */ \
     X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */          \
     X(kSharpSurfaces, 17)       /* uniform SharpSurfaces { GpuSharpSurface surfaces[kMaxSharpObjects]; } */                     \
     X(kSurfaceNodes, 18)        /* buffer SurfaceNodes { vec4 nodes[]; }: the sharp meshes' trees (FieldSet.h) */              \
@@ -147,6 +148,12 @@
     X(kSharpBox, 1)                         \
     X(kSharpTriangles, 2)
 
+// Camera projections (GpuCamera::image.w): a pinhole, or parallel rays
+// (the diagnostics' parallel light).
+#define EIKON_LAYOUT_PROJECTIONS(X) \
+    X(kPerspectiveProjection, 0)    \
+    X(kOrthographicProjection, 1)
+
 // Binding points of the fluid solver's and the water surface's GPU passes
 // (sim/gpu, shaders/sim).
 // Every pass binds what it reads right before its dispatch, so these may
@@ -209,6 +216,7 @@
     EIKON_LAYOUT_IMAGE_UNITS(X)          \
     EIKON_LAYOUT_POWER_TALLIES(X)        \
     EIKON_LAYOUT_SHARP_SURFACE_KINDS(X)  \
+    EIKON_LAYOUT_PROJECTIONS(X)          \
     EIKON_LAYOUT_SOLVER_BINDINGS(X)
 
 namespace eikon::layout {
@@ -220,6 +228,7 @@ enum TextureUnit : unsigned { EIKON_LAYOUT_TEXTURE_UNITS(EIKON_LAYOUT_ENUMERATOR
 enum ImageUnit : unsigned { EIKON_LAYOUT_IMAGE_UNITS(EIKON_LAYOUT_ENUMERATOR) };
 enum PowerTally : unsigned { EIKON_LAYOUT_POWER_TALLIES(EIKON_LAYOUT_ENUMERATOR) };
 enum SharpSurfaceKind : int { EIKON_LAYOUT_SHARP_SURFACE_KINDS(EIKON_LAYOUT_ENUMERATOR) };
+enum Projection : unsigned { EIKON_LAYOUT_PROJECTIONS(EIKON_LAYOUT_ENUMERATOR) };
 enum SolverBinding : unsigned { EIKON_LAYOUT_SOLVER_BINDINGS(EIKON_LAYOUT_ENUMERATOR) };
 #undef EIKON_LAYOUT_ENUMERATOR
 static_assert(kTallyCount == kUnfollowed + 1, "kTallyCount counts the tallies");
@@ -376,15 +385,15 @@ struct GpuWaterHeightField {
 static_assert(sizeof(GpuWaterHeightField) == 48);
 
 
-// uniform CameraBlock (std140): a pinhole camera and the environment.
+// uniform CameraBlock (std140): a pinhole or orthographic camera and the environment.
 enum EnvironmentKind : unsigned { kUniformEnvironment = 0, kSkyEnvironment = 1, kHdrEnvironment = 2 };
 
 struct GpuCamera {
-    glm::vec4 position;    // xyz metres; w = tan(vertical fov / 2)
+    glm::vec4 position;    // xyz metres; w = half the image's height: tan(vertical fov / 2) (perspective), metres (orthographic)
     glm::vec4 forward;     // unit; w = width / height
     glm::vec4 right;       // unit
     glm::vec4 up;          // unit
-    glm::uvec4 image;      // x: width, y: height, z: EnvironmentKind
+    glm::uvec4 image;      // x: width, y: height, z: EnvironmentKind, w: Projection
     glm::vec4 radiance;    // uniform: rgb radiance W/(m²·sr); hdr: x intensity, y rotation about +y (rad)
     glm::vec4 zenith;      // sky: rgb
     glm::vec4 horizon;     // sky: rgb

@@ -7,6 +7,7 @@
 
 #include "bridge/grid/GridSpec.h"
 #include "bridge/scene/ComputeDevice.h"
+#include "bridge/scene/DiagnosticDesc.h"
 #include "bridge/scene/ExportDesc.h"
 #include "bridge/scene/FloatImage.h"
 #include "bridge/scene/MeshObjectDesc.h"
@@ -138,7 +139,14 @@ struct CameraDesc {
     glm::dvec3 position{0, 0, 3};
     glm::dvec3 target{0.0};   // != position
     glm::dvec3 up{0, 1, 0};   // not parallel to target - position
-    double fovDeg = 40.0;     // vertical field of view, in (0, 180)
+    // Perspective: rays from `position` through the pixels; orthographic:
+    // parallel rays along target − position, one from each pixel of a
+    // widthM-wide image plane through `position` (height from the image's aspect).
+    enum class Projection { Perspective, Orthographic } projection = Projection::Perspective;
+    double fovDeg = 40.0;     // perspective: vertical field of view, in (0, 180)
+    double widthM = 1.0;      // orthographic: the view's width, m, > 0
+
+    bool orthographic() const { return projection == Projection::Orthographic; }
 };
 
 // What a camera ray sees when it leaves the scene.
@@ -303,6 +311,7 @@ struct Scene {
     double frameTime = 1.0 / 30.0;  // s of scene time per frame for deformers, > 0; sim.frame_time when there is a sim
     std::optional<VolumeDesc> volume;  // present when the scene imports an OpenVDB volume (not with sim)
     ExportDesc exports;
+    std::optional<DiagnosticDesc> diagnostic;  // present: the picture is this instrument's, not the view's
 };
 
 }  // namespace eikon

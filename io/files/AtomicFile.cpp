@@ -5,10 +5,13 @@
 #include <atomic>
 #include <cerrno>
 #include <csignal>
-#include <cstdio>
-#include <cstring>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -72,20 +75,94 @@ extern "C" void removeTemporariesAndDie(int signal) {
     std::raise(signal);
 }
 
-// Flushes a file another library has written and closed to the disk.
-bool syncFile(const std::filesystem::path& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return false;
-    const bool synced = ::fsync(fd) == 0;
-    return ::close(fd) == 0 && synced;
+std::filesystem::path temporaryNameFor(const std::filesystem::path& path) {
+    return path.string() + ".tmp" + std::to_string(::getpid());
+}
+
+// The folders whose writes are guarded, by root as the writers spell it.
+std::mutex guardsMutex;
+std::vector<std::pair<std::filesystem::path, WriteGuard*>> guards;
+
+bool isBelow(const std::filesystem::path& root, const std::filesystem::path& path) {
+    const std::filesystem::path relative = path.lexically_normal().lexically_relative(root.lexically_normal());
+    return isPlainRelative(relative);
+}
+
+WriteGuard* guardFor(const std::filesystem::path& path) {
+    const std::lock_guard lock(guardsMutex);
+    for (auto entry = guards.rbegin(); entry != guards.rend(); ++entry)  // the latest first
+        if (isBelow(entry->first, path)) return entry->second;
+    return nullptr;
+}
+
+std::system_error osError(const std::string& step) { return {errno, std::generic_category(), step}; }
+
+// The same steps by path, where no folder guards them.
+class PathWrites final : public WriteGuard {
+public:
+    Descriptor createTemporary(const std::filesystem::path& temporary) override {
+        Descriptor file(::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666));
+        if (!file) throw osError("cannot write");
+        return file;
+    }
+    void commit(const std::filesystem::path& temporary, const std::filesystem::path& path) override {
+        const Descriptor file(::open(temporary.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC));
+        if (!file || ::fsync(file.get()) != 0) throw osError("could not be written");
+        if (::rename(temporary.c_str(), path.c_str()) != 0) throw osError("cannot rename into place");
+    }
+    void discard(const std::filesystem::path& temporary) noexcept override { ::unlink(temporary.c_str()); }
+};
+
+WriteGuard& writesFor(const std::filesystem::path& path) {
+    static PathWrites byPath;
+    WriteGuard* guard = guardFor(path);
+    return guard ? *guard : byPath;
+}
+
+// All of `bytes` to `file`, or the OS's reason why not.
+void writeAll(int file, std::string_view bytes) {
+    while (!bytes.empty()) {
+        const ssize_t written = ::write(file, bytes.data(), bytes.size());
+        if (written < 0 && errno == EINTR) continue;
+        if (written < 0) throw osError("write failed");
+        bytes.remove_prefix(static_cast<std::size_t>(written));
+    }
+}
+
+// Renames a written temporary into place, or removes it and says why not.
+void commitOrDiscard(WriteGuard& writes, const std::filesystem::path& temporary, const std::filesystem::path& path) {
+    try {
+        writes.commit(temporary, path);
+    } catch (const std::system_error& error) {
+        writes.discard(temporary);
+        throw std::runtime_error(path.string() + ": " + error.what());
+    }
 }
 
 }  // namespace
 
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path) {
-    const std::filesystem::path temporary = path.string() + ".tmp" + std::to_string(::getpid());
+    const std::filesystem::path temporary = temporaryNameFor(path);
     registerTemporary(temporary);
+    if (WriteGuard* guard = guardFor(path)) {
+        try {
+            guard->createTemporary(temporary);  // closed again: the writer opens it by name
+        } catch (const std::system_error& error) {
+            unregisterTemporary(temporary);
+            throw std::runtime_error(path.string() + ": " + error.what());
+        }
+    }
     return temporary;
+}
+
+void guardWritesBelow(const std::filesystem::path& root, WriteGuard& guard) {
+    const std::lock_guard lock(guardsMutex);
+    guards.emplace_back(root, &guard);
+}
+
+void stopGuarding(const WriteGuard& guard) {
+    const std::lock_guard lock(guardsMutex);
+    std::erase_if(guards, [&](const auto& entry) { return entry.second == &guard; });
 }
 
 void removeTemporariesOnSignals() {
@@ -102,37 +179,36 @@ void exitOnSignalsWith(int code, const std::string& message) {
 void commitTemporary(const std::filesystem::path& temporary, const std::filesystem::path& path, bool written,
                      const std::string& reason) {
     const InFlight inFlight{temporary};
-    written = written && syncFile(temporary);
-    std::error_code error;
-    if (written) std::filesystem::rename(temporary, path, error);
-    if (!written || error) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw std::runtime_error(path.string() + (written ? ": cannot rename into place (" + error.message() + ")"
-                                                         : ": could not be written" +
-                                                               (reason.empty() ? "" : " (" + reason + ")")));
+    WriteGuard& writes = writesFor(path);
+    if (!written) {
+        writes.discard(temporary);
+        throw std::runtime_error(path.string() + ": could not be written" + (reason.empty() ? "" : " (" + reason + ")"));
     }
+    commitOrDiscard(writes, temporary, path);
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
-    const std::filesystem::path temporary = temporaryPathFor(path);
+    const std::filesystem::path temporary = temporaryNameFor(path);
+    registerTemporary(temporary);
     const InFlight inFlight{temporary};
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (!file) throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size() && std::fflush(file) == 0 &&
-                         ::fsync(::fileno(file)) == 0;
-    const int writeErrno = errno;
-    const bool closed = std::fclose(file) == 0;
-    std::error_code error;
-    if (!written || !closed) {
-        std::filesystem::remove(temporary, error);
-        throw std::runtime_error(path.string() + ": write failed (" + std::strerror(writeErrno) + ")");
+    WriteGuard& writes = writesFor(path);
+    try {
+        Descriptor file = writes.createTemporary(temporary);
+        try {
+            writeAll(file.get(), bytes);
+        } catch (const std::system_error&) {
+            writes.discard(temporary);
+            throw;
+        }
+        if (::close(file.release()) != 0) {  // NFS, say, reports a failed write only here
+            const std::system_error error = osError("write failed");
+            writes.discard(temporary);
+            throw error;
+        }
+    } catch (const std::system_error& error) {
+        throw std::runtime_error(path.string() + ": " + error.what());
     }
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::filesystem::remove(temporary, error);
-        throw std::runtime_error(path.string() + ": cannot rename into place (" + error.message() + ")");
-    }
+    commitOrDiscard(writes, temporary, path);
 }
 
 }  // namespace eikon::io

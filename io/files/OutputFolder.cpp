@@ -2,13 +2,21 @@
 
 #include "bridge/core/Error.h"
 #include "io/files/AtomicFile.h"
+#include "io/files/EarlierRun.h"
+#include "io/files/RunJournal.h"
 
-#include <algorithm>
+#include <cerrno>
 #include <cstdio>
-#include <fstream>
+#include <optional>
 #include <regex>
+#include <set>
+#include <stdexcept>
 #include <system_error>
-#include <vector>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace eikon::io {
 
@@ -16,106 +24,204 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kManifestHeader = "# files an eikon run wrote into this folder, one per line";
-
-// Every regular file below root, relative to it.
-std::set<fs::path> filesBelow(const fs::path& root) {
-    std::set<fs::path> files;
-    for (const auto& entry : fs::recursive_directory_iterator(root))
-        if (entry.is_regular_file()) files.insert(fs::relative(entry.path(), root));
-    return files;
-}
-
-// The files an earlier run's list names (only paths inside the folder).
-std::vector<fs::path> listedFiles(const fs::path& root) {
-    std::ifstream manifest(root / OutputFolder::kManifestName);
-    std::vector<fs::path> files;
-    std::string line;
-    while (std::getline(manifest, line)) {
-        if (line.empty() || line[0] == '#') continue;
-        const fs::path relative = fs::path(line).lexically_normal();
-        if (relative.is_absolute() || relative.empty() || *relative.begin() == "..") continue;
-        files.push_back(relative);
-    }
-    return files;
-}
+// The folders below DIR that eikon's writers open files in by name.
+constexpr const char* kWrittenByName[] = {"frames", "vtk", "vdb"};
 
 // The names eikon gives its outputs (frames, report, VTK and OpenVDB
-// series), relative to the folder.
-const std::string kOutputNames =
-    R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|converge\.(csv|md|png|svg)|)"
-    R"(vtk/((fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series)|fields_static\.vti|)"
-    R"(open_in_paraview\.py))";
-
-// A temporary eikon was writing when it was killed (AtomicFile.h names
-// them NAME.tmpPID): an output's, or the list's.
-bool isEikonTemporary(const fs::path& relative) {
-    static const std::regex temporary("(" + kOutputNames + R"(|\.eikon-run)\.tmp\d+)");
-    return std::regex_match(relative.generic_string(), temporary);
+// series, converge's study), relative to the folder.
+const std::regex& outputNames() {
+    static const std::regex names(
+        R"(report\.jsonl|frames/frame_\d{5}\.(png|hdr)|vdb/fields_\d{5}\.vdb|converge\.(csv|md|png|svg)|)"
+        R"(vtk/((fields|receivers|meshes|photon_paths)(_\d{5}\.(vti|vtp)|\.pvd|\.(vti|vtp)\.series)|fields_static\.vti|)"
+        R"(open_in_paraview\.py))");
+    return names;
 }
 
-// Runs from before the list existed: a folder all of whose files have the
-// names eikon gives its outputs, or its temporaries'.
-bool holdsOnlyUnlistedEikonOutput(const fs::path& root) {
-    static const std::regex names(kOutputNames);
-    const std::set<fs::path> files = filesBelow(root);
-    return std::all_of(files.begin(), files.end(), [](const fs::path& file) {
-        return std::regex_match(file.generic_string(), names) || isEikonTemporary(file);
-    });
+std::string osReason() { return std::generic_category().message(errno); }
+
+std::string shareJournalName(int rank) { return std::string(OutputFolder::kJournalName) + ".rank" + std::to_string(rank); }
+
+Descriptor openRoot(const fs::path& root) {
+    Descriptor folder(::open(root.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (!folder) throw std::runtime_error(root.string() + ": cannot open the output folder: " + osReason());
+    return folder;
 }
 
-// Removes `files` and then the folders that left empty; the list goes last.
-void clearEarlierRun(const fs::path& root, const std::vector<fs::path>& files) {
-    std::set<fs::path> folders;
-    for (const fs::path& relative : files) {
-        std::error_code ignored;
-        if (fs::is_regular_file(root / relative)) fs::remove(root / relative, ignored);
-        for (fs::path parent = relative.parent_path(); !parent.empty(); parent = parent.parent_path()) folders.insert(parent);
+// The names in an open folder, in no particular order.
+std::vector<std::string> namesIn(const fs::path& path, int folder) {
+    DIR* listing = nullptr;
+    if (const int own = ::openat(folder, ".", O_RDONLY | O_DIRECTORY | O_CLOEXEC); own >= 0) {
+        listing = ::fdopendir(own);
+        if (!listing) ::close(own);
     }
-    for (auto folder = folders.rbegin(); folder != folders.rend(); ++folder) {  // deepest first
-        std::error_code ignored;
-        if (fs::is_directory(root / *folder) && fs::is_empty(root / *folder)) fs::remove(root / *folder, ignored);
+    if (!listing) throw std::runtime_error(path.string() + ": cannot read the output folder: " + osReason());
+    std::vector<std::string> names;
+    while (const dirent* entry = ::readdir(listing)) {
+        const std::string name = entry->d_name;
+        if (name != "." && name != "..") names.push_back(name);
     }
-    std::error_code ignored;
-    fs::remove(root / OutputFolder::kManifestName, ignored);
+    ::closedir(listing);
+    return names;
+}
+
+// "a, b (a symbolic link) and 3 more": the first few of `names` below `folder`.
+std::string listed(int folder, const std::vector<fs::path>& names) {
+    std::string text;
+    constexpr std::size_t kShown = 3;
+    for (std::size_t i = 0; i < names.size() && i < kShown; ++i) {
+        const std::optional<struct stat> status = statBeneath(folder, names[i]);
+        text += (i ? ", " : "") + names[i].generic_string() + (status && S_ISLNK(status->st_mode) ? " (a symbolic link)" : "");
+    }
+    if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
+    return text;
+}
+
+[[noreturn]] void refuseForeign(const fs::path& root, int folder, const std::vector<std::string>& names) {
+    throw InputError(root.string() + ": the folder holds files eikon did not write (" +
+                     listed(folder, std::vector<fs::path>(names.begin(), names.end())) +
+                     "); choose another --out (--force only clears a folder an earlier eikon run wrote)");
+}
+
+// The run's journal in `folder`, opened with `flags`; empty where there is none.
+Descriptor openJournal(const fs::path& root, int folder, int flags) {
+    Descriptor journal(::openat(folder, OutputFolder::kJournalName, flags | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666));
+    if (!journal && errno == ENOENT) return {};
+    std::string found = journal ? "" : errno == ELOOP ? "a symbolic link" : "something it cannot open (" + osReason() + ")";
+    struct stat status {};
+    if (journal && (::fstat(journal.get(), &status) != 0 || !S_ISREG(status.st_mode))) found = "something else than a file";
+    if (found.empty()) return journal;
+    throw InputError((root / OutputFolder::kJournalName).string() + ": expected the journal of an eikon run, found " +
+                     found + "; choose another --out");
+}
+
+[[noreturn]] void refuseBusy(const fs::path& root, int journal) {
+    std::string holder = "another eikon run";
+    try {
+        if (const std::optional<long> pid = journalPid(readWholeFile(journal))) holder += " (pid " + std::to_string(*pid) + ")";
+    } catch (const std::system_error&) {
+        // Named without its pid.
+    }
+    throw std::runtime_error(holder + " is writing into " + root.string() +
+                             "; wait for it to end or choose another --out");
+}
+
+struct flock wholeFileWriteLock() {
+    struct flock lock {};
+    lock.l_type = F_WRLCK;
+    lock.l_whence = SEEK_SET;  // l_start 0, l_len 0: the whole file
+    return lock;
+}
+
+void refuseIfBusy(const fs::path& root, int journal) {
+    struct flock probe = wholeFileWriteLock();
+    if (::fcntl(journal, F_OFD_GETLK, &probe) == 0 && probe.l_type != F_UNLCK) refuseBusy(root, journal);
+}
+
+void lockOrRefuse(const fs::path& root, int journal) {
+    struct flock lock = wholeFileWriteLock();
+    if (::fcntl(journal, F_OFD_SETLK, &lock) == 0) return;
+    if (errno == EAGAIN || errno == EACCES) refuseBusy(root, journal);
+    throw std::runtime_error((root / OutputFolder::kJournalName).string() + ": cannot lock: " + osReason());
+}
+
+// frames/, vtk/ and vdb/ are folders, not links: VTK and OpenVDB open the
+// files in them by name.
+void requireRealFolders(const fs::path& root, int folder) {
+    for (const char* name : kWrittenByName) {
+        struct stat status {};
+        if (::fstatat(folder, name, &status, AT_SYMLINK_NOFOLLOW) != 0 || S_ISDIR(status.st_mode)) continue;
+        throw InputError((root / name).string() + ": expected a folder for eikon's files, found " +
+                         (S_ISLNK(status.st_mode) ? "a symbolic link" : "a file") +
+                         "; eikon never writes through a link (remove it or choose another --out)");
+    }
+}
+
+// Nothing under an output name stays once the earlier run's files go.
+void requireNoStrangerOutputs(const fs::path& root, int folder, const std::vector<Removal>& removals) {
+    std::set<fs::path> going;
+    for (const Removal& removal : removals) going.insert(removal.path);
+    std::vector<fs::path> strangers;
+    const auto check = [&](const fs::path& subfolder, int descriptor) {
+        for (const std::string& name : namesIn(root / subfolder, descriptor)) {
+            const fs::path relative = subfolder / name;
+            if (std::regex_match(relative.generic_string(), outputNames()) && !going.count(relative))
+                strangers.push_back(relative);
+        }
+    };
+    check({}, folder);
+    for (const char* name : kWrittenByName) {
+        const std::optional<struct stat> status = statBeneath(folder, name);
+        if (status && S_ISDIR(status->st_mode)) check(name, openFolderBeneath(folder, name).get());
+    }
+    if (strangers.empty()) return;
+    throw InputError(root.string() + ": " + listed(folder, strangers) +
+                     ": not written by the earlier run (put there, or put in place of its file, since); eikon "
+                     "neither overwrites such a file nor leaves it beside a new run's — move it away or choose "
+                     "another --out");
+}
+
+// Every refusal; with `journal` (−1: none) holding an earlier run and
+// `force`, what removing that run takes.
+std::vector<Removal> checkFolder(const fs::path& root, int folder, int journal, bool force) {
+    std::vector<std::string> names = namesIn(root, folder);
+    std::erase(names, OutputFolder::kJournalName);
+    std::string text;
+    try {
+        if (journal >= 0) text = readWholeFile(journal);
+    } catch (const std::system_error& error) {
+        throw std::runtime_error((root / OutputFolder::kJournalName).string() + ": " + error.what());
+    }
+    if (text.empty()) {  // no run, or one killed before its journal's first line
+        if (!names.empty()) refuseForeign(root, folder, names);
+        return {};
+    }
+    if (!journalPid(text))
+        throw InputError((root / OutputFolder::kJournalName).string() +
+                         ": expected the journal of an eikon run, which records each file's identity, found " +
+                         (text.rfind("# files an eikon run wrote", 0) == 0 ? "an older eikon's list of names"
+                                                                           : "another file") +
+                         "; remove the earlier run's files yourself or choose another --out");
+    if (!force)
+        throw InputError(root.string() +
+                         ": the output folder holds an earlier run; choose another --out or pass --force to clear it");
+    const std::vector<Removal> removals = earlierRunRemovals(folder, text);
+    requireRealFolders(root, folder);
+    requireNoStrangerOutputs(root, folder, removals);
+    return removals;
 }
 
 }  // namespace
 
 void OutputFolder::requireUsable(const fs::path& root, bool force) {
-    if (fs::exists(root) && !fs::is_directory(root)) throw InputError(root.string(), "an output folder", "a file");
-    if (!fs::exists(root) || fs::is_empty(root)) return;
-    if (!fs::is_regular_file(root / kManifestName) && !holdsOnlyUnlistedEikonOutput(root))
-        throw InputError(root.string() +
-                         ": the folder holds files eikon did not write; choose another --out (--force only clears "
-                         "a folder an earlier eikon run wrote)");
-    if (!force)
-        throw InputError(root.string() +
-                         ": the output folder holds an earlier run; choose another --out or pass --force to clear it");
+    if (!fs::exists(root)) return;
+    if (!fs::is_directory(root)) throw InputError(root.string(), "an output folder", "a file");
+    const Descriptor folder = openRoot(root);
+    const Descriptor journal = openJournal(root, folder.get(), O_RDONLY);
+    if (journal) refuseIfBusy(root, journal.get());
+    checkFolder(root, folder.get(), journal.get(), force);
 }
 
 OutputFolder::OutputFolder(fs::path root, bool force, bool withFrames) : root_(std::move(root)) {
-    requireUsable(root_, force);
-    if (fs::exists(root_) && !fs::is_empty(root_)) {
-        const bool listed = fs::is_regular_file(root_ / kManifestName);
-        const std::set<fs::path> all = filesBelow(root_);
-        std::vector<fs::path> earlier = listed ? listedFiles(root_) : std::vector<fs::path>(all.begin(), all.end());
-        for (const fs::path& file : all)  // what a killed run was writing
-            if (listed && isEikonTemporary(file)) earlier.push_back(file);
-        clearEarlierRun(root_, earlier);
+    if (fs::exists(root_) && !fs::is_directory(root_)) throw InputError(root_.string(), "an output folder", "a file");
+    std::error_code created;
+    fs::create_directories(root_, created);
+    if (created) throw std::runtime_error(root_.string() + ": cannot create the output folder: " + created.message());
+    folder_ = openRoot(root_);
+    journal_ = openJournal(root_, folder_.get(), O_RDWR | O_APPEND);
+    if (!journal_) {  // made only in a folder that is empty: a refused one stays as it was
+        if (std::vector<std::string> names = namesIn(root_, folder_.get()); !names.empty())
+            refuseForeign(root_, folder_.get(), names);
+        journal_ = openJournal(root_, folder_.get(), O_RDWR | O_APPEND | O_CREAT);
     }
-    fs::create_directories(withFrames ? root_ / "frames" : root_);
-    before_ = filesBelow(root_);
-    recordWrittenFiles();
-}
-
-OutputFolder::~OutputFolder() {
-    try {
-        recordWrittenFiles();
-    } catch (const std::exception&) {
-        // The list was kept up to date after every frame; a failure here (a
-        // full disk) leaves the last one standing.
-    }
+    lockOrRefuse(root_, journal_.get());
+    removeEarlierRun(root_, folder_.get(), checkFolder(root_, folder_.get(), journal_.get(), force));
+    const std::string header = journalHeader(::getpid());
+    if (::ftruncate(journal_.get(), 0) != 0 ||
+        ::write(journal_.get(), header.data(), header.size()) != static_cast<ssize_t>(header.size()))
+        throw std::runtime_error((root_ / kJournalName).string() + ": cannot be written: " + osReason());
+    if (withFrames && ::mkdirat(folder_.get(), "frames", 0777) != 0 && errno != EEXIST)
+        throw std::runtime_error((root_ / "frames").string() + ": cannot be created: " + osReason());
+    guard_ = std::make_unique<GuardedFolder>(root_, folder_.get(), journal_.get(), root_ / kJournalName);
 }
 
 fs::path OutputFolder::framePathIn(const fs::path& root, int frame) {
@@ -129,14 +235,23 @@ void OutputFolder::appendReport(const std::string& jsonLine) { appendReports({js
 void OutputFolder::appendReports(const std::vector<std::string>& jsonLines) {
     for (const std::string& line : jsonLines) report_ += line + "\n";
     writeFileAtomically(root_ / "report.jsonl", report_);
-    recordWrittenFiles();
 }
 
-void OutputFolder::recordWrittenFiles() const {
-    std::string list = std::string(kManifestHeader) + "\n";
-    for (const fs::path& file : filesBelow(root_))
-        if (file != kManifestName && !before_.count(file)) list += file.generic_string() + "\n";
-    writeFileAtomically(root_ / kManifestName, list);
+void OutputFolder::shareWith(int processes) {
+    for (int rank = 1; rank < processes; ++rank) {
+        try {
+            guard_->createRecorded(shareJournalName(rank), JournalEntry::Kind::Share);
+        } catch (const std::system_error& error) {
+            throw std::runtime_error((root_ / shareJournalName(rank)).string() + ": " + error.what());
+        }
+    }
+}
+
+OutputFolderShare::OutputFolderShare(const fs::path& root, int rank) : folder_(openRoot(root)) {
+    const std::string name = shareJournalName(rank);
+    journal_ = Descriptor(::openat(folder_.get(), name.c_str(), O_WRONLY | O_APPEND | O_NOFOLLOW | O_CLOEXEC));
+    if (!journal_) throw std::runtime_error((root / name).string() + ": cannot open this process's journal: " + osReason());
+    guard_ = std::make_unique<GuardedFolder>(root, folder_.get(), journal_.get(), root / name);
 }
 
 }  // namespace eikon::io

@@ -338,14 +338,4 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     return volume;
 }
 
-void requireVolumeFrames(const VolumeDesc& volume, int frames) {
-    if (!volume.sequence) return;
-    for (int frame = 0; frame < frames; ++frame) {
-        const std::string path = volumeFramePath(volume, volume.frameStart + frame);
-        if (!std::filesystem::is_regular_file(path))
-            throw InputError(path, "the volume sequence's file for rendered frame " + std::to_string(frame),
-                             "no such file");
-    }
-}
-
 }  // namespace eikon

@@ -19,8 +19,4 @@ void readExport(const JsonReader& node, Scene& scene);
 // `volume`: an OpenVDB file or sequence; the (first) file must exist.
 VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder);
 
-// InputError naming the first file of a sequence missing for rendered
-// frames [0, frames): checked before a run writes anything.
-void requireVolumeFrames(const VolumeDesc& volume, int frames);
-
 }  // namespace eikon

@@ -5,6 +5,8 @@
 #include "bridge/layout/GpuLayouts.h"
 #include "io/files/FileBytes.h"
 #include "io/image/ImageIo.h"
+#include "io/scene/CameraProjectionParser.h"
+#include "io/scene/DiagnosticParser.h"
 #include "io/scene/DuplicateKeyCheck.h"
 #include "io/scene/JsonErrorPosition.h"
 #include "io/scene/ExportParser.h"
@@ -255,11 +257,12 @@ ReceiverDesc readReceiver(const JsonReader& node, TracerDesc::Estimator estimato
 
 CameraDesc readCamera(const JsonReader& node) {
     CameraDesc camera;
-    const auto fields = node.object({"position", "target", "up", "fov_deg"});
+    const auto fields = node.object({"position", "target", "up", "fov_deg", "projection", "width_m"});
     if (auto position = fields.optional("position")) camera.position = position->vec3(kCoordinateRange);
     if (auto target = fields.optional("target")) camera.target = target->vec3(kCoordinateRange);
     if (auto up = fields.optional("up")) camera.up = up->vec3();
     if (auto fov = fields.optional("fov_deg")) camera.fovDeg = fov->number(NumberRange::open(0.0, 180.0));
+    readCameraProjection(fields, camera);
 
     const glm::dvec3 view = normalizedOrZero(camera.target - camera.position);
     if (view == glm::dvec3(0.0)) {
@@ -590,7 +593,7 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& sourceN
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const auto fields = JsonReader(root, sourceName)
                             .object({"description", "grid", "medium", "objects", "paint", "lights", "receivers",
-                                     "camera", "render", "tracer", "sim", "frame_time", "volume", "export"});
+                                     "camera", "render", "tracer", "sim", "frame_time", "volume", "export", "diagnostic"});
     Scene scene;
     scene.sourcePath = sourceName;
     if (auto description = fields.optional("description")) description->string();  // checked, not kept
@@ -635,15 +638,22 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const bool volumeLights = scene.volume && scene.volume->emissionLights;
     if (scene.lights.empty() && !volumeLights)
         fields.member("lights").fail("an array of at least one light (or a volume with emission_lights)");
+    if (auto diagnostic = fields.optional("diagnostic")) scene.diagnostic = readDiagnostic(*diagnostic);
+    checkDiagnostic(fields, scene);
+    checkCameraProjection(fields, scene);
     checkRenderMethod(fields, scene);  // after everything image space might drop
     if (auto exports = fields.optional("export")) readExport(*exports, scene);  // last: it checks the fields exist
     return scene;
 }
 
-Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+nlohmann::json loadSceneDocument(const std::string& path, const std::vector<std::string>& overrides) {
     nlohmann::json root = parseJsonText(readTextFile(path), path);
     for (const std::string& assignment : overrides) applyOverride(root, assignment);
-    return parseScene(root, path);
+    return root;
+}
+
+Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
+    return parseScene(loadSceneDocument(path, overrides), path);
 }
 
 }  // namespace eikon

@@ -17,6 +17,10 @@ namespace eikon {
 // Reads and validates a parsed scene document; sourceName is used in messages.
 Scene parseScene(const nlohmann::json& root, const std::string& sourceName);
 
+// The document of the file at path with each `--set` override applied in
+// order, not yet validated.
+nlohmann::json loadSceneDocument(const std::string& path, const std::vector<std::string>& overrides = {});
+
 // Reads the file at path, applies each `--set` override in order, then parses.
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
 

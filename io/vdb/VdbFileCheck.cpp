@@ -2,6 +2,8 @@
 
 #include "bridge/core/Error.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 #include <openvdb/Metadata.h>
 
 #include <blosc.h>
@@ -179,16 +181,38 @@ bool checkMetaMap(Cursor& cursor, std::size_t fileBytes) {
     return savedAsHalf;
 }
 
-// Transform::read: the map's type name, then its fixed-size members (Maps.h).
-void checkTransform(Cursor& cursor) {
+// Transform::read: the map's type name, then its fixed-size members
+// (openvdb/math/Maps.h). Returns the world-to-index map OpenVDB will apply:
+// a scale map's stored inverse (which OpenVDB trusts, not recomputing it
+// from the scale), an affine map's matrix inverted (it stores the row-vector
+// form: world = (index, 1)·M, so its 16 doubles read column-major are Mᵀ).
+glm::dmat4 checkTransform(Cursor& cursor) {
     const std::string type = cursor.string("the transform's map type");
-    static const std::map<std::string, std::size_t> mapBytes{
-        {"UniformScaleMap", 5 * 24},          {"ScaleMap", 5 * 24},     {"TranslationMap", 24},
-        {"UniformScaleTranslateMap", 6 * 24}, {"ScaleTranslateMap", 6 * 24},
-        {"AffineMap", 128},                   {"UnitaryMap", 128}};
-    const auto it = mapBytes.find(type);
-    if (it == mapBytes.end()) cursor.fail("an affine transform map", "map type \"" + type + "\"");
-    cursor.skip(it->second, "the transform");
+    const auto vec3 = [&](const char* what) {
+        glm::dvec3 v;
+        for (int axis = 0; axis < 3; ++axis) v[axis] = cursor.read<double>(what);
+        return v;
+    };
+    const auto scaleInverse = [&] {  // the scale, voxel size, inverse, inverse², inverse/2
+        vec3("the map's scale");
+        vec3("the map's voxel size");
+        const glm::dvec3 inverse = vec3("the map's inverse scale");
+        vec3("the map's squared inverse scale");
+        vec3("the map's half inverse scale");
+        return glm::scale(glm::dmat4(1.0), inverse);
+    };
+    if (type == "TranslationMap") return glm::translate(glm::dmat4(1.0), -vec3("the map's translation"));
+    if (type == "UniformScaleMap" || type == "ScaleMap") return scaleInverse();
+    if (type == "UniformScaleTranslateMap" || type == "ScaleTranslateMap") {
+        const glm::dvec3 translation = vec3("the map's translation");
+        return scaleInverse() * glm::translate(glm::dmat4(1.0), -translation);
+    }
+    if (type == "AffineMap" || type == "UnitaryMap") {
+        glm::dmat4 transposed;
+        for (int entry = 0; entry < 16; ++entry) transposed[entry / 4][entry % 4] = cursor.read<double>("the map's matrix");
+        return glm::inverse(transposed);
+    }
+    cursor.fail("an affine transform map", "map type \"" + type + "\"");
 }
 
 struct TreeShape {
@@ -421,7 +445,7 @@ std::uint64_t VdbTreeSize::memoryBytes() const {
            upperNodes * (32768 * slot + 2 * 32768 / 8 + 12);
 }
 
-VdbTreeSize checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName) {
+VdbGridCheck checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName) {
     EIKON_CHECK(grid.endPos <= bytes.size() && grid.gridPos <= grid.blockPos && grid.blockPos <= grid.endPos);
     Cursor cursor(bytes, grid.gridPos, grid.blockPos, fileName);
     const std::string where = "grid \"" + grid.name + "\"";
@@ -437,7 +461,7 @@ VdbTreeSize checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const
     if (checkMetaMap(cursor, bytes.size()) != grid.halfFloat)
         cursor.fail(where + " whose metadata is_saved_as_half_float agrees with its type name",
                     grid.halfFloat ? "half floats by name only" : "half floats by metadata only");
-    checkTransform(cursor);
+    const glm::dmat4 worldToIndex = checkTransform(cursor);
     const auto bufferCount = cursor.read<std::int32_t>("the tree's buffer count");
     if (bufferCount != 1) cursor.fail("a tree with one buffer", std::to_string(bufferCount));
     Walk walk{cursor, {valueBytes, grid.halfFloat ? halfBytes : valueBytes, grid.halfFloat, compression}, {}};
@@ -449,7 +473,7 @@ VdbTreeSize checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const
     Walk leaves{blocks, walk.shape, std::move(walk.leafMasks)};
     leaves.buffers();
     blocks.expectAt(grid.endPos, "the leaf buffers");
-    return size;
+    return {worldToIndex, size};
 }
 
 }  // namespace eikon::io

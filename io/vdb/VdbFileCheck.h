@@ -17,6 +17,8 @@
 // offset, what was expected and what was found.
 #pragma once
 
+#include <glm/mat4x4.hpp>
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -51,7 +53,14 @@ struct VdbTreeSize {
     std::uint64_t memoryBytes() const;
 };
 
+// What checkVdbGrid found of one grid.
+struct VdbGridCheck {
+    // Its transform's map from world to index coordinates, as OpenVDB will
+    // apply it when it reads the grid (index = map · (world, 1)).
+    glm::dmat4 worldToIndex{1.0};
+    VdbTreeSize tree;
+};
 // Walks one grid (float or vec3s, not an instance) from gridPos to endPos.
-VdbTreeSize checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName);
+VdbGridCheck checkVdbGrid(std::string_view bytes, const VdbGridEntry& grid, const std::string& fileName);
 
 }  // namespace eikon::io

@@ -2,6 +2,7 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/core/MemoryLimit.h"
+#include "bridge/core/NumberFormat.h"
 #include "io/vdb/VdbFileCheck.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -131,10 +132,37 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     return sample(name, components, spec, glm::translate(glm::dmat4(1.0), offset));
 }
 
-std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
-                                         const glm::dmat4& placement) const {
+namespace {
+
+// The render grid, mapped by `toIndex` (scene world to the grid's index
+// coordinates, affine), must lie well within OpenVDB's 32-bit index
+// coordinates (a voxel of 1e-220 m put cells at index 1e222; found by
+// fuzz_vdb). The map is affine, so the grid's corners bound it.
+template <typename ToIndex>
+void checkIndexRange(const GridSpec& spec, ToIndex toIndex, const std::string& where) {
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 index = toIndex(glm::dvec3(corner & 1 ? spec.boundsMax.x : spec.boundsMin.x,
+                                                    corner & 2 ? spec.boundsMax.y : spec.boundsMin.y,
+                                                    corner & 4 ? spec.boundsMax.z : spec.boundsMin.z));
+        for (int axis = 0; axis < 3; ++axis)
+            if (!(std::abs(index[axis]) < kMaxIndexCoordinate))
+                throw InputError(where,
+                                 "a voxel size and placement (the scene's volume.transform, offset and up_axis) "
+                                 "that map the render grid within OpenVDB's index range (|index| < 2^30)",
+                                 "index " + formatRounded(index[axis]) + " at a corner of grid.bounds");
+    }
+}
+
+[[noreturn]] void refuseTransform(const std::string& where, bool linear) {
+    throw InputError(where, "an affine, invertible transform",
+                     linear ? "a singular or non-finite one" : "a non-linear (frustum) one");
+}
+
+}  // namespace
+
+void VdbVolumeFile::check(const std::string& name, int components, const GridSpec& spec,
+                          const glm::dmat4& placement) const {
     EIKON_CHECK(components == 1 || components == 3);
-    const glm::dmat4 sceneToFile = glm::inverse(placement);
     const std::string where = path_.string() + ": grid \"" + name + "\"";
     const VdbGridEntry* entry = nullptr;
     for (const VdbGridEntry& grid : grids_->layout.grids)
@@ -143,46 +171,49 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     const std::string wanted = components == 1 ? "float" : "vec3s";
     if (entry->valueType != wanted)
         throw InputError(where, "a " + wanted + " grid", "a grid of type \"" + entry->treeType + "\"");
-    // OpenVDB allocates every node of the tree whole: a sparse file of
-    // scattered voxels holds a few bytes for each 2 KiB leaf.
-    const VdbTreeSize tree = checkVdbGrid(grids_->bytes, *entry, path_.string());
+    // The map as the file stores it, which OpenVDB will apply unchecked, and
+    // the tree's nodes, which OpenVDB allocates whole however few of their
+    // voxels are active: a sparse file of scattered voxels holds a few bytes
+    // for each 2 KiB leaf.
+    const VdbGridCheck checked = checkVdbGrid(grids_->bytes, *entry, path_.string());
+    const VdbTreeSize& tree = checked.tree;
     const MemoryLimit limit = machineMemoryLimit();
     if (limit.bytes && grids_->bytes.size() + tree.memoryBytes() > limit.bytes)
         throw InputError(where, "a grid whose tree fits " + limit.source + " as OpenVDB reads it (volume.path)",
                          std::to_string(tree.leaves) + " leaves and " +
                              std::to_string(tree.lowerNodes + tree.upperNodes) + " internal nodes, " +
                              mebibytes(tree.memoryBytes()) + " beside the file's " + mebibytes(grids_->bytes.size()));
+    const glm::dmat4& worldToIndex = checked.worldToIndex;
+    const double determinant = glm::determinant(worldToIndex);
+    if (!std::isfinite(determinant) || determinant == 0.0) refuseTransform(where, true);
+    const glm::dmat4 sceneToIndex = worldToIndex * glm::inverse(placement);
+    checkIndexRange(spec, [&](const glm::dvec3& x) { return glm::dvec3(sceneToIndex * glm::dvec4(x, 1.0)); }, where);
+}
 
+std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
+                                         const glm::dmat4& placement) const {
+    check(name, components, spec, placement);
+    const std::string where = path_.string() + ": grid \"" + name + "\"";
     openvdb::GridBase::Ptr base;
     try {
         base = grids_->file->readGrid(name);
     } catch (const std::exception& error) {
         throw InputError(where, "a readable grid", std::string("OpenVDB: ") + error.what());
     }
+    // The transform as OpenVDB read it and samples by (check saw the same
+    // bytes; OpenVDB's readGridMetadata can return another grid's in a
+    // damaged file, found by fuzz_vdb).
     const openvdb::math::Transform& transform = base->transform();
     const openvdb::Vec3d voxel = transform.voxelSize();
     if (!transform.isLinear() || !std::isfinite(voxel[0] * voxel[1] * voxel[2]) ||
         !(std::abs(transform.baseMap()->determinant()) > 0.0) || !std::isfinite(transform.baseMap()->determinant()))
-        throw InputError(where, "an affine, invertible transform",
-                         transform.isLinear() ? "a singular or non-finite one" : "a non-linear (frustum) one");
-
-    // OpenVDB's index coordinates are 32-bit: the render grid, mapped into
-    // the file's index space, must lie well within them (a voxel of 1e-220 m
-    // put cells at index 1e222; found by fuzz_vdb). The map is affine, so its
-    // corners bound it.
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 world = glm::dvec3(
-            sceneToFile * glm::dvec4(corner & 1 ? spec.boundsMax.x : spec.boundsMin.x,
-                                     corner & 2 ? spec.boundsMax.y : spec.boundsMin.y,
-                                     corner & 4 ? spec.boundsMax.z : spec.boundsMin.z, 1.0));
+        refuseTransform(where, transform.isLinear());
+    const glm::dmat4 sceneToFile = glm::inverse(placement);
+    checkIndexRange(spec, [&](const glm::dvec3& x) {
+        const glm::dvec3 world(sceneToFile * glm::dvec4(x, 1.0));
         const openvdb::Vec3d index = transform.worldToIndex(openvdb::Vec3d(world.x, world.y, world.z));
-        for (int axis = 0; axis < 3; ++axis)
-            if (!(std::abs(index[axis]) < kMaxIndexCoordinate))
-                throw InputError(where,
-                                 "a transform that maps the render grid within OpenVDB's index range (|index| < 2^30)",
-                                 "index " + std::to_string(index[axis]) + " at a corner of grid.bounds");
-    }
-
+        return glm::dvec3(index[0], index[1], index[2]);
+    }, where);
     std::vector<float> values(static_cast<std::size_t>(components) * spec.cellCount());
     if (components == 1) {
         const auto grid = openvdb::gridConstPtrCast<openvdb::FloatGrid>(base);
@@ -204,9 +235,10 @@ std::vector<float> VdbVolumeFile::sample(const std::string& name, int components
     if (bad != values.end()) {
         const auto cell = static_cast<std::size_t>(bad - values.begin()) / static_cast<std::size_t>(components);
         const auto nx = static_cast<std::size_t>(spec.resolution.x), ny = static_cast<std::size_t>(spec.resolution.y);
-        throw InputError(where, "finite values",
-                         "a non-finite value sampled at render cell (" + std::to_string(cell % nx) + ", " +
-                             std::to_string(cell / nx % ny) + ", " + std::to_string(cell / (nx * ny)) + ")");
+        const glm::dvec3 at = spec.cellCentre(static_cast<int>(cell % nx), static_cast<int>(cell / nx % ny),
+                                              static_cast<int>(cell / (nx * ny)));
+        throw InputError(where, "finite values", "a non-finite value sampled at " + formatPosition(at) +
+                                                     " (the render grid's cell centre, in the scene's world)");
     }
     return values;
 }

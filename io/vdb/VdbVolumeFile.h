@@ -59,6 +59,13 @@ public:
     // Vector values come as stored, in the file's frame.
     std::vector<float> sample(const std::string& name, int components, const GridSpec& grid,
                               const glm::dmat4& placement) const;
+    // What sample refuses before it reads a value: a missing grid, another
+    // type, a damaged tree (every node, size and compressed chunk, as
+    // VdbFileCheck walks them), a transform that is not affine and
+    // invertible or that maps the render grid outside OpenVDB's index range.
+    // Walks the file's bytes only, building no tree: a few milliseconds for
+    // a file whose grids take a second to sample (bench/vdb_check_bench.cpp).
+    void check(const std::string& name, int components, const GridSpec& grid, const glm::dmat4& placement) const;
     // Grid `name`'s voxel size (its transform's, per axis) and Mantaflow's
     // `file_base_resolution` metadata (the domain's cells per axis), absent
     // where the grid lacks it. InputError as sample's for a missing grid.

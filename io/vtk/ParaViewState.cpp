@@ -41,15 +41,16 @@ def collection(name):
     return PVDReader(registrationName=name, FileName=os.path.join(here, name + '.pvd'))
 
 
-def colour(source, display, association, array, preset, corner):
+def colour(source, display, association, array, preset, corner, target=None):
+    target = target or view
     data = source.CellData if association == 'CELLS' else source.PointData
     components = data[array].GetNumberOfComponents()
     ColorBy(display, (association, array, 'Magnitude') if components > 1 else (association, array))
     lut = GetColorTransferFunction(array)
     lut.ApplyPreset(preset, True)
     display.RescaleTransferFunctionToDataRange(True, False)
-    display.SetScalarBarVisibility(view, True)
-    GetScalarBar(lut, view).WindowLocation = corner
+    display.SetScalarBarVisibility(target, True)
+    GetScalarBar(lut, target).WindowLocation = corner
     return lut
 
 )";
@@ -120,12 +121,31 @@ paths.UpdatePipeline()
 colour(paths, Show(paths, view), 'POINTS', 'power', 'Cool to Warm', 'Upper Right Corner')
 )";
 
+constexpr const char* kDiagnostic = R"(
+# The diagnostic: what its rays measured, on the image plane (metres from
+# the camera's axis, x right, y up), in a view of its own beside the scene.
+diagnostic = collection('diagnostic')
+diagnostic.UpdatePipeline()
+layout = GetLayout(view)
+layout.SplitHorizontal(0, 0.5)
+plane_view = CreateView('RenderView')
+AssignViewToLayout(view=plane_view, layout=layout, hint=2)
+plane_view.InteractionMode = '2D'
+colour(diagnostic, Show(diagnostic, plane_view), 'CELLS', diagnostic_array, 'Grayscale', 'Lower Right Corner',
+       plane_view)
+ResetCamera(plane_view)
+SetActiveView(view)
+)";
+
 constexpr const char* kEpilogue = R"(
 GetAnimationScene().UpdateAnimationUsingDataTimeSteps()
 view.CameraPosition = camera_position
 view.CameraFocalPoint = camera_target
 view.CameraViewUp = camera_up
 view.CameraViewAngle = camera_fov_deg
+if camera_parallel_scale > 0:  # an orthographic camera
+    view.CameraParallelProjection = 1
+    view.CameraParallelScale = camera_parallel_scale
 Render(view)
 if len(sys.argv) > 1:
     SaveScreenshot(sys.argv[1], view, ImageResolution=[800, 600])
@@ -146,6 +166,8 @@ std::string paraviewStateScript(const ParaViewState& state) {
     script += "camera_target = " + list(state.camera.target) + "\n";
     script += "camera_up = " + list(state.camera.up) + "\n";
     script += "camera_fov_deg = " + number(state.camera.fovDeg) + "\n";
+    script += "camera_parallel_scale = " + number(state.parallelScale) + "\n";
+    script += "diagnostic_array = '" + state.diagnosticArray + "'\n";
     if (opens(state, "fields")) {
         script += state.staticFields ? kStaticFields : "\nfields = collection('fields')\n";
         script += kFields;
@@ -153,8 +175,20 @@ std::string paraviewStateScript(const ParaViewState& state) {
     if (opens(state, "receivers")) script += kReceivers;
     if (opens(state, "meshes")) script += kMeshes;
     if (opens(state, "photon_paths")) script += kPaths;
+    if (opens(state, "diagnostic")) script += kDiagnostic;
     script += kEpilogue;
     return script;
+}
+
+ParaViewState paraViewStateOf(const Scene& scene) {
+    ParaViewState state;
+    state.camera = scene.camera;
+    if (scene.camera.orthographic())
+        state.parallelScale = 0.5 * scene.camera.widthM * scene.render.height / scene.render.width;
+    state.gridMin = scene.grid.boundsMin;
+    state.gridMax = scene.grid.boundsMax;
+    if (scene.diagnostic && scene.diagnostic->type == DiagnosticDesc::Type::Schlieren) state.diagnosticArray = "deflection";
+    return state;
 }
 
 std::vector<std::string> collectionsIn(const std::filesystem::path& vtkFolder, std::vector<std::string> names) {

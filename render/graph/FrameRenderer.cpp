@@ -36,6 +36,15 @@ FrameRenderer::FrameRenderer(const Scene& scene, FieldRing& ring, RendererOption
 
 FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, FieldRing* ring, RendererOptions options)
     : scene_(scene), receivers_(scene.receivers), post_(scene.render.width, scene.render.height) {
+    try {
+        buildStages(fields, ring, options);
+    } catch (const InputError& error) {  // a size the GL limits refuse: the stages know the key, not the file
+        throw InputError(scene.sourcePath + ": " + error.what());
+    }
+}
+
+void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, const RendererOptions& options) {
+    const Scene& scene = scene_;
     pendingUpload_ = fields_.upload(fields);  // before the stages: they compile for the fields present
     if (ring) ring->fenceCurrent();
     if (scene.render.method == RenderDesc::Method::ImageSpace) {
@@ -49,12 +58,14 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
         return;  // none of the eikonal stages
     }
     prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
-    if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree)
-        stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
-                                                              fields_.hasEmission());
     // Photons light receivers and in-scattering; a scene with neither has no
     // photon stage unless the caller asks for the photons' tallies.
     const bool photonsWanted = tracesLight(scene, fields_.hasScattering()) || options.tracePhotons;
+    // The octree steps photons and the view; a diagnostic marches in fixed steps.
+    const bool drawsView = options.drawsImage && !scene.diagnostic;
+    if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree && (photonsWanted || drawsView))
+        stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
+                                                              fields_.hasEmission());
     if (photonsWanted)
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
     // The lattice diffuses what the photons scattered, on the share that holds the whole pass.
@@ -62,7 +73,9 @@ FrameRenderer::FrameRenderer(const Scene& scene, const FieldUpload& fields, Fiel
     if (photons_ && feedsLattice(scene, fields_) && holdsWholePass)
         lattice_ = std::make_unique<LatticeScattering>(fields.grid, fields_, LatticeSettings::of(scene.tracer),
                                                        buildSharpSurfaces(scene));
-    if (options.drawsImage)
+    if (options.drawsImage && scene.diagnostic)
+        diagnostic_ = std::make_unique<DiagnosticStage>(scene_, fields_);
+    else if (drawsView)
         view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr,
                                             lattice_ != nullptr, options.recordViewExits);
     const double voxel = fields.grid.smallestVoxelEdge();
@@ -99,6 +112,7 @@ StageReport FrameRenderer::relight(PhotonStats& stats) {
 void FrameRenderer::setCamera(const CameraDesc& camera) {
     scene_.camera = camera;
     if (view_) view_->setCamera(camera);
+    if (diagnostic_) diagnostic_->setCamera(camera);
     if (imageSpaceView_) imageSpaceView_->setCamera(camera);
     cameraChanged_ = true;
 }
@@ -215,6 +229,11 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrTexels(), scene_.render.exposureEv);
     }));
+    // A diagnostic sees the index and, through its transmittance, the extinction.
+    const bool diagnosticNeeded = diagnostic_ && (indexChanged || extinctionChanged || cameraChanged_);
+    if (diagnostic_) result.stages.push_back(runStage("diagnostic", diagnosticNeeded, [&] {
+        last_.image = diagnostic_->run(fields_);
+    }));
     // The estimate is of the full image, not of a preview.
     if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded && view_->pixelStride() == 1, [&] {
         const StepStructureStage& reference = referenceSteps_ ? *referenceSteps_ : *stepStructure_;
@@ -223,6 +242,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     }));
     markRendered(fields);
     if (viewNeeded && scene_.render.writeHdr) last_.hdr = view_->downloadHdr();
+    if (diagnosticNeeded && scene_.render.writeHdr) last_.hdr = diagnostic_->downloadHdr();
     result.image = last_.image;
     result.hdr = last_.hdr;
     result.photons = last_.photons;

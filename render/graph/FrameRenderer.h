@@ -1,6 +1,7 @@
 // One frame of the render half: upload → prepare → step structure → photons
-// → multiple scattering → view → post; in image space (render.method
-// "image_space") upload → caustic maps → image-space view → post. A stage runs only when one of its inputs changed since it
+// → multiple scattering → view → post; with a `diagnostic`, the diagnostic
+// stage draws the picture in place of view and post; in image space
+// (render.method "image_space") upload → caustic maps → image-space view → post. A stage runs only when one of its inputs changed since it
 // last ran (field versions, camera); stages the scene does not need are not
 // created (uniform steps → no step structure, no receivers → no maps, no
 // scattering → no fluence and no lattice, neither receivers nor scattering →
@@ -10,6 +11,7 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
+#include "render/stages/DiagnosticStage.h"
 #include "render/stages/ErrorEstimateStage.h"
 #include "render/stages/FieldRing.h"
 #include "render/stages/FieldTextures.h"
@@ -113,7 +115,9 @@ public:
     const ReceiverMaps& receivers() const { return receivers_; }
     // Null when the scene has nothing for photons to light (no receivers, no scattering).
     const PhotonStage* photonStage() const { return photons_.get(); }
-    const ViewStage& viewStage() const { return *view_; }  // only where the renderer draws eikonal images
+    const ViewStage& viewStage() const { return *view_; }  // only where the renderer draws eikonal images of no diagnostic
+    // Null unless the scene has a diagnostic and the renderer draws images.
+    const DiagnosticStage* diagnosticStage() const { return diagnostic_.get(); }
     // Null unless the scene's render.method is image space and the renderer draws images.
     const ImageSpaceView* imageSpaceView() const { return imageSpaceView_.get(); }
     // Null unless the scene asks for multiple scattering and something scatters.
@@ -122,6 +126,9 @@ public:
 private:
     const gl::Texture3D* stepTexture() const;  // null for uniform steps
     FrameRenderer(const Scene& scene, const FieldUpload& fields, FieldRing* ring, RendererOptions options);
+    // The first upload and the stages the scene needs. Their InputErrors name
+    // key paths; the constructor adds the scene file.
+    void buildStages(const FieldUpload& fields, FieldRing* ring, const RendererOptions& options);
     // Uploads, then the stages that depend on what changed.
     FrameResult render(const FieldUpload& fields, FieldRing* ring);
     // The image-space frame (render.method "image_space"): layers, caustic maps, view, post.
@@ -137,6 +144,7 @@ private:
     std::unique_ptr<PhotonStage> photons_;
     std::unique_ptr<LatticeScattering> lattice_;
     std::unique_ptr<ViewStage> view_;
+    std::unique_ptr<DiagnosticStage> diagnostic_;  // in place of view_ where the scene has a diagnostic
     PostStage post_;
     // Image space only: the raster passes' surfaces, the caustic maps, the view.
     std::unique_ptr<SurfaceRaster> raster_;

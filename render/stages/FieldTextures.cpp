@@ -50,7 +50,7 @@ bool uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& by
     GLint64 largest = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largest);
     if (size > static_cast<std::size_t>(largest))
-        throw InputError("sharp mesh and water surfaces",
+        throw InputError("objects (the sharp mesh and water surfaces)",
                          "at most " + std::to_string(largest) + " bytes of triangles or tree nodes "
                          "(GL_MAX_SHADER_STORAGE_BLOCK_SIZE; set \"surface\": \"smooth\" on some)",
                          std::to_string(size) + " bytes");

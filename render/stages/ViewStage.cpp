@@ -36,7 +36,7 @@ gl::Texture2D environmentTexture(const Scene& scene) {
     GLint largest = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
     if (image->width > largest || image->height > largest)
-        throw InputError(scene.sourcePath + ": render.environment.path",
+        throw InputError("render.environment.path",
                          "an image at most " + std::to_string(largest) + " pixels a side (GL_MAX_TEXTURE_SIZE)",
                          std::to_string(image->width) + " × " + std::to_string(image->height));
     return gl::Texture2D(image->width, image->height, image->rgba.data(),
@@ -49,7 +49,7 @@ gl::Buffer pixelBuffer(const Scene& scene, const std::string& description) {
     GLint64 largestBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &largestBlock);
     if (pixels * sizeof(glm::vec4) > static_cast<std::size_t>(largestBlock))
-        throw InputError(scene.sourcePath + ": render.width × render.height",
+        throw InputError("render.width × render.height",
                          "at most " + std::to_string(static_cast<std::size_t>(largestBlock) / sizeof(glm::vec4)) +
                              " pixels (the linear image takes 16 bytes a pixel; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " +
                              std::to_string(largestBlock) + " bytes)",
@@ -63,13 +63,18 @@ layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render
     const glm::dvec3 right = glm::normalize(glm::cross(forward, camera.up));
     const glm::dvec3 up = glm::cross(right, forward);
     const EnvironmentDesc& environment = render.environment;
+    const double aspect = static_cast<double>(render.width) / static_cast<double>(render.height);
+    // Half the image's height: at unit distance from the pinhole, or in metres on the orthographic image plane.
+    const double halfHeight =
+        camera.orthographic() ? 0.5 * camera.widthM / aspect : std::tan(glm::radians(camera.fovDeg) / 2);
     layout::GpuCamera block{};
-    block.position = glm::vec4(glm::vec3(camera.position), static_cast<float>(std::tan(glm::radians(camera.fovDeg) / 2)));
-    block.forward = glm::vec4(glm::vec3(forward), static_cast<float>(render.width) / static_cast<float>(render.height));
+    block.position = glm::vec4(glm::vec3(camera.position), static_cast<float>(halfHeight));
+    block.forward = glm::vec4(glm::vec3(forward), static_cast<float>(aspect));
     block.right = glm::vec4(glm::vec3(right), 0.0f);
     block.up = glm::vec4(glm::vec3(up), 0.0f);
     block.image = glm::uvec4(static_cast<unsigned>(render.width), static_cast<unsigned>(render.height),
-                             environmentKind(environment), 0u);
+                             environmentKind(environment),
+                             camera.orthographic() ? layout::kOrthographicProjection : layout::kPerspectiveProjection);
     block.radiance = environment.kind == EnvironmentDesc::Kind::Hdr
                          ? glm::vec4(static_cast<float>(environment.intensity),
                                      static_cast<float>(glm::radians(environment.rotationDeg)), 0.0f, 0.0f)

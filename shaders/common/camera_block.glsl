@@ -1,12 +1,14 @@
-// The pinhole camera and the environment (C++ mirror: layout::GpuCamera,
-// built by render/stages/ViewStage's cameraBlock), and the direction of a
-// pixel's ray through its centre (row 0 at the top). GLSL only.
+// The camera and the environment (C++ mirror: layout::GpuCamera, built by
+// render/stages/ViewStage's cameraBlock), and the ray through a pixel's
+// centre (row 0 at the top): from the pinhole, or — orthographic — from the
+// pixel's point on the image plane through `position`, along `forward`.
+// GLSL only.
 layout(std140, binding = kCameraBlock) uniform CameraBlock {
-    vec4 position;    // w: tan(fov / 2)
+    vec4 position;    // w: half the image's height (tan(fov / 2), or metres when orthographic)
     vec4 forward;     // w: aspect
     vec4 right;
     vec4 up;
-    uvec4 image;      // width, height, environment kind
+    uvec4 image;      // width, height, environment kind, projection
     vec4 radiance;    // uniform: rgb; hdr: intensity, rotation
     vec4 zenith;
     vec4 horizon;
@@ -15,8 +17,19 @@ layout(std140, binding = kCameraBlock) uniform CameraBlock {
     vec4 ground;      // height, checker size
 } camera;
 
-vec3 camera_ray_direction(uvec2 pixel) {
+bool camera_is_orthographic() { return camera.image.w == uint(kOrthographicProjection); }
+
+// The pixel centre's offset from the image's centre along right and up, in
+// units of the image plane at unit distance (perspective) or in metres.
+vec3 camera_image_offset(uvec2 pixel) {
     vec2 ndc = (vec2(pixel) + 0.5f) / vec2(camera.image.xy) * 2.0f - 1.0f;
-    return normalize(camera.forward.xyz + ndc.x * camera.position.w * camera.forward.w * camera.right.xyz -
-                     ndc.y * camera.position.w * camera.up.xyz);
+    return ndc.x * camera.position.w * camera.forward.w * camera.right.xyz - ndc.y * camera.position.w * camera.up.xyz;
+}
+
+vec3 camera_ray_origin(uvec2 pixel) {
+    return camera_is_orthographic() ? camera.position.xyz + camera_image_offset(pixel) : camera.position.xyz;
+}
+
+vec3 camera_ray_direction(uvec2 pixel) {
+    return camera_is_orthographic() ? camera.forward.xyz : normalize(camera.forward.xyz + camera_image_offset(pixel));
 }

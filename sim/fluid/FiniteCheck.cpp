@@ -12,7 +12,7 @@
 namespace eikon::sim {
 
 void requireFinite(const GridField& field, const std::string& name, const std::string& sample,
-                   const std::string& when) {
+                   const SolverPhase& phase) {
     using Range = tbb::blocked_range<std::size_t>;
     const std::size_t none = field.count();
     const std::size_t first = tbb::parallel_reduce(
@@ -24,16 +24,16 @@ void requireFinite(const GridField& field, const std::string& name, const std::s
         },
         [](std::size_t a, std::size_t b) { return std::min(a, b); });
     if (first == none) return;
-    throwNotFinite(name, sample, field.size, first, field.values[first], when);
+    throwNotFinite(name, sample, field.size, first, field.values[first], phase);
 }
 
 void throwNotFinite(const std::string& name, const std::string& sample, glm::ivec3 size, std::size_t index,
-                    double value, const std::string& when) {
+                    double value, const SolverPhase& phase) {
     const auto nx = static_cast<std::size_t>(size.x);
     const auto ny = static_cast<std::size_t>(size.y);
-    const std::string where = "sim: field " + name + ", " + sample + " (" + std::to_string(index % nx) + ", " +
-                              std::to_string((index / nx) % ny) + ", " + std::to_string(index / (nx * ny)) +
-                              ") " + when;
+    const std::string where = std::string(phase.keys) + " (the solver's " + name + " at " + sample + " (" +
+                              std::to_string(index % nx) + ", " + std::to_string((index / nx) % ny) + ", " +
+                              std::to_string(index / (nx * ny)) + ") of sim.resolution, " + phase.when + ")";
     throw InputError(where, "a finite value", formatNumber(value));
 }
 

@@ -160,14 +160,14 @@ void FluidSimulation::substep(double dt) {
 }
 
 void FluidSimulation::substepOnCpu(double dt) {
-    checkFinite("at the start of a substep", kScalars | kVelocity | kPressure);  // what was handed in from outside
+    checkFinite(kSubstepStart, kScalars | kVelocity | kPressure);  // what was handed in from outside
     {
         PhaseClock clock(timing(kSources));
         sources_.applyScalars(state_);
         addBuoyancy(state_, domain_, desc_, dt);
         sources_.applyVelocity(state_);
         enforceVelocityBoundaries(state_.flow, domain_);
-        checkFinite("after sources", kScalars | kVelocity);
+        checkFinite(kAfterSources, kScalars | kVelocity);
     }
     {
         PhaseClock clock(timing(kAdvection));
@@ -179,7 +179,7 @@ void FluidSimulation::substepOnCpu(double dt) {
         }
         enforceVelocityBoundaries(state_.flow, domain_);
         sources_.applyScalars(state_);
-        checkFinite("after advection", kScalars | kVelocity);
+        checkFinite(kAfterAdvection, kScalars | kVelocity);
     }
     {
         PhaseClock clock(timing(kDiffusion));
@@ -193,14 +193,14 @@ void FluidSimulation::substepOnCpu(double dt) {
         run(temperatureDiffusion_, state_.temperature, desc_.thermalDiffusivity);
         run(concentrationDiffusion_, state_.concentration, desc_.concentrationDiffusivity);
         run(dyeDiffusion_, state_.dye, desc_.dyeDiffusivity);
-        checkFinite("after diffusion", kScalars | kVelocity);
+        checkFinite(kAfterDiffusion, kScalars | kVelocity);
     }
     {
         PhaseClock clock(timing(kProjection));
         sources_.applyVelocity(state_);
         record(timing(kProjection),
                pressure_->project(state_.flow, state_.pressure, desc_.pressureTolerance, kMaxSolverIterations));
-        checkFinite("after projection", kVelocity | kPressure);
+        checkFinite(kAfterProjection, kVelocity | kPressure);
     }
 }
 
@@ -218,7 +218,7 @@ void FluidSimulation::advectConserving(const std::vector<GridField*>& scalars, d
         restoreTotal(*scalars[f], budgets[f].total, budgets[f].low, budgets[f].high);
 }
 
-void FluidSimulation::checkFinite(const std::string& phase, unsigned fields) const {
+void FluidSimulation::checkFinite(const SolverPhase& phase, unsigned fields) const {
     // Scalars first: buoyancy carries a bad temperature into the velocity.
     if (fields & kScalars) {
         requireFinite(state_.temperature, "temperature", "cell", phase);

@@ -20,6 +20,7 @@
 #include "sim/fluid/Advection.h"
 #include "sim/fluid/Boundaries.h"
 #include "sim/fluid/Diffusion.h"
+#include "sim/fluid/FiniteCheck.h"
 #include "sim/fluid/FluidDevice.h"
 #include "sim/fluid/FluidState.h"
 #include "sim/fluid/PhaseTiming.h"
@@ -92,7 +93,7 @@ private:
     // Throws at the first NaN or Inf in the fields a phase wrote (a mask of
     // kScalars, kVelocity, kPressure), naming the field and the cell.
     enum CheckedFields : unsigned { kScalars = 1, kVelocity = 2, kPressure = 4 };
-    void checkFinite(const std::string& phase, unsigned fields) const;
+    void checkFinite(const SolverPhase& phase, unsigned fields) const;
     PhaseTiming& timing(int phase) { return timings_[static_cast<std::size_t>(phase)]; }
 
     SimDesc desc_;

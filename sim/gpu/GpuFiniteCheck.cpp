@@ -31,7 +31,7 @@ void GpuFiniteCheck::begin() {
 }
 
 void GpuFiniteCheck::check(const GpuField& field, const std::string& name, const std::string& sample,
-                           const std::string& when) {
+                           const SolverPhase& when) {
     EIKON_CHECK(checks_.size() < static_cast<std::size_t>(kSlots));
     field.bind(layout::kSolverField);
     firstBad_.bindStorage(layout::kSolverPartials);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "gl/GlObjects.h"
+#include "sim/fluid/FiniteCheck.h"
 #include "sim/gpu/GpuField.h"
 
 #include <cstdint>
@@ -23,7 +24,7 @@ public:
     // Clears the slots: call at the start of a substep.
     void begin();
     // Checks `field` on the GPU; `name`, `sample` and `when` as in requireFinite.
-    void check(const GpuField& field, const std::string& name, const std::string& sample, const std::string& when);
+    void check(const GpuField& field, const std::string& name, const std::string& sample, const SolverPhase& when);
     // Reads the slots back; throws for the first check that found a non-finite sample.
     void finish();
     // Bytes the last finish() read back.
@@ -32,7 +33,8 @@ public:
 private:
     struct Check {
         const GpuField* field;
-        std::string name, sample, when;
+        std::string name, sample;
+        SolverPhase when;
     };
     gl::Buffer firstBad_;  // per slot its first non-finite sample, then per slot that sample's bits
     gl::Program find_, record_;

@@ -140,30 +140,30 @@ void GpuFluidBackend::addBuoyancy(double dt) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void GpuFluidBackend::checkScalars(const std::string& when) {
+void GpuFluidBackend::checkScalars(const SolverPhase& when) {
     finite_.check(temperature_, "temperature", "cell", when);
     finite_.check(concentration_, "concentration", "cell", when);
     finite_.check(dye_, "dye", "cell", when);
 }
 
-void GpuFluidBackend::checkVelocity(const std::string& when) {
+void GpuFluidBackend::checkVelocity(const SolverPhase& when) {
     for (int axis = 0; axis < 3; ++axis) finite_.check(velocity_[axis], kVelocityNames[axis], "face", when);
 }
 
 void GpuFluidBackend::substep(double dt, std::vector<PhaseTiming>& timings) {
     finite_.begin();
     // What was handed in from outside; scalars first, as on the CPU.
-    checkScalars("at the start of a substep");
-    checkVelocity("at the start of a substep");
-    finite_.check(pressure_, "pressure", "cell", "at the start of a substep");
+    checkScalars(kSubstepStart);
+    checkVelocity(kSubstepStart);
+    finite_.check(pressure_, "pressure", "cell", kSubstepStart);
     glQueryCounter(timestamps_[0], GL_TIMESTAMP);
 
     sources_.applyScalars(temperature_, concentration_, dye_);
     addBuoyancy(dt);
     sources_.applyVelocity(velocity_);
     enforceVelocityBoundaries();
-    checkScalars("after sources");
-    checkVelocity("after sources");
+    checkScalars(kAfterSources);
+    checkVelocity(kAfterSources);
     glQueryCounter(timestamps_[1], GL_TIMESTAMP);
 
     const std::vector<GpuField*> scalars{&temperature_, &concentration_, &dye_};
@@ -176,8 +176,8 @@ void GpuFluidBackend::substep(double dt, std::vector<PhaseTiming>& timings) {
     }
     enforceVelocityBoundaries();
     sources_.applyScalars(temperature_, concentration_, dye_);
-    checkScalars("after advection");
-    checkVelocity("after advection");
+    checkScalars(kAfterAdvection);
+    checkVelocity(kAfterAdvection);
     glQueryCounter(timestamps_[2], GL_TIMESTAMP);
 
     PhaseTiming& diffusion = timings[kDiffusion];
@@ -189,16 +189,16 @@ void GpuFluidBackend::substep(double dt, std::vector<PhaseTiming>& timings) {
     run(temperatureDiffusion_, temperature_, desc_.thermalDiffusivity);
     run(concentrationDiffusion_, concentration_, desc_.concentrationDiffusivity);
     run(dyeDiffusion_, dye_, desc_.dyeDiffusivity);
-    checkScalars("after diffusion");
-    checkVelocity("after diffusion");
+    checkScalars(kAfterDiffusion);
+    checkVelocity(kAfterDiffusion);
     glQueryCounter(timestamps_[3], GL_TIMESTAMP);
 
     sources_.applyVelocity(velocity_);
     record(timings[kProjection],
            pressureSolver_.project(velocity_, pressure_, desc_.pressureTolerance, kMaxSolverIterations));
     busBytes_ += pressureSolver_.bytesReadBack();
-    checkVelocity("after projection");
-    finite_.check(pressure_, "pressure", "cell", "after projection");
+    checkVelocity(kAfterProjection);
+    finite_.check(pressure_, "pressure", "cell", kAfterProjection);
     glQueryCounter(timestamps_[4], GL_TIMESTAMP);
 
     finite_.finish();

@@ -48,8 +48,8 @@ public:
 private:
     void addBuoyancy(double dt);
     void enforceVelocityBoundaries();
-    void checkScalars(const std::string& when);
-    void checkVelocity(const std::string& when);
+    void checkScalars(const SolverPhase& when);
+    void checkVelocity(const SolverPhase& when);
     std::uint64_t fieldBytes() const;  // of every field: one upload or download
     std::uint64_t scalarBytes() const;  // of temperature, concentration and dye
 

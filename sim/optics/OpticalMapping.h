@@ -43,8 +43,8 @@ void mapOpticalFields(const OpticalModel& model, const SolverScalars& scalars, c
 
 // Fills fields.deltaIndex, .extinction, .scattering on fields.grid (κ and σs
 // left empty when the model has none) with n_ref = fields.referenceIndex, and
-// increments each field's version only where its values changed. Then checks
-// the result with validateFields (InputError naming field and cell).
+// increments each field's version only where its values changed. Validation
+// is the caller's (SceneFields, which knows the scene's keys).
 void writeOpticalFields(const OpticalModel& model, const SolverScalars& scalars, FieldSet& fields);
 
 }  // namespace eikon::sim

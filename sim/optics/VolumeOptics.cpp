@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace eikon::sim {
 
@@ -30,7 +31,7 @@ double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples,
 }
 
 void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
-                       const std::string& source, FieldSet& fields) {
+                       const VolumeOrigin& origin, FieldSet& fields) {
     const std::size_t cells = fields.grid.cellCount();
     const GladstoneDale air{volume.refractivity, volume.referenceTemperature, 101325.0};
     const double ambient = air.refractivityAt(volume.ambientTemperature, volume.pressure);
@@ -45,8 +46,33 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     const bool scatters = positive(medium.scattering) || (dense && positive(volume.densityScattering)) || scatteringGrid;
     const bool anisotropic =
         scatters && (medium.anisotropy != 0.0 || volume.anisotropy != 0.0 || !samples.anisotropy.empty());
-    const auto refuse = [&](std::size_t cell, const std::string& expected, double found) {
-        throw InputError(source + ": cell " + std::to_string(cell), expected, formatNumber(found));
+
+    // The keys each refused quantity is computed from, as a user edits them.
+    const std::string temperatureKeys =
+        std::string(samples.temperature.empty() ? "" : "volume.temperature_scale, ") +
+        (samples.flame.empty() ? "" : "volume.flame_temperature, ") + "volume.ambient_temperature";
+    const std::string indexKeys =
+        std::string(!samples.index.empty() ? "volume.grids.index" : !samples.deltaIndex.empty() ? "volume.grids.delta_index"
+                                                                                                  : "medium.index") +
+        ", volume.refractivity, volume.pressure, volume.reference_temperature";
+    const std::string extinctionKeys = std::string(samples.extinction.empty() ? "" : "volume.grids.extinction, ") +
+                                       (dense ? "volume.density_extinction, " : "") +
+                                       (soot ? "volume.flame_absorption, " : "") + "medium.extinction";
+    const std::string scatteringKeys = std::string(scatteringGrid ? "volume.grids.scattering, " : "") +
+                                       (dense ? "volume.density_scattering, " : "") + "medium.scattering";
+    // "scene.json: KEYS (QUANTITY at (x, y, z) m in FILE): expected …, found …"
+    const auto refuse = [&](std::size_t cell, const std::string& keys, const std::string& quantity,
+                            const std::string& expected, double found, const char* unit = "") {
+        const auto nx = static_cast<std::size_t>(fields.grid.resolution.x);
+        const auto ny = static_cast<std::size_t>(fields.grid.resolution.y);
+        const glm::dvec3 at = fields.grid.cellCentre(static_cast<int>(cell % nx), static_cast<int>(cell / nx % ny),
+                                                     static_cast<int>(cell / (nx * ny)));
+        throw InputError(origin.scene + ": " + keys + " (" + quantity + " at " + formatPosition(at) + " in " +
+                             origin.file + ")",
+                         expected, formatRounded(found) + unit);
+    };
+    const auto finiteFloat = [](double value) {  // the fields hold float32
+        return std::abs(value) <= static_cast<double>(std::numeric_limits<float>::max());
     };
 
     std::vector<float> deltaIndex(cells);
@@ -55,21 +81,29 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     std::vector<float> emission(emits ? 3 * cells : 0);
     for (std::size_t c = 0; c < cells; ++c) {
         const double t = volumeTemperature(volume, samples, c);
-        if (!(t > 0.0))
-            throw InputError(source + ": cell " + std::to_string(c), "a temperature > 0 K (ambient_temperature + "
-                                                                     "temperature_scale·t + flame_temperature·f)",
-                             std::to_string(t) + " K");
+        if (!(t > 0.0) || !std::isfinite(t))
+            refuse(c, temperatureKeys, "the temperature",
+                   "a finite temperature > 0 K (ambient_temperature + temperature_scale·t + flame_temperature·f, "
+                   "t and f the file's temperature and flame)",
+                   t, " K");
         // The index where the volume is: the medium's, or the file's own.
         double baseDelta = mediumDelta;
         if (!samples.index.empty()) {
             if (!(samples.index[c] > 0.0f))
-                refuse(c, "an index > 0 in the index grid (outside its active voxels a grid reads its background)",
+                refuse(c, "volume.grids.index", "grid \"" + volume.indexGrid + "\"",
+                       "an index > 0 in the index grid (outside its active voxels a grid reads its background)",
                        samples.index[c]);
             baseDelta = static_cast<double>(samples.index[c]) - fields.referenceIndex;
         } else if (!samples.deltaIndex.empty()) {
             baseDelta = samples.deltaIndex[c];
         }
-        deltaIndex[c] = static_cast<float>(baseDelta + air.refractivityAt(t, volume.pressure) - ambient);
+        const double delta = baseDelta + air.refractivityAt(t, volume.pressure) - ambient;
+        if (!finiteFloat(delta) || !(fields.referenceIndex + delta > 0.0))
+            refuse(c, indexKeys, "the refractive index",
+                   "a finite index n > 0 (the medium's or the index grid's, plus n_air(T) − "
+                   "n_air(ambient_temperature) by Gladstone–Dale, here at T = " + formatRounded(t) + " K)",
+                   fields.referenceIndex + delta);
+        deltaIndex[c] = static_cast<float>(delta);
         const double rho = dense ? std::max(0.0, static_cast<double>(samples.density[c])) : 0.0;
         const double flameKappa = soot ? volume.flameAbsorption * std::max(0.0, static_cast<double>(samples.flame[c])) : 0.0;
         const glm::dvec3 radiance = blackbody ? volume.emissionScale * planckTable().rgb(t) : glm::dvec3(0.0);
@@ -78,28 +112,54 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
             const std::size_t k = 3 * c + static_cast<std::size_t>(ch);
             const double kappaGrid = samples.extinction.empty() ? 0.0 : samples.extinction[k];
             const double sigmaGrid = scatteringGrid ? samples.scattering[k] : 0.0;
-            if (kappaGrid < 0.0) refuse(c, "an extinction >= 0 in the extinction grid", kappaGrid);
-            if (sigmaGrid < 0.0) refuse(c, "a scattering >= 0 in the scattering grid", sigmaGrid);
+            if (kappaGrid < 0.0)
+                refuse(c, "volume.grids.extinction", "grid \"" + volume.extinctionGrid + "\"",
+                       "an extinction >= 0 in the extinction grid", kappaGrid, " /m");
+            if (sigmaGrid < 0.0)
+                refuse(c, "volume.grids.scattering", "grid \"" + volume.scatteringGrid + "\"",
+                       "a scattering >= 0 in the scattering grid", sigmaGrid, " /m");
             const double kappa = medium.extinction[ch] + volume.densityExtinction[ch] * rho + kappaGrid + flameKappa;
             const double volumeSigma = volume.densityScattering[ch] * rho + sigmaGrid;
+            if (absorbs && !finiteFloat(kappa))
+                refuse(c, extinctionKeys, "the extinction κ",
+                       "a finite extinction (medium.extinction + density_extinction·ρ + the extinction grid + "
+                       "flame_absorption·f, ρ and f the file's density and flame)",
+                       kappa, " /m");
             if (absorbs) extinction[k] = static_cast<float>(kappa);
             if (emits) {
                 const double epsilonGrid = samples.emission.empty() ? 0.0 : samples.emission[k];
-                if (!(epsilonGrid >= 0.0)) refuse(c, "an emission >= 0 in the emission grid", epsilonGrid);
+                if (!(epsilonGrid >= 0.0))
+                    refuse(c, "volume.grids.emission", "grid \"" + volume.emissionGrid + "\"",
+                           "an emission >= 0 in the emission grid", epsilonGrid, " W/(m³·sr)");
                 const double absorption = std::max(0.0, kappa - medium.scattering[ch] - volumeSigma);
-                emission[k] = static_cast<float>(absorption * radiance[ch] + epsilonGrid);
+                const double epsilon = absorption * radiance[ch] + epsilonGrid;
+                if (!finiteFloat(epsilon))
+                    refuse(c, "volume.emission_scale, " + temperatureKeys + ", " + extinctionKeys, "the emission ε",
+                           "a finite emission (emission_scale·(κ − σs)·B(T) + the emission grid, here at T = " +
+                               formatRounded(t) + " K)",
+                           epsilon, " W/(m³·sr)");
+                emission[k] = static_cast<float>(epsilon);
             }
             if (scatters) {
-                if (medium.scattering[ch] + volumeSigma > kappa)
-                    refuse(c, "scattering <= extinction (the scattering grid's σs within the extinction it adds to)",
-                           medium.scattering[ch] + volumeSigma);
-                scattering[k] = static_cast<float>(medium.scattering[ch] + volumeSigma);
-                sigmaSum += medium.scattering[ch] + volumeSigma;
+                const double sigma = medium.scattering[ch] + volumeSigma;
+                if (!finiteFloat(sigma))
+                    refuse(c, scatteringKeys, "the scattering σs",
+                           "a finite scattering (medium.scattering + density_scattering·ρ + the scattering grid)",
+                           sigma, " /m");
+                if (sigma > kappa)
+                    refuse(c, scatteringKeys + ", " + extinctionKeys, "the scattering σs",
+                           "scattering <= extinction = " + formatRounded(kappa) +
+                               " /m (the scattering grid's σs within the extinction it adds to)",
+                           sigma, " /m");
+                scattering[k] = static_cast<float>(sigma);
+                sigmaSum += sigma;
                 volumeSigmaSum += volumeSigma;
             }
         }
         const double volumeG = samples.anisotropy.empty() ? volume.anisotropy : samples.anisotropy[c];
-        if (!(std::abs(volumeG) < 1.0)) refuse(c, "an anisotropy g in (−1, 1) in the anisotropy grid", volumeG);
+        if (!(std::abs(volumeG) < 1.0))
+            refuse(c, "volume.grids.anisotropy", "grid \"" + volume.anisotropyGrid + "\"",
+                   "an anisotropy g in (−1, 1) in the anisotropy grid", volumeG);
         if (anisotropic && sigmaSum > 0.0)
             anisotropy[c] = static_cast<float>(
                 (medium.anisotropy * (sigmaSum - volumeSigmaSum) + volumeG * volumeSigmaSum) / sigmaSum);

@@ -22,6 +22,7 @@
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
 
+#include <string>
 #include <vector>
 
 namespace eikon::sim {
@@ -43,11 +44,19 @@ struct VolumeSamples {
 // Temperature in K of a cell from the samples (ambient where absent).
 double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples, std::size_t cell);
 
+// Where the samples came from, for a refusal: the scene file whose `volume`
+// keys map them, and the OpenVDB file they were read from.
+struct VolumeOrigin {
+    std::string scene;
+    std::string file;
+};
+
 // Fills fields.deltaIndex, .extinction, .scattering, .anisotropy, .emission
 // (left empty where the scene makes them zero everywhere) on fields.grid, bumping the versions of what
-// changed. InputError naming `source` and the cell where T <= 0, n <= 0,
-// κ < 0, σs > κ, |g| >= 1 or ε < 0.
+// changed. InputError where a value is not finite or T <= 0, n <= 0, κ < 0,
+// σs > κ, |g| >= 1 or ε < 0, naming the scene file and the `volume` keys it
+// was computed from, the OpenVDB file and the world position.
 void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
-                       const std::string& source, FieldSet& fields);
+                       const VolumeOrigin& origin, FieldSet& fields);
 
 }  // namespace eikon::sim

@@ -9,22 +9,9 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vector_relational.hpp>
 
+#include <filesystem>
+
 namespace eikon::sim {
-
-VolumeSequence::VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid)
-    : desc_(desc), medium_(medium), grid_(renderGrid) {
-    load(0);
-}
-
-void VolumeSequence::advanceFrame() {
-    if (desc_.sequence) load(frame_ + 1);
-    else ++frame_;
-}
-
-void VolumeSequence::seekFrame(int frame) {
-    if (desc_.sequence) load(frame);
-    else frame_ = frame;
-}
 
 namespace {
 
@@ -52,43 +39,115 @@ glm::dmat4 blenderCellFrame(const io::VdbVolumeFile& file, const std::string& gr
            glm::translate(glm::dmat4(1.0), glm::dvec3(0.5 * dx));
 }
 
+// The file's world in the scene's.
+glm::dmat4 placementOf(const VolumeDesc& desc, const io::VdbVolumeFile& file) {
+    return desc.blenderDomainDimensions
+               ? desc.placement * blenderCellFrame(file, firstGrid(desc), *desc.blenderDomainDimensions)
+               : desc.placement;
+}
+
+constexpr int kRgb = 0;  // κ, σs, ε: RGB from a vec3s grid, grey from a float grid
+
+// Where each scalar grid the scene may read goes, sampled as how many
+// components (the velocity, turned with the volume, apart).
+struct GridSlot {
+    std::string VolumeDesc::*name;
+    std::vector<float> VolumeSamples::*samples;
+    int components;  // 1 or kRgb
+};
+constexpr GridSlot kGridSlots[] = {
+    {&VolumeDesc::densityGrid, &VolumeSamples::density, 1},
+    {&VolumeDesc::temperatureGrid, &VolumeSamples::temperature, 1},
+    {&VolumeDesc::flameGrid, &VolumeSamples::flame, 1},
+    {&VolumeDesc::indexGrid, &VolumeSamples::index, 1},
+    {&VolumeDesc::deltaIndexGrid, &VolumeSamples::deltaIndex, 1},
+    {&VolumeDesc::anisotropyGrid, &VolumeSamples::anisotropy, 1},
+    {&VolumeDesc::extinctionGrid, &VolumeSamples::extinction, kRgb},
+    {&VolumeDesc::scatteringGrid, &VolumeSamples::scattering, kRgb},
+    {&VolumeDesc::emissionGrid, &VolumeSamples::emission, kRgb},
+};
+
+int componentsOf(const GridSlot& slot, const std::string& grid, const io::VdbVolumeFile& file) {
+    return slot.components == kRgb ? file.componentsOf(grid) : slot.components;
+}
+
+// Runs `read`; a file's own refusal (io/vdb names the file, grid or byte) is
+// told where the scene names the file.
+template <typename Read>
+void readNamedByScene(const std::string& scenePath, Read&& read) {
+    try {
+        read();
+    } catch (const InputError& error) {
+        throw InputError(scenePath + ": volume.path: " + error.what());
+    }
+}
+
 }  // namespace
+
+void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int frames, const std::string& scenePath) {
+    if (!desc.sequence) return;
+    for (int frame = 0; frame < frames; ++frame) {  // a missing file first: the cheapest to find
+        const std::string path = volumeFramePath(desc, desc.frameStart + frame);
+        if (!std::filesystem::is_regular_file(path))
+            throw InputError(scenePath + ": volume.path: " + path,
+                             "the volume sequence's file for rendered frame " + std::to_string(frame), "no such file");
+    }
+    for (int frame = 0; frame < frames; ++frame)
+        readNamedByScene(scenePath, [&] {
+            const io::VdbVolumeFile file(volumeFramePath(desc, desc.frameStart + frame));
+            const glm::dmat4 placement = placementOf(desc, file);
+            for (const GridSlot& slot : kGridSlots) {
+                const std::string& grid = desc.*slot.name;
+                if (!grid.empty()) file.check(grid, componentsOf(slot, grid, file), renderGrid, placement);
+            }
+            if (!desc.velocityGrid.empty()) file.check(desc.velocityGrid, 3, renderGrid, placement);
+        });
+}
+
+VolumeSequence::VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid,
+                               const std::string& scenePath)
+    : desc_(desc), medium_(medium), grid_(renderGrid), scenePath_(scenePath) {
+    load(0);
+}
+
+void VolumeSequence::advanceFrame() {
+    if (desc_.sequence) load(frame_ + 1);
+    else ++frame_;
+}
+
+void VolumeSequence::seekFrame(int frame) {
+    if (desc_.sequence) load(frame);
+    else frame_ = frame;
+}
 
 void VolumeSequence::load(int frame) {
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
-    const io::VdbVolumeFile file(path);
-    const glm::dmat4 placement =
-        desc_.blenderDomainDimensions
-            ? desc_.placement * blenderCellFrame(file, firstGrid(desc_), *desc_.blenderDomainDimensions)
-            : desc_.placement;
     VolumeSamples samples;
-    if (!desc_.densityGrid.empty()) samples.density = file.sample(desc_.densityGrid, 1, grid_, placement);
-    if (!desc_.temperatureGrid.empty())
-        samples.temperature = file.sample(desc_.temperatureGrid, 1, grid_, placement);
-    if (!desc_.flameGrid.empty()) samples.flame = file.sample(desc_.flameGrid, 1, grid_, placement);
-    if (!desc_.indexGrid.empty()) samples.index = file.sample(desc_.indexGrid, 1, grid_, placement);
-    if (!desc_.deltaIndexGrid.empty()) samples.deltaIndex = file.sample(desc_.deltaIndexGrid, 1, grid_, placement);
-    if (!desc_.anisotropyGrid.empty()) samples.anisotropy = file.sample(desc_.anisotropyGrid, 1, grid_, placement);
-    // κ, σs and ε grids: RGB as a vec3s grid, or grey as a float grid.
-    const auto rgb = [&](const std::string& name) {
-        if (file.componentsOf(name) == 3) return file.sample(name, 3, grid_, placement);
-        const std::vector<float> grey = file.sample(name, 1, grid_, placement);
-        std::vector<float> channels(3 * grey.size());
-        for (std::size_t c = 0; c < grey.size(); ++c) channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = grey[c];
-        return channels;
-    };
-    if (!desc_.extinctionGrid.empty()) samples.extinction = rgb(desc_.extinctionGrid);
-    if (!desc_.scatteringGrid.empty()) samples.scattering = rgb(desc_.scatteringGrid);
-    if (!desc_.emissionGrid.empty()) samples.emission = rgb(desc_.emissionGrid);
     std::vector<float> velocity;
-    if (!desc_.velocityGrid.empty()) {
+    readNamedByScene(scenePath_, [&] {
+        const io::VdbVolumeFile file(path);
+        const glm::dmat4 placement = placementOf(desc_, file);
+        for (const GridSlot& slot : kGridSlots) {
+            const std::string& grid = desc_.*slot.name;
+            if (grid.empty()) continue;
+            const int components = componentsOf(slot, grid, file);
+            std::vector<float> values = file.sample(grid, components, grid_, placement);
+            if (slot.components == kRgb && components == 1) {  // grey: the same value in each channel
+                std::vector<float> channels(3 * values.size());
+                for (std::size_t c = 0; c < values.size(); ++c)
+                    channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = values[c];
+                values = std::move(channels);
+            }
+            samples.*slot.samples = std::move(values);
+        }
+        if (desc_.velocityGrid.empty()) return;
         velocity = file.sample(desc_.velocityGrid, 3, grid_, placement);
         const glm::dmat3 turn(placement);  // a velocity turns and scales with the volume
         for (std::size_t c = 0; c < velocity.size(); c += 3) {
             const glm::dvec3 v = turn * glm::dvec3(velocity[c], velocity[c + 1], velocity[c + 2]);
             for (int a = 0; a < 3; ++a) velocity[c + static_cast<std::size_t>(a)] = static_cast<float>(v[a]);
         }
-    }
+    });
     samples_ = std::move(samples);
     velocity_ = std::move(velocity);
     file_ = path;
@@ -96,7 +155,7 @@ void VolumeSequence::load(int frame) {
 }
 
 void VolumeSequence::writeFields(FieldSet& fields) const {
-    writeVolumeOptics(desc_, medium_, samples_, file_, fields);
+    writeVolumeOptics(desc_, medium_, samples_, {scenePath_, file_}, fields);
 }
 
 std::vector<NamedArray> VolumeSequence::exportArrays() const {

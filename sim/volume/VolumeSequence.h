@@ -15,11 +15,23 @@
 
 namespace eikon::sim {
 
+// Checks the files of rendered frames 0 … frames − 1 of a sequence as
+// loading them would, up to their voxel values: each file present, its
+// header, grid table and the trees of the grids read whole and within the
+// file (a truncated or damaged file), each grid present with its type, its
+// metadata and a transform that places it (io/vdb/VdbVolumeFile::check).
+// Run before anything is written, so that a damaged later file stops the
+// run before frame 0 (docs/scene-format.md, volume). InputError as the
+// constructor's. A single file is left to the constructor.
+void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int frames, const std::string& scenePath);
+
 class VolumeSequence {
 public:
-    // Loads the file for rendered frame 0. InputError (file, grid, what was
-    // expected and found) for a missing file or grid or a bad file.
-    VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid);
+    // Loads the file for rendered frame 0. InputError naming the scene file
+    // and volume.path, then the OpenVDB file (and grid, byte) and what was
+    // expected and found, for a missing file or grid or a bad file.
+    VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid,
+                   const std::string& scenePath);
 
     bool isSequence() const { return desc_.sequence; }
     int frame() const { return frame_; }
@@ -46,6 +58,7 @@ private:
     VolumeDesc desc_;
     Material medium_;
     GridSpec grid_;
+    std::string scenePath_;
     int frame_ = 0;
     std::string file_;
     VolumeSamples samples_;

@@ -126,6 +126,15 @@ bool anyStroke(const Scene& scene, Rgb PaintStroke::*amount) {
 
 }  // namespace
 
+bool strokeReaches(const PaintStroke& stroke, const glm::dvec3& at) {
+    const double reach = kCutoffSigmas * 0.5 * stroke.radius;
+    const std::vector<Stamp> stamps = stampsOf(stroke);
+    return std::any_of(stamps.begin(), stamps.end(), [&](const Stamp& stamp) {
+        const glm::dvec3 offset = at - stamp.centre;
+        return glm::dot(offset, offset) <= reach * reach;
+    });
+}
+
 double smokePattern(const glm::dvec3& local, unsigned seed) {
     double sum = 0.0, norm = 0.0, amplitude = 1.0, frequency = 2.0;
     for (int octave = 0; octave < 3; ++octave) {

@@ -24,6 +24,10 @@ void paintStrokes(const Scene& scene, FieldSet& fields, const CellBox* region = 
 // The same in place, over memory that already has every field a stroke needs.
 void paintStrokes(const Scene& scene, const FieldViews& fields, const CellBox* region = nullptr);
 
+// Whether `stroke` paints anything at the point `at` (within the cut-off of
+// one of its stamps): a refused painted value names the strokes that reach it.
+bool strokeReaches(const PaintStroke& stroke, const glm::dvec3& at);
+
 // The smoke brush's pattern in [0, 1] at a point in brush coordinates
 // (radii along the stroke tangent and two normals): three octaves of value
 // noise, fixed to the brush so that it turns with the stroke.

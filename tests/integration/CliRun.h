@@ -26,6 +26,12 @@ inline Outcome runEikon(const std::string& arguments, const std::string& environ
     return outcome;
 }
 
+// runEikon, stopped after `seconds` (coreutils timeout: exit 124), so that a
+// command that runs on for ever fails its test instead of holding ctest.
+inline Outcome runEikonWithin(int seconds, const std::string& arguments, const std::string& environment = "") {
+    return runEikon(arguments, environment + " timeout --kill-after=10 " + std::to_string(seconds));
+}
+
 // The cells of one CSV row; a quoted cell may hold commas.
 inline std::vector<std::string> csvCells(const std::string& row) {
     std::vector<std::string> cells;

@@ -16,12 +16,14 @@
 #include <chrono>
 #include <thread>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <iterator>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -211,6 +213,46 @@ TEST_F(Cli, VolumeSequenceRunsAndExportsOpenVdb) {
         EXPECT_FLOAT_EQ(file.sample("temperature", 1, cell, {0, 0, 0})[0], 293.15f + 10.0f * float(frame + 1));
         EXPECT_FLOAT_EQ(file.sample("extinction", 3, cell, {0, 0, 0})[1], 0.25f);
     }
+}
+
+// The last file of a three-file sequence cut short, overwritten with text,
+// or damaged inside its last grid's tree (its length kept): each stops the
+// run before frame 0 is written, exit 2 naming the scene, volume.path and that
+// file, and no output folder, though frames 0 and 1 would render.
+TEST_F(Cli, ADamagedLaterFileOfASequenceStopsTheRunBeforeFrameZero) {
+    for (int f = 1; f <= 3; ++f) {
+        char name[64];
+        std::snprintf(name, sizeof name, "fluid_data_%04d.vdb", f);
+        eikon::test::writeVdbFile(dir_ / name,
+                                  {{"density", 1, [](double, double, double, int) { return 0.5f; }},
+                                   {"temperature", 1, [f](double x, double, double, int) { return float(f * x); }}},
+                                  0.05, -0.6, 0.6);
+    }
+    std::string text = validScene();
+    text.insert(text.rfind('}'), R"(, "volume": {"path": "fluid_data_####.vdb", "temperature_scale": 10,
+        "density_extinction": 0.5})");
+    const std::string scene = writeScene("volume.json", text);
+    const fs::path last = dir_ / "fluid_data_0003.vdb", out = dir_ / "out";
+    std::string whole;
+    {
+        std::ifstream in(last, std::ios::binary);
+        whole.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    std::string damaged = whole;
+    std::fill(damaged.end() - 400, damaged.end() - 8, '\x55');  // inside the temperature grid's leaf buffers
+    for (const auto& [label, bytes] : {std::pair<std::string, std::string>{"truncated", whole.substr(0, whole.size() / 2)},
+                                       {"garbage", std::string(whole.size(), 'x')},
+                                       {"damaged tree", damaged}}) {
+        SCOPED_TRACE(label);
+        std::ofstream(last, std::ios::binary | std::ios::trunc) << bytes;
+        const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 3 --quiet");
+        EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+        EXPECT_EQ(outcome.output.rfind("eikon: error: " + scene + ": volume.path: " + last.string() + ": ", 0), 0u)
+            << outcome.output;
+        EXPECT_FALSE(fs::exists(out)) << "frames 0 and 1 were written before the damaged file was found";
+    }
+    EXPECT_EQ(runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet").exitCode, 0)
+        << "the frames before the damaged file render";
 }
 
 // A deforming mesh goes to ParaView too: each frame's deformed mesh as .vtp.

@@ -129,14 +129,16 @@ TEST(GpuFluid, NonFiniteValuesAreCaughtWithFieldAndCell) {
         placeOnGpu(sim);
         sim.state().temperature(3, 4, 5) = std::numeric_limits<double>::quiet_NaN();
         EXPECT_EQ(messageOf(sim),
-                  "sim: field temperature, cell (3, 4, 5) at the start of a substep: expected a finite value, found nan");
+                  "sim (the solver's temperature at cell (3, 4, 5) of sim.resolution, at the start of a substep): expected a "
+                  "finite value, found nan");
     }
     {
         FluidSimulation sim(desc, kRenderGrid);
         placeOnGpu(sim);
         sim.state().flow.velocity[1](2, 7, 1) = std::numeric_limits<double>::infinity();
         EXPECT_EQ(messageOf(sim),
-                  "sim: field velocity_y, face (2, 7, 1) at the start of a substep: expected a finite value, found inf");
+                  "sim (the solver's velocity_y at face (2, 7, 1) of sim.resolution, at the start of a substep): expected a "
+                  "finite value, found inf");
     }
     {
         SimDesc hot = desc;
@@ -144,7 +146,9 @@ TEST(GpuFluid, NonFiniteValuesAreCaughtWithFieldAndCell) {
         FluidSimulation sim(hot, kRenderGrid);
         placeOnGpu(sim);
         sim.state().temperature(1, 2, 3) += 1e10;
-        EXPECT_EQ(messageOf(sim), "sim: field velocity_y, face (1, 2, 3) after sources: expected a finite value, found inf");
+        EXPECT_EQ(messageOf(sim), "sim.sources, sim.thermal_expansion, sim.concentration_expansion, sim.gravity (the solver's "
+                                  "velocity_y at face (1, 2, 3) of sim.resolution, after sources): expected a finite value, "
+                                  "found inf");
     }
 }
 
@@ -158,13 +162,14 @@ TEST(GpuFluid, PassesReachEntriesPastOneAxisOfWorkGroups) {
     const gpu::GpuField onGpu(field, gpu::solverResource("dye", field.size));
     gpu::GpuFiniteCheck check;
     check.begin();
-    check.check(onGpu, "dye", "cell", "after a test");
+    check.check(onGpu, "dye", "cell", SolverPhase{"after a test", "sim"});
     try {
         check.finish();
         ADD_FAILURE() << "the NaN in the last sample was not found";
     } catch (const InputError& error) {
         EXPECT_EQ(std::string(error.what()),
-                  "sim: field dye, cell (4096, 4095, 0) after a test: expected a finite value, found nan");
+                  "sim (the solver's dye at cell (4096, 4095, 0) of sim.resolution, after a test): expected a finite "
+                  "value, found nan");
     }
 }
 

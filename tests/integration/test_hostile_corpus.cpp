@@ -32,6 +32,7 @@ struct HostileCase {
     std::string name, scene, message;
     std::vector<std::string> overrides;
     int exit = 0;  // 0 runs, 2 is refused, -1 either (a flipped byte that may leave a valid file)
+    int frames = 1;  // --frames: a volume sequence's later files
     std::map<std::string, std::string> environment;  // variables eikon runs with (EIKON_MEMORY_LIMIT_MB)
 };
 
@@ -43,7 +44,7 @@ std::vector<HostileCase> loadCases() {
     for (std::string line; std::getline(lines, line);) {
         const nlohmann::json entry = nlohmann::json::parse(line);
         cases.push_back({entry.at("name"), entry.at("scene"), entry.at("message"), entry.at("set"), entry.at("exit"),
-                         entry.value("env", std::map<std::string, std::string>{})});
+                         entry.value("frames", 1), entry.value("env", std::map<std::string, std::string>{})});
     }
     return cases;
 }
@@ -113,6 +114,10 @@ TEST_P(HostileCorpus, RefusedCleanlyOrRendered) {
     for (const std::string& assignment : hostile.overrides) {
         arguments.push_back("--set");
         arguments.push_back(assignment);
+    }
+    if (hostile.frames != 1) {
+        arguments.push_back("--frames");
+        arguments.push_back(std::to_string(hostile.frames));
     }
     const Outcome outcome = runWithDeadline(arguments, std::chrono::seconds(120), hostile.environment);
     ASSERT_TRUE(outcome.finished) << "still running after 120 s";

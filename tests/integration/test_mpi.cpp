@@ -1,9 +1,12 @@
 // `mpirun -n 2 eikon run`, against the same run in one process (no
 // mpirun): sharing the photons gives the default scene's frame and report
 // figures bit for bit; sharing the frames of a volume sequence gives the
-// same files, with series indexes that list every frame once; a bad scene
-// is reported once; a rank that fails on its own, or is killed, ends the
-// run with a message and leaves neither processes nor temporaries behind.
+// same files, with series indexes that list every frame once; a bad scene,
+// or a damaged later file of a volume sequence, is reported once before
+// anything is written; a bad option one rank alone sees ends the job; ranks
+// given different arguments, scenes or files are refused before any
+// output; a rank that fails on its own, or is killed, ends the run with a
+// message and leaves neither processes nor temporaries behind.
 #include "io/vdb/VdbVolumeFile.h"
 #include "tests/unit/VdbTestFiles.h"
 
@@ -16,6 +19,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +28,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -53,6 +58,10 @@ std::string mpirun(int ranks) {
 }
 
 std::string eikon() { return std::string(EIKON_EXECUTABLE) + " "; }
+
+// An mpirun whose job is stopped after two minutes, so that a job that hangs
+// fails its test (timeout's exit 124) instead of holding ctest.
+std::string boundedMpirun() { return "timeout --kill-after=10 120 " + mpirun(1); }
 
 std::string fileBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -84,10 +93,14 @@ nlohmann::json withoutTimings(nlohmann::json line, bool framesShared = false) {
     return line;
 }
 
+// The output files below `root`; not the run's journals (.eikon-run, and
+// one per other rank where ranks share the frames), which name each file's
+// inode.
 std::set<std::string> filesBelow(const fs::path& root) {
     std::set<std::string> files;
     for (const auto& entry : fs::recursive_directory_iterator(root))
-        if (entry.is_regular_file()) files.insert(fs::relative(entry.path(), root).string());
+        if (entry.is_regular_file() && entry.path().filename().string().rfind(".eikon-run", 0) != 0)
+            files.insert(fs::relative(entry.path(), root).string());
     return files;
 }
 
@@ -232,22 +245,57 @@ TEST_F(Mpi, TwoRanksSharingFramesWriteTheFilesOfOneProcess) {
         EXPECT_EQ(pvd.find(name), pvd.rfind(name)) << name << " once";
         EXPECT_NE(pvd.find(name), std::string::npos) << name;
     }
+    // Each rank recorded the files it wrote: --force clears rank 1's too.
+    const Outcome forced = runCommand(eikon() + "run " + scene + " --frames 1 --quiet --force --out " + shared.string());
+    ASSERT_EQ(forced.exitCode, 0) << forced.output;
+    EXPECT_FALSE(fs::exists(shared / "frames/frame_00001.png"));
+    EXPECT_FALSE(fs::exists(shared / "vdb/fields_00003.vdb"));
+    EXPECT_FALSE(fs::exists(shared / ".eikon-run.rank1"));
 }
 
-// Frame 3's file is cut short: rank 1 meets it alone, after the inputs were
-// agreed on, and ends the job with its rank, the file and exit 2 — no rank
-// is left waiting.
+// Frame 3's file holds a NaN temperature: its structure passes the check
+// before frame 0, and rank 1 meets the value alone, after the inputs were
+// agreed on, and ends the job with its rank, the file and exit 2 — no rank is
+// left waiting.
 TEST_F(Mpi, AFailureOfOneRankEndsTheJobWithItsRankAndMessage) {
     const std::string scene = writeVolumeScene(dir_, 4);
     const fs::path damaged = dir_ / "fluid_data_0004.vdb";
-    fs::resize_file(damaged, fs::file_size(damaged) / 2);
+    eikon::test::writeVdbFile(damaged,
+                              {{"density", 1, [](double, double, double, int) { return 0.5f; }},
+                               {"temperature", 1, [](double, double, double, int) { return std::nanf(""); }}},
+                              0.05, -0.6, 0.6);
     const fs::path out = dir_ / "out";
     const Outcome outcome = runCommand(mpirun(2) + eikon() + "run " + scene +
                                        " --frames 4 --quiet --distribute frames --out " + out.string());
     EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
-    EXPECT_NE(outcome.output.find("eikon: error (rank 1 of 2): " + damaged.string()), std::string::npos)
+    EXPECT_NE(outcome.output.find("eikon: error (rank 1 of 2): " + scene + ": volume.path: " + damaged.string()),
+              std::string::npos)
         << outcome.output;
     EXPECT_TRUE(processesMentioning(out.string()).empty());
+}
+
+// The last file of a three-file sequence cut short, or overwritten with
+// text: every rank checks every file before frame 0, so the job ends at once
+// with exit 2, the file named once, and nothing written — though rank 0's
+// frames (0 and 2) would not read it.
+TEST_F(Mpi, ADamagedLaterFileOfASequenceStopsTheJobBeforeFrameZero) {
+    const std::string scene = writeVolumeScene(dir_, 3);
+    const fs::path last = dir_ / "fluid_data_0003.vdb", out = dir_ / "out";
+    const std::string whole = fileBytes(last);
+    for (const auto& [label, bytes] : {std::pair<std::string, std::string>{"truncated", whole.substr(0, whole.size() / 2)},
+                                       {"garbage", std::string(whole.size(), 'x')}}) {
+        SCOPED_TRACE(label);
+        std::ofstream(last, std::ios::binary | std::ios::trunc) << bytes;
+        const Outcome outcome = runCommand(mpirun(2) + eikon() + "run " + scene +
+                                           " --frames 3 --quiet --distribute frames --out " + out.string());
+        EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+        const std::string named = "eikon: error: " + scene + ": volume.path: " + last.string() + ": ";
+        const std::size_t first = outcome.output.find(named);
+        EXPECT_NE(first, std::string::npos) << outcome.output;
+        EXPECT_EQ(outcome.output.find("eikon: error", first + 1), std::string::npos) << "once: " << outcome.output;
+        EXPECT_FALSE(fs::exists(out));
+        EXPECT_TRUE(processesMentioning(out.string()).empty());
+    }
 }
 
 TEST_F(Mpi, ABadSceneIsReportedOnceWithExitTwoAndNothingWritten) {
@@ -260,6 +308,89 @@ TEST_F(Mpi, ABadSceneIsReportedOnceWithExitTwoAndNothingWritten) {
     ASSERT_NE(first, std::string::npos) << outcome.output;
     EXPECT_EQ(outcome.output.find("eikon: error: ", first + 1), std::string::npos) << "once: " << outcome.output;
     EXPECT_NE(outcome.output.find("grid.resolution"), std::string::npos) << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// A small scene, cheap to check: the refusals below come before any frame.
+void writeSmallScene(const fs::path& path, long long photons, const std::string& mesh = "") {
+    fs::create_directories(path.parent_path());
+    const std::string object =
+        mesh.empty() ? R"({"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5})"
+                     : R"({"type": "mesh", "mesh": {"path": ")" + mesh + R"("}, "index": 1.5})";
+    std::ofstream(path) << R"({
+  "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
+  "objects": [)" << object << R"(],
+  "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
+  "camera": {"position": [0, 1, 2], "target": [0, 0.3, 0], "up": [0, 1, 0], "fov_deg": 45},
+  "render": {"photons": )" << photons << R"(, "width": 32, "height": 24}
+})";
+}
+
+// The launcher's MPMD form gives each rank its own command line: a bad
+// option that rank 1 alone sees (or rank 0 alone) is refused by that rank,
+// and the job ends at once with exit 2 — before, rank 0 waited for rank 1
+// for ever.
+TEST_F(Mpi, ABadOptionOnlyOneRankSeesEndsTheJobWithExitTwo) {
+    const fs::path scene = dir_ / "scene.json", out = dir_ / "out";
+    writeSmallScene(scene, 4096);
+    const std::string good = eikon() + "run " + scene.string() + " --quiet --out " + out.string();
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {good + " : -n 1 " + good + " --frames 0", "eikon: error (rank 1 of 2): --frames: Value 0 not in range"},
+        {good + " : -n 1 " + good + " --distribute bogus", "eikon: error (rank 1 of 2): --distribute: bogus not in"},
+        {good + " --frames 0 : -n 1 " + good, "eikon: error: --frames: Value 0 not in range"}};
+    for (const auto& [job, message] : cases) {
+        const Outcome outcome = runCommand(boundedMpirun() + job);
+        EXPECT_EQ(outcome.exitCode, 2) << job << "\n" << outcome.output;
+        EXPECT_NE(outcome.output.find(message), std::string::npos) << outcome.output;
+        EXPECT_FALSE(fs::exists(out)) << job;
+    }
+}
+
+TEST_F(Mpi, RanksGivenDifferentFramesAreRefused) {
+    const fs::path scene = dir_ / "scene.json", out = dir_ / "out";
+    writeSmallScene(scene, 4096);
+    const std::string run = eikon() + "run " + scene.string() + " --quiet --out " + out.string();
+    const Outcome outcome = runCommand(boundedMpirun() + run + " --frames 4 : -n 1 " + run + " --frames 2");
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("eikon: error: ranks disagree: rank 1's --frames is 2, rank 0's is 4"),
+              std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// The same relative scene path in two working folders: two machines whose
+// copies of a scene differ.
+TEST_F(Mpi, RanksReadingDifferentScenesAreRefused) {
+    writeSmallScene(dir_ / "a" / "scene.json", 4096);
+    writeSmallScene(dir_ / "b" / "scene.json", 8192);
+    const fs::path out = dir_ / "out";
+    const std::string run = eikon() + "run scene.json --quiet --out " + out.string();
+    const Outcome outcome = runCommand(boundedMpirun() + "-wdir " + (dir_ / "a").string() + " " + run +
+                                       " : -n 1 -wdir " + (dir_ / "b").string() + " " + run);
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("rank 1's scene differs from rank 0's at render.photons (8192, rank 0's 4096)"),
+              std::string::npos)
+        << outcome.output;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+// The same scene over meshes of the same size whose bytes differ.
+TEST_F(Mpi, RanksReadingDifferentCopiesOfAMeshAreRefused) {
+    const std::string mesh = fileBytes(fs::path(EIKON_SOURCE_DIR) / "scenes/meshes/glass_bar.obj");
+    std::string changed = mesh;
+    changed.replace(changed.find("v -0.06 "), 8, "v -0.05 ");  // one vertex moved
+    for (const auto& [folder, bytes] : {std::pair{"a", mesh}, std::pair{"b", changed}}) {
+        writeSmallScene(dir_ / folder / "scene.json", 4096, "bar.obj");
+        std::ofstream(dir_ / folder / "bar.obj", std::ios::binary) << bytes;
+    }
+    const fs::path out = dir_ / "out";
+    const std::string run = eikon() + "run scene.json --quiet --out " + out.string();
+    const Outcome outcome = runCommand(boundedMpirun() + "-wdir " + (dir_ / "a").string() + " " + run +
+                                       " : -n 1 -wdir " + (dir_ / "b").string() + " " + run);
+    EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
+    EXPECT_NE(outcome.output.find("rank 1's file for objects[0].mesh.path differs from rank 0's in its bytes"),
+              std::string::npos)
+        << outcome.output;
     EXPECT_FALSE(fs::exists(out));
 }
 

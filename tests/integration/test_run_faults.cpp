@@ -1,8 +1,10 @@
 // Faults of the environment during a run that exports every frame (VTK
 // ImageData and PolyData, OpenVDB, PNG): `kill -9` at 20 random moments, a
-// file system that fills up, a read-only one. Whatever happens, every file
-// left under a final name loads completely and the .pvd and .series indexes
-// list only such files; a fault eikon sees is exit code 1 with a message.
+// file system that fills up, a read-only one, another program saving files
+// into the folder, a second run into it. Whatever happens, every file left
+// under a final name loads completely and the .pvd and .series indexes list
+// only such files; a fault eikon sees is exit code 1 with a message; the
+// next `--force` clears exactly what the run wrote; and two runs never mix.
 #include "bridge/core/Error.h"
 #include "io/image/ImageIo.h"
 #include "io/vdb/VdbVolumeFile.h"
@@ -127,17 +129,20 @@ struct RunResult {
 
 // `eikon run` of the heat-shimmer scene exporting VTK and OpenVDB every
 // frame, its stderr to `log`.
-pid_t startExportingRun(const fs::path& out, int frames, const fs::path& log) {
+pid_t startExportingRun(const fs::path& out, int frames, const fs::path& log, bool force = false) {
     const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
     const std::string framesArgument = std::to_string(frames);
+    std::vector<const char*> arguments = {EIKON_EXECUTABLE, "run", scene.c_str(), "--out", out.c_str(), "--frames",
+                                          framesArgument.c_str(), "--quiet", "--vtk", "--set", "export.vdb.enabled=true",
+                                          "--set", "render.width=64", "--set", "render.height=48", "--set",
+                                          "render.photons=4096"};
+    if (force) arguments.push_back("--force");
+    arguments.push_back(nullptr);
     const pid_t child = fork();
     if (child == 0) {
         FILE* redirected = std::freopen(log.c_str(), "w", stderr);
         (void)redirected;
-        execl(EIKON_EXECUTABLE, EIKON_EXECUTABLE, "run", scene.c_str(), "--out", out.c_str(), "--frames",
-              framesArgument.c_str(), "--quiet", "--vtk", "--set", "export.vdb.enabled=true", "--set",
-              "render.width=64", "--set", "render.height=48", "--set", "render.photons=4096",
-              static_cast<char*>(nullptr));
+        execv(EIKON_EXECUTABLE, const_cast<char* const*>(arguments.data()));
         _exit(127);
     }
     return child;
@@ -176,11 +181,25 @@ protected:
     fs::path dir_, log_;
 };
 
+// The frame number in an output file's name (frame_00007.png,
+// fields_00007.vti), or -1.
+int frameNumberOf(const fs::path& file) {
+    static const std::regex numbered(R"(.*_(\d{5})\.[a-z]+)");
+    std::smatch match;
+    const std::string name = file.filename().string();
+    return std::regex_match(name, match, numbered) ? std::stoi(match[1]) : -1;
+}
+
 // SIGKILL cannot be caught: what it leaves must still be whole wherever a
 // file has its final name, since every file is written to a temporary and
-// renamed. 20 moments drawn uniformly over an uninterrupted run's duration.
-TEST_F(RunFaults, KillNineAtTwentyRandomMomentsLeavesOnlyWholeFiles) {
-    constexpr int kFrames = 10;
+// renamed; and since each is recorded in the run's journal before it is
+// created and again before its rename, `--force` with fewer frames into the
+// same folder then clears all of it — the frames written after the killed
+// run's last report line and its temporaries included — so nothing of it
+// survives beside the new run's files. 20 moments drawn uniformly over an
+// uninterrupted run's duration.
+TEST_F(RunFaults, KillNineAtTwentyRandomMomentsLeavesWholeFilesThatForceClears) {
+    constexpr int kFrames = 10, kFewer = 3;
     // The run's duration: the faster of two whole runs (the first may pay
     // for cold caches), so that the moments fall within the later runs.
     double duration = 1e30;
@@ -202,22 +221,80 @@ TEST_F(RunFaults, KillNineAtTwentyRandomMomentsLeavesOnlyWholeFiles) {
         std::this_thread::sleep_for(std::chrono::duration<double>(moment(random)));
         kill(child, SIGKILL);
         const RunResult killed = finish(child, log_);
-        killedMidway += WIFSIGNALED(killed.status) ? 1 : 0;
+        killedMidway += WIFSIGNALED(killed.status) && fs::exists(out / "frames" / "frame_00000.png") ? 1 : 0;
         SCOPED_TRACE("trial " + std::to_string(trial));
         if (fs::exists(out)) expectWholeOutput(out);
-    }
-    EXPECT_GE(killedMidway, 10) << "most kills should land before the run ends, or the test tests little";
 
-    // A later run clears what the kill left, temporaries included.
-    const fs::path last = dir_ / "killed_19";
-    if (fs::exists(last)) {
-        const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
-        const std::string command = std::string(EIKON_EXECUTABLE) + " run " + scene + " --out " + last.string() +
-                                    " --frames 1 --quiet --force --set render.width=64 --set render.height=48"
-                                    " --set render.photons=4096 2>&1";
-        EXPECT_EQ(std::system(command.c_str()), 0);
-        for (const auto& entry : fs::recursive_directory_iterator(last)) EXPECT_FALSE(isTemporary(entry.path()));
+        const RunResult forced = finish(startExportingRun(out, kFewer, log_, /*force=*/true), log_);
+        ASSERT_TRUE(WIFEXITED(forced.status) && WEXITSTATUS(forced.status) == 0) << forced.output;
+        int frames = 0;
+        for (const auto& entry : fs::recursive_directory_iterator(out)) {
+            EXPECT_FALSE(isTemporary(entry.path())) << entry.path();
+            EXPECT_LT(frameNumberOf(entry.path()), kFewer) << entry.path() << " is the killed run's";
+            frames += entry.path().extension() == ".png" ? 1 : 0;
+        }
+        EXPECT_EQ(frames, kFewer);
     }
+    EXPECT_GE(killedMidway, 10) << "most kills should land after the first frame and before the run ends, or the "
+                                   "test tests little";
+}
+
+// A file another program saves into the folder while the run writes there
+// (a ParaView state beside the VTK files, notes) is not the run's: the next
+// --force leaves it.
+TEST_F(RunFaults, FilesSavedDuringARunSurviveTheNextForce) {
+    constexpr int kFrames = 8;
+    const fs::path out = dir_ / "run";
+    const pid_t child = startExportingRun(out, kFrames, log_);
+    while (!fs::exists(out / "vtk" / "fields_00000.vti") && waitpid(child, nullptr, WNOHANG) == 0)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_EQ(kill(child, SIGSTOP), 0);
+    std::ifstream report(out / "report.jsonl");
+    const auto reported = std::count(std::istreambuf_iterator<char>(report), {}, '\n');
+    ASSERT_LT(reported, kFrames - 1) << "the run should have frames left to write";
+    std::ofstream(out / "vtk" / "state.pvsm") << "the user's ParaView state";
+    std::ofstream(out / "notes.txt") << "the user's notes";
+    kill(child, SIGCONT);
+    const RunResult first = finish(child, log_);
+    ASSERT_TRUE(WIFEXITED(first.status) && WEXITSTATUS(first.status) == 0) << first.output;
+
+    const RunResult forced = finish(startExportingRun(out, 1, log_, /*force=*/true), log_);
+    ASSERT_TRUE(WIFEXITED(forced.status) && WEXITSTATUS(forced.status) == 0) << forced.output;
+    EXPECT_EQ(readText(out / "vtk" / "state.pvsm"), "the user's ParaView state");
+    EXPECT_EQ(readText(out / "notes.txt"), "the user's notes");
+    EXPECT_FALSE(fs::exists(out / "frames" / "frame_00001.png"));
+}
+
+// Two runs into one folder: while the first writes, a second (with --force)
+// stops at once with exit code 1 naming the first, and the first's output
+// is whole, all its own.
+TEST_F(RunFaults, ASecondRunIntoTheFolderIsRefusedAtOnce) {
+    constexpr int kFrames = 8;
+    const fs::path out = dir_ / "run", secondLog = log_.string() + ".second";
+    const pid_t first = startExportingRun(out, kFrames, log_);
+    // Once its first frame is out, the first run holds the folder; stopped
+    // there, it stays in the middle of its run for as long as the second takes.
+    while (!fs::exists(out / "frames" / "frame_00000.png") && waitpid(first, nullptr, WNOHANG) == 0)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_EQ(kill(first, SIGSTOP), 0);
+    const RunResult second = finish(startExportingRun(out, 3, secondLog, /*force=*/true), secondLog);
+    kill(first, SIGCONT);
+    const RunResult firstResult = finish(first, log_);
+    fs::remove(secondLog);
+    ASSERT_TRUE(WIFEXITED(second.status)) << second.output;
+    EXPECT_EQ(WEXITSTATUS(second.status), 1) << second.output;
+    EXPECT_NE(second.output.find("another eikon run (pid " + std::to_string(first) + ") is writing into " + out.string()),
+              std::string::npos)
+        << second.output;
+    ASSERT_TRUE(WIFEXITED(firstResult.status) && WEXITSTATUS(firstResult.status) == 0) << firstResult.output;
+    std::ifstream report(out / "report.jsonl");
+    int line = 0;
+    for (std::string text; std::getline(report, text); ++line) EXPECT_EQ(nlohmann::json::parse(text).at("frame"), line);
+    EXPECT_EQ(line, kFrames);
+    int frames = 0;
+    for (const auto& entry : fs::directory_iterator(out / "frames")) frames += entry.path().extension() == ".png" ? 1 : 0;
+    EXPECT_EQ(frames, kFrames);
+    EXPECT_GT(expectWholeOutput(out), 4 * kFrames);
 }
 
 // The file system fills up partway: eikon stops with exit code 1 (the

@@ -42,33 +42,39 @@ std::string messageOf(FluidSimulation& sim) {
     return "no error";
 }
 
-// NaN/Inf in the state is caught at the next check with field, cell and
-// phase: at the start of the substep for values set from outside, after the
-// phase that made them otherwise.
+// NaN/Inf in the state is caught at the next check with the keys behind the
+// phase, field and cell: at the start of the substep for values set from
+// outside, after the phase that made them otherwise (a thermal_expansion of
+// 1e300 overflows buoyancy: its keys are named).
 TEST(FluidSimulation, NonFiniteValuesAreCaughtWithFieldAndCell) {
     {
         FluidSimulation sim(smallAir(), kRenderGrid);
         sim.state().temperature(3, 4, 5) = std::numeric_limits<double>::quiet_NaN();
         EXPECT_EQ(messageOf(sim),
-                  "sim: field temperature, cell (3, 4, 5) at the start of a substep: expected a finite value, found nan");
+                  "sim (the solver's temperature at cell (3, 4, 5) of sim.resolution, at the start of a substep): expected a "
+                  "finite value, found nan");
     }
     {
         FluidSimulation sim(smallAir(), kRenderGrid);
         sim.state().flow.velocity[1](2, 7, 1) = std::numeric_limits<double>::infinity();
         EXPECT_EQ(messageOf(sim),
-                  "sim: field velocity_y, face (2, 7, 1) at the start of a substep: expected a finite value, found inf");
+                  "sim (the solver's velocity_y at face (2, 7, 1) of sim.resolution, at the start of a substep): expected a "
+                  "finite value, found inf");
     }
     {
         FluidSimulation sim(smallAir(), kRenderGrid);
         sim.state().dye(0, 11, 6) = -std::numeric_limits<double>::infinity();
-        EXPECT_EQ(messageOf(sim), "sim: field dye, cell (0, 11, 6) at the start of a substep: expected a finite value, found -inf");
+        EXPECT_EQ(messageOf(sim), "sim (the solver's dye at cell (0, 11, 6) of sim.resolution, at the start of a substep): "
+                                  "expected a finite value, found -inf");
     }
     {
         SimDesc desc = smallAir();
         desc.thermalExpansion = 1e300;  // buoyancy overflows at the one hot cell
         FluidSimulation sim(desc, kRenderGrid);
         sim.state().temperature(1, 2, 3) += 1e10;
-        EXPECT_EQ(messageOf(sim), "sim: field velocity_y, face (1, 2, 3) after sources: expected a finite value, found inf");
+        EXPECT_EQ(messageOf(sim), "sim.sources, sim.thermal_expansion, sim.concentration_expansion, sim.gravity (the solver's "
+                                  "velocity_y at face (1, 2, 3) of sim.resolution, after sources): expected a finite value, "
+                                  "found inf");
     }
 }
 

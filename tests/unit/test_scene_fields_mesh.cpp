@@ -186,7 +186,7 @@ TEST(SceneFieldsMesh, SharpMeshPublishesItsTriangleTree) {
     const std::size_t nodes = set.surfaceNodes.size() / kSurfaceNodeFloats;
     ASSERT_EQ(triangles, mesh.triangles.size());
     ASSERT_GE(nodes, 2 * triangles / TriangleBvh::kLeafTriangles - 1);
-    EXPECT_NO_THROW(validateFields(set, "test"));
+    EXPECT_NO_THROW(validateFields(set, [](std::string_view, const glm::dvec3*) { return std::string("test"); }));
     EXPECT_EQ(set.deltaIndex[grid.linearIndex(24, 24, 24)], 0.0f) << "no index voxelized";
     EXPECT_GT(set.extinction[3 * grid.linearIndex(24, 24, 24)], 0.0f) << "its extinction is";
 

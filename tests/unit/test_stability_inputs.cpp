@@ -1,5 +1,5 @@
-// Stability suite, CPU part: bad values in input grids are refused with the
-// field and cell named before anything is traced, and the fluid solver stays
+// Stability suite, CPU part: bad values in input grids are refused with
+// their origin and position named before anything is traced, and the fluid solver stays
 // bounded at CFL 20 with diffusion far beyond the explicit limit.
 #include "bridge/core/Error.h"
 #include "bridge/grid/FieldSet.h"
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <string_view>
 
 namespace eikon {
 namespace {
@@ -27,7 +28,9 @@ FieldSet smallFields() {
 // The message of the InputError validateFields throws, or "" when it passes.
 std::string refusal(const FieldSet& fields) {
     try {
-        validateFields(fields, "frame 3");
+        validateFields(fields, [](std::string_view field, const glm::dvec3*) {
+            return "frame 3: " + std::string(field);
+        });
     } catch (const InputError& error) {
         return error.what();
     }
@@ -40,15 +43,16 @@ constexpr float kInf = std::numeric_limits<float>::infinity();
 TEST(StabilityInputs, FiniteFieldsPass) { EXPECT_EQ(refusal(smallFields()), ""); }
 
 // NaN, ±Inf, and an index of zero or below: each refused, naming the field,
-// the cell (x, y, z) and the value found.
+// the position of the cell (x, y, z) and the value found.
 TEST(StabilityInputs, BadIndexValuesAreRefusedWithTheirCell) {
     const std::size_t cell = 1 + 4 * 2 + 12 * 1;  // (1, 2, 1)
     for (float bad : {kNaN, kInf, -kInf, -1.0f, -1.5f}) {
         FieldSet fields = smallFields();
         fields.deltaIndex[cell] = bad;
         const std::string message = refusal(fields);
-        EXPECT_NE(message.find("frame 3: field index, cell (1, 2, 1)"), std::string::npos) << bad << ": " << message;
-        EXPECT_NE(message.find("expected a finite index > 0"), std::string::npos) << message;
+        EXPECT_NE(message.find("frame 3: index (the refractive index at (0.375, 0.833333, 0.75) m)"), std::string::npos)
+            << bad << ": " << message;
+        EXPECT_NE(message.find("expected a finite index n > 0"), std::string::npos) << message;
     }
 }
 
@@ -58,13 +62,15 @@ TEST(StabilityInputs, BadExtinctionAndScatteringAreRefusedWithTheirCell) {
         FieldSet fields = smallFields();
         fields.extinction[3 * cell + 2] = bad;
         const std::string message = refusal(fields);
-        EXPECT_NE(message.find("field extinction, cell (3, 0, 1)"), std::string::npos) << bad << ": " << message;
+        EXPECT_NE(message.find("frame 3: extinction (the extinction κ at (0.875, 0.166667, 0.75) m)"), std::string::npos)
+            << bad << ": " << message;
     }
     for (float bad : {kNaN, -0.5f, 2.0f}) {  // 2 > κ = 1
         FieldSet fields = smallFields();
         fields.scattering[3 * cell] = bad;
         const std::string message = refusal(fields);
-        EXPECT_NE(message.find("field scattering, cell (3, 0, 1)"), std::string::npos) << bad << ": " << message;
+        EXPECT_NE(message.find("frame 3: scattering (the scattering σs at (0.875, 0.166667, 0.75) m)"), std::string::npos)
+            << bad << ": " << message;
     }
 }
 

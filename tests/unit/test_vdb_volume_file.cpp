@@ -7,9 +7,10 @@
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
-
 #include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
 
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -88,6 +89,42 @@ TEST(VdbVolumeFile, OutsideTheActiveVoxelsIsTheBackground) {
     EXPECT_FLOAT_EQ(VdbVolumeFile(path).sample("density", 1, inside, glm::dvec3(0.0))[0], 2.0f);
 }
 
+// The map the structural walk reads from a grid's bytes (which the check
+// before frame 0 places the render grid by) is the one OpenVDB applies once
+// it has read the grid: translation, scale, scale-and-translate and affine
+// maps, each to 1e-12 at points about the grid.
+TEST(VdbVolumeFile, TheCheckedMapIsTheOneOpenVdbApplies) {
+    openvdb::initialize();
+    openvdb::math::Mat4d affine = openvdb::math::Mat4d::identity();
+    affine.preRotate(openvdb::math::Z_AXIS, 0.3);
+    affine.preScale(openvdb::Vec3d(0.1, 0.2, 0.05));
+    affine.postTranslate(openvdb::Vec3d(1.0, -2.0, 0.5));
+    const std::vector<openvdb::math::Transform::Ptr> transforms{
+        openvdb::math::Transform::createLinearTransform(0.25),
+        openvdb::math::Transform::createLinearTransform(affine),
+        openvdb::math::Transform::Ptr(new openvdb::math::Transform(
+            openvdb::math::MapBase::Ptr(new openvdb::math::TranslationMap(openvdb::Vec3d(0.5, 1.0, -2.0))))),
+        openvdb::math::Transform::Ptr(new openvdb::math::Transform(openvdb::math::MapBase::Ptr(
+            new openvdb::math::ScaleTranslateMap(openvdb::Vec3d(0.1, 0.2, 0.3), openvdb::Vec3d(-1.0, 2.0, 0.5)))))};
+    const fs::path path = tempPath("maps.vdb");
+    for (std::size_t t = 0; t < transforms.size(); ++t) {
+        SCOPED_TRACE(transforms[t]->baseMap()->type());
+        auto grid = openvdb::FloatGrid::create(0.0f);
+        grid->setName("density");
+        grid->tree().setValue(openvdb::Coord(1, 2, 3), 1.0f);
+        grid->setTransform(transforms[t]);
+        openvdb::io::File(path.string()).write({grid});
+        const std::string bytes = readAll(path);
+        const glm::dmat4 worldToIndex =
+            checkVdbGrid(bytes, checkVdbHeader(bytes, path.string()).grids[0], path.string()).worldToIndex;
+        for (const glm::dvec3& world : {glm::dvec3(0.0), glm::dvec3(1.5, -0.25, 3.0), glm::dvec3(-7.0, 2.0, 0.125)}) {
+            const openvdb::Vec3d expected = transforms[t]->worldToIndex(openvdb::Vec3d(world.x, world.y, world.z));
+            const glm::dvec3 index(worldToIndex * glm::dvec4(world, 1.0));
+            for (int axis = 0; axis < 3; ++axis) EXPECT_NEAR(index[axis], expected[axis], 1e-12 * (1.0 + std::abs(expected[axis])));
+        }
+    }
+}
+
 // The structural walk must accept, byte for byte, every layout OpenVDB writes.
 TEST(VdbVolumeFile, ChecksAcceptEveryCompressionOpenVdbWrites) {
     for (unsigned compression : {0x0u, 0x1u, 0x2u, 0x3u, 0x4u, 0x6u}) {
@@ -117,7 +154,7 @@ TEST(VdbVolumeFile, TheWalkSizesTheTreeOpenVdbReads) {
         openvdb::io::File file(path.string());
         file.open();
         for (const VdbGridEntry& grid : checkVdbHeader(bytes, path.string()).grids) {
-            const VdbTreeSize size = checkVdbGrid(bytes, grid, path.string());
+            const VdbTreeSize size = checkVdbGrid(bytes, grid, path.string()).tree;
             const double openVdb = static_cast<double>(file.readGrid(grid.name)->memUsage());
             EXPECT_NEAR(static_cast<double>(size.memoryBytes()) / openVdb, 1.0, 0.1) << path << " " << grid.name;
         }
@@ -163,7 +200,7 @@ TEST(VdbVolumeFile, NonFiniteSamplesAreInputErrors) {
         FAIL() << "no error";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find("grid \"density\": expected finite values, found a non-finite value "
-                                                 "sampled at render cell (3, 0, 0)"),
+                                                 "sampled at (0.15, -0.15, -0.15) m"),
                   std::string::npos)
             << error.what();
     }

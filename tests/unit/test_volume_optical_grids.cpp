@@ -2,7 +2,8 @@
 // index grid (n) or a delta_index grid (n − n_ref) sets the index where the
 // volume is, extinction and scattering grids (grey float or RGB vec3s) add
 // to κ and σs, an anisotropy grid is the volume's g; values that cannot be
-// are refused naming the file and cell; a flame glows by Kirchhoff's law
+// are refused naming the scene file, the keys, the OpenVDB file and the
+// position; a flame glows by Kirchhoff's law
 // plus what an emission grid adds; and eikon's own export reads back
 // as the fields it was written from.
 #include "bridge/core/Error.h"
@@ -97,20 +98,43 @@ TEST_F(VolumeOpticalGrids, ADeltaIndexGridAddsToTheTemperaturesChange) {
     }
 }
 
-TEST_F(VolumeOpticalGrids, ImpossibleValuesAreRefusedNamingTheFileAndCell) {
+// Each refusal names the scene file, the `volume` keys the value came from,
+// the OpenVDB file and the world position of the cell: cell 0 of the render
+// grid is centred at (-0.175, -0.075, -0.075) m.
+TEST_F(VolumeOpticalGrids, ImpossibleValuesAreRefusedNamingTheKeysTheFileAndThePosition) {
     const std::string inside = "[-0.2, -0.1, -0.1], \"max\": [0.2, 0.1, 0.1]";
+    const std::string scene = (folder_ / "scene.json").string(), lens = (folder_ / "lens.vdb").string();
     // More scattering than extinction.
-    EXPECT_NE(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "extinction": "sigma",
-        "scattering": "too_much"}})", inside).find("lens.vdb: cell 0: expected scattering <= extinction"),
-              std::string::npos);
+    EXPECT_EQ(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "extinction": "sigma",
+        "scattering": "too_much"}})", inside),
+              scene + ": volume.grids.scattering, medium.scattering, volume.grids.extinction, medium.extinction (the "
+                      "scattering σs at (-0.175, -0.075, -0.075) m in " + lens + "): expected scattering <= extinction = "
+                      "0.25 /m (the scattering grid's σs within the extinction it adds to), found 10 /m");
     // Past the active box an index grid reads its background, 0 here: no index.
-    EXPECT_NE(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "index": "n"}})",
-                      "[-0.5, -0.1, -0.1], \"max\": [0.5, 0.1, 0.1]")
-                  .find("expected an index > 0 in the index grid"),
-              std::string::npos);
+    EXPECT_EQ(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "index": "n"}})",
+                      "[-0.5, -0.1, -0.1], \"max\": [0.5, 0.1, 0.1]"),
+              scene + ": volume.grids.index (grid \"n\" at (-0.4375, -0.075, -0.075) m in " + lens +
+                  "): expected an index > 0 in the index grid (outside its active voxels a grid reads its background), "
+                  "found 0");
     EXPECT_NE(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "index": "kappa"}})", inside)
-                  .find("expected a float grid"),
+                  .find(scene + ": volume.path: " + lens + ": grid \"kappa\": expected a float grid"),
               std::string::npos);
+}
+
+// Keys within their documented ranges that together make a value impossible
+// are named with the file the values came from: a refractivity of 10 (> 0)
+// turns the index negative where the temperature grid runs hot.
+TEST_F(VolumeOpticalGrids, VolumeKeysThatMakeTheIndexImpossibleAreNamed) {
+    const std::string message = refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "flame"},
+        "temperature_scale": 1000, "refractivity": 10})", "[-0.2, -0.1, -0.1], \"max\": [0.2, 0.1, 0.1]");
+    EXPECT_EQ(message.rfind((folder_ / "scene.json").string() +
+                                ": medium.index, volume.refractivity, volume.pressure, volume.reference_temperature (the "
+                                "refractive index at (-0.175, -0.075, -0.075) m in " + (folder_ / "lens.vdb").string() +
+                                "): expected a finite index n > 0",
+                            0),
+              0u)
+        << message;
+    EXPECT_NE(message.find("here at T = 618.15 K), found -3.89865"), std::string::npos) << message;
 }
 
 // Kirchhoff: a flame f = x + 0.5 at T = 293.15 K + 2000 K·f with soot κ = 3·f
@@ -136,7 +160,8 @@ TEST_F(VolumeOpticalGrids, AFlameGlowsByKirchhoffsLawPlusTheEmissionGrid) {
     }
     EXPECT_NE(refusal(R"({"path": "lens.vdb", "grids": {"density": "", "temperature": "", "emission": "negative_glow"}})",
                       "[-0.2, -0.1, -0.1], \"max\": [0.2, 0.1, 0.1]")
-                  .find("lens.vdb: cell 0: expected an emission >= 0 in the emission grid"),
+                  .find("volume.grids.emission (grid \"negative_glow\" at (-0.175, -0.075, -0.075) m in " +
+                        (folder_ / "lens.vdb").string() + "): expected an emission >= 0 in the emission grid"),
               std::string::npos);
 }
 

@@ -1,6 +1,9 @@
 // Volume painting against its closed forms: a stroke is a Gaussian tube
 // around its path, a single stamp a Gaussian blob; masks confine the paint;
-// the smoke pattern turns with the stroke.
+// the smoke pattern turns with the stroke; an index painted below zero is
+// refused naming the stroke that reaches it.
+#include "bridge/core/Error.h"
+#include "sim/FieldOrigins.h"
 #include "sim/voxelize/AnalyticVoxelizer.h"
 #include "sim/voxelize/VolumePainter.h"
 
@@ -10,6 +13,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace eikon::sim {
 namespace {
@@ -96,6 +100,27 @@ TEST(VolumePainter, MasksConfinePaintInsideOrOutsideObjects) {
 
 // A stroke turned by 90° about y paints the turned pattern: the smoke brush's
 // noise is fixed to the brush, not to the grid.
+// A stroke's Δn within its range ("any") that leaves n <= 0 is refused
+// naming that stroke and the medium with the position, never a cell, and not
+// the strokes that do not reach it (here one on the far side of the grid).
+TEST(VolumePainter, AnIndexPaintedBelowZeroNamesTheStrokeThatReachesIt) {
+    Scene scene = paintScene(32, stroke({{0.3, 0.0, 0.0}}, 0.05, 0.01));
+    scene.paint.insert(scene.paint.begin(), stroke({{-0.3, 0.0, 0.0}}, 0.1, -5.0));
+    scene.sourcePath = "painted.json";
+    const FieldSet fields = voxelizeScene(scene);
+    try {
+        validateFields(fields, sceneFieldOrigin(scene));
+        FAIL() << "n <= 0 accepted";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_EQ(message.rfind("painted.json: paint[0].index, medium.index (the refractive index at (", 0), 0u)
+            << message;
+        EXPECT_EQ(message.find("paint[1]"), std::string::npos) << message;
+    }
+    EXPECT_TRUE(strokeReaches(scene.paint[0], glm::dvec3(-0.3, 0.19, 0.0)));
+    EXPECT_FALSE(strokeReaches(scene.paint[0], glm::dvec3(-0.3, 0.21, 0.0))) << "past the cut-off at 4σ = 2·radius";
+}
+
 TEST(VolumePainter, SmokePatternTurnsWithTheStroke) {
     constexpr int n = 32;
     PaintStroke alongX = stroke({{-0.3, 0.1, 0.05}, {0.3, 0.1, 0.05}}, 0.15, 0.01);

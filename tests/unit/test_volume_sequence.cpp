@@ -6,12 +6,16 @@
 #include "io/scene/SceneParser.h"
 #include "sim/SceneFields.h"
 #include "sim/optics/AirOptics.h"
+#include "sim/volume/VolumeSequence.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace eikon::sim {
 namespace {
@@ -119,6 +123,51 @@ TEST_F(VolumeSequenceTest, MissingGridOrFileIsAnInputError) {
                   std::string::npos)
             << error.what();
     }
+}
+
+// Before frame 0 is written, the files of the later frames are checked as
+// far as their voxel values (checkVolumeFrames): a file cut short, one that is
+// not OpenVDB, one whose last grid's tree is overwritten (its length kept),
+// one without a grid the scene reads — each named with the scene file and
+// volume.path; the frames before it pass.
+TEST_F(VolumeSequenceTest, DamagedLaterFilesAreFoundBeforeFrameZero) {
+    const Scene s = scene(R"({"path": "fluid_data_####.vdb", "grids": {"flame": "flame", "velocity": "velocity"}})");
+    const GridSpec grid = s.grid.spec();
+    EXPECT_NO_THROW(checkVolumeFrames(*s.volume, grid, 3, s.sourcePath));
+    const fs::path last = folder_ / "fluid_data_0003.vdb";
+    std::string whole;
+    {
+        std::ifstream in(last, std::ios::binary);
+        whole.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const auto refusal = [&](const std::string& bytes) -> std::string {
+        std::ofstream(last, std::ios::binary | std::ios::trunc) << bytes;
+        try {
+            checkVolumeFrames(*s.volume, grid, 3, s.sourcePath);
+        } catch (const InputError& error) {
+            return error.what();
+        }
+        return "no error";
+    };
+    const std::string named = s.sourcePath + ": volume.path: " + last.string() + ": ";
+    EXPECT_EQ(refusal(whole.substr(0, whole.size() - 100)).rfind(named + "byte ", 0), 0u)
+        << "the grid table's offsets reach past the end";
+    EXPECT_EQ(refusal(std::string(whole.size(), 'x')).rfind(named + "byte 8: expected an OpenVDB file", 0), 0u);
+    std::string damaged = whole;
+    std::fill(damaged.end() - 400, damaged.end() - 8, '\x55');  // the velocity grid's leaf buffers
+    EXPECT_EQ(refusal(damaged).rfind(named + "byte ", 0), 0u) << refusal(damaged);
+    test::writeVdbFile(last, {{"density", 1, [](double, double, double, int) { return 1.0f; }}}, 0.025, -0.3, 0.3);
+    try {
+        checkVolumeFrames(*s.volume, grid, 3, s.sourcePath);
+        FAIL() << "a file without the temperature grid passed";
+    } catch (const InputError& error) {
+        EXPECT_EQ(std::string(error.what()).rfind(named + "expected a grid named \"temperature\", found the grids "
+                                                          "\"density\"",
+                                                  0),
+                  0u)
+            << error.what();
+    }
+    EXPECT_NO_THROW(checkVolumeFrames(*s.volume, grid, 2, s.sourcePath)) << "frames 0 and 1 read files 1 and 2";
 }
 
 }  // namespace

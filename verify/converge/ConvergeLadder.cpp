@@ -25,37 +25,62 @@ std::string joined(const std::vector<std::string>& parts) {
 
 }  // namespace
 
+double finestWavefrontRefinement(const Scene& scene) {
+    const TracerDesc::Wavefront& w = scene.tracer.wavefront;
+    return std::min({w.splitTexels, w.tearTexels, w.splitVoxels}) / kLeastWavefrontThreshold;
+}
+
 Rung refinedRung(const Scene& scene, const std::string& knob, const Refinement& refinement) {
-    Rung rung{knob, refinement, "", scene};
+    Rung rung{knob, refinement, "", {}, scene};
     Scene& s = rung.scene;
     std::vector<std::string> changed;
+    const auto set = [&](const std::string& key, double value) {
+        rung.overrides.push_back(key + "=" + formatNumber(value));
+        return formatNumber(value);
+    };
     if (refinement.photons != 1.0) {
         if (byWavefront(scene)) {
-            s.tracer.wavefront.splitTexels = std::max(0.05, scene.tracer.wavefront.splitTexels / refinement.photons);
-            s.tracer.wavefront.tearTexels = std::max(0.05, scene.tracer.wavefront.tearTexels / refinement.photons);
-            s.tracer.wavefront.splitVoxels = std::max(0.05, scene.tracer.wavefront.splitVoxels / refinement.photons);
-            changed.push_back("tracer.wavefront.split_texels=" + formatNumber(s.tracer.wavefront.splitTexels) +
-                              ", tear_texels=" + formatNumber(s.tracer.wavefront.tearTexels) +
-                              ", split_voxels=" + formatNumber(s.tracer.wavefront.splitVoxels));
+            const auto refined = [&](double own) { return std::max(kLeastWavefrontThreshold, own / refinement.photons); };
+            TracerDesc::Wavefront& w = s.tracer.wavefront;
+            w.splitTexels = refined(scene.tracer.wavefront.splitTexels);
+            w.tearTexels = refined(scene.tracer.wavefront.tearTexels);
+            w.splitVoxels = refined(scene.tracer.wavefront.splitVoxels);
+            changed.push_back("tracer.wavefront.split_texels=" + set("tracer.wavefront.split_texels", w.splitTexels) +
+                              ", tear_texels=" + set("tracer.wavefront.tear_texels", w.tearTexels) +
+                              ", split_voxels=" + set("tracer.wavefront.split_voxels", w.splitVoxels));
         } else {
+            // Within kFinestReference of a count the scene file could hold: no overflow.
             s.render.photons = std::max(1LL, std::llround(static_cast<double>(scene.render.photons) * refinement.photons));
-            changed.push_back("render.photons=" + std::to_string(s.render.photons));
+            changed.push_back("render.photons=" + set("render.photons", static_cast<double>(s.render.photons)));
         }
     }
     if (refinement.step != 1.0) {
         s.tracer.stepVoxels = scene.tracer.stepVoxels / refinement.step;
         s.tracer.maxStepVoxels = std::max(s.tracer.stepVoxels, scene.tracer.maxStepVoxels / refinement.step);
         s.render.stepVoxels = scene.render.stepVoxels / refinement.step;
-        changed.push_back("tracer.step_voxels=" + formatNumber(s.tracer.stepVoxels) +
-                          ", render.step_voxels=" + formatNumber(s.render.stepVoxels));
+        set("tracer.max_step_voxels", s.tracer.maxStepVoxels);
+        changed.push_back("tracer.step_voxels=" + set("tracer.step_voxels", s.tracer.stepVoxels) +
+                          ", render.step_voxels=" + set("render.step_voxels", s.render.stepVoxels));
     }
     if (refinement.grid != 1.0) {
         const glm::dvec3 cells = glm::dvec3(scene.grid.resolution) * refinement.grid;
         s.grid.resolution = glm::max(glm::ivec3(glm::round(cells)), glm::ivec3(4));
-        changed.push_back("grid.resolution=[" + std::to_string(s.grid.resolution.x) + "," +
-                          std::to_string(s.grid.resolution.y) + "," + std::to_string(s.grid.resolution.z) + "]");
+        const std::string resolution = "[" + std::to_string(s.grid.resolution.x) + "," +
+                                       std::to_string(s.grid.resolution.y) + "," +
+                                       std::to_string(s.grid.resolution.z) + "]";
+        rung.overrides.push_back("grid.resolution=" + resolution);
+        changed.push_back("grid.resolution=" + resolution);
     }
     rung.setting = joined(changed);
+    return rung;
+}
+
+Rung referenceRung(const Scene& scene, const Refinement& refinement) {
+    Refinement finest = refinement;
+    if (!hasGridKnob(scene)) finest.grid = 1.0;
+    Rung rung = refinedRung(scene, "reference", finest);
+    rung.scene.render.seed = scene.render.seed + 7919;  // unsigned: wraps within the seeds a scene may hold
+    rung.overrides.push_back("render.seed=" + std::to_string(rung.scene.render.seed));
     return rung;
 }
 
@@ -74,8 +99,8 @@ Ladder buildLadder(const Scene& scene, const Refinement& reference) {
         const double f = std::pow(2.0, level);
         ladder.rungs.push_back(refinedRung(scene, "all", {f, f, hasGridKnob(scene) ? std::pow(1.25, level) : 1.0}));
     }
-    Refinement finest = reference;
-    if (!hasGridKnob(scene)) finest.grid = 1.0;
+    ladder.reference = referenceRung(scene, reference);
+    const Refinement& finest = ladder.reference.refinement;
     // Every rung stays coarser than the reference in each knob it refines.
     const auto finer = [&](const Rung& rung) {
         const Refinement& r = rung.refinement;
@@ -85,8 +110,6 @@ Ladder buildLadder(const Scene& scene, const Refinement& reference) {
     for (const Rung& rung : ladder.rungs)
         if (finer(rung)) ladder.leftOut.push_back(rung.knob + " at " + rung.setting + ": not coarser than the reference");
     ladder.rungs.erase(std::remove_if(ladder.rungs.begin(), ladder.rungs.end(), finer), ladder.rungs.end());
-    ladder.reference = refinedRung(scene, "reference", finest);
-    ladder.reference.scene.render.seed = scene.render.seed + 7919;  // independent noise
     ladder.leftOut.push_back("smoothing: its width is a model choice, not a discretisation that converges");
     return ladder;
 }
@@ -101,15 +124,24 @@ Refinement parseReference(const std::string& text, const std::string& where) {
         bool read = false;
         if (equals != std::string::npos) {
             std::stringstream number(item.substr(equals + 1));
-            read = static_cast<bool>(number >> value) && number.eof() && std::isfinite(value) && value > 0.0;
+            read = static_cast<bool>(number >> value) && number.eof() && std::isfinite(value);
         }
-        double* knob = key == "photons" ? &refinement.photons : key == "step" ? &refinement.step
-                                                                : key == "grid" ? &refinement.grid : nullptr;
+        double Refinement::*knob = key == "photons" ? &Refinement::photons : key == "step" ? &Refinement::step
+                                                      : key == "grid" ? &Refinement::grid : nullptr;
         if (!knob || !read)
-            throw InputError(where, "photons=F, step=F or grid=F (F > 0: how many times finer), comma-separated",
+            throw InputError(where, "photons=F, step=F or grid=F (how many times finer), comma-separated",
                              "\"" + item + "\"");
-        *knob = value;
+        if (value < 1.0)
+            throw InputError(where, "a reference finer than every rung of the study: " + key +
+                                        "=F with F >= 1 (the rung \"scene\", the scene's own settings, has " + key +
+                                        "=1)", item);
+        if (value > kFinestReference.*knob)
+            throw InputError(where, key + "=F with F at most " + formatNumber(kFinestReference.*knob), item);
+        refinement.*knob = value;
     }
+    if (refinement.predictedCost() == 1.0)
+        throw InputError(where, "a reference finer than the scene's own settings (the rung \"scene\") in at least one "
+                                "knob", "\"" + text + "\"");
     return refinement;
 }
 

@@ -1,7 +1,10 @@
 #include "verify/converge/ConvergeStudy.h"
 
+#include "bridge/core/Error.h"
+#include "bridge/core/NumberFormat.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
+#include "verify/converge/StudyFields.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,14 +25,8 @@ struct Rendered {
     glm::ivec3 grid{0};
 };
 
-Rendered render(Scene scene, int frame) {
+Rendered render(Scene scene, const sim::SceneFields& fields) {
     scene.render.writeHdr = true;  // the image is compared in linear radiance
-    sim::SceneFields fields(scene);
-    if (fields.framesAreIndependent()) {
-        fields.seekFrame(frame);
-    } else {
-        for (int k = 0; k < frame; ++k) fields.advanceFrame();
-    }
     render::FrameRenderer renderer(scene, fields.fields());
     const render::FrameResult result = renderer.render(fields.fields());
     Rendered rendered;
@@ -84,10 +81,27 @@ double predictedSeconds(const Refinement& refinement, const Refinement& exponent
 // 1.5× the grid, made coarser while it is predicted to end past the budget,
 // but never below twice the ladder's finest rung in a knob.
 Refinement referenceFor(double secondsLeft, const Refinement& exponents, double sceneSeconds, bool gridKnob) {
-    Refinement reference{16.0, 4.0, gridKnob ? 1.5 : 1.0};
+    Refinement reference = kDefaultReference;
+    if (!gridKnob) reference.grid = 1.0;
     const auto fits = [&] { return predictedSeconds(reference, exponents, sceneSeconds) * 1.2 <= secondsLeft; };
     while (!fits() && reference.photons > 8.0) reference.photons /= 2.0;
     return reference;
+}
+
+// The reference `rung` describes, as the scene loader makes it. One asked
+// for must be as fine as it says: the wavefront's thresholds held at their
+// least value would make it coarser.
+Rung loadedReference(Rung rung, const Scene& scene, const StudyOptions& options) {
+    const double finest = finestWavefrontRefinement(scene);
+    if (options.reference && scene.tracer.estimator == TracerDesc::Estimator::Wavefront &&
+        options.reference->photons > finest)
+        throw InputError("--reference",
+                         "photons=F with F at most " + formatNumber(finest) +
+                             " for this scene (its wavefront split and tear thresholds, refined further, stay at " +
+                             formatNumber(kLeastWavefrontThreshold) + ")",
+                         "photons=" + formatNumber(options.reference->photons));
+    rung.scene = options.loadedScene(rung);
+    return rung;
 }
 
 }  // namespace
@@ -109,16 +123,31 @@ Outputs outputsOf(const Scene& scene) {
 
 Study runStudy(const Scene& scene, const StudyOptions& options) {
     const auto start = Clock::now();
+    const auto deadline = [&](double share) {
+        const double seconds = share * options.budgetSeconds;
+        if (seconds > 1e9) return Clock::time_point::max();  // beyond the clock's range: never reached
+        return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    };
     Study study;
     study.budgetSeconds = options.budgetSeconds;
     study.byWavefront = scene.tracer.estimator == TracerDesc::Estimator::Wavefront;
     study.integrator = scene.tracer.integrator;
 
-    render(scene, options.frame);  // compiles the programs and warms the caches; not timed
-    // The rungs first, cheapest first, within half the budget; then the
-    // reference, as fine as the time left allows, its cost predicted from
-    // how the rungs' grew; then every rung against it.
-    Ladder ladder = buildLadder(scene, options.reference.value_or(Refinement{16.0, 4.0, 1.5}));
+    Ladder ladder = buildLadder(scene, options.reference.value_or(kDefaultReference));
+    // The finest reference the study may render, checked before anything
+    // renders (the default one only grows coarser).
+    ladder.reference = loadedReference(ladder.reference, scene, options);
+    StudyFields fields(scene, options.frame, options.budgetSeconds);
+    fields.requireSimulationFits({&scene, &ladder.reference.scene});
+
+    render(scene, fields.at(scene, deadline(0.5)));  // compiles the programs and warms the caches; not timed
+    // A reference asked for renders first: one the machine cannot hold is
+    // refused before the rungs take their time. Then the rungs, cheapest
+    // first, within half the budget; then the default reference, as fine as
+    // the time left allows, its cost predicted from how the rungs' grew;
+    // then every rung against the reference.
+    std::optional<Rendered> reference;
+    if (options.reference) reference = render(ladder.reference.scene, fields.at(ladder.reference.scene, deadline(1.0)));
     study.leftOut = ladder.leftOut;
     std::vector<std::size_t> order(ladder.rungs.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -130,12 +159,13 @@ Study runStudy(const Scene& scene, const StudyOptions& options) {
     double sceneSeconds = 0.0;
     for (std::size_t i : order) {
         const Rung& rung = ladder.rungs[i];
-        const double predicted = rung.refinement.predictedCost() * std::max(sceneSeconds, 1e-3) * 1.5;
+        const double predicted = rung.refinement.predictedCost() * std::max(sceneSeconds, 1e-3) * 1.5 +
+                                 fields.secondsToReach(rung.scene);
         if (rung.knob != "scene" && secondsSince(start) + predicted > 0.5 * options.budgetSeconds) {
             study.leftOut.push_back(rung.knob + " at " + rung.setting + ": predicted to end past the budget");
             continue;
         }
-        rendered[i] = render(rung.scene, options.frame);
+        rendered[i] = render(rung.scene, fields.at(rung.scene, deadline(0.5)));
         done[i] = true;
         if (rung.knob == "scene") sceneSeconds = rendered[i].seconds;
     }
@@ -148,18 +178,17 @@ Study runStudy(const Scene& scene, const StudyOptions& options) {
             study.leftOut.push_back("the budget: the coarsest reference finer than every rung was predicted to take " +
                                     std::to_string(static_cast<int>(std::ceil(predicted))) + " s of the " +
                                     std::to_string(static_cast<int>(left)) + " s left");
-        ladder.reference = refinedRung(scene, "reference", finest);
-        ladder.reference.scene.render.seed = scene.render.seed + 7919;
+        ladder.reference = loadedReference(referenceRung(scene, finest), scene, options);
     }
-    const Rendered reference = render(ladder.reference.scene, options.frame);
-    study.reference = {ladder.reference, reference.seconds, {}, {}, {}};
+    if (!reference) reference = render(ladder.reference.scene, fields.at(ladder.reference.scene, deadline(1.0)));
+    study.reference = {ladder.reference, reference->seconds, {}, {}, {}};
     for (std::size_t i = 0; i < ladder.rungs.size(); ++i) {
         if (!done[i]) continue;
         Measured measured{ladder.rungs[i], rendered[i].seconds, {}, {}, {}};
-        if (options.outputs.receivers) measured.receivers = relativeL1(rendered[i].maps, reference.maps);
-        if (options.outputs.image) measured.image = relativeL1(rendered[i].image, reference.image);
-        if (options.outputs.fluence && rendered[i].grid == reference.grid)
-            measured.fluence = relativeL1(rendered[i].fluence, reference.fluence);
+        if (options.outputs.receivers) measured.receivers = relativeL1(rendered[i].maps, reference->maps);
+        if (options.outputs.image) measured.image = relativeL1(rendered[i].image, reference->image);
+        if (options.outputs.fluence && rendered[i].grid == reference->grid)
+            measured.fluence = relativeL1(rendered[i].fluence, reference->fluence);
         if (options.onRung) options.onRung(measured);
         study.rungs.push_back(std::move(measured));
     }

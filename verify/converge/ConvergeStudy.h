@@ -35,6 +35,11 @@ struct StudyOptions {
     Outputs outputs;
     std::optional<Refinement> reference;  // unset: chosen to fit the budget
     std::function<void(const Measured&)> onRung;  // progress
+    // The scene a reference rung describes, as the scene loader makes it of
+    // the scene file with the rung's overrides (InputError where the file
+    // could not hold them): the reference is checked so before the study
+    // renders anything, and rendered as the loader makes it.
+    std::function<Scene(const Rung&)> loadedScene;
 };
 
 struct Study {
@@ -51,6 +56,10 @@ struct Study {
 // fluence where it is stored (scattering, tracer.store_fluence).
 Outputs outputsOf(const Scene& scene);
 
+// InputError before anything renders where the reference cannot be
+// rendered as asked (an explicit one held at a least value, or one the
+// scene file could not hold) or the budget cannot hold the simulation to
+// options.frame (StudyFields.h).
 Study runStudy(const Scene& scene, const StudyOptions& options);
 
 }  // namespace eikon::converge

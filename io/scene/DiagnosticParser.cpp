@@ -1,0 +1,67 @@
+#include "io/scene/DiagnosticParser.h"
+
+#include "bridge/core/NumberFormat.h"
+
+#include <cmath>
+#include <string>
+
+namespace eikon {
+
+namespace {
+
+// Wavelengths in nm: any light a diagnostic could use, up to a millimetre.
+const NumberRange kWavelengthRange = {0.0, 1e6, false, true};
+
+DiagnosticDesc::Cutoff readCutoff(const JsonReader& node) {
+    const std::string name = node.oneOf({"knife_edge", "circular", "colour"});
+    if (name == "circular") return DiagnosticDesc::Cutoff::Circular;
+    return name == "colour" ? DiagnosticDesc::Cutoff::Colour : DiagnosticDesc::Cutoff::KnifeEdge;
+}
+
+}  // namespace
+
+DiagnosticDesc readDiagnostic(const JsonReader& node) {
+    DiagnosticDesc diagnostic;
+    if (node.member("type").oneOf({"interferometry", "schlieren"}) == "interferometry") {
+        const auto fields = node.object({"type", "wavelength_nm", "fringe_tilt"});
+        diagnostic.type = DiagnosticDesc::Type::Interferometry;
+        if (auto wavelength = fields.optional("wavelength_nm")) diagnostic.wavelengthNm = wavelength->number(kWavelengthRange);
+        if (auto tilt = fields.optional("fringe_tilt")) diagnostic.fringeTilt = tilt->number();
+        return diagnostic;
+    }
+    const auto fields = node.object({"type", "focal_length", "source_height", "cutoff", "knife_angle_deg"});
+    diagnostic.type = DiagnosticDesc::Type::Schlieren;
+    if (auto focal = fields.optional("focal_length")) diagnostic.focalLength = focal->number(kLengthRange);
+    if (auto source = fields.optional("source_height")) diagnostic.sourceHeight = source->number(kLengthRange);
+    if (auto cutoff = fields.optional("cutoff")) diagnostic.cutoff = readCutoff(*cutoff);
+    // Read with every cut-off, used by the knife edge: `--set diagnostic.cutoff=…` switches a scene's filter.
+    if (auto angle = fields.optional("knife_angle_deg")) diagnostic.knifeAngleDeg = angle->number();
+    return diagnostic;
+}
+
+void checkDiagnostic(const JsonObjectReader& sceneFields, const Scene& scene) {
+    if (!scene.diagnostic) return;
+    if (!scene.camera.orthographic()) {
+        const std::string why = " with a diagnostic (its light crosses the volume in parallel)";
+        if (auto camera = sceneFields.optional("camera"))
+            camera->member("projection").fail("\"orthographic\"" + why, "\"perspective\"");
+        sceneFields.member("camera").fail("a camera with projection \"orthographic\" and width_m" + why);
+    }
+    if (scene.render.method == RenderDesc::Method::ImageSpace)
+        sceneFields.member("render").member("method").fail("\"eikonal\" with a diagnostic (it traces the graded field)",
+                                                           "\"image_space\"");
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        if (!scene.objects[i].isSharp()) continue;
+        sceneFields.member("objects").element(i).member("surface").fail(
+            "\"smooth\" with a diagnostic (it traces graded fields, not sharp surfaces)", "\"sharp\"");
+    }
+    // The fringes of a tilted reference beam alone must stay two pixels apart (Nyquist).
+    const double tiltLimit = 0.5 * scene.render.width;
+    if (std::abs(scene.diagnostic->fringeTilt) > tiltLimit)
+        sceneFields.member("diagnostic").member("fringe_tilt").fail(
+            "a number in [-" + formatNumber(tiltLimit) + ", " + formatNumber(tiltLimit) +
+                "] (render.width / 2: a fringe spans at least two pixels)",
+            formatNumber(scene.diagnostic->fringeTilt));
+}
+
+}  // namespace eikon

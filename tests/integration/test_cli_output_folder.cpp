@@ -1,0 +1,107 @@
+// The output folder as a user (or another program) can leave it before a
+// run, through `eikon run` as a user runs it: nothing outside the folder is
+// ever removed or written, whatever links the folder holds or the run's
+// journal names, and a folder holding only a link is no earlier run.
+#include "tests/integration/CliRun.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+#include <sys/stat.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using eikon::test::Outcome;
+using eikon::test::runEikon;
+
+class FolderCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("eikon_folder_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_ / "pictures");
+        std::ofstream(dir_ / "scene.json") << R"({
+  "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
+  "medium": {"index": 1.0},
+  "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5}],
+  "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
+  "receivers": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 1, 0], "size": 1.0, "resolution": 32}],
+  "camera": {"position": [0, 1, 2], "target": [0, 0.3, 0], "up": [0, 1, 0], "fov_deg": 45},
+  "render": {"photons": 4096, "width": 32, "height": 24, "seed": 3}
+})";
+        std::ofstream(pictures() / "frame_00000.png") << "the user's picture";
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    Outcome run(const std::string& options) {
+        return runEikon("run " + (dir_ / "scene.json").string() + " --out " + out().string() + " --quiet " + options);
+    }
+    fs::path out() const { return dir_ / "out"; }
+    // A user's folder outside the output folder, holding frame_00000.png.
+    fs::path pictures() const { return dir_ / "pictures"; }
+    void expectPicturesUntouched() {
+        EXPECT_EQ(std::distance(fs::directory_iterator(pictures()), fs::directory_iterator()), 1);
+        std::ifstream picture(pictures() / "frame_00000.png");
+        EXPECT_EQ(std::string(std::istreambuf_iterator<char>(picture), {}), "the user's picture");
+    }
+    fs::path dir_;
+};
+
+// An earlier run's frames/ replaced by a link to a user's folder that holds a
+// frame_00000.png: --force removed it and wrote the new frames there.
+TEST_F(FolderCli, ALinkedFramesFolderIsRefusedAndWhereItPointsUntouched) {
+    ASSERT_EQ(run("--frames 2").exitCode, 0);
+    fs::remove_all(out() / "frames");
+    fs::create_directory_symlink(pictures(), out() / "frames");
+    const Outcome refused = run("--force");
+    EXPECT_EQ(refused.exitCode, 2) << refused.output;
+    EXPECT_NE(refused.output.find((out() / "frames").string() + ": expected a folder for eikon's files, found a symbolic link"),
+              std::string::npos)
+        << refused.output;
+    expectPicturesUntouched();
+}
+
+// A folder holding nothing but a `frames` or `vtk` link is no earlier run:
+// --force wrote its frames, or seven VTK files, into the user's folder.
+TEST_F(FolderCli, AFolderHoldingOnlyALinkIsNoEarlierRun) {
+    for (const char* link : {"frames", "vtk"}) {
+        SCOPED_TRACE(link);
+        fs::remove_all(out());
+        fs::create_directories(out());
+        fs::create_directory_symlink(pictures(), out() / link);
+        for (const char* force : {"", "--force"}) {
+            const Outcome refused = run(std::string("--vtk ") + force);
+            EXPECT_EQ(refused.exitCode, 2) << refused.output;
+            EXPECT_NE(refused.output.find("holds files eikon did not write (" + std::string(link) + " (a symbolic link))"),
+                      std::string::npos)
+                << refused.output;
+        }
+        expectPicturesUntouched();
+    }
+}
+
+// A line of the run's journal that goes through a link (`link/notes.txt`,
+// with or without the identity of the file there): --force removed the
+// file outside.
+TEST_F(FolderCli, AJournalLineThroughALinkRemovesNothingOutside) {
+    ASSERT_EQ(run("").exitCode, 0);
+    fs::create_directory_symlink(pictures(), out() / "link");
+    struct stat status {};
+    ASSERT_EQ(::stat((pictures() / "frame_00000.png").c_str(), &status), 0);
+    std::ofstream(out() / ".eikon-run", std::ios::app)
+        << "link/frame_00000.png\n"
+        << "file\t" << status.st_dev << "\t" << status.st_ino << "\tlink/frame_00000.png\n";
+    const Outcome forced = run("--force");
+    EXPECT_EQ(forced.exitCode, 0) << forced.output;
+    expectPicturesUntouched();
+    EXPECT_TRUE(fs::is_symlink(out() / "link")) << "the user's link stays";
+}
+
+}  // namespace

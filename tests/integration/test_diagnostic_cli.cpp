@@ -1,0 +1,144 @@
+// `eikon run` with a `diagnostic`: the instrument's picture goes where the
+// view's would (frames/frame_NNNNN.png, report stage "diagnostic"), and the
+// VTK export holds its measurements — vtk/diagnostic_NNNNN.vti with
+// `deflection` (rad) and `optical_path_difference` (m) on the image plane,
+// upright, each with its unit — listed in diagnostic.pvd, its .series and
+// the ParaView state (valid Python, the orthographic camera's scale). The
+// index is a Gaussian bump off the axis, imported as a delta_index grid;
+// `--set` switches the instrument.
+#include "tests/integration/CliRun.h"
+#include "tests/unit/VdbTestFiles.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkStringArray.h>
+#include <vtkXMLImageDataReader.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+#include <regex>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using eikon::test::runEikon;
+
+constexpr double kSigma = 0.1, kAmplitude = 1e-4, kCentreX = 0.1, kCentreY = 0.15;
+
+std::string text(const fs::path& path) {
+    std::ifstream file(path);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+class DiagnosticCli : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("eikon_diagnostic_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+        // 40 cells over [−0.5, 0.5]: the file's voxels, half a voxel on, are the cells' centres.
+        const double h = 1.0 / 40;
+        eikon::test::writeVdbFile(dir_ / "bump.vdb",
+                                  {{"dn", 1,
+                                    [&](double x, double y, double z, int) {
+                                        const double dx = x + 0.5 * h - kCentreX, dy = y + 0.5 * h - kCentreY,
+                                                     dz = z + 0.5 * h;
+                                        return static_cast<float>(
+                                            kAmplitude * std::exp(-(dx * dx + dy * dy + dz * dz) / (kSigma * kSigma)));
+                                    }}},
+                                  h, -0.55, 0.55);
+        std::ofstream(dir_ / "scene.json") << R"({
+  "grid": {"resolution": [40, 40, 40], "bounds": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
+           "smoothing_sigma_voxels": 0},
+  "volume": {"path": "bump.vdb", "grids": {"density": "", "temperature": "", "delta_index": "dn"},
+             "offset": [0.0125, 0.0125, 0.0125]},
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
+  "camera": {"position": [0, 0, 2], "target": [0, 0, 0], "projection": "orthographic", "width_m": 0.8},
+  "render": {"width": 40, "height": 30},
+  "diagnostic": {"type": "interferometry"},
+  "export": {"vtk": {"fields": ["delta_index"]}}
+})";
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    eikon::test::Outcome run(const std::string& arguments = "") {
+        return runEikon("run " + (dir_ / "scene.json").string() + " --out " + (dir_ / "out").string() +
+                            " --frames 1 --quiet " + arguments,
+                        "LP_NUM_THREADS=2");
+    }
+    fs::path dir_;
+};
+
+TEST_F(DiagnosticCli, WritesThePictureAndTheMeasurementsForParaView) {
+    const auto outcome = run();
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const fs::path out = dir_ / "out";
+    EXPECT_TRUE(fs::exists(out / "frames" / "frame_00000.png"));
+    EXPECT_NE(text(out / "report.jsonl").find("\"name\":\"diagnostic\",\"ran\":true"), std::string::npos);
+    EXPECT_EQ(text(out / "report.jsonl").find("\"name\":\"view\""), std::string::npos);
+    for (const char* index : {"diagnostic.pvd", "diagnostic.vti.series"})
+        EXPECT_NE(text(out / "vtk" / index).find("diagnostic_00000.vti"), std::string::npos) << index;
+    const fs::path script = out / "vtk" / "open_in_paraview.py";
+    EXPECT_NE(text(script).find("collection('diagnostic')"), std::string::npos);
+    std::smatch scale;
+    const std::string state = text(script);
+    ASSERT_TRUE(std::regex_search(state, scale, std::regex(R"(camera_parallel_scale = (\S+))")));
+    EXPECT_NEAR(std::stod(scale[1]), 0.3, 1e-12) << "half the height of a view 0.8 m wide, 40 × 30 pixels";
+    const std::string parse = "python3 -c \"import ast, sys; ast.parse(open(sys.argv[1]).read())\" " + script.string();
+    EXPECT_EQ(std::system(parse.c_str()), 0) << text(script);
+
+    vtkNew<vtkXMLImageDataReader> reader;
+    reader->SetFileName((out / "vtk" / "diagnostic_00000.vti").string().c_str());
+    reader->Update();
+    vtkImageData* image = reader->GetOutput();
+    int cells[3];
+    image->GetDimensions(cells);
+    EXPECT_EQ(cells[0], 41);  // points: one more than the pixels
+    EXPECT_EQ(cells[1], 31);
+    vtkDataArray* deflection = image->GetCellData()->GetArray("deflection");
+    vtkDataArray* opd = image->GetCellData()->GetArray("optical_path_difference");
+    ASSERT_TRUE(deflection && opd);
+    EXPECT_EQ(deflection->GetNumberOfComponents(), 2);
+    for (const auto& [array, unit] : {std::pair{"deflection_unit", "rad"}, std::pair{"optical_path_difference_unit", "m"}}) {
+        auto* units = vtkStringArray::SafeDownCast(image->GetFieldData()->GetAbstractArray(array));
+        ASSERT_NE(units, nullptr) << array;
+        EXPECT_EQ(units->GetValue(0), unit);
+    }
+    // The pixel over the bump's centre (2 cm pixels; x right, y up from the
+    // axis) holds the peak: the image is upright, not mirrored. (On 4 voxels
+    // a σ, to 3%: accuracy is test_diagnostics' business.)
+    double origin[3], spacing[3];
+    image->GetOrigin(origin);
+    image->GetSpacing(spacing);
+    const int i = static_cast<int>(std::floor((kCentreX - origin[0]) / spacing[0]));
+    const int j = static_cast<int>(std::floor((kCentreY - origin[1]) / spacing[1]));
+    const double peak = kAmplitude * kSigma * std::sqrt(std::numbers::pi);
+    const double centreX = origin[0] + (i + 0.5) * spacing[0] - kCentreX, centreY = origin[1] + (j + 0.5) * spacing[1] - kCentreY;
+    const double expected = peak * std::exp(-(centreX * centreX + centreY * centreY) / (kSigma * kSigma));
+    EXPECT_NEAR(opd->GetComponent(j * 40 + i, 0), expected, 0.03 * peak);
+    EXPECT_LT(opd->GetComponent((29 - j) * 40 + i, 0), 0.1 * peak) << "the mirror image of the peak's pixel is dark";
+}
+
+TEST_F(DiagnosticCli, SetSwitchesTheInstrumentAndRefusesABadValueAtItsKey) {
+    const auto schlieren = run("--set diagnostic.type=schlieren --set diagnostic.cutoff=colour");
+    EXPECT_EQ(schlieren.exitCode, 0) << schlieren.output;
+    EXPECT_NE(text(dir_ / "out" / "vtk" / "open_in_paraview.py").find("diagnostic_array = 'deflection'"),
+              std::string::npos);
+    const auto refused = run("--force --set diagnostic.type=schlieren --set diagnostic.cutoff=razor");
+    EXPECT_EQ(refused.exitCode, 2) << refused.output;
+    EXPECT_NE(refused.output.find("scene.json: diagnostic.cutoff: expected one of"), std::string::npos)
+        << refused.output;
+}
+
+}  // namespace

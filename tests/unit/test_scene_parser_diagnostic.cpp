@@ -1,0 +1,160 @@
+// camera.projection and the `diagnostic` section: defaults, each type's and
+// cut-off's own keys, and every refusal at its key path — a perspective
+// camera, image space, sharp objects, values out of range, keys of another
+// type — with `--set` reaching the section as any other.
+#include "bridge/core/Error.h"
+#include "io/scene/SceneOverride.h"
+#include "io/scene/SceneParser.h"
+#include "tests/unit/SceneParserTestSupport.h"
+
+#include <gtest/gtest.h>
+
+namespace eikon {
+namespace {
+
+using test::expectErrorAt;
+using test::json;
+using test::validScene;
+
+// The valid scene with smooth objects, an orthographic camera and `diagnostic`.
+json diagnosticScene(const json& diagnostic) {
+    json scene = validScene();
+    scene["objects"][0]["surface"] = "smooth";
+    scene["objects"][1]["surface"] = "smooth";
+    scene["camera"] = {{"position", {0, 0, 4}}, {"target", {0, 0, 0}}, {"projection", "orthographic"}, {"width_m", 2.0}};
+    scene["diagnostic"] = diagnostic;
+    return scene;
+}
+
+TEST(SceneParserCamera, IsAPerspectiveCameraUnlessToldOtherwise) {
+    const CameraDesc camera = parseScene(validScene(), "test.json").camera;
+    EXPECT_EQ(camera.projection, CameraDesc::Projection::Perspective);
+    EXPECT_FALSE(camera.orthographic());
+}
+
+TEST(SceneParserCamera, AnOrthographicCameraTakesItsWidthAndKeepsFovDegUnused) {
+    json scene = validScene();
+    scene["camera"]["projection"] = "orthographic";
+    scene["camera"]["width_m"] = 0.75;
+    const CameraDesc camera = parseScene(scene, "test.json").camera;
+    EXPECT_TRUE(camera.orthographic());
+    EXPECT_DOUBLE_EQ(camera.widthM, 0.75);
+}
+
+TEST(SceneParserCamera, RefusesAMissingOrMisplacedWidthAndImageSpace) {
+    json scene = validScene();
+    scene["camera"]["projection"] = "orthographic";
+    expectErrorAt(scene, "camera.width_m", "found nothing");
+    scene["camera"]["width_m"] = 0;
+    expectErrorAt(scene, "camera.width_m", "a number in (0, 1000000000]");
+    json perspective = validScene();
+    perspective["camera"]["width_m"] = 1.0;
+    expectErrorAt(perspective, "camera.width_m", "no width_m beside a perspective projection");
+    json unknown = validScene();
+    unknown["camera"]["projection"] = "fisheye";
+    expectErrorAt(unknown, "camera.projection", "one of \"perspective\", \"orthographic\"");
+    json imageSpace = validScene();
+    imageSpace["medium"] = {{"index", 1.0}};
+    imageSpace["objects"][1].erase("scattering");
+    imageSpace["render"]["method"] = "image_space";
+    imageSpace["camera"]["projection"] = "orthographic";
+    imageSpace["camera"]["width_m"] = 1.0;
+    expectErrorAt(imageSpace, "camera.projection", "\"perspective\" with render.method \"image_space\"");
+}
+
+TEST(SceneParserDiagnostic, HasNoneUnlessGiven) {
+    EXPECT_FALSE(parseScene(validScene(), "test.json").diagnostic);
+}
+
+TEST(SceneParserDiagnostic, InterferometryDefaultsToAGreenLaserAndNoTilt) {
+    const Scene scene = parseScene(diagnosticScene({{"type", "interferometry"}}), "test.json");
+    ASSERT_TRUE(scene.diagnostic);
+    EXPECT_EQ(scene.diagnostic->type, DiagnosticDesc::Type::Interferometry);
+    EXPECT_DOUBLE_EQ(scene.diagnostic->wavelengthNm, 532.0);
+    EXPECT_DOUBLE_EQ(scene.diagnostic->fringeTilt, 0.0);
+    const Scene tilted = parseScene(
+        diagnosticScene({{"type", "interferometry"}, {"wavelength_nm", 632.8}, {"fringe_tilt", -12.5}}), "test.json");
+    EXPECT_DOUBLE_EQ(tilted.diagnostic->wavelengthNm, 632.8);
+    EXPECT_DOUBLE_EQ(tilted.diagnostic->fringeTilt, -12.5);
+}
+
+TEST(SceneParserDiagnostic, SchlierenReadsItsHeadAndCutoff) {
+    const Scene defaults = parseScene(diagnosticScene({{"type", "schlieren"}}), "test.json");
+    EXPECT_EQ(defaults.diagnostic->type, DiagnosticDesc::Type::Schlieren);
+    EXPECT_EQ(defaults.diagnostic->cutoff, DiagnosticDesc::Cutoff::KnifeEdge);
+    EXPECT_DOUBLE_EQ(defaults.diagnostic->focalLength, 1.0);
+    EXPECT_DOUBLE_EQ(defaults.diagnostic->sourceHeight, 1e-3);
+    EXPECT_DOUBLE_EQ(defaults.diagnostic->knifeAngleDeg, 0.0);
+    const Scene knife = parseScene(diagnosticScene({{"type", "schlieren"},
+                                                    {"focal_length", 2.0},
+                                                    {"source_height", 5e-4},
+                                                    {"cutoff", "knife_edge"},
+                                                    {"knife_angle_deg", 90}}),
+                                   "test.json");
+    EXPECT_DOUBLE_EQ(knife.diagnostic->focalLength, 2.0);
+    EXPECT_DOUBLE_EQ(knife.diagnostic->sourceHeight, 5e-4);
+    EXPECT_DOUBLE_EQ(knife.diagnostic->knifeAngleDeg, 90.0);
+    for (const auto& [name, cutoff] : {std::pair{"circular", DiagnosticDesc::Cutoff::Circular},
+                                       std::pair{"colour", DiagnosticDesc::Cutoff::Colour}})
+        EXPECT_EQ(parseScene(diagnosticScene({{"type", "schlieren"}, {"cutoff", name}}), "test.json").diagnostic->cutoff,
+                  cutoff);
+}
+
+TEST(SceneParserDiagnostic, RefusesBadValuesAndAnotherTypesKeysAtTheirPath) {
+    expectErrorAt(diagnosticScene({{"type", "shadowgraph"}}), "diagnostic.type",
+                  "one of \"interferometry\", \"schlieren\"");
+    expectErrorAt(diagnosticScene(json::object()), "diagnostic.type", "found nothing");
+    expectErrorAt(diagnosticScene({{"type", "interferometry"}, {"wavelength_nm", 0}}), "diagnostic.wavelength_nm",
+                  "a number in (0, 1000000]");
+    expectErrorAt(diagnosticScene({{"type", "interferometry"}, {"focal_length", 1}}), "diagnostic.focal_length",
+                  "an unknown key");
+    expectErrorAt(diagnosticScene({{"type", "schlieren"}, {"wavelength_nm", 532}}), "diagnostic.wavelength_nm",
+                  "an unknown key");
+    expectErrorAt(diagnosticScene({{"type", "schlieren"}, {"focal_length", -1}}), "diagnostic.focal_length",
+                  "a number in (0, 1000000000]");
+    expectErrorAt(diagnosticScene({{"type", "schlieren"}, {"source_height", "1mm"}}), "diagnostic.source_height",
+                  "a number in (0, 1000000000]");
+    expectErrorAt(diagnosticScene({{"type", "schlieren"}, {"cutoff", "razor"}}), "diagnostic.cutoff",
+                  "one of \"knife_edge\", \"circular\", \"colour\"");
+    expectErrorAt(diagnosticScene({{"type", "schlieren"}, {"knife_angle_deg", "45"}}), "diagnostic.knife_angle_deg",
+                  "a number");
+    // render.width 320: fringes two pixels apart at most 160 per width.
+    expectErrorAt(diagnosticScene({{"type", "interferometry"}, {"fringe_tilt", 161}}), "diagnostic.fringe_tilt",
+                  "a number in [-160, 160]");
+}
+
+TEST(SceneParserDiagnostic, RefusesAPerspectiveCameraImageSpaceAndSharpObjects) {
+    json perspective = diagnosticScene({{"type", "schlieren"}});
+    perspective["camera"] = {{"position", {0, 0, 4}}, {"fov_deg", 30}};
+    expectErrorAt(perspective, "camera.projection", "\"orthographic\" with a diagnostic");
+    json noCamera = diagnosticScene({{"type", "schlieren"}});
+    noCamera.erase("camera");
+    expectErrorAt(noCamera, "camera", "a camera with projection \"orthographic\" and width_m");
+    json sharp = diagnosticScene({{"type", "interferometry"}});
+    sharp["objects"][1].erase("surface");  // sharp by default
+    expectErrorAt(sharp, "objects[1].surface", "\"smooth\" with a diagnostic");
+    json imageSpace = diagnosticScene({{"type", "interferometry"}});
+    imageSpace["render"]["method"] = "image_space";
+    expectErrorAt(imageSpace, "render.method", "\"eikonal\" with a diagnostic");
+}
+
+TEST(SceneParserDiagnostic, SetReachesTheSectionAsAnyOther) {
+    json scene = diagnosticScene({{"type", "interferometry"}});
+    applyOverride(scene, "diagnostic.type=schlieren");
+    applyOverride(scene, "diagnostic.knife_angle_deg=90");
+    applyOverride(scene, "diagnostic.cutoff=colour");  // the knife's angle stays, unused
+    const Scene parsed = parseScene(scene, "test.json");
+    EXPECT_EQ(parsed.diagnostic->type, DiagnosticDesc::Type::Schlieren);
+    EXPECT_EQ(parsed.diagnostic->cutoff, DiagnosticDesc::Cutoff::Colour);
+    EXPECT_DOUBLE_EQ(parsed.diagnostic->knifeAngleDeg, 90.0);
+    json bare = diagnosticScene({{"type", "schlieren"}});
+    bare.erase("diagnostic");
+    applyOverride(bare, "diagnostic.type=interferometry");
+    applyOverride(bare, "diagnostic.wavelength_nm=633");
+    EXPECT_DOUBLE_EQ(parseScene(bare, "test.json").diagnostic->wavelengthNm, 633.0);
+    applyOverride(bare, "diagnostic.wavelength_nm=-1");
+    expectErrorAt(bare, "diagnostic.wavelength_nm", "a number in (0, 1000000]");
+}
+
+}  // namespace
+}  // namespace eikon
