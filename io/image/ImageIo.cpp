@@ -107,7 +107,9 @@ std::uint64_t floatImageDecodingBytes(const std::filesystem::path& path) {
     int width = 0, height = 0, channels = 0;
     std::error_code error;
     const std::uintmax_t fileBytes = std::filesystem::file_size(path, error);
-    if (error || !stbi_info(path.c_str(), &width, &height, &channels)) return 0;
+    // A header stb cannot read, or one with a size that is not positive, is
+    // readFloatImage's to refuse, with its own message.
+    if (error || !stbi_info(path.c_str(), &width, &height, &channels) || width <= 0 || height <= 0) return 0;
     const std::uint64_t pixels = std::uint64_t(width) * std::uint64_t(height);
     return fileBytes + 2 * pixels * 4 * sizeof(float);
 }

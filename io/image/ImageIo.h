@@ -36,8 +36,8 @@ FloatImage readFloatImage(const std::filesystem::path& path);
 
 // The memory readFloatImage takes for this file at its peak — the file's
 // bytes, stb_image's float RGBA decoding and the copy returned — from the
-// image's header alone; 0 where the header does not say (readFloatImage
-// then says what is wrong).
+// image's header alone; 0 where the header does not say or gives a size
+// that is not positive (readFloatImage then says what is wrong).
 std::uint64_t floatImageDecodingBytes(const std::filesystem::path& path);
 
 }  // namespace eikon::io

@@ -305,7 +305,8 @@ EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& scene
         const MemoryLimit limit = machineMemoryLimit();  // checked before the image is decoded
         const std::uint64_t decoding = io::floatImageDecodingBytes(environment.path);
         if (limit.bytes && decoding > limit.bytes)
-            pathNode.fail("an image whose decoding fits " + limit.source, mebibytes(decoding) + " to decode");
+            pathNode.fail("an image whose decoding fits " + limit.source,
+                          "\"" + environment.path + "\", " + mebibytes(decoding) + " to decode");
         environment.image = std::make_shared<const FloatImage>(io::readFloatImage(environment.path));
         if (auto value = fields.optional("intensity")) environment.intensity = value->number(kNonNegative);
         if (auto value = fields.optional("rotation_deg")) environment.rotationDeg = value->number();
