@@ -1,10 +1,15 @@
 // Runs the eikon executable as a user would, for the command-line tests.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eikon::test {
@@ -31,6 +36,31 @@ inline Outcome runEikon(const std::string& arguments, const std::string& environ
 inline Outcome runEikonWithin(int seconds, const std::string& arguments, const std::string& environment = "") {
     return runEikon(arguments, environment + " timeout --kill-after=10 " + std::to_string(seconds));
 }
+
+// A command-line test's own folder, PREFIX<test name> in the temporary
+// directory: made empty before the test, removed after it.
+class CliFolderTest : public ::testing::Test {
+protected:
+    explicit CliFolderTest(std::string prefix) : prefix_(std::move(prefix)) {}
+    void SetUp() override {
+        dir_ = std::filesystem::temp_directory_path() /
+               (prefix_ + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::remove_all(dir_);
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+    // Writes `text` into the folder as `name`; returns its path.
+    std::string writeScene(const std::string& name, const std::string& text) const {
+        const std::filesystem::path path = dir_ / name;
+        std::ofstream(path) << text;
+        return path.string();
+    }
+
+    std::filesystem::path dir_;
+
+private:
+    std::string prefix_;
+};
 
 // The cells of one CSV row; a quoted cell may hold commas.
 inline std::vector<std::string> csvCells(const std::string& row) {

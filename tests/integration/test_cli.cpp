@@ -32,23 +32,11 @@ namespace fs = std::filesystem;
 using eikon::test::Outcome;
 using eikon::test::runEikon;
 
-
-class Cli : public ::testing::Test {
+class Cli : public eikon::test::CliFolderTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("eikon_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    Cli() : CliFolderTest("eikon_cli_") {}
 
-    // A small valid scene with one value replaced textually.
-    std::string writeScene(const std::string& name, const std::string& text) {
-        const fs::path path = dir_ / name;
-        std::ofstream(path) << text;
-        return path.string();
-    }
+    // A small valid scene, and below it the same with one value replaced textually.
     static std::string validScene() {
         return R"({
   "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
@@ -66,7 +54,6 @@ protected:
         EXPECT_NE(at, std::string::npos) << from;
         return text.replace(at, from.size(), to);
     }
-    fs::path dir_;
 };
 
 TEST_F(Cli, RunWritesFramesAndReport) {

@@ -28,21 +28,10 @@ namespace fs = std::filesystem;
 using eikon::test::Outcome;
 using eikon::test::runEikon;
 
-class CliLimits : public ::testing::Test {
+class CliLimits : public eikon::test::CliFolderTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("eikon_cli_limits_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    CliLimits() : CliFolderTest("eikon_cli_limits_") {}
 
-    std::string writeScene(const std::string& name, const std::string& text) {
-        const fs::path path = dir_ / name;
-        std::ofstream(path) << text;
-        return path.string();
-    }
     // Lines of report.jsonl in `out`.
     static std::vector<nlohmann::json> reportLines(const fs::path& out) {
         std::vector<nlohmann::json> lines;
@@ -50,7 +39,6 @@ protected:
         for (std::string line; std::getline(report, line);) lines.push_back(nlohmann::json::parse(line));
         return lines;
     }
-    fs::path dir_;
 };
 
 int count(const std::string& text, const std::string& what) {

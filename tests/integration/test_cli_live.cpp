@@ -32,16 +32,9 @@ namespace fs = std::filesystem;
 using eikon::test::Outcome;
 using eikon::test::runEikon;
 
-class LiveCli : public ::testing::Test {
+class LiveCli : public eikon::test::CliFolderTest {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("eikon_live_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
+    LiveCli() : CliFolderTest("eikon_live_cli_") {}
 };
 
 std::vector<nlohmann::json> readReport(const fs::path& path) {

@@ -20,12 +20,11 @@ namespace fs = std::filesystem;
 using eikon::test::Outcome;
 using eikon::test::runEikon;
 
-class FolderCli : public ::testing::Test {
+class FolderCli : public eikon::test::CliFolderTest {
 protected:
+    FolderCli() : CliFolderTest("eikon_folder_cli_") {}
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("eikon_folder_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
+        CliFolderTest::SetUp();
         fs::create_directories(dir_ / "pictures");
         std::ofstream(dir_ / "scene.json") << R"({
   "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
@@ -38,7 +37,6 @@ protected:
 })";
         std::ofstream(pictures() / "frame_00000.png") << "the user's picture";
     }
-    void TearDown() override { fs::remove_all(dir_); }
 
     Outcome run(const std::string& options) {
         return runEikon("run " + (dir_ / "scene.json").string() + " --out " + out().string() + " --quiet " + options);
@@ -51,7 +49,6 @@ protected:
         std::ifstream picture(pictures() / "frame_00000.png");
         EXPECT_EQ(std::string(std::istreambuf_iterator<char>(picture), {}), "the user's picture");
     }
-    fs::path dir_;
 };
 
 // An earlier run's frames/ replaced by a link to a user's folder that holds a

@@ -20,13 +20,11 @@ using eikon::test::Outcome;
 using eikon::test::runEikon;
 using eikon::test::runEikonWithin;
 
-class ConvergeCli : public ::testing::Test {
+class ConvergeCli : public eikon::test::CliFolderTest {
 protected:
+    ConvergeCli() : CliFolderTest("eikon_converge_") {}
     void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("eikon_converge_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
+        CliFolderTest::SetUp();
         scene_ = (dir_ / "scene.json").string();
         std::ofstream(scene_) << R"({
   "grid": {"resolution": [24, 24, 24], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
@@ -37,8 +35,6 @@ protected:
   "render": {"photons": 16384, "width": 48, "height": 36, "seed": 3}
 })";
     }
-    void TearDown() override { fs::remove_all(dir_); }
-    fs::path dir_;
     std::string scene_;
 };
 
