@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +37,30 @@ inline Outcome runEikon(const std::string& arguments, const std::string& environ
 // command that runs on for ever fails its test instead of holding ctest.
 inline Outcome runEikonWithin(int seconds, const std::string& arguments, const std::string& environment = "") {
     return runEikon(arguments, environment + " timeout --kill-after=10 " + std::to_string(seconds));
+}
+
+// Starts `arguments` (the executable first) without a shell, with
+// `environment` added, its stdout and stderr into one pipe whose read end is
+// returned in `readEnd`; returns the child's pid.
+inline pid_t spawnCapturingOutput(const std::vector<std::string>& arguments,
+                                  const std::map<std::string, std::string>& environment, int& readEnd) {
+    int ends[2];
+    EXPECT_EQ(pipe(ends), 0);
+    const pid_t child = fork();
+    if (child == 0) {
+        for (const auto& [name, value] : environment) setenv(name.c_str(), value.c_str(), 1);
+        dup2(ends[1], STDOUT_FILENO);
+        dup2(ends[1], STDERR_FILENO);
+        close(ends[0]);
+        std::vector<char*> argv;
+        for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    close(ends[1]);
+    readEnd = ends[0];
+    return child;
 }
 
 // A command-line test's own folder, PREFIX<test name> in the temporary

@@ -112,25 +112,13 @@ struct MeasuredRun {
 MeasuredRun runUnderLimit(const std::vector<std::string>& runArguments, const std::string& limitMiB) {
     std::vector<std::string> arguments{EIKON_EXECUTABLE, "run"};
     arguments.insert(arguments.end(), runArguments.begin(), runArguments.end());
-    int ends[2];
-    EXPECT_EQ(pipe(ends), 0);
-    const pid_t child = fork();
-    if (child == 0) {
-        setenv("EIKON_MEMORY_LIMIT_MB", limitMiB.c_str(), 1);
-        dup2(ends[1], STDOUT_FILENO);
-        dup2(ends[1], STDERR_FILENO);
-        close(ends[0]);
-        std::vector<char*> argv;
-        for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-        argv.push_back(nullptr);
-        execv(argv[0], argv.data());
-        _exit(127);
-    }
-    close(ends[1]);
+    int readEnd = -1;
+    const pid_t child =
+        eikon::test::spawnCapturingOutput(arguments, {{"EIKON_MEMORY_LIMIT_MB", limitMiB}}, readEnd);
     MeasuredRun run;
     char buffer[4096];
-    for (ssize_t got; (got = read(ends[0], buffer, sizeof buffer)) > 0;) run.output.append(buffer, got);
-    close(ends[0]);
+    for (ssize_t got; (got = read(readEnd, buffer, sizeof buffer)) > 0;) run.output.append(buffer, got);
+    close(readEnd);
     int status = 0;
     rusage usage{};
     wait4(child, &status, 0, &usage);

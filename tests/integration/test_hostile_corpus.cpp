@@ -3,6 +3,8 @@
 // code 2 with one line in eikon's form naming the file and the JSON path or
 // line at fault, and must leave nothing on disk; a valid case must render.
 // No case may crash, hang, or end in any other code.
+#include "tests/integration/CliRun.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -64,27 +66,14 @@ struct Outcome {
 // with `environment` added, killing it when it outlives `deadline`.
 Outcome runWithDeadline(const std::vector<std::string>& arguments, std::chrono::seconds deadline,
                         const std::map<std::string, std::string>& environment) {
-    int pipeEnds[2];
-    EXPECT_EQ(pipe(pipeEnds), 0);
-    const pid_t child = fork();
-    if (child == 0) {
-        for (const auto& [name, value] : environment) setenv(name.c_str(), value.c_str(), 1);
-        dup2(pipeEnds[1], STDOUT_FILENO);
-        dup2(pipeEnds[1], STDERR_FILENO);
-        close(pipeEnds[0]);
-        std::vector<char*> argv;
-        for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-        argv.push_back(nullptr);
-        execv(argv[0], argv.data());
-        _exit(127);
-    }
-    close(pipeEnds[1]);
-    fcntl(pipeEnds[0], F_SETFL, O_NONBLOCK);
+    int readEnd = -1;
+    const pid_t child = eikon::test::spawnCapturingOutput(arguments, environment, readEnd);
+    fcntl(readEnd, F_SETFL, O_NONBLOCK);
     Outcome outcome;
     const auto end = std::chrono::steady_clock::now() + deadline;
     char buffer[4096];
     while (true) {
-        for (ssize_t got; (got = read(pipeEnds[0], buffer, sizeof buffer)) > 0;) outcome.output.append(buffer, got);
+        for (ssize_t got; (got = read(readEnd, buffer, sizeof buffer)) > 0;) outcome.output.append(buffer, got);
         if (waitpid(child, &outcome.status, WNOHANG) == child) {
             outcome.finished = true;
             break;
@@ -96,8 +85,8 @@ Outcome runWithDeadline(const std::vector<std::string>& arguments, std::chrono::
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
-    for (ssize_t got; (got = read(pipeEnds[0], buffer, sizeof buffer)) > 0;) outcome.output.append(buffer, got);
-    close(pipeEnds[0]);
+    for (ssize_t got; (got = read(readEnd, buffer, sizeof buffer)) > 0;) outcome.output.append(buffer, got);
+    close(readEnd);
     return outcome;
 }
 
