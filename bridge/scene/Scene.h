@@ -226,6 +226,7 @@ struct TracerDesc {
         double minPower = 0.01;       // a patch carrying less of a texel's (voxel's) unobstructed power does not split
         long long maxPatches = 1 << 18;  // patches one refinement level holds; beyond, patches stop splitting
         int reflections = 1;          // Fresnel branches followed: reflected at the first, second, … Fresnel event
+        double reflectionSplit = 1e-3;  // a branch's patch splits while its corners' reflected power differs by this share of a start patch's
     } wavefront;
     // Light scattered more than once: not followed (single scattering only),
     // or diffused on a lattice ([Bernabei12] §III-C; render/stages/LatticeScattering).

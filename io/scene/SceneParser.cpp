@@ -400,7 +400,7 @@ TracerDesc readTracer(const JsonReader& node) {
         tracer.lattice.maxIterations = static_cast<int>(cap->integer(1, 1000000));
     if (auto wavefront = fields.optional("wavefront")) {
         const auto keys = wavefront->object({"grid_cells", "max_depth", "split_texels", "tear_texels", "min_power", "max_patches",
-                                             "reflections", "split_voxels"});
+                                             "reflections", "reflection_split", "split_voxels"});
         TracerDesc::Wavefront& w = tracer.wavefront;
         if (auto cells = keys.optional("grid_cells")) w.gridCells = static_cast<int>(cells->integer(1, 1024));
         if (auto depth = keys.optional("max_depth")) w.maxDepth = static_cast<int>(depth->integer(0, 20));
@@ -410,6 +410,8 @@ TracerDesc readTracer(const JsonReader& node) {
         if (auto power = keys.optional("min_power")) w.minPower = power->number(NumberRange::closed(0.0, 1.0));
         if (auto reflections = keys.optional("reflections"))
             w.reflections = static_cast<int>(reflections->integer(0, 16));
+        if (auto split = keys.optional("reflection_split"))
+            w.reflectionSplit = split->number(NumberRange::closed(0.0, 1.0));
         if (auto patches = keys.optional("max_patches")) w.maxPatches = patches->integer(1024, 1 << 24);
     }
     return tracer;

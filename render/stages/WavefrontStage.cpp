@@ -125,6 +125,7 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
     glUniform1f(program_.uniform("split_texels"), static_cast<float>(settings_.splitTexels));
     glUniform1f(program_.uniform("tear_texels"), static_cast<float>(settings_.tearTexels));
     glUniform1f(program_.uniform("min_power"), static_cast<float>(settings_.minPower));
+    glUniform1f(program_.uniform("reflection_split"), static_cast<float>(settings_.reflectionSplit));
     if (storesFluence_) {
         const FluenceUnits& units = inputs.fluenceUnits;
         glUniform1f(program_.uniform("split_voxels"), static_cast<float>(settings_.splitVoxels));
