@@ -29,10 +29,17 @@ install_packages() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
+# build PRESET [TARGET…]: configure and build the preset's targets, or only
+# the ones named.
 build() {
     local preset=$1
+    shift
     cmake --preset "$preset" >/dev/null
-    cmake --build --preset "$preset"
+    if (($# > 0)); then
+        cmake --build --preset "$preset" --target "$@"
+    else
+        cmake --build --preset "$preset"
+    fi
 }
 
 # llvmpipe uses every core unless told otherwise; keep it to what we have.
@@ -98,7 +105,7 @@ check_fuzzers() {
 case "${1:-}" in
     run)
         install_packages
-        build release
+        build release eikon  # the command line alone: no tests before the first picture
         shift
         ./build/release/eikon run scenes/default.json --out out/default --force "$@"
         echo "dev.sh: wrote out/default/frames/frame_00000.png" >&2
