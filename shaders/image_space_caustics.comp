@@ -36,7 +36,7 @@ uniform vec3 light_axis;       // the layers' axis (directional: the direction l
 uniform int light_kind;        // 0 point, 1 spot, 2 directional
 uniform vec3 light_intensity;  // point, spot: W/sr (a spot's on its axis); directional: W/m² ⟂ the light
 uniform vec3 spot_axis;
-uniform vec2 spot_cosines;     // cos outer (−2: no spot), cos inner
+uniform vec2 spot_versines;    // 1 − cos of the outer half-angle (< 0: no spot), of the inner
 uniform vec3 frame_right;      // the layers' frame: texel (i, j) looks along axis + a·right + b·up
 uniform vec3 frame_up;
 uniform float frame_half_extent;  // perspective: tan of the half-angle; orthographic: half the width, m
@@ -61,7 +61,7 @@ Viewpoint light_view() {
 }
 
 vec3 intensity_toward(vec3 direction) {
-    return light_intensity * spot_profile_about(spot_axis, spot_cosines.x, spot_cosines.y, direction);
+    return light_intensity * spot_profile_about(spot_axis, spot_versines.x, spot_versines.y, direction);
 }
 
 #if EIKON_PASS == 0

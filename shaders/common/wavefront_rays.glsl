@@ -108,7 +108,7 @@ Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
     emission_ray(emitter, face, u, x, direction);
     PlaneCrossing outside = PlaneCrossing(-1, vec2(0.0f));
     channel_scale = channel < 0 ? dispersion.x : dispersion[channel];
-    vec3 power = spot_profile(emitter, direction) * channel_mask();
+    vec3 power = channel_mask();  // the spot's profile is the patch's (patch_power)
     vec3 source = branch < 0 ? power : vec3(0.0f);
     vec3 absorbed = vec3(0.0f);
     SurfaceLedger ledger = SurfaceLedger(0u, 0u, 0u, branch < 0);
