@@ -6,6 +6,8 @@
 // scale 1, with both light-pass estimators. A flight that ended at a fixed
 // distance (once 10 km) lost all the light of the scene at 1e6.
 #include "io/scene/SceneParser.h"
+#include "render/graph/FrameRenderer.h"
+#include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
 #include "tests/integration/TraceHelpers.h"
 
@@ -20,10 +22,11 @@ namespace eikon {
 namespace {
 
 // The scene at scale s, written as a scene file would be, so that the
-// parser's ranges are part of what is checked.
+// parser's ranges are part of what is checked; estimator "image_space": the
+// image-space method instead of the eikonal tracer.
 Scene scaledScene(double s, const std::string& estimator) {
     auto at = [s](double x, double y, double z) { return nlohmann::json::array({s * x, s * y, s * z}); };
-    const nlohmann::json document = {
+    nlohmann::json document = {
         {"grid", {{"resolution", {32, 32, 32}}, {"bounds", {{"min", at(-0.6, 0.0, -0.6)}, {"max", at(0.6, 1.0, 0.6)}}}}},
         {"medium", {{"index", 1.0}}},
         {"objects", {{{"type", "sphere"}, {"center", at(0.0, 0.55, 0.0)}, {"radius", 0.25 * s}, {"index", 1.5}}}},
@@ -32,6 +35,10 @@ Scene scaledScene(double s, const std::string& estimator) {
          {{{"type", "plane"}, {"point", at(0.0, -2.0, 0.0)}, {"normal", {0, 1, 0}}, {"size", 3.0 * s}, {"resolution", 32}}}},
         {"render", {{"photons", 1 << 16}, {"width", 8}, {"height", 8}, {"seed", 1}}},
         {"tracer", {{"estimator", estimator}}}};
+    if (estimator == "image_space") {
+        document.erase("tracer");
+        document["render"] = {{"method", "image_space"}, {"width", 8}, {"height", 8}, {"caustic_map_texels", 64}};
+    }
     return parseScene(document, "far_flights.json");
 }
 
@@ -70,6 +77,30 @@ TEST(FarFlights, ScaledScenesReceiveTheSameLight) {
             EXPECT_LT(shapeDifference(scaled, unit), 0.01) << name;
         }
     }
+}
+
+// Image space draws the surfaces from the light and the camera between
+// planes set by the scene's extent (once fixed at 1 mm and 1 km): scaled up
+// by 1e6 its receiver map has the same shape. (Scaled down by 1e-6 its
+// surface offsets, fixed lengths of 1e-6 to 1e-4 m, still spoil it.)
+TEST(FarFlights, ImageSpaceScaledUpReceivesTheSameLight) {
+    test::glContext();
+    auto shape = [](double s) {
+        const Scene scene = scaledScene(s, "image_space");
+        const FieldSet fields = sim::voxelizeScene(scene);
+        render::FrameRenderer renderer(scene, fields, {.photons = {}});
+        renderer.render(fields);
+        const std::vector<float> map = renderer.receivers().download(0);
+        Reach r;
+        double sum = 0.0;
+        for (std::size_t i = 1; i < map.size(); i += 3) sum += map[i];
+        for (std::size_t i = 1; i < map.size(); i += 3) r.shape.push_back(sum > 0.0 ? map[i] / sum : 0.0);
+        return r;
+    };
+    const Reach unit = shape(1.0);
+    const Reach scaled = shape(1e6);
+    test::reportFigure("far_flights_map_l1_image_space_1e6", shapeDifference(scaled, unit));
+    EXPECT_LT(shapeDifference(scaled, unit), 0.01);
 }
 
 }  // namespace
