@@ -190,7 +190,7 @@ void main() {
         // the object, and the reflection, straight on from x. Each lands
         // from one call site (a CPU rasterizer runs every call site under a
         // mask, taken or not).
-        vec3 start[2] = vec3[2](x, x + 1e-5f * normal);
+        vec3 start[2] = vec3[2](x, x + surface_offset() * normal);
         vec3 heading[2] = vec3[2](d, reflect(d, normal));
         vec3 carried[2] = vec3[2](vec3(0.0f), reflectance * watts);
         vec3 left_through[2] = vec3[2](normal, normal);  // the refraction's exit normal, once found

@@ -153,7 +153,7 @@ void draw_through_surface(uvec2 pixel, LayerSample first) {
     // and the refraction, followed through the object. Each ends on a
     // receiver or in the environment, looked up from one call site each: a
     // CPU rasterizer runs every call site under a mask, taken or not.
-    vec3 origin[2] = vec3[2](x + 1e-5f * normal, x);
+    vec3 origin[2] = vec3[2](x + surface_offset() * normal, x);
     vec3 direction[2] = vec3[2](reflect(d, normal), d);
     vec3 weight[2] = vec3[2](vec3(reflectance), vec3(0.0f));
     ReceiverHit inside = ReceiverHit(-1, 2.0f, false, vec2(0.0f));

@@ -91,7 +91,8 @@ LightFrame lightFrameOver(const LightDesc& light, const std::vector<RefractorExt
     }
     const bool anyRefractor = !refractors.empty();
     const glm::dvec3 centre = anyRefractor ? 0.5 * (low + high) : glm::dvec3(0.0);
-    const double radius = anyRefractor ? 0.5 * glm::length(high - low) * kMargin + 1e-6 : 1e-6;
+    // Not below 1e-30 m: any refractor's size is the scale, however small.
+    const double radius = anyRefractor ? std::max(0.5 * glm::length(high - low) * kMargin, 1e-30) : 1e-6;
 
     LightFrame frame;
     const bool directional = light.kind == LightDesc::Kind::Directional;
