@@ -36,7 +36,7 @@ uniform vec3 light_axis;       // the layers' axis (directional: the direction l
 uniform int light_kind;        // 0 point, 1 spot, 2 directional
 uniform vec3 light_intensity;  // point, spot: W/sr (a spot's on its axis); directional: W/m² ⟂ the light
 uniform vec3 spot_axis;
-uniform vec2 spot_cosines;     // cos outer (−2: no spot), cos inner
+uniform vec2 spot_versines;    // 1 − cos of the outer half-angle (< 0: no spot), of the inner
 uniform vec3 frame_right;      // the layers' frame: texel (i, j) looks along axis + a·right + b·up
 uniform vec3 frame_up;
 uniform float frame_half_extent;  // perspective: tan of the half-angle; orthographic: half the width, m
@@ -50,8 +50,6 @@ uniform uint texel_count;      // direct pass: receiver texels in all
 layout(std430, binding = kCausticCellGroups) writeonly buffer CausticCellGroups { uvec4 caustic_cell_groups; };
 #endif
 
-const float kFarAway = 1e4f;
-
 Viewpoint light_view() {
     Viewpoint view;
     view.view_projection = view_projection;
@@ -63,7 +61,7 @@ Viewpoint light_view() {
 }
 
 vec3 intensity_toward(vec3 direction) {
-    return light_intensity * spot_profile_about(spot_axis, spot_cosines.x, spot_cosines.y, direction);
+    return light_intensity * spot_profile_about(spot_axis, spot_versines.x, spot_versines.y, direction);
 }
 
 #if EIKON_PASS == 0
@@ -83,13 +81,15 @@ vec3 unblocked_irradiance(int r, vec3 x) {
 // another receiver stands between the light and x on receiver r.
 bool light_blocked(int r, vec3 x) {
     vec3 normal = receivers[r].normal.xyz;
-    vec3 from = light_kind == 2 ? x - kFarAway * light_axis : light_position;
-    float distance = length(from - x);
     // Another receiver (a lone one stands only before its own back, where
-    // unblocked_irradiance gives nothing).
+    // unblocked_irradiance gives nothing), met on the way from x, just off
+    // its square, to the light however far that is.
     if (receiver_count > 1u) {
-        ReceiverHit blocker = first_receiver_crossing(from, x + 1e-5f * normal);
-        if (blocker.receiver >= 0 && blocker.fraction * distance < distance * (1.0f - 1e-5f)) return true;
+        vec3 toward_light = light_kind == 2 ? -light_axis : normalize(light_position - x);
+        float reach = light_kind == 2 ? EIKON_INFINITY : length(light_position - x);
+        float t;
+        ReceiverHit blocker = first_receiver_on_ray(x + 1e-5f * receivers[r].origin.w * normal, toward_light, reach, t);
+        if (blocker.receiver >= 0 && t < reach * (1.0f - 1e-5f)) return true;
     }
     ivec2 texel;
     Viewpoint view = light_view();
@@ -190,7 +190,7 @@ void main() {
         // the object, and the reflection, straight on from x. Each lands
         // from one call site (a CPU rasterizer runs every call site under a
         // mask, taken or not).
-        vec3 start[2] = vec3[2](x, x + 1e-5f * normal);
+        vec3 start[2] = vec3[2](x, x + surface_offset() * normal);
         vec3 heading[2] = vec3[2](d, reflect(d, normal));
         vec3 carried[2] = vec3[2](vec3(0.0f), reflectance * watts);
         vec3 left_through[2] = vec3[2](normal, normal);  // the refraction's exit normal, once found
@@ -210,9 +210,10 @@ void main() {
         // rasterizer its bookkeeping every turn.
         for (int sheet = 0; sheet < 2; ++sheet) {
             bool on = sheet == 0 ? refracted_on : reflectance > 0.0f;
+            float t;
             ReceiverHit hit = sheet == 0 && inside.receiver >= 0
                                   ? inside
-                                  : first_receiver_crossing(start[sheet], start[sheet] + kFarAway * heading[sheet]);
+                                  : first_receiver_on_ray(start[sheet], heading[sheet], EIKON_INFINITY, t);
             CausticVertex landed =
                 landing(hit, first.surface, start[sheet], heading[sheet], carried[sheet], normal, left_through[sheet]);
             if (on && sheet == 0) refracted_vertex = landed;

@@ -51,8 +51,6 @@ layout(std430, binding = kSurfacePixelCount) buffer SurfacePixelCount {
 
 uniform mat4 view_projection;  // the camera's, as its layers were drawn
 
-const float kFarAway = 1e4f;  // metres; farther than any scene
-
 vec3 receiver_radiance(ReceiverHit hit) {
     if (!hit.lit_side) return vec3(0.0f);
     return receivers[receiver_slot(hit.receiver)].albedo.rgb / 3.14159265358979f * receiver_irradiance_at(hit.receiver, hit.map_uv);
@@ -60,7 +58,8 @@ vec3 receiver_radiance(ReceiverHit hit) {
 
 // What a ray from x along d sees in the uniform medium: the first receiver, or the environment.
 vec3 straight_radiance(vec3 x, vec3 d, out float kind) {
-    ReceiverHit hit = first_receiver_crossing(x, x + kFarAway * d);
+    float t;
+    ReceiverHit hit = first_receiver_on_ray(x, d, EIKON_INFINITY, t);
     kind = hit.receiver >= 0 ? 2.0f : 1.0f;
     return hit.receiver >= 0 ? receiver_radiance(hit) : environment_radiance(x, d);
 }
@@ -154,7 +153,7 @@ void draw_through_surface(uvec2 pixel, LayerSample first) {
     // and the refraction, followed through the object. Each ends on a
     // receiver or in the environment, looked up from one call site each: a
     // CPU rasterizer runs every call site under a mask, taken or not.
-    vec3 origin[2] = vec3[2](x + 1e-5f * normal, x);
+    vec3 origin[2] = vec3[2](x + surface_offset() * normal, x);
     vec3 direction[2] = vec3[2](reflect(d, normal), d);
     vec3 weight[2] = vec3[2](vec3(reflectance), vec3(0.0f));
     ReceiverHit inside = ReceiverHit(-1, 2.0f, false, vec2(0.0f));
@@ -173,9 +172,10 @@ void draw_through_surface(uvec2 pixel, LayerSample first) {
     // count differs between lanes is bookkeeping every turn on a CPU).
     for (int branch = 0; branch < 2; ++branch) {
         bool on = branch == 0 || refracted_on;
+        float t;
         ReceiverHit hit = branch == 1 && inside.receiver >= 0
                               ? inside
-                              : first_receiver_crossing(origin[branch], origin[branch] + kFarAway * direction[branch]);
+                              : first_receiver_on_ray(origin[branch], direction[branch], EIKON_INFINITY, t);
         kind[branch] = on ? (hit.receiver >= 0 ? 2.0f : 1.0f) : kind[branch];
         vec3 seen = hit.receiver >= 0 ? receiver_radiance(hit) : environment_radiance(origin[branch], direction[branch]);
         radiance += on ? weight[branch] * seen : vec3(0.0f);

@@ -293,8 +293,14 @@ void emit_photon(uint photon, out vec3 x, out vec3 direction, out vec3 emitted) 
     vec2 u = emission_sample(emitter, photon);
     if (emitter.origin.w == 0.0f) {
         x = emitter.origin.xyz;
-        direction = sample_cone(emitter.axis.xyz, emitter.tangent.xyz, emitter.bitangent.xyz, emitter.axis.w, u.x, u.y);
-        emitted = emitter.photon_power.rgb * spot_profile(emitter, direction);
+        // Sampled in the cone's own frame; a spot sampled over its own cone
+        // (the usual case) takes its profile from the sampled versine itself.
+        float h = u.x * emitter.axis.w;
+        direction = cone_direction(emitter.axis.xyz, emitter.tangent.xyz, emitter.bitangent.xyz, h, u.y);
+        float profile = all(equal(emitter.spot.xyz, emitter.axis.xyz))
+                            ? spot_profile_at_versine(h, emitter.spot.w, emitter.spot_edge.x)
+                            : spot_profile(emitter, direction);
+        emitted = emitter.photon_power.rgb * profile;
     } else if (emitter.origin.w == 1.0f) {
         vec2 disk = emitter.axis.w * sample_disk_concentric(u.x, u.y);
         x = emitter.origin.xyz + disk.x * emitter.tangent.xyz + disk.y * emitter.bitangent.xyz;

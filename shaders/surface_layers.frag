@@ -54,7 +54,7 @@ void main() {
     float from = 0.0f;  // along the ray: the eye, or the orthographic view's near plane
 #if EIKON_PEEL == 1
     vec4 nearer = texelFetch(near_layer, ivec2(gl_FragCoord.xy), 0);
-    from = nearer.w > 0.5f ? nearer.z * (1.0f + 1e-5f) + 1e-6f : 0.0f;  // the peel's gap
+    from = nearer.w > 0.5f ? nearer.z * (1.0f + 1e-5f) : 0.0f;  // the peel's gap, relative: any scale
 #endif
     WaterCrossing crossing = water_crossing(water_of_surface[surface], origin, d, from, 1e30f, false);
     if (!crossing.found) discard;
@@ -76,7 +76,7 @@ void main() {
     float distance = viewpoint_distance(view, x);
 #if EIKON_PEEL == 1 && EIKON_NEAR_TEST && EIKON_EXACT_SHAPES != 2
     vec4 nearer = texelFetch(near_layer, ivec2(gl_FragCoord.xy), 0);
-    if (distance <= nearer.z * (1.0f + 1e-5f) + 1e-6f) discard;
+    if (distance <= nearer.z * (1.0f + 1e-5f)) discard;
 #endif
     layer = vec4(octahedral_encode(normal), distance, float(surface + 1));
 }

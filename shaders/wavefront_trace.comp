@@ -218,12 +218,18 @@ bool straight_footprint(Patch p, int r, out vec2 ends[3]) {
 
 float longest_edge(vec2 a, vec2 b, vec2 c) { return max(distance(a, b), max(distance(b, c), distance(c, a))); }
 
+// The spot profile's mean over the patch (1 for other lights): its corners
+// carry what reaches them of a unit ray, the patch's power the profile.
+float profile_of(Patch p) {
+    return patch_profile(emitters[p.info.x], p.info.z, p.corners[0].ends.xy, p.corners[1].ends.xy, p.corners[2].ends.xy);
+}
+
 // Whether a patch carries at least min_power of what a texel gets where its
 // straight footprint lies (its corners' power over the straight footprint's
 // area in texels): splitting a fainter one cannot move much light.
 bool carries_power(Patch p, vec2 straight[3]) {
     vec3 arriving = p.corners[0].power.rgb + p.corners[1].power.rgb + p.corners[2].power.rgb;
-    float share = max(arriving.r, max(arriving.g, arriving.b)) / 3.0f;
+    float share = max(arriving.r, max(arriving.g, arriving.b)) / 3.0f * profile_of(p);
     return share * 0.5f * abs(twice_signed_area(straight[0], straight[1], straight[2])) >= min_power;
 }
 
@@ -300,7 +306,7 @@ bool wants_grid_split(Patch p) {
     }
     if (width <= split_voxels) return false;
     vec3 sourced = p.corners[0].source.rgb + p.corners[1].source.rgb + p.corners[2].source.rgb;
-    float share = max(sourced.r, max(sourced.g, sourced.b)) / 3.0f;
+    float share = max(sourced.r, max(sourced.g, sourced.b)) / 3.0f * profile_of(p);
     return share * 0.5f * length(cross(straight[1] - straight[0], straight[2] - straight[0])) >= min_power;
 }
 #endif

@@ -11,7 +11,12 @@ void PowerWarning::check(int frame, const render::FrameResult& result) {
     if (emitted <= 0.0) return;
     const Rgb lost = p.cutOff - p.rouletteGain;
     const double lostShare = (lost.r + lost.g + lost.b) / emitted;
-    if (p.balanceError() > 1e-3) {
+    if (p.emissionError() > 1e-3) {
+        std::cerr << "eikon: warning: frame " << frame << ": the lights emitted " << emitted << " W where they state "
+                  << p.stated.r + p.stated.g + p.stated.b << " W toward the traced region (off by "
+                  << p.emissionError() << "; report.jsonl, photons.emission_error); later frames are not reported here\n";
+        warned_ = true;
+    } else if (p.balanceError() > 1e-3) {
         std::cerr << "eikon: warning: frame " << frame << ": the photons' energy balance is off by "
                   << p.balanceError() << " (report.jsonl, photons); later frames are not reported here\n";
         warned_ = true;

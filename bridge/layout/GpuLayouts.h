@@ -247,12 +247,12 @@ static_assert(offsetof(GpuGrid, resolution) == 48);
 // carry exactly the power each light sends toward the traced region.
 struct GpuEmitter {
     glm::vec4 origin;       // point, spot: position; directional: centre of the emitting disk. w: kind (0 cone, 1 disk, 2 glowing volume)
-    glm::vec4 axis;         // unit central direction. w: cone: cos of its half-angle; disk: radius (m)
+    glm::vec4 axis;         // unit central direction. w: cone: versine 1 − cos of its half-angle (2: the sphere); disk: radius (m)
     glm::vec4 tangent;      // unit, ⟂ axis
     glm::vec4 bitangent;    // unit, ⟂ axis and tangent
     glm::vec4 photonPower;  // rgb W carried by each photon where the spot profile is 1 (glowing volume: × its cell's colour); w unused
-    glm::vec4 spot;         // xyz: unit spot axis; w: cos of the spot's outer half-angle (−2: no profile)
-    glm::vec4 spotEdge;     // x: cos of the spot's inner half-angle (full intensity inside)
+    glm::vec4 spot;         // xyz: unit spot axis; w: versine 1 − cos of the spot's outer half-angle (−1: no profile)
+    glm::vec4 spotEdge;     // x: versine of the spot's inner half-angle (full intensity inside)
     glm::uvec4 photons;     // x: first photon index, y: photon count, z: strata along u1, w: strata along u2
 };
 static_assert(sizeof(GpuEmitter) == 128);

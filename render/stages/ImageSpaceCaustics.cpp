@@ -103,10 +103,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         const Rgb intensity = light.kind == LightDesc::Kind::Directional ? light.irradiance
                               : spot ? spotPeakIntensity(light)
                                      : light.power / (4.0 * std::numbers::pi);
-        const glm::vec2 spotCosines =
-            spot ? glm::vec2(static_cast<float>(std::cos(glm::radians(light.coneAngleDeg))),
-                             static_cast<float>(std::cos(glm::radians(light.coneAngleDeg - light.falloffDeg))))
-                 : glm::vec2(-2.0f, 1.0f);
+        const glm::vec2 versines = spot ? glm::vec2(spotVersines(light)) : glm::vec2(-1.0f, 0.0f);
         fields.bindForTracing();
         receivers_.bind();
         raster_.bindSurfaces();
@@ -121,7 +118,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
             glUniform1i(program->uniform("light_kind"), spot ? 1 : light.kind == LightDesc::Kind::Point ? 0 : 2);
             glUniform3fv(program->uniform("light_intensity"), 1, glm::value_ptr(glm::vec3(intensity)));
             glUniform3fv(program->uniform("spot_axis"), 1, glm::value_ptr(glm::vec3(glm::normalize(light.direction))));
-            glUniform2fv(program->uniform("spot_cosines"), 1, glm::value_ptr(spotCosines));
+            glUniform2fv(program->uniform("spot_versines"), 1, glm::value_ptr(versines));
             glUniform2i(program->uniform("layer_size"), layers.width(), layers.height());
             glUniform3fv(program->uniform("power_unit"), 1, glm::value_ptr(powerUnit_));
         }

@@ -4,9 +4,11 @@
 #include "gl/ShaderLibrary.h"
 #include "render/stages/ViewStage.h"
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/vec4.hpp>
 
+#include <algorithm>
 #include <string>
 
 namespace eikon::render {
@@ -24,10 +26,18 @@ gl::Program viewProgram(const Scene& scene, const ReceiverMaps& receivers, int p
 
 }  // namespace
 
+glm::dvec2 rasterPlanes(const glm::dvec3& eye, const glm::dvec3& centre, double radius) {
+    const double distance = glm::length(centre - eye);
+    const double farPlane = 1.01 * (distance + radius);
+    return {std::max(0.99 * (distance - radius), 1e-3 * radius), farPlane};
+}
+
 ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers, SurfaceRaster& raster,
                                bool recordExit)
     : receivers_(receivers), raster_(raster),
       render_(scene.render), camera_(scene.camera),
+      gridCentre_(0.5 * (scene.grid.boundsMin + scene.grid.boundsMax)),
+      gridRadius_(0.5 * glm::length(scene.grid.boundsMax - scene.grid.boundsMin)),
       hdr_(pixelBuffer(scene, "the linear image")), environment_(environmentTexture(scene)) {
     if (raster.hasLayerSurfaces()) {
         layers_.emplace(scene.render.width, scene.render.height,
@@ -48,7 +58,8 @@ ImageSpaceView::ImageSpaceView(const Scene& scene, const ReceiverMaps& receivers
 }
 
 void ImageSpaceView::run(const FieldTextures& fields) {
-    const Viewpoint view = cameraViewpoint(camera_, render_, kRasterNearPlane, kRasterFarPlane);
+    const glm::dvec2 planes = rasterPlanes(camera_.position, gridCentre_, gridRadius_);
+    const Viewpoint view = cameraViewpoint(camera_, render_, planes.x, planes.y);
     if (layers_) raster_.draw(view, *layers_, fields);
     else raster_.updateWater(fields);
     const layout::GpuCamera block = cameraBlock(camera_, render_);

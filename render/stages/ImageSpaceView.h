@@ -14,6 +14,8 @@
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SurfaceLayers.h"
 
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <optional>
@@ -21,9 +23,13 @@
 
 namespace eikon::render {
 
-// Near and far planes of the raster passes' projections, metres.
-constexpr double kRasterNearPlane = 1e-3;
-constexpr double kRasterFarPlane = 1e3;
+// Near and far planes (metres) of a raster pass's projection from `eye`
+// holding the sphere (centre, radius) its surfaces lie in: just before and
+// past the sphere, whatever the scene's scale (fixed planes at 1 mm and 1 km
+// lost the surfaces of a scene larger or smaller than that). From inside the
+// sphere the near plane is a thousandth of its radius (1 mm in a 1 m scene,
+// as the fixed plane was).
+glm::dvec2 rasterPlanes(const glm::dvec3& eye, const glm::dvec3& centre, double radius);
 
 class ImageSpaceView {
 public:
@@ -45,6 +51,8 @@ private:
     SurfaceRaster& raster_;
     RenderDesc render_;
     CameraDesc camera_;
+    glm::dvec3 gridCentre_;  // the sphere around the grid, where the surfaces are (rasterPlanes)
+    double gridRadius_;
     // With layers (SurfaceRaster::hasLayerSurfaces): image_space_view.comp's
     // pass 0 (listingProgram_) lists the pixels that see a surface, pass 1
     // (surfaceProgram_) draws them; without, pass 2 (surfaceProgram_) draws

@@ -91,7 +91,8 @@ LightFrame lightFrameOver(const LightDesc& light, const std::vector<RefractorExt
     }
     const bool anyRefractor = !refractors.empty();
     const glm::dvec3 centre = anyRefractor ? 0.5 * (low + high) : glm::dvec3(0.0);
-    const double radius = anyRefractor ? 0.5 * glm::length(high - low) * kMargin + 1e-6 : 1e-6;
+    // Not below 1e-30 m: any refractor's size is the scale, however small.
+    const double radius = anyRefractor ? std::max(0.5 * glm::length(high - low) * kMargin, 1e-30) : 1e-6;
 
     LightFrame frame;
     const bool directional = light.kind == LightDesc::Kind::Directional;
@@ -122,9 +123,10 @@ LightFrame lightFrameOver(const LightDesc& light, const std::vector<RefractorExt
     frame.halfExtent = bounding * frame.texels / mapTexels;
     const double h = frame.halfExtent;
     const glm::dmat4 view = glm::lookAt(eye, eye + axis, up);
+    const glm::dvec2 planes = rasterPlanes(eye, centre, radius);
     const glm::dmat4 projection = directional
-                                      ? glm::ortho(-h, h, -h, h, 0.0, kRasterFarPlane)
-                                      : glm::perspective(2.0 * std::atan(h), 1.0, kRasterNearPlane, kRasterFarPlane);
+                                      ? glm::ortho(-h, h, -h, h, 0.0, planes.y)
+                                      : glm::perspective(2.0 * std::atan(h), 1.0, planes.x, planes.y);
     frame.view.viewProjection = glm::mat4(projection * view);
     frame.view.eye = glm::vec3(eye);
     frame.view.axis = glm::vec3(axis);

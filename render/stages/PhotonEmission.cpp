@@ -30,16 +30,23 @@ void orthonormalBasis(const glm::dvec3& axis, glm::dvec3& tangent, glm::dvec3& b
 struct EmitterGeometry {
     glm::dvec3 origin{0.0};
     glm::dvec3 axis{0, 0, 1};
-    double shape = 0.0;  // cos of the cone half-angle, or disk radius
+    double shape = 0.0;  // versine 1 − cos of the cone's half-angle, or disk radius
     // What all photons together carry where a spot's profile is 1: the power
     // into the sampled cone or disk (exactly the power into it for point and
     // directional lights).
     Rgb powerIntoRegion{0.0};
     float kind = 0.0f;
     glm::dvec3 spotAxis{0.0};
-    double spotCosOuter = -2.0;  // no spot profile
-    double spotCosInner = 1.0;
+    double spotVersineOuter = -1.0;  // no spot profile
+    double spotVersineInner = 0.0;
 };
+
+// The versine 1 − cos θ of the angle between unit vectors a and b: |a − b|²/2,
+// which keeps its digits for small angles where 1 − a·b cancels.
+double versineBetween(const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 apart = a - b;
+    return 0.5 * glm::dot(apart, apart);
+}
 
 // The narrowest cone around the direction to the region's centre that holds
 // all eight corners; a convex cone of half-angle < 90° holding the corners
@@ -48,32 +55,36 @@ EmitterGeometry pointEmitter(const LightDesc& light, const Box& region) {
     EmitterGeometry geometry;
     geometry.origin = light.position;
     const glm::dvec3 toCentre = 0.5 * (region.min + region.max) - light.position;
-    double cosMax = -1.0;
+    double versineMax = 2.0;
     if (glm::length(toCentre) > 0.0) {
         geometry.axis = glm::normalize(toCentre);
-        cosMax = 1.0;
+        versineMax = 0.0;
         for (int corner = 0; corner < 8; ++corner) {
             const glm::dvec3 point((corner & 1) ? region.max.x : region.min.x, (corner & 2) ? region.max.y : region.min.y,
                                    (corner & 4) ? region.max.z : region.min.z);
             const glm::dvec3 toCorner = point - light.position;
             const double length = glm::length(toCorner);
-            if (length > 0.0) cosMax = std::min(cosMax, glm::dot(toCorner / length, geometry.axis));
-            else cosMax = -1.0;
+            if (length > 0.0) versineMax = std::max(versineMax, versineBetween(toCorner / length, geometry.axis));
+            else versineMax = 2.0;
         }
-        if (cosMax <= 1e-6) cosMax = -1.0;
+        if (versineMax >= 1.0 - 1e-6) versineMax = 2.0;
     }
-    geometry.shape = cosMax;
-    // Isotropic: intensity Φ/4π over the cap's solid angle 2π(1 − cosMax).
-    geometry.powerIntoRegion = light.power * (0.5 * (1.0 - cosMax));
+    geometry.shape = versineMax;
+    // Isotropic: intensity Φ/4π over the cap's solid angle 2π(1 − cos α).
+    geometry.powerIntoRegion = light.power * (0.5 * versineMax);
     return geometry;
 }
 
 }  // namespace
 
+glm::dvec2 spotVersines(const LightDesc& light) {
+    auto versine = [](double degrees) { return 2.0 * std::pow(std::sin(0.5 * glm::radians(degrees)), 2); };
+    return {versine(light.coneAngleDeg), versine(light.coneAngleDeg - light.falloffDeg)};
+}
+
 Rgb spotPeakIntensity(const LightDesc& light) {
-    const double cosOuter = std::cos(glm::radians(light.coneAngleDeg));
-    const double cosInner = std::cos(glm::radians(light.coneAngleDeg - light.falloffDeg));
-    return light.power / (2.0 * std::numbers::pi * ((1.0 - cosInner) + 0.5 * (cosInner - cosOuter)));
+    const glm::dvec2 versines = spotVersines(light);
+    return light.power / (std::numbers::pi * (versines.x + versines.y));
 }
 
 namespace {
@@ -83,17 +94,16 @@ namespace {
 // toward the region.
 EmitterGeometry spotEmitter(const LightDesc& light, const Box& region) {
     EmitterGeometry geometry = pointEmitter(light, region);
-    const double cosOuter = std::cos(glm::radians(light.coneAngleDeg));
-    const double cosInner = std::cos(glm::radians(light.coneAngleDeg - light.falloffDeg));
+    const glm::dvec2 versines = spotVersines(light);
     const Rgb peakIntensity = spotPeakIntensity(light);
-    if (cosOuter > geometry.shape) {
+    if (versines.x < geometry.shape) {
         geometry.axis = glm::normalize(light.direction);
-        geometry.shape = cosOuter;
+        geometry.shape = versines.x;
     }
-    geometry.powerIntoRegion = peakIntensity * (2.0 * std::numbers::pi * (1.0 - geometry.shape));
+    geometry.powerIntoRegion = peakIntensity * (2.0 * std::numbers::pi * geometry.shape);
     geometry.spotAxis = glm::normalize(light.direction);
-    geometry.spotCosOuter = cosOuter;
-    geometry.spotCosInner = cosInner;
+    geometry.spotVersineOuter = versines.x;
+    geometry.spotVersineInner = versines.y;
     return geometry;
 }
 
@@ -112,6 +122,81 @@ EmitterGeometry directionalEmitter(const LightDesc& light, const Box& region) {
 }
 
 }  // namespace
+
+namespace {
+
+EmitterGeometry emitterGeometry(const LightDesc& light, const Box& region) {
+    return light.kind == LightDesc::Kind::Point  ? pointEmitter(light, region)
+           : light.kind == LightDesc::Kind::Spot ? spotEmitter(light, region)
+                                                 : directionalEmitter(light, region);
+}
+
+// The spot's profile (spotPeakIntensity) at versine h from its axis.
+double spotProfile(double h, double versineOuter, double versineInner) {
+    if (versineInner >= versineOuter) return h <= versineOuter ? 1.0 : 0.0;
+    const double t = std::clamp((versineOuter - h) / (versineOuter - versineInner), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+// ∫ profile dΩ of a spot over an emitter's domain that cuts its cone, by a
+// midpoint rule of kCuts² cells in the domain's own coordinates: the cap in
+// (1 − cos θ, φ), where dΩ = dh·dφ; the gnomonic square in (x, y), where
+// dΩ = dx·dy/(1 + x² + y²)^{3/2}.
+constexpr int kCuts = 1000;
+
+double spotSolidAngleIn(const EmitterGeometry& geometry, bool square) {
+    glm::dvec3 tangent, bitangent;
+    orthonormalBasis(geometry.axis, tangent, bitangent);
+    const double v = geometry.shape;
+    const double spread = std::sqrt(v * (2.0 - v)) / (1.0 - v);  // tan α, the square's half-side
+    double sum = 0.0;
+    for (int j = 0; j < kCuts; ++j)
+        for (int i = 0; i < kCuts; ++i) {
+            const double a = (i + 0.5) / kCuts, b = (j + 0.5) / kCuts;
+            glm::dvec3 direction;
+            double weight;
+            if (square) {
+                const double x = spread * (2.0 * a - 1.0), y = spread * (2.0 * b - 1.0);
+                direction = glm::normalize(geometry.axis + x * tangent + y * bitangent);
+                weight = 4.0 * spread * spread / std::pow(1.0 + x * x + y * y, 1.5);
+            } else {
+                const double h = a * v, phi = 2.0 * std::numbers::pi * b;
+                direction = (1.0 - h) * geometry.axis +
+                            std::sqrt(h * (2.0 - h)) * (std::cos(phi) * tangent + std::sin(phi) * bitangent);
+                weight = 2.0 * std::numbers::pi * v;
+            }
+            sum += weight * spotProfile(versineBetween(direction, geometry.spotAxis), geometry.spotVersineOuter,
+                                        geometry.spotVersineInner);
+        }
+    return sum / (static_cast<double>(kCuts) * kCuts);
+}
+
+// The power a light states it sends into the domain its emitter samples.
+Rgb statedPower(const LightDesc& light, const Box& region, bool wavefront) {
+    const EmitterGeometry geometry = emitterGeometry(light, region);
+    if (light.kind == LightDesc::Kind::Directional) {
+        const double r = geometry.shape;
+        return light.irradiance * ((wavefront ? 4.0 : std::numbers::pi) * r * r);
+    }
+    const double v = geometry.shape;
+    const bool sphere = v >= 2.0 || (wavefront && v > 0.5);  // six faces about the light (WavefrontStage::emissionFaces)
+    // The gnomonic square of half-angle α to its sides: Ω = 4 asin(sin²α).
+    const double domain = sphere ? 4.0 * std::numbers::pi
+                          : wavefront ? 4.0 * std::asin(v * (2.0 - v))
+                                      : 2.0 * std::numbers::pi * v;
+    if (light.kind == LightDesc::Kind::Point) return light.power * (domain / (4.0 * std::numbers::pi));
+    // A spot: all of its power where the domain holds its whole cone.
+    if (sphere || geometry.axis == geometry.spotAxis) return light.power;
+    return spotPeakIntensity(light) * spotSolidAngleIn(geometry, wavefront);
+}
+
+}  // namespace
+
+Rgb statedEmission(const std::vector<LightDesc>& lights, const Box& region, bool wavefront, const Rgb& glowPower) {
+    Rgb total = glowPower;
+    for (const LightDesc& light : lights) total += statedPower(light, region, wavefront);
+    return total;
+}
 
 Box emissionRegion(const Scene& scene) {
     const Box gridBox{scene.grid.boundsMin, scene.grid.boundsMax};
@@ -153,9 +238,7 @@ std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& ligh
     std::vector<EmitterGeometry> geometries;
     double totalPower = 0.0;
     for (const auto& light : lights) {
-        const EmitterGeometry geometry = light.kind == LightDesc::Kind::Point ? pointEmitter(light, region)
-                                         : light.kind == LightDesc::Kind::Spot ? spotEmitter(light, region)
-                                                                               : directionalEmitter(light, region);
+        const EmitterGeometry geometry = emitterGeometry(light, region);
         if (channelSum(geometry.powerIntoRegion) <= 0.0) continue;
         totalPower += channelSum(geometry.powerIntoRegion);
         geometries.push_back(geometry);
@@ -187,8 +270,8 @@ std::vector<layout::GpuEmitter> buildEmitters(const std::vector<LightDesc>& ligh
         const Rgb photonPower = geometry.kind == 2.0f ? Rgb(channelSum(geometry.powerIntoRegion))
                                                       : geometry.powerIntoRegion;
         emitter.photonPower = glm::vec4(glm::vec3(photonPower / static_cast<double>(count)), 0.0f);
-        emitter.spot = glm::vec4(glm::vec3(geometry.spotAxis), static_cast<float>(geometry.spotCosOuter));
-        emitter.spotEdge = glm::vec4(static_cast<float>(geometry.spotCosInner), 0.0f, 0.0f, 0.0f);
+        emitter.spot = glm::vec4(glm::vec3(geometry.spotAxis), static_cast<float>(geometry.spotVersineOuter));
+        emitter.spotEdge = glm::vec4(static_cast<float>(geometry.spotVersineInner), 0.0f, 0.0f, 0.0f);
         emitter.photons = glm::uvec4(static_cast<unsigned>(first), static_cast<unsigned>(count), strataU,
                                      static_cast<unsigned>(count / strataU));
         emitters.push_back(emitter);

@@ -119,6 +119,11 @@ double PhotonStats::balanceError() const {
     return worst;
 }
 
+double PhotonStats::emissionError() const {
+    const double statedSum = stated.r + stated.g + stated.b;
+    return statedSum > 0.0 ? std::abs(emitted.r + emitted.g + emitted.b - statedSum) / statedSum : 0.0;
+}
+
 bool feedsLattice(const Scene& scene, const FieldTextures& fields) {
     return scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm && fields.hasScattering();
 }
@@ -202,7 +207,10 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
 
 void PhotonStage::setEmitters(const Scene& scene) {
     photons_ = scene.render.photons;
-    const auto emitters = buildEmitters(scene.lights, emissionRegion(scene), photons_, glow_ ? glow_->power() : Rgb(0.0));
+    const Box region = emissionRegion(scene);
+    const Rgb glowPower = glow_ ? glow_->power() : Rgb(0.0);
+    const auto emitters = buildEmitters(scene.lights, region, photons_, glowPower);
+    stated_ = statedEmission(scene.lights, region, wavefront_ != nullptr, glowPower);
     powerUnit_ = glm::vec3(0.0f);
     if (wavefront_) {
         // Units of the brightest light's power over 2^50: a deposit of any
@@ -316,6 +324,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     const auto gpu = stats_.downloadAs<layout::GpuPhotonStats>();
     const Rgb unit(powerUnit_);
     stats.emitted = tallyOf(gpu, layout::kEmitted, unit);
+    if (!settings.recordedOnly && (settings.share.whole() || settings.exchange)) stats.stated = stated_;
     stats.absorbed = tallyOf(gpu, layout::kAbsorbed, unit);
     stats.escaped = tallyOf(gpu, layout::kEscaped, unit);
     stats.received = tallyOf(gpu, layout::kReceived, unit);

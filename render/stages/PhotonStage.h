@@ -92,10 +92,18 @@ struct PhotonStats {
     bool byWavefront = false;         // the wavefront estimator (photons is then 0)
     WavefrontCounts wavefront;
 
+    // What the lights state they emit into what the pass samples
+    // (statedEmission), where the pass is whole; 0: not known.
+    Rgb stated{0.0};
+
     // |emitted + reflected + rouletteGain − (absorbed + escaped + received + cutOff + blocked + unfollowed)|
     // / (emitted + reflected + rouletteGain), worst channel.
 
     double balanceError() const;
+    // |Σ emitted − Σ stated| / Σ stated over the channels (0 where stated is
+    // not known): light lost or made at emission, which the balance, summing
+    // what the packets carry, cannot see.
+    double emissionError() const;
 };
 
 class PhotonStage {
@@ -168,6 +176,7 @@ private:
     gl::Program program_;                        // photons
     std::unique_ptr<WavefrontStage> wavefront_;  // or the wavefront
     gl::Program fluenceSmoothProgram_;
+    Rgb stated_{0.0};  // statedEmission of the emitters
     gl::Buffer emitters_;
     unsigned emitterCount_ = 0;
     std::unique_ptr<VolumeGlow> glow_;  // with emission lights

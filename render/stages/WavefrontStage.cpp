@@ -35,7 +35,7 @@ unsigned levelCapacity(long long maxPatches) {
 
 unsigned emissionFaces(const layout::GpuEmitter& emitter) {
     const bool cone = emitter.origin.w == 0.0f;
-    return cone && emitter.axis.w < 0.5f ? 6u : 1u;
+    return cone && emitter.axis.w > 0.5f ? 6u : 1u;  // wider than 60°
 }
 
 int wavefrontBranches(const TracerDesc::Wavefront& settings, bool sharpSurfaces) {

@@ -91,7 +91,7 @@ bool flight_on_plane(CausticVertex v, ReceiverPlane plane, out vec2 map_uv) {
     float approach = dot(v.direction, plane.normal);
     if (approach >= -1e-6f) return false;
     float t = dot(plane.origin - v.origin, plane.normal) / approach;
-    if (t < -1e-4f) return false;
+    if (t < -1e-4f * plane.size) return false;
     map_uv = receiver_map_coordinates(v.origin + t * v.direction, plane.origin, plane.axis_u, plane.axis_v, plane.size);
     return true;
 }

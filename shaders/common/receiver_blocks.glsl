@@ -54,6 +54,29 @@ ReceiverHit first_receiver_crossing(vec3 a, vec3 b) {
     return best;
 }
 
+// Where the ray x + t·d, 0 ≤ t ≤ reach, first crosses a receiver square,
+// and at which t (t_hit): the crossing solved analytically, so that a
+// ray may reach as far as it goes (reach may be EIKON_INFINITY). It crosses
+// as the segment from x to x + reach·d would (first_receiver_crossing), from
+// the plane's lit side to its back or back to front; `fraction` is 0.
+ReceiverHit first_receiver_on_ray(vec3 x, vec3 d, float reach, out float t_hit) {
+    ReceiverHit best = ReceiverHit(-1, 0.0f, false, vec2(0.0f));
+    t_hit = reach;
+    for (uint r = 0u; r < receiver_count; ++r) {
+        float height = receiver_signed_distance(x, receivers[r].origin.xyz, receivers[r].normal.xyz);
+        float approach = dot(d, receivers[r].normal.xyz);
+        bool crosses = height > 0.0f ? approach < 0.0f : approach > 0.0f;
+        float t = crosses ? -height / approach : 0.0f;
+        vec2 uv = receiver_map_coordinates(x + t * d, receivers[r].origin.xyz,
+                                           receivers[r].axis_u.xyz, receivers[r].axis_v.xyz, receivers[r].origin.w);
+        bool on_square = all(greaterThanEqual(uv, vec2(0.0f))) && all(lessThan(uv, vec2(1.0f)));
+        bool first = crosses && t <= reach && t < t_hit && on_square;
+        best = first ? ReceiverHit(int(r), 0.0f, height > 0.0f, uv) : best;
+        t_hit = first ? t : t_hit;
+    }
+    return best;
+}
+
 // Irradiance of a receiver's map at uv, bilinear between texel centres.
 vec3 receiver_irradiance_at(int r, vec2 uv) {
     r = receiver_slot(r);

@@ -60,6 +60,11 @@ int surface_slot(int s) { return EIKON_SHARP_SURFACES == 1 ? 0 : s; }
 float surface_index(int s) { return reference_index() + sharp_surfaces[surface_slot(s)].optics.x; }
 bool surface_reflects(int s) { return sharp_surfaces[surface_slot(s)].optics.y > 0.5f; }
 
+// How far off a surface a ray leaving it starts, so that it does not meet
+// that surface again at once: a thousandth of a voxel (1.25e-5 m in the
+// default scene), a length of the scene's own scale.
+float surface_offset() { return 1e-3f * min(grid.voxel_size.x, min(grid.voxel_size.y, grid.voxel_size.z)); }
+
 // The longest chord of surface s: a sphere's diameter, a box's or a mesh's
 // root box's diagonal.
 float surface_reach(int s) {

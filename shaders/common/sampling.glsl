@@ -1,13 +1,21 @@
 // Direction and disk sampling for photon emission (pdf-uniform maps from the
 // unit square, so stratifying (u1, u2) stratifies the emitted photons).
 
-// A unit vector uniformly distributed over the spherical cap of directions
-// within angle acos(cos_max) of `axis`; solid angle 2π(1 − cos_max).
-vec3 sample_cone(vec3 axis, vec3 tangent, vec3 bitangent, float cos_max, float u1, float u2) {
-    float cos_theta = 1.0f - u1 * (1.0f - cos_max);
-    float sin_theta = sqrt(max(0.0f, 1.0f - cos_theta * cos_theta));
+// The direction at angle θ from `axis`, versine 1 − cos θ = h, and azimuth
+// 2π·u2: built in the cone's own frame from h itself, so that a cone a
+// hundredth of a degree wide (h ≈ 1.5e-8, below float's step at 1) keeps its
+// width: sin θ = √(h(2 − h)).
+vec3 cone_direction(vec3 axis, vec3 tangent, vec3 bitangent, float h, float u2) {
+    float sin_theta = sqrt(max(0.0f, h * (2.0f - h)));
     float phi = 2.0f * 3.14159265358979f * u2;
-    return cos_theta * axis + sin_theta * (cos(phi) * tangent + sin(phi) * bitangent);
+    return (1.0f - h) * axis + sin_theta * (cos(phi) * tangent + sin(phi) * bitangent);
+}
+
+// A unit vector uniformly distributed over the spherical cap of directions
+// within the half-angle α of `axis` whose versine 1 − cos α is versine_max
+// (2: the whole sphere); solid angle 2π·versine_max. Uniform in h = 1 − cos θ.
+vec3 sample_cone(vec3 axis, vec3 tangent, vec3 bitangent, float versine_max, float u1, float u2) {
+    return cone_direction(axis, tangent, bitangent, u1 * versine_max, u2);
 }
 
 // A point uniformly distributed over the unit disk ([Shirley97] concentric

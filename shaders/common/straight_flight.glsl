@@ -5,19 +5,18 @@
 struct StraightFlight {
     ReceiverHit hit;   // the receiver met first (hit.receiver < 0: none)
     bool enters_grid;  // no receiver first, and the grid lies ahead
-    float distance;    // to the receiver hit, the grid entry, or far away
+    float distance;    // to the receiver hit, the grid entry, or EIKON_INFINITY
 };
 
-const float EIKON_FAR_AWAY = 1e4f;  // metres; farther than any scene
-
+// No distance ends the flight: receivers are met analytically however far
+// they are, so a scene of any size (io/scene accepts positions to 1e9 m)
+// keeps its light.
 StraightFlight fly_straight(vec3 x, vec3 d) {
     vec2 span = grid_ray_interval(x, d);
     float t_grid = (span.x <= span.y && span.y > 0.0f) ? max(span.x, 0.0f) : EIKON_INFINITY;
-    float reach = min(t_grid, EIKON_FAR_AWAY);
     StraightFlight flight;
-    flight.hit = first_receiver_crossing(x, x + reach * d);
+    flight.hit = first_receiver_on_ray(x, d, t_grid, flight.distance);
     flight.enters_grid = flight.hit.receiver < 0 && t_grid != EIKON_INFINITY;
-    flight.distance = flight.hit.receiver >= 0 ? flight.hit.fraction * reach : reach;
     return flight;
 }
 

@@ -36,6 +36,6 @@ void emit_glow_photon(uint photon, vec2 u, vec3 photon_power, out vec3 x, out ve
     vec3 inside = vec3(random_uniform(seed, photon, kGlowDimensions + 1u), random_uniform(seed, photon, kGlowDimensions + 2u),
                        random_uniform(seed, photon, kGlowDimensions + 3u));
     x = grid.bounds_min.xyz + (corner + inside) * grid.voxel_size.xyz;
-    direction = sample_cone(vec3(0.0f, 0.0f, 1.0f), vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 1.0f, 0.0f), -1.0f, u.x, u.y);
+    direction = sample_cone(vec3(0.0f, 0.0f, 1.0f), vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, 1.0f, 0.0f), 2.0f, u.x, u.y);
     emitted = photon_power * picked.colour.rgb;
 }

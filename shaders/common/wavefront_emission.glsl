@@ -23,7 +23,8 @@ vec3 face_direction(Emitter emitter, uint face, vec2 u) {
     vec3 tangent = emitter.tangent.xyz;
     vec3 bitangent = emitter.bitangent.xyz;
     if (emission_faces == 1u) {
-        float spread = sqrt(max(0.0f, 1.0f - emitter.axis.w * emitter.axis.w)) / emitter.axis.w;  // tan α
+        float h = emitter.axis.w;  // 1 − cos α
+        float spread = sqrt(max(0.0f, h * (2.0f - h))) / (1.0f - h);  // tan α
         return axis + spread * (s.x * tangent + s.y * bitangent);
     }
     float side = (face % 2u == 0u) ? 1.0f : -1.0f;
@@ -50,13 +51,126 @@ vec3 channel_mask() {
     return only;
 }
 
-// The power (W, RGB, where the spot profile is 1) a patch of face `face`
-// with corners u0, u1, u2 receives from the emitter: the photon emitter's
-// power over its cone or disk (photon power × photons) gives the intensity
-// I = P/(2π(1 − cos α)) or irradiance E = P/(πR²). The solid angle is
-// Van Oosterom and Strackee's, tan(Ω/2) = |a·(b×c)| / (1 + a·b + b·c + c·a),
-// in double precision: a patch a ten-thousandth of a radian across would
-// lose three digits in float.
+// face_direction in double precision, unit length.
+dvec3 face_direction_exact(Emitter emitter, uint face, vec2 u) {
+    dvec2 s = 2.0lf * dvec2(u) - 1.0lf;
+    dvec3 axis = dvec3(emitter.axis.xyz);
+    dvec3 tangent = dvec3(emitter.tangent.xyz);
+    dvec3 bitangent = dvec3(emitter.bitangent.xyz);
+    dvec3 direction;
+    if (emission_faces == 1u) {
+        float h = emitter.axis.w;
+        float spread = sqrt(max(0.0f, h * (2.0f - h))) / (1.0f - h);
+        direction = axis + double(spread) * (s.x * tangent + s.y * bitangent);
+    } else {
+        double side = (face % 2u == 0u) ? 1.0lf : -1.0lf;
+        if (face < 2u) direction = side * axis + s.x * tangent + s.y * bitangent;
+        else if (face < 4u) direction = side * tangent + s.x * bitangent + s.y * axis;
+        else direction = side * bitangent + s.x * axis + s.y * tangent;
+    }
+    return normalize(direction);
+}
+
+// The solid angle of the spherical triangle of unit directions a, b, c (great
+// circles are the gnomonic images of straight lines): Van Oosterom and
+// Strackee's tan(Ω/2) = |a·(b×c)| / (1 + a·b + b·c + c·a), in double
+// precision: a patch a ten-thousandth of a radian across would lose three
+// digits in float.
+float solid_angle(dvec3 a, dvec3 b, dvec3 c) {
+    double triple = abs(dot(a, cross(b - a, c - a)));
+    double denominator = 1.0lf + dot(a, b) + dot(b, c) + dot(c, a);
+    return 2.0f * atan(float(triple), float(denominator));
+}
+
+// Versine 1 − cos θ of the angle between unit vectors: |a − b|²/2, exact
+// where 1 − a·b would cancel.
+double versine_between(dvec3 a, dvec3 b) {
+    dvec3 apart = a - b;
+    return 0.5lf * dot(apart, apart);
+}
+
+float angle_of_versine(double h) { return 2.0f * asin(min(1.0f, sqrt(float(0.5lf * h)))); }
+
+// Of a triangle on which f is linear, the share where f ≥ 0 (the spot's hard
+// edge, f = vₒ − v, cut as the chord of its circle across a sub-triangle).
+float share_where_positive(float f0, float f1, float f2) {
+    int positive = int(f0 >= 0.0f) + int(f1 >= 0.0f) + int(f2 >= 0.0f);
+    if (positive == 3) return 1.0f;
+    if (positive == 0) return 0.0f;
+    // The lone corner on its side, and the share of the small triangle it cuts off.
+    float sign = positive == 1 ? 1.0f : -1.0f;
+    float a = sign * f0, b = sign * f1, c = sign * f2;
+    float lone = a >= 0.0f ? a : (b >= 0.0f ? b : c);
+    float other1 = a >= 0.0f ? b : a;
+    float other2 = a >= 0.0f ? c : (b >= 0.0f ? c : b);
+    float cut = lone * lone / ((lone - other1) * (lone - other2));
+    return positive == 1 ? cut : 1.0f - cut;
+}
+
+// The spot profile's mean over the patch with corners u0, u1, u2: 1 or 0
+// where the patch lies wholly inside the inner cone or outside the outer one
+// (every corner farther from each edge than the patch is wide), else the
+// profile integrated over kProfileCuts² sub-triangles of the patch (exact
+// partitions of its spherical triangle: the gnomonic map keeps straight
+// lines), weighted by their solid angles — a hard edge cut across each
+// sub-triangle by its chord, a soft one by the mean of its corners. The
+// corners alone (the profile at each, a third of the patch each) put the
+// power of a hard-edged spot 0.15–0.37% low.
+const int kProfileCuts = 8;
+
+float patch_profile(Emitter emitter, uint face, vec2 u0, vec2 u1, vec2 u2) {
+    if (emitter.origin.w != 0.0f || emitter.spot.w < 0.0f) return 1.0f;
+    dvec3 axis = normalize(dvec3(emitter.spot.xyz));
+    double outer = double(emitter.spot.w), inner = double(emitter.spot_edge.x);
+    bool hard = inner >= outer;
+    vec2 u[3] = vec2[3](u0, u1, u2);
+    dvec3 d[3];
+    for (int k = 0; k < 3; ++k) d[k] = face_direction_exact(emitter, face, u[k]);
+    float width = max(angle_of_versine(versine_between(d[0], d[1])),
+                      max(angle_of_versine(versine_between(d[1], d[2])), angle_of_versine(versine_between(d[2], d[0]))));
+    float outer_angle = angle_of_versine(outer), inner_angle = angle_of_versine(inner);
+    bool clear = true;  // no edge crosses the patch, and the profile is flat (1 or 0) over it
+    float profile = 0.0f;
+    for (int k = 0; k < 3; ++k) {
+        double h = versine_between(d[k], axis);
+        float angle = angle_of_versine(h);
+        clear = clear && abs(angle - outer_angle) > 1.001f * width + 1e-7f * outer_angle &&
+                (hard || (abs(angle - inner_angle) > 1.001f * width + 1e-7f * inner_angle && (h <= inner || h >= outer)));
+        profile = spot_profile_at_versine(float(h), emitter.spot.w, emitter.spot_edge.x);
+    }
+    if (clear) return profile;
+    float weighted = 0.0f, total = 0.0f;
+    const float n = float(kProfileCuts);
+    for (int j = 0; j < kProfileCuts; ++j)
+        for (int i = 0; i + j < kProfileCuts; ++i)
+            for (int up = 0; up < 2; ++up) {
+                if (up == 1 && i + j + 2 > kProfileCuts) continue;
+                ivec2 corner[3];
+                corner[0] = ivec2(i + up, j);
+                corner[1] = ivec2(i + 1, j + up);
+                corner[2] = ivec2(i, j + 1);
+                dvec3 c[3];
+                float f[3];
+                float mean = 0.0f;
+                for (int k = 0; k < 3; ++k) {
+                    vec2 at = u0 + (float(corner[k].x) / n) * (u1 - u0) + (float(corner[k].y) / n) * (u2 - u0);
+                    c[k] = face_direction_exact(emitter, face, at);
+                    double h = versine_between(c[k], axis);
+                    f[k] = float(outer - h);
+                    mean += spot_profile_at_versine(float(h), emitter.spot.w, emitter.spot_edge.x) / 3.0f;
+                }
+                float omega = solid_angle(c[0], c[1], c[2]);
+                weighted += omega * (hard ? share_where_positive(f[0], f[1], f[2]) : mean);
+                total += omega;
+            }
+    return total > 0.0f ? weighted / total : profile;
+}
+
+// The power (W, RGB) a patch of face `face` with corners u0, u1, u2 receives
+// from the emitter: the photon emitter's power over its cone or disk (photon
+// power × photons, where the spot profile is 1) gives the intensity
+// I = P/(2π(1 − cos α)) or irradiance E = P/(πR²); a cone's patch carries
+// I·Ω times the spot profile's mean over it (patch_profile).
 vec3 patch_power(Emitter emitter, uint face, vec2 u0, vec2 u1, vec2 u2) {
     vec3 power = emitter.photon_power.rgb * float(emitter.photons.y);
     if (emitter.origin.w != 0.0f) {
@@ -64,12 +178,8 @@ vec3 patch_power(Emitter emitter, uint face, vec2 u0, vec2 u1, vec2 u2) {
         return power / (3.14159265358979f * radius * radius) * (4.0f * radius * radius) *
                (0.5f * abs(twice_signed_area(u0, u1, u2)));
     }
-    dvec3 a = normalize(dvec3(face_direction(emitter, face, u0)));
-    dvec3 b = normalize(dvec3(face_direction(emitter, face, u1)));
-    dvec3 c = normalize(dvec3(face_direction(emitter, face, u2)));
-    double triple = abs(dot(a, cross(b - a, c - a)));
-    double denominator = 1.0lf + dot(a, b) + dot(b, c) + dot(c, a);
-    float solid_angle = 2.0f * atan(float(triple), float(denominator));
-    float cone = 2.0f * 3.14159265358979f * (1.0f - emitter.axis.w);
-    return power / cone * solid_angle;
+    float omega = solid_angle(face_direction_exact(emitter, face, u0), face_direction_exact(emitter, face, u1),
+                              face_direction_exact(emitter, face, u2));
+    float cone = 2.0f * 3.14159265358979f * emitter.axis.w;
+    return power / cone * omega * patch_profile(emitter, face, u0, u1, u2);
 }

@@ -81,6 +81,21 @@ void note_plane_crossing(vec3 a, vec3 b, INOUT(PlaneCrossing) crossing) {
     }
 }
 
+// The same for the ray x + t·d, 0 ≤ t ≤ reach, however far it goes (reach
+// may be EIKON_INFINITY): the plane's crossing solved for t.
+void note_ray_plane_crossing(vec3 x, vec3 d, float reach, INOUT(PlaneCrossing) crossing) {
+    for (uint r = 0u; r < receiver_count; ++r) {
+        float height = receiver_signed_distance(x, receivers[r].origin.xyz, receivers[r].normal.xyz);
+        float approach = dot(d, receivers[r].normal.xyz);
+        float t = approach < 0.0f ? -height / approach : 0.0f;
+        bool first = crossing.receiver < 0 && height > 0.0f && approach < 0.0f && t <= reach;  // lit side to back only
+        vec2 uv = receiver_map_coordinates(x + t * d, receivers[r].origin.xyz, receivers[r].axis_u.xyz,
+                                           receivers[r].axis_v.xyz, receivers[r].origin.w);
+        crossing.receiver = first ? int(r) : crossing.receiver;
+        crossing.map_uv = first ? uv : crossing.map_uv;
+    }
+}
+
 // Traces the ray of point u of face `face` of the emitter's domain to its
 // end. A tube's axis carries tube_power (W per unit of the ray's power
 // factor: the patch's power) and deposits it as fluence once its branch has
@@ -93,7 +108,7 @@ Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
     emission_ray(emitter, face, u, x, direction);
     PlaneCrossing outside = PlaneCrossing(-1, vec2(0.0f));
     channel_scale = channel < 0 ? dispersion.x : dispersion[channel];
-    vec3 power = spot_profile(emitter, direction) * channel_mask();
+    vec3 power = channel_mask();  // the spot's profile is the patch's (patch_power)
     vec3 source = branch < 0 ? power : vec3(0.0f);
     vec3 absorbed = vec3(0.0f);
     SurfaceLedger ledger = SurfaceLedger(0u, 0u, 0u, branch < 0);
@@ -124,7 +139,7 @@ Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
                 landed = flight.hit;
                 break;
             }
-            note_plane_crossing(x, x + flight.distance * d, outside);
+            note_ray_plane_crossing(x, d, flight.distance, outside);
             if (!flight.enters_grid) break;
             x = grid_entry_point(x, d, flight);
             x_lost = vec3(0.0f);

@@ -436,6 +436,8 @@ TEST_F(Cli, MaxStepsNotTheDriversLoopCapStopsPhotons) {
     EXPECT_EQ(line["photons"]["count"]["cut_off"].get<long long>(), 0);
     EXPECT_GT(line["photons"]["count"]["received"].get<long long>(), 500);
     EXPECT_LT(line["photons"]["energy_balance_error"].get<double>(), 1e-6);
+    EXPECT_GT(line["photons"]["power_w"]["stated"][1].get<double>(), 0.0);
+    EXPECT_LT(line["photons"]["emission_error"].get<double>(), 1e-3);
     EXPECT_TRUE(line["photons"]["resumed"].contains("photons"));
 }
 
