@@ -31,8 +31,9 @@
 // sRGB encoding (LdrImage), row 0 at the top; BOS also writes the
 // background without the medium (DiagnosticReference) and per pixel its
 // displacement (DiagnosticLanding). The shadowgraph's rays start at the
-// pixels' corners, (width + 1) × (height + 1) of them, and write where they
-// land and their transmittance (DiagnosticLanding) for
+// pixels' corners over a beam `beam_margin` pixels wider than the picture on
+// every side, (width + 1 + 2·margin) × (height + 1 + 2·margin) of them, and
+// write where they land and their transmittance (DiagnosticLanding) for
 // shadowgraph_screen.comp.
 // Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -188,15 +189,18 @@ Measured march(vec3 start, vec3 direction) {
 float pixel_size() { return 2.0f * camera.position.w / float(camera.image.y); }
 
 #if EIKON_INSTRUMENT == EIKON_SHADOWGRAPH
-// One ray per pixel corner (i, j) of the (width + 1) × (height + 1).
+uniform uint beam_margin;  // pixels of the beam beside the picture on every side
+
+// One ray per pixel corner of the beam, (width + 1 + 2·margin) × (height + 1 + 2·margin).
 void main() {
     uvec2 corner = gl_GlobalInvocationID.xy;
-    if (any(greaterThan(corner, camera.image.xy))) return;
-    vec2 ndc = vec2(corner) / vec2(camera.image.xy) * 2.0f - 1.0f;
+    uvec2 corners = camera.image.xy + 2u * beam_margin;
+    if (any(greaterThan(corner, corners))) return;
+    vec2 ndc = (vec2(corner) - float(beam_margin)) / vec2(camera.image.xy) * 2.0f - 1.0f;
     vec3 start = camera.position.xyz + ndc.x * camera.position.w * camera.forward.w * camera.right.xyz -
                  ndc.y * camera.position.w * camera.up.xyz;
     Measured measured = march(start, camera.forward.xyz);
-    uint i = corner.y * (camera.image.x + 1u) + corner.x;
+    uint i = corner.y * (corners.x + 1u) + corner.x;
     rays[i] = vec4(measured.deflection, measured.opd, measured.ended);
     landing[2u * i] = vec4(measured.landing / pixel_size(), 0.0f, 0.0f);
     landing[2u * i + 1u] = vec4(exp(-measured.optical_depth), measured.ended);

@@ -2,8 +2,10 @@
 // "shadowgraph"): the light of diagnostic_rays.comp's corner rays, spread
 // over the screen by the intensity law ([Settles01] ch. 6; as the
 // wavefront pass spreads a patch's power, common/wavefront_deposits.glsl).
-// Each pixel's square of the parallel beam carries the power I₀·T of one
-// pixel (T its corners' mean transmittance); its corner rays land on the
+// The beam is `beam_margin` pixels wider than the picture on every side, so
+// that light bent onto the picture from beside it is there (light bent
+// farther is not). Each pixel's square of the parallel beam carries the
+// power I₀·T of one pixel (T its corners' mean transmittance); its corner rays land on the
 // screen at four points, and the square's two triangles (corners 00–10–11
 // and 00–11–01) each carry half of it onto the triangle their corners span
 // there, at the irradiance of its power over its area — the piecewise-
@@ -14,7 +16,7 @@
 // that each pixel holds its mean irradiance and the power is kept exactly.
 // A square with a corner ray cut by the step cap carries nothing.
 //
-// EIKON_SCREEN_PASS 0: one invocation per square, deposits; 1: one per
+// EIKON_SCREEN_PASS 0: one invocation per square of the beam, deposits; 1: one per
 // pixel, I/I₀ from the tallies into HdrImage and, exposed so that I₀ is
 // mid-grey, LdrImage (row 0 at the top). Program options: EIKON_SCREEN_PASS, EIKON_LOOP_BUDGET.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -78,10 +80,13 @@ void deposit_triangle(vec2 a, vec2 b, vec2 c, vec3 power) {
         }
 }
 
+uniform uint beam_margin;  // pixels of the beam beside the picture on every side
+
 void main() {
     uvec2 square = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(square, camera.image.xy))) return;
-    uint stride = camera.image.x + 1u;
+    uvec2 squares = camera.image.xy + 2u * beam_margin;
+    if (any(greaterThanEqual(square, squares))) return;
+    uint stride = squares.x + 1u;
     uint corners[4] = uint[4](square.y * stride + square.x, square.y * stride + square.x + 1u,
                               (square.y + 1u) * stride + square.x, (square.y + 1u) * stride + square.x + 1u);
     vec2 lands[4];
@@ -91,7 +96,7 @@ void main() {
         vec4 light = landing[2u * corners[k] + 1u];
         if (light.w == 0.0f) return;  // cut by the step cap: where its light went is not known
         uvec2 corner = square + uvec2(uint(k & 1), uint(k >> 1));
-        lands[k] = vec2(corner) + vec2(moved.x, -moved.y);  // the image's up is the pixels' −y
+        lands[k] = vec2(corner) - float(beam_margin) + vec2(moved.x, -moved.y);  // the image's up is the pixels' −y
         transmittance += 0.25f * light.xyz;
     }
     deposit_triangle(lands[0], lands[1], lands[3], 0.5f * transmittance);

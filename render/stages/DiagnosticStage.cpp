@@ -65,7 +65,7 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
         deposit_ = gl::compileComputeProgram("shadowgraph_screen.comp",
                                              {{"EIKON_SCREEN_PASS", "0"}, {"EIKON_LOOP_BUDGET", loopBudget}});
         resolve_ = gl::compileComputeProgram("shadowgraph_screen.comp", {{"EIKON_SCREEN_PASS", "1"}});
-        const std::size_t corners = (width + 1) * (height + 1);
+        const std::size_t corners = (width + 1 + 2 * kBeamMargin) * (height + 1 + 2 * kBeamMargin);
         rays_ = gl::Buffer(corners * sizeof(glm::vec4),
                            gl::GpuResource{"render.width × render.height", "the shadowgraph's rays"});
         landing_ = gl::Buffer(2 * corners * sizeof(glm::vec4),
@@ -138,6 +138,7 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         case Instrument::ColourFilter: glUniform1f(program_.uniform("sensitivity"), static_cast<float>(sensitivity)); break;
         case Instrument::Shadowgraph:
             glUniform1f(program_.uniform("plane_depth"), static_cast<float>(planeDepth(cameraDesc_)));
+            glUniform1ui(program_.uniform("beam_margin"), kBeamMargin);
             landing_.bindStorage(layout::kDiagnosticLanding);
             break;
         case Instrument::BackgroundOriented: {
@@ -153,13 +154,14 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         }
     }
     if (instrumentOf(diagnostic_) == Instrument::Shadowgraph) {
-        program_.dispatchCovering(width + 1, height + 1, 1, 8, 8, 1);
+        program_.dispatchCovering(width + 1 + 2 * kBeamMargin, height + 1 + 2 * kBeamMargin, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         screen_.clearToZero();
         screen_.bindStorage(layout::kDiagnosticScreen);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         deposit_.use();
-        deposit_.dispatchCovering(width, height, 1, 8, 8, 1);
+        glUniform1ui(deposit_.uniform("beam_margin"), kBeamMargin);
+        deposit_.dispatchCovering(width + 2 * kBeamMargin, height + 2 * kBeamMargin, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         resolve_.use();
         resolve_.dispatchCovering(width, height, 1, 8, 8, 1);

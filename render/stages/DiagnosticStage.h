@@ -34,6 +34,10 @@ struct DiagnosticMeasurements {
 
 class DiagnosticStage {
 public:
+    // The shadowgraph's beam beside the picture on every side, in pixels:
+    // light bent onto the picture from at most this far is on it.
+    static constexpr std::size_t kBeamMargin = 8;
+
     // The scene's diagnostic and orthographic camera (checked by the scene parser).
     DiagnosticStage(const Scene& scene, const FieldTextures& fields);
 
@@ -46,7 +50,8 @@ public:
     DiagnosticMeasurements downloadMeasurements() const;
     // Per ray (ε right, ε up, OPD, how the ray ended: 1 crossed the grid,
     // 2 missed it, 0 cut by the step cap), as the pass wrote it: per pixel,
-    // or for the shadowgraph per pixel corner, (width + 1) × (height + 1).
+    // or for the shadowgraph per pixel corner of its beam, kBeamMargin
+    // pixels wider than the picture on every side.
     std::vector<glm::vec4> downloadRays() const;
     // BOS: the background seen without the medium (sRGB, as the picture).
     Image8 downloadReference() const;
