@@ -29,6 +29,7 @@
 #include <glm/trigonometric.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -186,6 +187,136 @@ TEST(Shadowgraph, AStrongLensCastsItsCausticWhereTheMapFolds) {
         EXPECT_GT(at(side * fold), 2.0 * at(side * (fold + 1))) << "side " << side;
         EXPECT_GT(std::max(at(side * fold), at(side * (fold - 1))), 2.0) << "the ring is bright, side " << side;
     }
+}
+
+// BOS: a pinhole 2 m from the bump's centre (Z_A), the background 2 m
+// beyond it (Z_D: 1.5 m behind the grid's far face), a view 0.8 m tall at
+// the bump (f_px = 320 on 128 rows).
+constexpr double kCameraZ = 2.0, kBackgroundZ = -2.0, kHalfView = 0.2;  // tan(fov / 2)
+
+Scene bosScene(int size, double dotDiameter) {
+    DiagnosticDesc bos;
+    bos.type = DiagnosticDesc::Type::Bos;
+    bos.backgroundDistance = -0.5 - kBackgroundZ;
+    bos.dotDiameter = dotDiameter;
+    Scene scene = bumpScene(size, size, bos);
+    scene.camera.projection = CameraDesc::Projection::Perspective;
+    scene.camera.fovDeg = glm::degrees(2.0 * std::atan(kHalfView));
+    return scene;
+}
+
+// The closed form's displacement at pixel (i, j), px on the image's right and up.
+glm::dvec2 bosDisplacement(const Scene& scene, const Bump& bump, int i, int j) {
+    const glm::dvec3 camera(0.0, 0.0, kCameraZ);
+    const double pixel = 2.0 * kHalfView / scene.render.height;  // at unit distance
+    const glm::dvec3 d = glm::normalize(glm::dvec3((i + 0.5 - 0.5 * scene.render.width) * pixel,
+                                                   (0.5 * scene.render.height - j - 0.5) * pixel, -1.0));
+    const glm::dvec3 closest = camera + glm::dot(bump.centre - camera, d) * d;
+    const glm::dvec3 impact = closest - bump.centre;  // square to d
+    const double opd = bump.peakOpd() * std::exp(-glm::dot(impact, impact) / (kBumpSigma * kBumpSigma));
+    const glm::dvec3 bent = glm::normalize(d - 2.0 / (kBumpSigma * kBumpSigma) * opd * impact);
+    const glm::dvec3 landed = closest + (kBackgroundZ - closest.z) / bent.z * bent;
+    const glm::dvec3 straight = camera + (kBackgroundZ - camera.z) / d.z * d;
+    const double depth = kCameraZ - kBackgroundZ;
+    return -glm::dvec2(landed - straight) / (depth * pixel);
+}
+
+struct BosFrame {
+    std::vector<float> displacement;  // px, 2 per pixel
+    std::vector<float> measured;      // I/I₀ with the medium, RGBA
+    std::vector<std::uint8_t> reference;
+};
+
+BosFrame bosOf(const Scene& scene, const Bump& bump) {
+    glContext();
+    const FieldSet fields = sampledBump(scene, bump);
+    render::FrameRenderer renderer(scene, fields);
+    renderer.render(fields);
+    const render::DiagnosticStage& stage = *renderer.diagnosticStage();
+    return {stage.downloadMeasurements().displacement, stage.downloadHdr(), stage.downloadReference().rgba};
+}
+
+// A = 1e-3: 0.24 px at the peak. The paraxial error is a part in ~A (0.1%),
+// the grid's own error in the deflection 0.2% RMS of its peak.
+TEST(BackgroundOrientedSchlieren, TheDisplacementIsTheSetupsClosedForm) {
+    const int size = 128;
+    const Scene scene = bosScene(size, 0.02);
+    Bump bump;
+    bump.amplitude = 1e-3;
+    const BosFrame frame = bosOf(scene, bump);
+    ASSERT_EQ(frame.displacement.size(), 2u * size * size);
+    double peak = 0.0;
+    std::vector<glm::dvec2> expected;
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            expected.push_back(bosDisplacement(scene, bump, i, j));
+            peak = std::max(peak, glm::length(expected.back()));
+        }
+    double squares = 0.0, worst = 0.0;
+    for (std::size_t p = 0; p < expected.size(); ++p) {
+        const glm::dvec2 found(frame.displacement[2 * p], frame.displacement[2 * p + 1]);
+        const double error = glm::length(found - expected[p]);
+        squares += error * error;
+        worst = std::max(worst, error);
+    }
+    // Near the axis: f_px·Z_D·ε/(Z_A + Z_D), ε the parallel light's peak deflection.
+    const double focalPixels = size / (2.0 * kHalfView), za = kCameraZ, zd = -kBackgroundZ;
+    reportFigure("bos_peak_displacement_px", peak);
+    reportFigure("bos_small_angle_peak_displacement_px", focalPixels * zd * bump.peakDeflection() / (za + zd));
+    reportFigure("bos_displacement_rms_error_of_peak", std::sqrt(squares / static_cast<double>(expected.size())) / peak);
+    reportFigure("bos_displacement_worst_error_of_peak", worst / peak);
+    EXPECT_LE(worst, 0.01 * peak);
+}
+
+double srgbDecode(std::uint8_t value) {
+    const double v = value / 255.0;
+    return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
+// The pictures carry the displacement: the background with the medium at
+// pixel p is the reference picture at p − Δ(p) (bilinear between its pixel
+// centres; Δ's up is the rows' −), far closer than at p itself wherever the
+// pattern moves half a pixel or more (A = 1e-2: 2.4 px at the peak; dots
+// six pixels across). Away from the bump the two pictures are the same,
+// and the pattern is dots on white, neither blank nor black.
+TEST(BackgroundOrientedSchlieren, ThePicturesAreTheBackgroundMovedByTheDisplacement) {
+    const int size = 128;
+    const Scene scene = bosScene(size, 6.0 * (kCameraZ - kBackgroundZ) * 2.0 * kHalfView / size);
+    Bump bump;
+    bump.amplitude = 1e-2;
+    const BosFrame frame = bosOf(scene, bump);
+    const auto reference = [&](double x, double y) {  // pixel coordinates of centres, bilinear
+        const int i = std::clamp(static_cast<int>(std::floor(x)), 0, size - 2);
+        const int j = std::clamp(static_cast<int>(std::floor(y)), 0, size - 2);
+        const double fx = x - i, fy = y - j;
+        const auto at = [&](int a, int b) { return srgbDecode(frame.reference[4 * static_cast<std::size_t>(b * size + a)]); };
+        return (1 - fy) * ((1 - fx) * at(i, j) + fx * at(i + 1, j)) + fy * ((1 - fx) * at(i, j + 1) + fx * at(i + 1, j + 1));
+    };
+    double moved = 0.0, unmoved = 0.0, far = 0.0, mean = 0.0;
+    int pixels = 0, farPixels = 0;
+    for (int j = 2; j < size - 2; ++j)
+        for (int i = 2; i < size - 2; ++i) {
+            const std::size_t p = static_cast<std::size_t>(j * size + i);
+            const glm::dvec2 delta(frame.displacement[2 * p], frame.displacement[2 * p + 1]);
+            const double seen = frame.measured[4 * p];
+            mean += srgbDecode(frame.reference[4 * p]);
+            if (glm::length(delta) < 1e-2) {
+                far += std::abs(seen - srgbDecode(frame.reference[4 * p]));
+                ++farPixels;
+            }
+            if (glm::length(delta) < 0.5) continue;
+            moved += std::abs(seen - reference(i - delta.x, j + delta.y));
+            unmoved += std::abs(seen - srgbDecode(frame.reference[4 * p]));
+            ++pixels;
+        }
+    mean /= (size - 4) * (size - 4);
+    reportFigure("bos_picture_moved_over_unmoved_difference", moved / unmoved);
+    EXPECT_GT(pixels, 500);
+    EXPECT_LT(moved, 0.2 * unmoved);
+    EXPECT_GT(farPixels, 400);
+    EXPECT_LT(far / farPixels, 0.01) << "8-bit sRGB against the linear picture";
+    EXPECT_GT(mean, 0.3);
+    EXPECT_LT(mean, 0.95);
 }
 
 }  // namespace
