@@ -1,6 +1,6 @@
 // The background of background-oriented schlieren (docs/scene-format.md,
-// `diagnostic`, "bos"): seeded random dark dots on white ([Raffel15] §2:
-// a random-dot pattern whose dots span a few pixels on the image). The
+// `diagnostic`, "bos"): seeded random dark dots on white, a random-dot
+// pattern whose dots span a few pixels on the image ([Raffel15]). The
 // plane is cut into square cells of side `dot_cell`, one dot a cell at a
 // place drawn from (seed, cell) by the PCG hash; a dot darkens the white
 // by exp(−8·r²/d²) at r from its centre (d = `dot_diameter`, its 1/e²

@@ -129,9 +129,9 @@ TEST(Shadowgraph, AWeakLensShowsMinusLTimesTheLaplacianOfTheOpticalPath) {
 
 // A strong lens, 2κ = 0.4 (I/I₀ = 2.8 on the axis), against the thin lens's
 // exact intensity law, at the same κ from bumps of A = 1e-2, 1e-3, 1e-4
-// (the screen 1.7, 16.9 and 169 m on): the paraxial error — the ray moves
+// (L = 1.7, 16.9 and 169 m): the paraxial error — the ray moves
 // ~ε·σ inside the bump, so the thin-lens map is off by a part in ~A — must
-// shrink with A to the grid's own error, 2% of the peak contrast at 1e-4.
+// shrink with A to the grid's own error, within 1% of the peak contrast at 1e-4.
 TEST(Shadowgraph, AStrongLensFollowsTheExactIntensityLawAsTheParaxialErrorShrinks) {
     const double amplitudes[] = {1e-2, 1e-3, 1e-4};
     const char* const names[] = {"1e-2", "1e-3", "1e-4"};
