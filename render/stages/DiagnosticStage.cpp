@@ -62,9 +62,13 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
     const auto width = static_cast<std::size_t>(render_.width), height = static_cast<std::size_t>(render_.height);
     if (diagnostic_.type == DiagnosticDesc::Type::Shadowgraph) {
-        deposit_ = gl::compileComputeProgram("shadowgraph_screen.comp",
-                                             {{"EIKON_SCREEN_PASS", "0"}, {"EIKON_LOOP_BUDGET", loopBudget}});
-        resolve_ = gl::compileComputeProgram("shadowgraph_screen.comp", {{"EIKON_SCREEN_PASS", "1"}});
+        // Without extinction T = 1 in every channel, and the screen tallies one.
+        const std::string extinction = fields.hasExtinction() ? "1" : "0";
+        deposit_ = gl::compileComputeProgram(
+            "shadowgraph_screen.comp",
+            {{"EIKON_SCREEN_PASS", "0"}, {"EIKON_HAS_EXTINCTION", extinction}, {"EIKON_LOOP_BUDGET", loopBudget}});
+        resolve_ = gl::compileComputeProgram("shadowgraph_screen.comp",
+                                             {{"EIKON_SCREEN_PASS", "1"}, {"EIKON_HAS_EXTINCTION", extinction}});
         const std::size_t corners = (width + 1 + 2 * kBeamMargin) * (height + 1 + 2 * kBeamMargin);
         rays_ = gl::Buffer(corners * sizeof(glm::vec4),
                            gl::GpuResource{"render.width × render.height", "the shadowgraph's rays"});

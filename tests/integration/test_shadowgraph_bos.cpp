@@ -189,6 +189,27 @@ TEST(Shadowgraph, AStrongLensCastsItsCausticWhereTheMapFolds) {
     }
 }
 
+// An absorbing medium, κ = (0.5, 1, 2) /m over the grid's 1 m depth and no
+// bump: every pixel of the screen gets I/I₀ = e^(−κ) per channel (the
+// screen then tallies each channel on its own).
+TEST(Shadowgraph, AbsorptionDimsEachChannelByItsTransmittance) {
+    glContext();
+    const Scene scene = bumpScene(16, 16, shadowgraph(1.0));
+    FieldSet fields = sampledBump(scene, Bump{0.0});
+    const Rgb kappa(0.5, 1.0, 2.0);
+    fields.extinction.assign(3 * fields.grid.cellCount(), 0.0f);
+    for (std::size_t c = 0; c < fields.grid.cellCount(); ++c)
+        for (int channel = 0; channel < 3; ++channel)
+            fields.extinction[3 * c + channel] = static_cast<float>(kappa[channel]);
+    ++fields.extinctionVersion;
+    render::FrameRenderer renderer(scene, fields);
+    renderer.render(fields);
+    const std::vector<float> hdr = renderer.diagnosticStage()->downloadHdr();
+    for (std::size_t p = 0; p < 16 * 16; ++p)
+        for (int channel = 0; channel < 3; ++channel)
+            ASSERT_NEAR(hdr[4 * p + channel], std::exp(-kappa[channel]), 1e-5) << "pixel " << p << ", channel " << channel;
+}
+
 // BOS: a pinhole 2 m from the bump's centre (Z_A), the background 2 m
 // beyond it (Z_D: 1.5 m behind the grid's far face), a view 0.8 m tall at
 // the bump (f_px = 320 on 128 rows).
