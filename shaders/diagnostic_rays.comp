@@ -1,25 +1,40 @@
-// Diagnostics (docs/scene-format.md, `diagnostic`): parallel light through
-// the test volume, one ray per pixel from the orthographic camera's image
-// plane along its axis, marched through the graded field by the camera
-// rays' leapfrog (common/integrators.glsl; view_rays.comp) with fixed steps
-// of `step_length`, the last one cut at the grid's far face. Along the way it
-// sums the optical path difference OPD = ∫ (n − n_ref) ds by the trapezoid
-// rule over each step (second order, as the leapfrog is); where it leaves
-// the grid (the medium is uniform beyond) its deflection ε is the change of
-// its unit direction on the image's right and up axes. Where the scene
-// has extinction it also sums the optical depth ∫κ ds, by the same rule.
-// The instrument (common/diagnostic_instruments.glsl) turns (OPD, ε, the
-// transmittance) into the pixel's I/I₀.
+// Diagnostics (docs/scene-format.md, `diagnostic`): light through the
+// test volume, one ray per pixel along the camera's rays — parallel ones
+// from the orthographic camera's image plane, or from a perspective
+// camera's pinhole for background-oriented schlieren — marched through the
+// graded field by the camera rays' leapfrog (common/integrators.glsl;
+// view_rays.comp) with fixed steps of `step_length`, the last one cut at the
+// grid's far face. Along the way it sums the optical path difference
+// OPD = ∫ (n − n_ref) ds by the trapezoid rule over each step (second
+// order, as the leapfrog is); where it leaves the grid (the medium is
+// uniform beyond) its deflection ε is the change of its unit direction on
+// its frame's right and up axes. Where the scene has extinction it also
+// sums the optical depth ∫κ ds, by the same rule. The instrument
+// (common/diagnostic_instruments.glsl) turns (OPD, ε, the transmittance)
+// into the pixel's I/I₀.
 //
-// The ray is marched in the camera's frame (x right, y up, z forward), the
-// field's gradient turned into it, so that ε — parts in 1e4 of a unit
-// vector — is carried in float32 with its own precision rather than as the
-// difference of two world directions near 1; and OPD sums δn as the field
-// holds it, since n_ref + δn in float32 rounds δn.
+// Shadowgraph and BOS follow each ray on, straight, from where it leaves the
+// grid to a plane across the camera's axis `plane_depth` from the camera
+// (the screen, the background): where it lands there, relative to where the
+// straight ray would, in pixels on the image's right and up axes.
 //
-// Writes per pixel (ε_right, ε_up, OPD, how the ray ended: 1 crossed the
-// grid, 2 missed it, 0 cut by the step cap or the loop budget), the linear
-// I/I₀ (HdrImage) and its sRGB encoding (LdrImage); row 0 at the top.
+// The ray is marched in its own frame (x right, y up, z along its first
+// direction: for parallel light the camera's frame), the field's gradient
+// turned into it, so that ε — parts in 1e4 of a unit vector — is carried in
+// float32 with its own precision rather than as the difference of two world
+// directions near 1; and OPD sums δn as the field holds it, since
+// n_ref + δn in float32 rounds δn.
+//
+// Writes per ray (ε_right, ε_up, OPD, how the ray ended: 1 crossed the
+// grid, 2 missed it, 0 cut by the step cap or the loop budget). Every
+// instrument but the shadowgraph writes the linear I/I₀ (HdrImage) and its
+// sRGB encoding (LdrImage), row 0 at the top; BOS also writes the
+// background without the medium (DiagnosticReference) and per pixel its
+// displacement (DiagnosticLanding). The shadowgraph's rays start at the
+// pixels' corners over a beam `beam_margin` pixels wider than the picture on
+// every side, (width + 1 + 2·margin) × (height + 1 + 2·margin) of them, and
+// write where they land and their transmittance (DiagnosticLanding) for
+// shadowgraph_screen.comp.
 // Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET.
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -31,10 +46,13 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/diagnostic_instruments.glsl"
 
 vec3 ray_origin;      // world position of the ray's frame's origin, where it entered the grid
+vec3 ray_right;       // the frame's axes: its first direction, and the image's right and up made square to it
+vec3 ray_up;
+vec3 ray_forward;
 float sampled_delta;  // δn at field_at's latest point
 
 vec3 world_direction(vec3 local) {
-    return local.x * camera.right.xyz + local.y * camera.up.xyz + local.z * camera.forward.xyz;
+    return local.x * ray_right + local.y * ray_up + local.z * ray_forward;
 }
 
 // (∇n, n) at a point of the ray's frame, the gradient on the frame's axes.
@@ -42,15 +60,26 @@ vec4 field_at(vec3 local) {
     vec4 sample_ = sample_gradient_and_delta(ray_origin + world_direction(local));
     sampled_delta = sample_.w;
     vec3 gradient = sample_.xyz;
-    return vec4(dot(gradient, camera.right.xyz), dot(gradient, camera.up.xyz), dot(gradient, camera.forward.xyz),
+    return vec4(dot(gradient, ray_right), dot(gradient, ray_up), dot(gradient, ray_forward),
                 reference_index() + sample_.w);
 }
 
 #include "common/integrators.glsl"
 
 layout(std430, binding = kDiagnosticRays) writeonly buffer DiagnosticRays { vec4 rays[]; };
+#if EIKON_INSTRUMENT >= EIKON_SHADOWGRAPH
+// Shadowgraph: per corner ray (landing right, up in pixels; 0; 0), (T rgb, how it ended).
+// BOS: per pixel (displacement right, up in pixels; 0; 0) and nothing.
+layout(std430, binding = kDiagnosticLanding) writeonly buffer DiagnosticLanding { vec4 landing[]; };
+uniform float plane_depth;  // m from the camera (its pinhole or image plane) along its axis
+#endif
+#if EIKON_INSTRUMENT != EIKON_SHADOWGRAPH
 layout(std430, binding = kHdrImage) writeonly buffer HdrImage { vec4 hdr_radiance[]; };
 layout(std430, binding = kLdrImage) writeonly buffer LdrImage { uint ldr_rgba8[]; };
+#endif
+#if EIKON_INSTRUMENT == EIKON_BOS
+layout(std430, binding = kDiagnosticReference) writeonly buffer DiagnosticReference { uint reference_rgba8[]; };
+#endif
 
 uniform float step_length;
 uniform uint max_steps;
@@ -59,18 +88,51 @@ const float kRayCut = 0.0f;
 const float kRayCrossed = 1.0f;
 const float kRayMissed = 2.0f;
 
-void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, camera.image.xy))) return;
-    vec3 start = camera_ray_origin(pixel);
-    vec2 span = grid_ray_interval(start, camera.forward.xyz);
+struct Measured {
+    float opd;
+    vec3 optical_depth;
+    vec2 deflection;
+    float ended;
+    vec2 landing;  // on the plane, m along the camera's right and up from the straight ray's point
+};
+
+// Where the ray, leaving the grid at x with direction v (its frame),
+// reaches the plane `plane_depth` from the camera, less where the straight
+// ray (0, 0, s) reaches it: both in the plane, so the difference is square
+// to the camera's axis, its part along the ray's axis found from the other
+// two without cancelling.
+vec2 landing_offset(vec3 x, vec3 v) {
+#if EIKON_INSTRUMENT >= EIKON_SHADOWGRAPH
+    vec3 axis = vec3(dot(camera.forward.xyz, ray_right), dot(camera.forward.xyz, ray_up),
+                     dot(camera.forward.xyz, ray_forward));
+    float depth = plane_depth - dot(ray_origin - camera.position.xyz, camera.forward.xyz);
+    vec3 direction = normalize(v);
+    float t = (depth - dot(x, axis)) / dot(direction, axis);
+    vec2 across = x.xy + t * direction.xy;
+    vec3 offset = world_direction(vec3(across, -(across.x * axis.x + across.y * axis.y) / axis.z));
+    return vec2(dot(offset, camera.right.xyz), dot(offset, camera.up.xyz));
+#else
+    return vec2(0.0f);
+#endif
+}
+
+// The ray from `start` along `direction`, marched through the grid.
+Measured march(vec3 start, vec3 direction) {
+    ray_forward = direction;
+    ray_right = normalize(cross(direction, camera.up.xyz));
+    ray_up = cross(ray_right, direction);
+    vec2 span = grid_ray_interval(start, direction);
+    Measured measured;
+    measured.opd = 0.0f;
+    measured.optical_depth = vec3(0.0f);
+    measured.deflection = vec2(0.0f);
+    measured.ended = kRayMissed;
+    measured.landing = vec2(0.0f);
     float opd = 0.0f;
     vec3 optical_depth = vec3(0.0f);
-    vec2 deflection = vec2(0.0f);
-    float ended = kRayMissed;
     if (span.x < span.y && span.y > 0.0f) {
-        ended = kRayCut;
-        ray_origin = start + max(span.x, 0.0f) * camera.forward.xyz;
+        float ended = kRayCut;
+        ray_origin = start + max(span.x, 0.0f) * direction;
         vec3 x = vec3(0.0f);
         vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
         vec4 field = field_at(x);
@@ -114,12 +176,57 @@ void main() {
                 break;
             }
         }
-        deflection = normalize(v).xy;
+        measured.opd = opd;
+        measured.optical_depth = optical_depth;
+        measured.deflection = normalize(v).xy;
+        measured.ended = ended;
+        if (ended == kRayCrossed) measured.landing = landing_offset(x, v);
     }
+    return measured;
+}
+
+// The image plane's size of a pixel: m (orthographic), or at unit distance from the pinhole.
+float pixel_size() { return 2.0f * camera.position.w / float(camera.image.y); }
+
+#if EIKON_INSTRUMENT == EIKON_SHADOWGRAPH
+uniform uint beam_margin;  // pixels of the beam beside the picture on every side
+
+// One ray per pixel corner of the beam, (width + 1 + 2·margin) × (height + 1 + 2·margin).
+void main() {
+    uvec2 corner = gl_GlobalInvocationID.xy;
+    uvec2 corners = camera.image.xy + 2u * beam_margin;
+    if (any(greaterThan(corner, corners))) return;
+    vec2 ndc = (vec2(corner) - float(beam_margin)) / vec2(camera.image.xy) * 2.0f - 1.0f;
+    vec3 start = camera.position.xyz + ndc.x * camera.position.w * camera.forward.w * camera.right.xyz -
+                 ndc.y * camera.position.w * camera.up.xyz;
+    Measured measured = march(start, camera.forward.xyz);
+    uint i = corner.y * (corners.x + 1u) + corner.x;
+    rays[i] = vec4(measured.deflection, measured.opd, measured.ended);
+    landing[2u * i] = vec4(measured.landing / pixel_size(), 0.0f, 0.0f);
+    landing[2u * i + 1u] = vec4(exp(-measured.optical_depth), measured.ended);
+}
+#else
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, camera.image.xy))) return;
+    Measured measured = march(camera_ray_origin(pixel), camera_ray_direction(pixel));
     uint i = pixel.y * camera.image.x + pixel.x;
-    rays[i] = vec4(deflection, opd, ended);
+    rays[i] = vec4(measured.deflection, measured.opd, measured.ended);
+    vec3 transmittance = exp(-measured.optical_depth);
+#if EIKON_INSTRUMENT == EIKON_BOS
+    // The background point this pixel sees without the medium, and with it.
+    vec3 offset = camera_image_offset(pixel);
+    vec2 straight = plane_depth * vec2(dot(offset, camera.right.xyz), dot(offset, camera.up.xyz));
+    vec3 intensity = transmittance * background_intensity(straight + measured.landing);
+    // The feature seen here with the medium is, without it, seen where its
+    // straight ray points: the apparent displacement, reference to measurement.
+    landing[i] = vec4(-measured.landing / (plane_depth * pixel_size()), 0.0f, 0.0f);
+    reference_rgba8[i] = packUnorm4x8(vec4(srgb_encode(vec3(background_intensity(straight))), 1.0f));
+#else
     float u = (float(pixel.x) + 0.5f) / float(camera.image.x);
-    vec3 intensity = instrument_intensity(opd, deflection, u, exp(-optical_depth));
+    vec3 intensity = instrument_intensity(measured.opd, measured.deflection, u, transmittance);
+#endif
     hdr_radiance[i] = vec4(intensity, 1.0f);
     ldr_rgba8[i] = packUnorm4x8(vec4(srgb_encode(intensity), 1.0f));
 }
+#endif

@@ -79,7 +79,7 @@ def add_case(name, text, exit_code, message="", overrides=(), frames=1, env=None
 def add_scene_case(name, scene, exit_code, message_path="", overrides=(), env=None):
     """A scene case whose refusal names this scene's file and `message_path`."""
     message = f"{name}.json: {message_path}" if exit_code == 2 and message_path else ""
-    add_case(name, scene_text(scene), exit_code, message, overrides, env)
+    add_case(name, scene_text(scene), exit_code, message, overrides, env=env)
 
 
 def leaves(node, path=""):
@@ -648,6 +648,35 @@ def message_cases():
     add_scene_case("keys_wavefront_max_patches_past_storage_block", scene, 2, "tracer.wavefront.max_patches")
 
 
+# --- diagnostics: the shadowgraph and BOS ------------------------------------------
+
+def diagnostic_cases():
+    """The shadowgraph's and BOS's keys out of range, of the wrong type, or
+    beside the wrong camera: each refused at its key path."""
+    smooth = copy.deepcopy(BASE)
+    smooth["objects"][0]["surface"] = "smooth"
+    orthographic = copy.deepcopy(smooth)
+    orthographic["camera"] = {"position": [0, 0.5, 2], "target": [0, 0.5, 0], "projection": "orthographic",
+                              "width_m": 1.0}
+    for name, camera, diagnostic, path in (
+            ("diagnostic_shadowgraph_screen_distance_zero", orthographic,
+             {"type": "shadowgraph", "screen_distance": 0}, "diagnostic.screen_distance"),
+            ("diagnostic_shadowgraph_screen_distance_text", orthographic,
+             {"type": "shadowgraph", "screen_distance": "1 m"}, "diagnostic.screen_distance"),
+            ("diagnostic_shadowgraph_perspective", smooth, {"type": "shadowgraph"}, "camera"),
+            ("diagnostic_bos_orthographic", orthographic, {"type": "bos"}, "camera.projection"),
+            ("diagnostic_bos_dot_density_past_half", smooth, {"type": "bos", "dot_density": 0.75},
+             "diagnostic.dot_density"),
+            ("diagnostic_bos_seed_fraction", smooth, {"type": "bos", "seed": 2.5}, "diagnostic.seed"),
+            ("diagnostic_bos_seed_past_32_bits", smooth, {"type": "bos", "seed": 4294967296}, "diagnostic.seed"),
+            ("diagnostic_bos_pattern_unknown", smooth, {"type": "bos", "pattern": "checker"}, "diagnostic.pattern"),
+            ("diagnostic_bos_background_distance_negative", smooth, {"type": "bos", "background_distance": -1},
+             "diagnostic.background_distance")):
+        scene = copy.deepcopy(camera)
+        scene["diagnostic"] = diagnostic
+        add_scene_case(name, scene, 2, path)
+
+
 # --- a volume sequence whose later file is damaged ------------------------------
 
 def sequence_cases():
@@ -690,6 +719,7 @@ def main():
     memory_cases()
     found_cases()
     message_cases()
+    diagnostic_cases()
     sequence_cases()
     with open(HOSTILE / "cases.jsonl", "w") as out:
         for case in cases:

@@ -1,9 +1,11 @@
 // A diagnostic's measurements as VTK ImageData (vtk/diagnostic_NNNNN.vti):
 // one cell per pixel on the image plane, in metres from the camera's axis
-// (x along the image's right, y its up, one pixel thick), rows from the
-// bottom so that ParaView shows the picture upright; cell arrays
-// `deflection` (rad, 2 components on those axes) and
-// `optical_path_difference` (m).
+// (perspective: at unit distance from the pinhole), x along the image's
+// right, y its up, one pixel thick, rows from the bottom so that ParaView
+// shows the picture upright; cell arrays, those the instrument measures:
+// `deflection` (rad, 2 components on those axes), `optical_path_difference`
+// (m), `displacement` (BOS: px, 2 components) and `relative_irradiance`
+// (shadowgraph: I/I₀, RGB).
 #pragma once
 
 #include "bridge/grid/NamedArrays.h"

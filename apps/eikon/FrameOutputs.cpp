@@ -20,6 +20,13 @@ void FrameOutputs::write(int frame, const render::FrameResult& result, const std
     if (!result.hdr.empty())
         io::writeHdr(std::filesystem::path(png).replace_extension(".hdr"), result.image.width, result.image.height,
                      result.hdr);
+    if (const render::DiagnosticStage* diagnostic = renderer.diagnosticStage(); diagnostic && diagnostic->hasReference()) {
+        // BOS: the background without the medium beside the picture with it (frames/reference_NNNNN.png).
+        const render::Image8 reference = diagnostic->downloadReference();
+        std::filesystem::path path = png;
+        path.replace_filename("reference_" + png.filename().string().substr(std::string("frame_").size()));
+        io::writePng(path, reference.width, reference.height, reference.rgba);
+    }
     if (exporter_.wantsFrame(frame)) exporter_.write(frame, exported, renderer);
     if (shared_) held_[frame] = {exported.time, reportLine};
     else output_->appendReport(reportLine);  // last: a frame's line means all its files are in place

@@ -56,7 +56,10 @@
     X(kRawFluence, 13)          /* buffer RawFluence: the light pass's unsmoothed fluence, RGB per cell (float, or 64-bit units) */ \
     X(kRawFluenceDirection, 14) /* buffer RawFluenceDirection: and its unsmoothed direction sums */                             \
     X(kViewExit, 15)            /* buffer ViewExit { vec4 exit[]; }: per pixel, direction leaving the scene, w: how (tests) */  \
-    X(kDiagnosticRays, 15)      /* buffer DiagnosticRays { vec4 rays[]; }: per pixel (deflection on the image axes in rad, OPD in m, how it ended) */ \
+    X(kDiagnosticRays, 15)      /* buffer DiagnosticRays { vec4 rays[]; }: per ray (deflection on the image axes in rad, OPD in m, how it ended) */ \
+    X(kDiagnosticLanding, 16)   /* buffer DiagnosticLanding { vec4 landing[]; }: shadowgraph, BOS: where the rays land behind the volume (diagnostic_rays.comp) */ \
+    X(kDiagnosticReference, 17) /* buffer DiagnosticReference { uint rgba8[]; }: BOS: the background without the medium */ \
+    X(kDiagnosticScreen, 18)    /* buffer DiagnosticScreen { uint tallies[]; }: shadowgraph: per pixel and channel a 64-bit fixed-point sum */ \
     X(kPhotonPathPower, 16)     /* buffer PhotonPathPower { vec4 power[]; }: RGB power at each recorded vertex */          \
     X(kSharpSurfaces, 17)       /* uniform SharpSurfaces { GpuSharpSurface surfaces[kMaxSharpObjects]; } */                     \
     X(kSurfaceNodes, 18)        /* buffer SurfaceNodes { vec4 nodes[]; }: the sharp meshes' trees (FieldSet.h) */              \

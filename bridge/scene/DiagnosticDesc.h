@@ -1,9 +1,14 @@
 // An optical instrument that looks through the scene in place of the
-// camera's picture (docs/scene-format.md, `diagnostic`): parallel light
-// crosses the test volume along the orthographic camera's rays, and the
-// instrument turns what each ray measured — its optical path difference and
-// its deflection — into the picture.
+// camera's picture (docs/scene-format.md, `diagnostic`): light crosses the
+// test volume along the camera's rays — parallel ones of an orthographic
+// camera, or a perspective camera's for background-oriented schlieren — and
+// the instrument turns what each ray measured — its optical path
+// difference, its deflection, where it lands behind the volume — into the
+// picture.
 #pragma once
+
+#include <cstdint>
+#include <optional>
 
 namespace eikon {
 
@@ -11,6 +16,8 @@ struct DiagnosticDesc {
     enum class Type {
         Interferometry,  // Mach–Zehnder: fringes of the optical path difference
         Schlieren,       // an ideal schlieren head and a cut-off in its focal plane
+        Shadowgraph,     // the irradiance on a screen behind the volume
+        Bos,             // background-oriented schlieren: a random-dot background seen through the volume
     } type = Type::Interferometry;
 
     // Interferometry: I = I₀·cos²(π·OPD/λ + π·fringeTilt·u), u the
@@ -28,6 +35,18 @@ struct DiagnosticDesc {
     double focalLength = 1.0;    // f of the schlieren head, m, > 0
     double sourceHeight = 1e-3;  // a: the source image's uncut height (knife edge), or the filter's clear radius, m, > 0
     double knifeAngleDeg = 0.0;  // knife edge: its angle from the image's horizontal axis, counter-clockwise
+
+    // Shadowgraph and BOS: the screen or the background is a plane across
+    // the camera's axis this far behind the grid's farthest corner along it.
+    double screenDistance = 1.0;      // shadowgraph, m, > 0
+    double backgroundDistance = 1.0;  // BOS, m, > 0
+
+    // BOS's background: seeded random dark dots on white, one a cell of a
+    // square lattice at a random place in it; a dot's darkness
+    // exp(−8·r²/d²), d its 1/e² diameter.
+    std::uint32_t seed = 1;
+    std::optional<double> dotDiameter;  // d, m, > 0; none: three pixels' width on the background
+    double dotDensity = 0.3;            // π·d²/4 over the cell's area, in (0, 0.5]
 };
 
 }  // namespace eikon

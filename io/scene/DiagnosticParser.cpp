@@ -11,6 +11,10 @@ namespace {
 
 // Wavelengths in nm: any light a diagnostic could use, up to a millimetre.
 const NumberRange kWavelengthRange = {0.0, 1e6, false, true};
+// The dots' share of the background: at most 0.5 keeps a dot's lattice cell
+// at least its diameter wide, so that the dots of the 3 × 3 cells around a
+// point are all that darken it.
+const NumberRange kDotDensityRange = {0.0, 0.5, false, true};
 
 DiagnosticDesc::Cutoff readCutoff(const JsonReader& node) {
     const std::string name = node.oneOf({"knife_edge", "circular", "colour"});
@@ -22,7 +26,26 @@ DiagnosticDesc::Cutoff readCutoff(const JsonReader& node) {
 
 DiagnosticDesc readDiagnostic(const JsonReader& node) {
     DiagnosticDesc diagnostic;
-    if (node.member("type").oneOf({"interferometry", "schlieren"}) == "interferometry") {
+    const std::string type = node.member("type").oneOf({"interferometry", "schlieren", "shadowgraph", "bos"});
+    if (type == "shadowgraph") {
+        const auto fields = node.object({"type", "screen_distance"});
+        diagnostic.type = DiagnosticDesc::Type::Shadowgraph;
+        if (auto distance = fields.optional("screen_distance")) diagnostic.screenDistance = distance->number(kLengthRange);
+        return diagnostic;
+    }
+    if (type == "bos") {
+        const auto fields =
+            node.object({"type", "background_distance", "pattern", "seed", "dot_diameter", "dot_density"});
+        diagnostic.type = DiagnosticDesc::Type::Bos;
+        if (auto distance = fields.optional("background_distance"))
+            diagnostic.backgroundDistance = distance->number(kLengthRange);
+        if (auto pattern = fields.optional("pattern")) pattern->oneOf({"dots"});
+        if (auto seed = fields.optional("seed")) diagnostic.seed = static_cast<std::uint32_t>(seed->integer(0, 4294967295LL));
+        if (auto diameter = fields.optional("dot_diameter")) diagnostic.dotDiameter = diameter->number(kLengthRange);
+        if (auto density = fields.optional("dot_density")) diagnostic.dotDensity = density->number(kDotDensityRange);
+        return diagnostic;
+    }
+    if (type == "interferometry") {
         const auto fields = node.object({"type", "wavelength_nm", "fringe_tilt"});
         diagnostic.type = DiagnosticDesc::Type::Interferometry;
         if (auto wavelength = fields.optional("wavelength_nm")) diagnostic.wavelengthNm = wavelength->number(kWavelengthRange);
@@ -41,7 +64,11 @@ DiagnosticDesc readDiagnostic(const JsonReader& node) {
 
 void checkDiagnostic(const JsonObjectReader& sceneFields, const Scene& scene) {
     if (!scene.diagnostic) return;
-    if (!scene.camera.orthographic()) {
+    if (scene.diagnostic->type == DiagnosticDesc::Type::Bos) {
+        if (scene.camera.orthographic())
+            sceneFields.member("camera").member("projection").fail(
+                "\"perspective\" with a bos diagnostic (a camera focused on the background)", "\"orthographic\"");
+    } else if (!scene.camera.orthographic()) {
         const std::string why = " with a diagnostic (its light crosses the volume in parallel)";
         if (auto camera = sceneFields.optional("camera"))
             camera->member("projection").fail("\"orthographic\"" + why, "\"perspective\"");

@@ -187,7 +187,14 @@ ParaViewState paraViewStateOf(const Scene& scene) {
         state.parallelScale = 0.5 * scene.camera.widthM * scene.render.height / scene.render.width;
     state.gridMin = scene.grid.boundsMin;
     state.gridMax = scene.grid.boundsMax;
-    if (scene.diagnostic && scene.diagnostic->type == DiagnosticDesc::Type::Schlieren) state.diagnosticArray = "deflection";
+    if (scene.diagnostic) {
+        switch (scene.diagnostic->type) {
+            case DiagnosticDesc::Type::Interferometry: state.diagnosticArray = "optical_path_difference"; break;
+            case DiagnosticDesc::Type::Schlieren: state.diagnosticArray = "deflection"; break;
+            case DiagnosticDesc::Type::Shadowgraph: state.diagnosticArray = "relative_irradiance"; break;
+            case DiagnosticDesc::Type::Bos: state.diagnosticArray = "displacement"; break;
+        }
+    }
     return state;
 }
 

@@ -10,7 +10,9 @@
 
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -19,10 +21,19 @@ namespace eikon::render {
 namespace {
 
 // EIKON_INSTRUMENT of shaders/common/diagnostic_instruments.glsl.
-enum class Instrument : int { Interferometer = 0, KnifeEdge = 1, CircularFilter = 2, ColourFilter = 3 };
+enum class Instrument : int {
+    Interferometer = 0,
+    KnifeEdge = 1,
+    CircularFilter = 2,
+    ColourFilter = 3,
+    Shadowgraph = 4,
+    BackgroundOriented = 5
+};
 
 Instrument instrumentOf(const DiagnosticDesc& diagnostic) {
     if (diagnostic.type == DiagnosticDesc::Type::Interferometry) return Instrument::Interferometer;
+    if (diagnostic.type == DiagnosticDesc::Type::Shadowgraph) return Instrument::Shadowgraph;
+    if (diagnostic.type == DiagnosticDesc::Type::Bos) return Instrument::BackgroundOriented;
     switch (diagnostic.cutoff) {
         case DiagnosticDesc::Cutoff::KnifeEdge: return Instrument::KnifeEdge;
         case DiagnosticDesc::Cutoff::Circular: return Instrument::CircularFilter;
@@ -34,18 +45,49 @@ Instrument instrumentOf(const DiagnosticDesc& diagnostic) {
 }  // namespace
 
 DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields)
-    : render_(scene.render), diagnostic_(scene.diagnostic.value_or(DiagnosticDesc{})) {
-    EIKON_CHECK_MSG(scene.diagnostic && scene.camera.orthographic(),
-                    "a diagnostic looks through an orthographic camera (io/scene/DiagnosticParser)");
+    : render_(scene.render), diagnostic_(scene.diagnostic.value_or(DiagnosticDesc{})), cameraDesc_(scene.camera),
+      grid_(fields.grid()) {
+    const bool bos = diagnostic_.type == DiagnosticDesc::Type::Bos;
+    EIKON_CHECK_MSG(scene.diagnostic && scene.camera.orthographic() != bos,
+                    "BOS looks through a perspective camera, the other diagnostics through an orthographic one "
+                    "(io/scene/DiagnosticParser)");
     stepLength_ = scene.render.stepVoxels * fields.grid().smallestVoxelEdge();
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
+    const std::string loopBudget = std::to_string(gl::currentLoopBudget());
     program_ = gl::compileComputeProgram(
         "diagnostic_rays.comp", {{"EIKON_INSTRUMENT", std::to_string(static_cast<int>(instrumentOf(diagnostic_)))},
                                  {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
-                                 {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())}});
+                                 {"EIKON_LOOP_BUDGET", loopBudget}});
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
-    rays_ = pixelBuffer(scene, "the diagnostic's measurements");
+    const auto width = static_cast<std::size_t>(render_.width), height = static_cast<std::size_t>(render_.height);
+    if (diagnostic_.type == DiagnosticDesc::Type::Shadowgraph) {
+        // Without extinction T = 1 in every channel, and the screen tallies one.
+        const std::string extinction = fields.hasExtinction() ? "1" : "0";
+        deposit_ = gl::compileComputeProgram(
+            "shadowgraph_screen.comp",
+            {{"EIKON_SCREEN_PASS", "0"}, {"EIKON_HAS_EXTINCTION", extinction}, {"EIKON_LOOP_BUDGET", loopBudget}});
+        resolve_ = gl::compileComputeProgram("shadowgraph_screen.comp",
+                                             {{"EIKON_SCREEN_PASS", "1"}, {"EIKON_HAS_EXTINCTION", extinction}});
+        const std::size_t corners = (width + 1 + 2 * kBeamMargin) * (height + 1 + 2 * kBeamMargin);
+        rays_ = gl::Buffer(corners * sizeof(glm::vec4),
+                           gl::GpuResource{"render.width × render.height", "the shadowgraph's rays"});
+        landing_ = gl::Buffer(2 * corners * sizeof(glm::vec4),
+                              gl::GpuResource{"render.width × render.height", "where the shadowgraph's rays land"});
+        screen_ = gl::Buffer(6 * width * height * sizeof(std::uint32_t),
+                             gl::GpuResource{"render.width × render.height", "the shadowgraph's screen"});
+    } else {
+        rays_ = pixelBuffer(scene, "the diagnostic's measurements");
+    }
+    if (bos) {
+        landing_ = pixelBuffer(scene, "the background's displacement");
+        reference_ = gl::Buffer(width * height * 4,
+                                gl::GpuResource{"render.width × render.height", "the background without the medium"});
+        // Three pixels' width on the background as the scene's camera sees it.
+        dotDiameter_ = diagnostic_.dotDiameter.value_or(3.0 * planeDepth(scene.camera) * 2.0 *
+                                                        std::tan(glm::radians(scene.camera.fovDeg) / 2) /
+                                                        static_cast<double>(render_.height));
+    }
     hdr_ = pixelBuffer(scene, "the diagnostic's linear picture");
     ldr_ = gl::Buffer(static_cast<std::size_t>(render_.width) * static_cast<std::size_t>(render_.height) * 4,
                       gl::GpuResource{"render.width × render.height", "the diagnostic's picture"});
@@ -54,6 +96,21 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
 void DiagnosticStage::setCamera(const CameraDesc& camera) {
     const layout::GpuCamera block = cameraBlock(camera, render_);
     camera_.upload(&block, sizeof block);
+    cameraDesc_ = camera;
+}
+
+double DiagnosticStage::planeDepth(const CameraDesc& camera) const {
+    const glm::dvec3 forward = glm::normalize(camera.target - camera.position);
+    double farthest = -std::numeric_limits<double>::infinity();
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 point((corner & 1) ? grid_.boundsMax.x : grid_.boundsMin.x,
+                               (corner & 2) ? grid_.boundsMax.y : grid_.boundsMin.y,
+                               (corner & 4) ? grid_.boundsMax.z : grid_.boundsMin.z);
+        farthest = std::max(farthest, glm::dot(point - camera.position, forward));
+    }
+    const double distance = diagnostic_.type == DiagnosticDesc::Type::Bos ? diagnostic_.backgroundDistance
+                                                                          : diagnostic_.screenDistance;
+    return farthest + distance;
 }
 
 Image8 DiagnosticStage::run(const FieldTextures& fields) {
@@ -65,6 +122,7 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
     program_.use();
     glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength_));
     glUniform1ui(program_.uniform("max_steps"), maxSteps_);
+    const auto width = static_cast<std::size_t>(render_.width), height = static_cast<std::size_t>(render_.height);
     const double sensitivity = diagnostic_.focalLength / diagnostic_.sourceHeight;  // f/a
     switch (instrumentOf(diagnostic_)) {
         case Instrument::Interferometer:
@@ -81,10 +139,39 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
             break;
         }
         case Instrument::CircularFilter:
-        case Instrument::ColourFilter: glUniform1f(program_.uniform("sensitivity"), static_cast<float>(sensitivity));
+        case Instrument::ColourFilter: glUniform1f(program_.uniform("sensitivity"), static_cast<float>(sensitivity)); break;
+        case Instrument::Shadowgraph:
+            glUniform1f(program_.uniform("plane_depth"), static_cast<float>(planeDepth(cameraDesc_)));
+            glUniform1ui(program_.uniform("beam_margin"), kBeamMargin);
+            landing_.bindStorage(layout::kDiagnosticLanding);
+            break;
+        case Instrument::BackgroundOriented: {
+            glUniform1f(program_.uniform("plane_depth"), static_cast<float>(planeDepth(cameraDesc_)));
+            // One dot a cell: its share of the cell's area π·d²/4 / cell² is the dot density.
+            const double cell = 0.5 * dotDiameter_ * std::sqrt(std::numbers::pi / diagnostic_.dotDensity);
+            glUniform1ui(program_.uniform("dot_seed"), diagnostic_.seed);
+            glUniform1f(program_.uniform("dot_cell"), static_cast<float>(cell));
+            glUniform1f(program_.uniform("dot_diameter"), static_cast<float>(dotDiameter_));
+            landing_.bindStorage(layout::kDiagnosticLanding);
+            reference_.bindStorage(layout::kDiagnosticReference);
+            break;
+        }
     }
-    program_.dispatchCovering(static_cast<std::size_t>(render_.width), static_cast<std::size_t>(render_.height), 1, 8,
-                              8, 1);
+    if (instrumentOf(diagnostic_) == Instrument::Shadowgraph) {
+        program_.dispatchCovering(width + 1 + 2 * kBeamMargin, height + 1 + 2 * kBeamMargin, 1, 8, 8, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        screen_.clearToZero();
+        screen_.bindStorage(layout::kDiagnosticScreen);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        deposit_.use();
+        glUniform1ui(deposit_.uniform("beam_margin"), kBeamMargin);
+        deposit_.dispatchCovering(width + 2 * kBeamMargin, height + 2 * kBeamMargin, 1, 8, 8, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        resolve_.use();
+        resolve_.dispatchCovering(width, height, 1, 8, 8, 1);
+    } else {
+        program_.dispatchCovering(width, height, 1, 8, 8, 1);
+    }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     Image8 image{render_.width, render_.height,
                  std::vector<std::uint8_t>(static_cast<std::size_t>(render_.width) * render_.height * 4)};
@@ -97,9 +184,27 @@ std::vector<float> DiagnosticStage::downloadHdr() const { return hdr_.downloadAl
 
 std::vector<glm::vec4> DiagnosticStage::downloadRays() const { return rays_.downloadAll<glm::vec4>(); }
 
+Image8 DiagnosticStage::downloadReference() const {
+    EIKON_CHECK_MSG(hasReference(), "only BOS draws a reference picture");
+    Image8 image{render_.width, render_.height, std::vector<std::uint8_t>(reference_.bytes())};
+    reference_.download(image.rgba.data(), image.rgba.size());
+    return image;
+}
+
 DiagnosticMeasurements DiagnosticStage::downloadMeasurements() const {
+    DiagnosticMeasurements measured{render_.width, render_.height, {}, {}, {}, {}};
+    if (diagnostic_.type == DiagnosticDesc::Type::Shadowgraph) {
+        const std::vector<float> hdr = downloadHdr();
+        for (std::size_t i = 0; i < hdr.size(); i += 4) measured.irradiance.insert(measured.irradiance.end(), &hdr[i], &hdr[i + 3]);
+        return measured;
+    }
+    if (diagnostic_.type == DiagnosticDesc::Type::Bos) {
+        for (const glm::vec4& moved : landing_.downloadAll<glm::vec4>()) {
+            measured.displacement.push_back(moved.x);
+            measured.displacement.push_back(moved.y);
+        }
+    }
     const std::vector<glm::vec4> rays = downloadRays();
-    DiagnosticMeasurements measured{render_.width, render_.height, {}, {}};
     measured.deflection.reserve(2 * rays.size());
     measured.opticalPathDifference.reserve(rays.size());
     for (const glm::vec4& ray : rays) {

@@ -1,10 +1,14 @@
 // The diagnostics' pass (shaders/diagnostic_rays.comp): in place of the
-// view and post, parallel light from the orthographic camera's image plane
-// through the graded field — one march gives each pixel its optical path
-// difference and deflection, and its transmittance where the scene has
-// extinction — and the scene's instrument (an interferometer or a
-// schlieren cut-off, shaders/common/diagnostic_instruments.glsl) makes the
-// picture of them. Runs alone when only the camera changes.
+// view and post, light along the camera's rays through the graded field —
+// parallel from the orthographic camera's image plane, or from a
+// perspective camera's pinhole for BOS — one march gives each ray its
+// optical path difference and deflection, its transmittance where the
+// scene has extinction, and where it lands on the shadowgraph's screen or
+// BOS's background; the scene's instrument (an interferometer, a schlieren
+// cut-off, shaders/common/diagnostic_instruments.glsl; the screen's
+// intensity law, shaders/shadowgraph_screen.comp; the random-dot
+// background, shaders/common/bos_background.glsl) makes the picture of
+// them. Runs alone when only the camera changes.
 #pragma once
 
 #include "bridge/scene/Scene.h"
@@ -19,14 +23,21 @@
 namespace eikon::render {
 
 // What a frame's rays measured, per pixel, row 0 at the top.
+// Each is empty where the instrument does not measure it.
 struct DiagnosticMeasurements {
     int width = 0, height = 0;
     std::vector<float> deflection;             // rad, 2 per pixel: on the image's right and up axes
     std::vector<float> opticalPathDifference;  // m: ∫ (n − n_ref) ds along the ray
+    std::vector<float> displacement;           // BOS: px, 2 per pixel, on the image's right and up axes
+    std::vector<float> irradiance;             // shadowgraph: I/I₀ on the screen, RGB per pixel
 };
 
 class DiagnosticStage {
 public:
+    // The shadowgraph's beam beside the picture on every side, in pixels:
+    // light bent onto the picture from at most this far is on it.
+    static constexpr std::size_t kBeamMargin = 8;
+
     // The scene's diagnostic and orthographic camera (checked by the scene parser).
     DiagnosticStage(const Scene& scene, const FieldTextures& fields);
 
@@ -37,18 +48,35 @@ public:
 
     std::vector<float> downloadHdr() const;  // linear I/I₀, RGBA per pixel
     DiagnosticMeasurements downloadMeasurements() const;
-    // Per pixel (ε right, ε up, OPD, how the ray ended: 1 crossed the grid,
-    // 2 missed it, 0 cut by the step cap), as the pass wrote it.
+    // Per ray (ε right, ε up, OPD, how the ray ended: 1 crossed the grid,
+    // 2 missed it, 0 cut by the step cap), as the pass wrote it: per pixel,
+    // or for the shadowgraph per pixel corner of its beam, kBeamMargin
+    // pixels wider than the picture on every side.
     std::vector<glm::vec4> downloadRays() const;
+    // BOS: the background seen without the medium (sRGB, as the picture).
+    Image8 downloadReference() const;
+    bool hasReference() const { return diagnostic_.type == DiagnosticDesc::Type::Bos; }
+
+    // The screen's or background's distance from the camera along its axis:
+    // the diagnostic's distance behind the grid's farthest corner.
+    double planeDepth(const CameraDesc& camera) const;
 
 private:
     RenderDesc render_;
     DiagnosticDesc diagnostic_;
+    CameraDesc cameraDesc_;
+    GridSpec grid_;
     double stepLength_;
     unsigned maxSteps_;
+    double dotDiameter_ = 0.0;  // BOS, m
     gl::Program program_;
+    gl::Program deposit_;  // shadowgraph: the screen's two passes
+    gl::Program resolve_;
     gl::Buffer camera_;
     gl::Buffer rays_;
+    gl::Buffer landing_;    // shadowgraph, BOS
+    gl::Buffer reference_;  // BOS
+    gl::Buffer screen_;     // shadowgraph
     gl::Buffer hdr_;
     gl::Buffer ldr_;
 };

@@ -5,11 +5,19 @@
 // pixel, as I/I₀ per channel, I₀ the light with neither a test object nor
 // a cut-off. EIKON_INSTRUMENT picks one (DiagnosticStage.cpp's
 // Instrument); each reads only its own uniforms. GLSL only.
+// The shadowgraph's picture is made of where its rays land
+// (shadowgraph_screen.comp), BOS's of the background its rays see
+// (common/bos_background.glsl).
 #ifndef EIKON_INSTRUMENT
 #define EIKON_INSTRUMENT 0
 #endif
+#define EIKON_SHADOWGRAPH 4
+#define EIKON_BOS 5
 
-#if EIKON_INSTRUMENT == 0
+#if EIKON_INSTRUMENT == EIKON_BOS
+#include "common/bos_background.glsl"
+#elif EIKON_INSTRUMENT == EIKON_SHADOWGRAPH
+#elif EIKON_INSTRUMENT == 0
 // Mach–Zehnder interferometer: the test beam, delayed by OPD and dimmed to
 // amplitude √T, meets an equal reference beam tilted by `fringe_tilt`
 // fringes per image width (u the horizontal image coordinate in (0, 1)):

@@ -72,9 +72,9 @@ protected:
     }
     void TearDown() override { fs::remove_all(dir_); }
 
-    eikon::test::Outcome run(const std::string& arguments = "") {
+    eikon::test::Outcome run(const std::string& arguments = "", int frames = 1) {
         return runEikon("run " + (dir_ / "scene.json").string() + " --out " + (dir_ / "out").string() +
-                            " --frames 1 --quiet " + arguments,
+                            " --frames " + std::to_string(frames) + " --quiet " + arguments,
                         "LP_NUM_THREADS=2");
     }
     fs::path dir_;
@@ -138,6 +138,72 @@ TEST_F(DiagnosticCli, SetSwitchesTheInstrumentAndRefusesABadValueAtItsKey) {
     const auto refused = run("--force --set diagnostic.type=schlieren --set diagnostic.cutoff=razor");
     EXPECT_EQ(refused.exitCode, 2) << refused.output;
     EXPECT_NE(refused.output.find("scene.json: diagnostic.cutoff: expected one of"), std::string::npos)
+        << refused.output;
+}
+
+// The shadowgraph by `--set`: the screen's I/I₀ as `relative_irradiance`
+// (RGB, unit 1), the export's only array, coloured in the ParaView state.
+TEST_F(DiagnosticCli, ShadowgraphExportsTheScreensRelativeIrradiance) {
+    const auto outcome = run("--set diagnostic.type=shadowgraph --set diagnostic.screen_distance=2");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const fs::path out = dir_ / "out";
+    EXPECT_TRUE(fs::exists(out / "frames" / "frame_00000.png"));
+    EXPECT_NE(text(out / "vtk" / "open_in_paraview.py").find("diagnostic_array = 'relative_irradiance'"),
+              std::string::npos);
+    vtkNew<vtkXMLImageDataReader> reader;
+    reader->SetFileName((out / "vtk" / "diagnostic_00000.vti").string().c_str());
+    reader->Update();
+    vtkDataArray* irradiance = reader->GetOutput()->GetCellData()->GetArray("relative_irradiance");
+    ASSERT_NE(irradiance, nullptr);
+    EXPECT_EQ(irradiance->GetNumberOfComponents(), 3);
+    EXPECT_EQ(reader->GetOutput()->GetCellData()->GetArray("deflection"), nullptr);
+    auto* unit = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("relative_irradiance_unit"));
+    ASSERT_NE(unit, nullptr);
+    EXPECT_EQ(unit->GetValue(0), "1");
+    // The bump (a converging lens) brightens the screen over its centre, 2.5 m beyond it.
+    double range[2];
+    irradiance->GetRange(range, 0);
+    EXPECT_GT(range[1], 1.0);
+    EXPECT_LT(range[0], 1.0);
+}
+
+// BOS through a perspective camera: the picture with the medium and the
+// reference without it, frame by frame, and the displacement in pixels
+// (2 components, unit px) in the export.
+TEST_F(DiagnosticCli, BosWritesTheReferencePictureAndTheDisplacement) {
+    std::ofstream(dir_ / "scene.json") << R"({
+  "grid": {"resolution": [40, 40, 40], "bounds": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
+           "smoothing_sigma_voxels": 0},
+  "volume": {"path": "bump.vdb", "grids": {"density": "", "temperature": "", "delta_index": "dn"},
+             "offset": [0.0125, 0.0125, 0.0125]},
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
+  "camera": {"position": [0, 0, 2], "target": [0, 0, 0], "fov_deg": 25},
+  "render": {"width": 40, "height": 30},
+  "diagnostic": {"type": "bos", "background_distance": 1.5, "seed": 3},
+  "export": {"vtk": {"fields": ["delta_index"]}}
+})";
+    const auto outcome = run("", 2);
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const fs::path out = dir_ / "out";
+    for (const char* name : {"frame_00000.png", "reference_00000.png", "frame_00001.png", "reference_00001.png"})
+        EXPECT_TRUE(fs::exists(out / "frames" / name)) << name;
+    EXPECT_NE(text(out / "vtk" / "open_in_paraview.py").find("diagnostic_array = 'displacement'"), std::string::npos);
+    vtkNew<vtkXMLImageDataReader> reader;
+    reader->SetFileName((out / "vtk" / "diagnostic_00000.vti").string().c_str());
+    reader->Update();
+    vtkDataArray* displacement = reader->GetOutput()->GetCellData()->GetArray("displacement");
+    ASSERT_NE(displacement, nullptr);
+    EXPECT_EQ(displacement->GetNumberOfComponents(), 2);
+    auto* unit = vtkStringArray::SafeDownCast(reader->GetOutput()->GetFieldData()->GetAbstractArray("displacement_unit"));
+    ASSERT_NE(unit, nullptr);
+    EXPECT_EQ(unit->GetValue(0), "px");
+    double range[2];
+    displacement->GetRange(range, 0);
+    EXPECT_GT(range[1] - range[0], 1e-3) << "the bump moves the background";
+    const auto refused = run("--force --set camera.projection=orthographic --set camera.width_m=1");
+    EXPECT_EQ(refused.exitCode, 2) << refused.output;
+    EXPECT_NE(refused.output.find("scene.json: camera.projection: expected \"perspective\" with a bos diagnostic"),
+              std::string::npos)
         << refused.output;
 }
 

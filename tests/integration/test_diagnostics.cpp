@@ -1,8 +1,6 @@
 // The diagnostics against closed forms (docs/accuracy.md, "Diagnostics"): a
-// 3D Gaussian index bump δn = A·exp(−r²/σ²) in air (n_ref = 1), seen by
-// parallel light along −z. In the paraxial limit a ray at ρ from the axis
-// gathers OPD(ρ) = ∫ δn dz = A·σ·√π·exp(−ρ²/σ²) and leaves deflected by
-// ε = ∇⊥OPD / n_ref = −2ρ/σ² · OPD(ρ), toward the bump's centre. The
+// 3D Gaussian index bump (tests/integration/GaussianBump.h) seen by
+// parallel light along −z, OPD and ε in the paraxial limit. The
 // interferogram, cos²(π·OPD/λ), then has a dark fringe wherever OPD/λ is
 // k + ½, and a knife edge shows I/I₀ = clamp(0.5 + f·ε⊥/a, 0, 1). The
 // bump is sampled at the render cells' centres, or imported as a
@@ -10,6 +8,7 @@
 #include "bridge/grid/FieldSet.h"
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
+#include "tests/integration/GaussianBump.h"
 #include "tests/integration/GlTestContext.h"
 #include "tests/integration/TraceHelpers.h"
 #include "tests/unit/VdbTestFiles.h"
@@ -33,55 +32,8 @@ namespace {
 
 using namespace test;
 
-constexpr int kCells = 96;         // over [−0.5, 0.5]³ m: σ is 14.4 voxels
-constexpr double kSigma = 0.15;    // m; the bump is 1.5e-5 of its peak at the grid's faces
-constexpr double kWidthM = 0.8;    // the orthographic view: ±2.7 σ
-constexpr double kAmplitude = 1e-4;
-
-struct Bump {
-    double amplitude = kAmplitude;
-    glm::dvec3 centre{0.0};
-
-    double deltaIndex(const glm::dvec3& x) const {
-        const glm::dvec3 r = x - centre;
-        return amplitude * std::exp(-glm::dot(r, r) / (kSigma * kSigma));
-    }
-    // At (x, y) on the image plane (the camera looks down −z, x right, y up).
-    double opd(glm::dvec2 p) const {
-        const glm::dvec2 rho = p - glm::dvec2(centre);
-        return amplitude * kSigma * std::sqrt(std::numbers::pi) * std::exp(-glm::dot(rho, rho) / (kSigma * kSigma));
-    }
-    glm::dvec2 deflection(glm::dvec2 p) const { return -2.0 / (kSigma * kSigma) * (p - glm::dvec2(centre)) * opd(p); }
-    double peakOpd() const { return amplitude * kSigma * std::sqrt(std::numbers::pi); }
-    double peakDeflection() const { return amplitude * std::sqrt(2.0 * std::numbers::pi) * std::exp(-0.5); }
-};
-
-Scene bumpScene(int width, int height, const DiagnosticDesc& diagnostic) {
-    Scene scene = emptyScene(glm::dvec3(-0.5), glm::dvec3(0.5), kCells);
-    scene.grid.smoothingSigmaVoxels = 0.0;
-    scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 1.0));
-    scene.camera.position = glm::dvec3(0.0, 0.0, 2.0);
-    scene.camera.target = glm::dvec3(0.0);
-    scene.camera.projection = CameraDesc::Projection::Orthographic;
-    scene.camera.widthM = kWidthM;
-    scene.render.width = width;
-    scene.render.height = height;
-    scene.diagnostic = diagnostic;
-    return scene;
-}
-
-FieldSet sampledBump(const Scene& scene, const Bump& bump) {
-    FieldSet fields;
-    fields.grid = scene.grid.spec();
-    fields.deltaIndex.resize(fields.grid.cellCount());
-    for (int k = 0; k < kCells; ++k)
-        for (int j = 0; j < kCells; ++j)
-            for (int i = 0; i < kCells; ++i)
-                fields.deltaIndex[fields.grid.linearIndex(i, j, k)] =
-                    static_cast<float>(bump.deltaIndex(fields.grid.cellCentre(i, j, k)));
-    fields.indexVersion = 1;
-    return fields;
-}
+constexpr int kCells = kBumpCells;
+constexpr double kSigma = kBumpSigma;
 
 struct Diagnosed {
     std::vector<glm::vec4> rays;  // (ε right, ε up, OPD, how it ended)
@@ -94,12 +46,6 @@ Diagnosed diagnose(const Scene& scene, const FieldSet& fields) {
     renderer.render(fields);
     EXPECT_NE(renderer.diagnosticStage(), nullptr);
     return {renderer.diagnosticStage()->downloadRays(), renderer.diagnosticStage()->downloadHdr()};
-}
-
-// Pixel (i, j)'s ray on the image plane (row 0 at the top), m.
-glm::dvec2 pixelPoint(const Scene& scene, int i, int j) {
-    const double pixel = kWidthM / scene.render.width;
-    return {(i + 0.5 - 0.5 * scene.render.width) * pixel, (0.5 * scene.render.height - j - 0.5) * pixel};
 }
 
 struct MapErrors {

@@ -101,8 +101,8 @@ TEST(SceneParserDiagnostic, SchlierenReadsItsHeadAndCutoff) {
 }
 
 TEST(SceneParserDiagnostic, RefusesBadValuesAndAnotherTypesKeysAtTheirPath) {
-    expectErrorAt(diagnosticScene({{"type", "shadowgraph"}}), "diagnostic.type",
-                  "one of \"interferometry\", \"schlieren\"");
+    expectErrorAt(diagnosticScene({{"type", "moire"}}), "diagnostic.type",
+                  "one of \"interferometry\", \"schlieren\", \"shadowgraph\", \"bos\"");
     expectErrorAt(diagnosticScene(json::object()), "diagnostic.type", "found nothing");
     expectErrorAt(diagnosticScene({{"type", "interferometry"}, {"wavelength_nm", 0}}), "diagnostic.wavelength_nm",
                   "a number in (0, 1000000]");
@@ -121,6 +121,57 @@ TEST(SceneParserDiagnostic, RefusesBadValuesAndAnotherTypesKeysAtTheirPath) {
     // render.width 320: fringes two pixels apart at most 160 per width.
     expectErrorAt(diagnosticScene({{"type", "interferometry"}, {"fringe_tilt", 161}}), "diagnostic.fringe_tilt",
                   "a number in [-160, 160]");
+}
+
+TEST(SceneParserDiagnostic, ShadowgraphReadsItsScreenDistance) {
+    const Scene defaults = parseScene(diagnosticScene({{"type", "shadowgraph"}}), "test.json");
+    EXPECT_EQ(defaults.diagnostic->type, DiagnosticDesc::Type::Shadowgraph);
+    EXPECT_DOUBLE_EQ(defaults.diagnostic->screenDistance, 1.0);
+    EXPECT_DOUBLE_EQ(
+        parseScene(diagnosticScene({{"type", "shadowgraph"}, {"screen_distance", 2.5}}), "test.json").diagnostic->screenDistance,
+        2.5);
+    expectErrorAt(diagnosticScene({{"type", "shadowgraph"}, {"screen_distance", 0}}), "diagnostic.screen_distance",
+                  "a number in (0, 1000000000]");
+    expectErrorAt(diagnosticScene({{"type", "shadowgraph"}, {"focal_length", 1}}), "diagnostic.focal_length",
+                  "an unknown key");
+}
+
+// BOS: the valid scene's perspective camera, its objects smooth.
+json bosScene(const json& diagnostic) {
+    json scene = diagnosticScene(diagnostic);
+    scene["camera"] = validScene()["camera"];
+    return scene;
+}
+
+TEST(SceneParserDiagnostic, BosReadsItsBackgroundAndDots) {
+    const Scene defaults = parseScene(bosScene({{"type", "bos"}}), "test.json");
+    EXPECT_EQ(defaults.diagnostic->type, DiagnosticDesc::Type::Bos);
+    EXPECT_DOUBLE_EQ(defaults.diagnostic->backgroundDistance, 1.0);
+    EXPECT_EQ(defaults.diagnostic->seed, 1u);
+    EXPECT_FALSE(defaults.diagnostic->dotDiameter);
+    EXPECT_DOUBLE_EQ(defaults.diagnostic->dotDensity, 0.3);
+    const Scene given = parseScene(bosScene({{"type", "bos"},
+                                             {"background_distance", 3.0},
+                                             {"pattern", "dots"},
+                                             {"seed", 7},
+                                             {"dot_diameter", 0.002},
+                                             {"dot_density", 0.5}}),
+                                   "test.json");
+    EXPECT_DOUBLE_EQ(given.diagnostic->backgroundDistance, 3.0);
+    EXPECT_EQ(given.diagnostic->seed, 7u);
+    EXPECT_DOUBLE_EQ(given.diagnostic->dotDiameter.value(), 0.002);
+    EXPECT_DOUBLE_EQ(given.diagnostic->dotDensity, 0.5);
+    expectErrorAt(bosScene({{"type", "bos"}, {"pattern", "stripes"}}), "diagnostic.pattern", "one of \"dots\"");
+    expectErrorAt(bosScene({{"type", "bos"}, {"seed", -1}}), "diagnostic.seed", "an integer in [0, 4294967295]");
+    expectErrorAt(bosScene({{"type", "bos"}, {"seed", 1.5}}), "diagnostic.seed", "an integer");
+    expectErrorAt(bosScene({{"type", "bos"}, {"dot_density", 0.6}}), "diagnostic.dot_density", "a number in (0, 0.5]");
+    expectErrorAt(bosScene({{"type", "bos"}, {"dot_diameter", -0.001}}), "diagnostic.dot_diameter",
+                  "a number in (0, 1000000000]");
+    expectErrorAt(bosScene({{"type", "bos"}, {"background_distance", "far"}}), "diagnostic.background_distance",
+                  "a number in (0, 1000000000]");
+    expectErrorAt(bosScene({{"type", "bos"}, {"screen_distance", 1}}), "diagnostic.screen_distance", "an unknown key");
+    expectErrorAt(diagnosticScene({{"type", "bos"}}), "camera.projection",
+                  "\"perspective\" with a bos diagnostic");
 }
 
 TEST(SceneParserDiagnostic, RefusesAPerspectiveCameraImageSpaceAndSharpObjects) {
@@ -154,6 +205,14 @@ TEST(SceneParserDiagnostic, SetReachesTheSectionAsAnyOther) {
     EXPECT_DOUBLE_EQ(parseScene(bare, "test.json").diagnostic->wavelengthNm, 633.0);
     applyOverride(bare, "diagnostic.wavelength_nm=-1");
     expectErrorAt(bare, "diagnostic.wavelength_nm", "a number in (0, 1000000]");
+    json shadow = diagnosticScene({{"type", "shadowgraph"}});
+    applyOverride(shadow, "diagnostic.screen_distance=4");
+    EXPECT_DOUBLE_EQ(parseScene(shadow, "test.json").diagnostic->screenDistance, 4.0);
+    json bos = bosScene({{"type", "bos"}});
+    applyOverride(bos, "diagnostic.seed=42");
+    applyOverride(bos, "diagnostic.background_distance=0.5");
+    EXPECT_EQ(parseScene(bos, "test.json").diagnostic->seed, 42u);
+    EXPECT_DOUBLE_EQ(parseScene(bos, "test.json").diagnostic->backgroundDistance, 0.5);
 }
 
 }  // namespace
