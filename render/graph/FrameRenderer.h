@@ -5,8 +5,10 @@
 // last ran (field versions, camera); stages the scene does not need are not
 // created (uniform steps → no step structure, no receivers → no maps, no
 // scattering → no fluence and no lattice, neither receivers nor scattering →
-// no photons).
-// Each frame reports every stage it has with whether it ran and its wall time.
+// no photons); stages whose output has a closed form for the frame's fields
+// are not run (a uniform medium: render/graph/UniformMedium.h).
+// Each frame reports every stage it has with whether it ran, its wall time
+// and, for a stage not run though its inputs changed, why.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
