@@ -16,12 +16,13 @@
 // +550% for κ = 1 to 5 /m, against 0.01% with it.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
-layout(binding = kPyramidTexture) uniform sampler3D pyramid;  // (min δn, max δn, min κ, max κ), one mip level per octree level
+#include "common/octree_levels.glsl"
+
+layout(binding = kPyramidTexture) uniform sampler3D pyramid;  // (min δn, max δn, min κ, max κ) per node, common/octree_levels.glsl
 // (level, step cap in m, 1 if the node holds no extinction — hence no
 // scattering, so a camera ray may cross it in one step — 0)
 layout(rgba32f, binding = kStepImage) writeonly uniform image3D step_structure;
 
-uniform int levels;
 uniform float epsilon;
 uniform float epsilon_prime;
 uniform float index_scale;  // largest dispersion scale: ranges are of n = n_ref + s·δn
@@ -32,12 +33,16 @@ uniform float optical_depth_tolerance;
 
 void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID);
-    if (any(greaterThanEqual(cell, imageSize(step_structure)))) return;
+    ivec3 cells = imageSize(step_structure);
+    if (any(greaterThanEqual(cell, cells))) return;
     vec3 result = vec3(0.0f, min_step, 0.0f);
-    vec4 whole = texelFetch(pyramid, ivec3(0), levels - 1);
+    int levels = octree_levels(cells);
+    ivec3 offset = octree_level_offset(cells, levels - 1);  // of `level` below, from the top down
+    vec4 whole = texelFetch(pyramid, offset, 0);
     float field_range = index_scale * (whole.y - whole.x);
     for (int level = levels - 1; level >= 0; --level) {
-        vec4 range = texelFetch(pyramid, cell >> level, level);
+        vec4 range = texelFetch(pyramid, offset + (cell >> level), 0);
+        offset = level > 1 ? offset - ivec3(0, 0, octree_level_size(cells, level - 1).z) : ivec3(0);
         if ((range.w - range.z) * node_edge * exp2(float(level)) >= optical_depth_tolerance) continue;
         float variation = index_scale * (range.y - range.x);
         float empty = range.w <= 0.0f ? 1.0f : 0.0f;

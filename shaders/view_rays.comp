@@ -280,6 +280,12 @@ void main() {
         vec3 mesh_ahead_direction = vec3(0.0f);
         float mesh_ahead_travelled = 0.0f;
 #endif
+        // The field (∇n, n) at x while `field_fresh`: the leapfrog leaves its
+        // end sample there, which the next step starts from (one sample a
+        // step); moving x otherwise (entering the grid, a sharp surface)
+        // takes a new one.
+        vec4 field = vec4(0.0f);
+        bool field_fresh = false;
         for (;;) {
             // Where the driver caps loops, a ray out of budget keeps the
             // radiance it has gathered (docs/accuracy.md).
@@ -300,6 +306,7 @@ void main() {
                 }
                 x = grid_entry_point(x, d, flight);
                 x_lost = vec3(0.0f);
+                field_fresh = false;
 #if EIKON_SHARP_SURFACES
                 mesh_ahead_direction = vec3(0.0f);
 #endif
@@ -308,12 +315,15 @@ void main() {
                     ray.inside_mask = inside_mask_at(x);
                     sharp_offset = sharp_index_offset(ray.inside_mask);
 #endif
-                    v = field_at(x).w * d;
+                    field = field_at(x);
+                    field_fresh = true;
+                    v = field.w * d;
                 }
                 continue;
             }
             if (steps >= max_steps) break;
-            vec4 field = field_at(x);
+            if (!field_fresh) field = field_at(x);
+            field_fresh = true;
             float n_start = field.w;
             vec3 gradient = field.xyz;
             vec3 d = normalize(v);
@@ -370,6 +380,7 @@ void main() {
                 x_lost = vec3(0.0f);
                 v = ray.v;
                 sharp_offset = sharp_index_offset(ray.inside_mask);
+                field_fresh = false;
             }
 #endif
             if (!grid_contains(x)) v = reference_index() * normalize(v);

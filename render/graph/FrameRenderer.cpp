@@ -2,7 +2,9 @@
 
 #include "bridge/core/Error.h"
 #include "bridge/scene/ImageSpaceScope.h"
+#include "render/graph/UniformMedium.h"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -13,12 +15,23 @@ namespace {
 // Runs `work` if `needed`, timing it to completion on the GPU.
 template <typename Work>
 StageReport runStage(const char* name, bool needed, Work&& work) {
-    StageReport report{name, needed, 0.0};
+    StageReport report{name, needed, 0.0, {}};
     if (!needed) return report;
     const auto start = std::chrono::steady_clock::now();
     work();
     glFinish();
     report.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+// A stage whose output has a closed form for these fields: `fill` writes it
+// in place of `work`, and the report says why the stage did not run.
+template <typename Work, typename Fill>
+StageReport runOrFill(const char* name, bool needed, const char* closedForm, Work&& work, Fill&& fill) {
+    if (!closedForm) return runStage(name, needed, std::forward<Work>(work));
+    StageReport report = runStage(name, needed, std::forward<Fill>(fill));
+    if (report.ran) report.skippedBecause = closedForm;
+    report.ran = false;
     return report;
 }
 
@@ -205,13 +218,27 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         photons_->setVolumeGlow(scene_, fields.emission.host, fields.grid);  // the glow lights the scene
     // A moved light matters only through the photons it sends.
     const bool photonsNeeded = photons_ && (fieldsChanged || lightsChanged_);
-    result.stages.push_back(runStage("prepare", indexChanged, [&] { prepare_->run(fields_); }));
+    if (indexChanged) uniformIndex_ = holdsOneValue(fields.deltaIndex, 1);
+    if (indexChanged || extinctionChanged)
+        uniformMedium_ = uniformIndex_ && holdsOneValue(fields.extinction, 3) && fields.emission.floats == 0;
+    const float deltaIndex = fields.deltaIndex.host ? fields.deltaIndex.host[0] : 0.0f;
+    const bool emptyOfExtinction =  // host κ is there where the medium is uniform
+        uniformMedium_ && (fields.extinction.floats == 0 ||
+                           std::max({fields.extinction.host[0], fields.extinction.host[1], fields.extinction.host[2]}) <= 0.0f);
+    result.stages.push_back(runOrFill("prepare", indexChanged, uniformIndex_ ? kUniformIndexReason : nullptr,
+                                      [&] { prepare_->run(fields_); },
+                                      [&] { prepare_->fillUniform(fields_, deltaIndex); }));
+    // Smoothing a uniform δn leaves it as it is.
+    const gl::Texture3D& smoothedIndex = uniformIndex_ ? fields_.index() : prepare_->smoothedIndex(fields_);
+    const char* uniformSteps = uniformMedium_ ? kUniformMediumReason : nullptr;
     if (stepStructure_)
-        result.stages.push_back(runStage("step_structure", indexChanged || extinctionChanged,
-                                         [&] { stepStructure_->run(prepare_->smoothedIndex(fields_), fields_); }));
+        result.stages.push_back(runOrFill("step_structure", indexChanged || extinctionChanged, uniformSteps,
+                                          [&] { stepStructure_->run(smoothedIndex, fields_); },
+                                          [&] { stepStructure_->fillUniform(emptyOfExtinction); }));
     if (referenceSteps_)
-        result.stages.push_back(runStage("reference_steps", indexChanged || extinctionChanged,
-                                         [&] { referenceSteps_->run(prepare_->smoothedIndex(fields_), fields_); }));
+        result.stages.push_back(runOrFill("reference_steps", indexChanged || extinctionChanged, uniformSteps,
+                                          [&] { referenceSteps_->run(smoothedIndex, fields_); },
+                                          [&] { referenceSteps_->fillUniform(emptyOfExtinction); }));
     if (photons_)
         result.stages.push_back(runStage("photons", photonsNeeded, [&] {
             last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);

@@ -5,8 +5,10 @@
 // last ran (field versions, camera); stages the scene does not need are not
 // created (uniform steps → no step structure, no receivers → no maps, no
 // scattering → no fluence and no lattice, neither receivers nor scattering →
-// no photons).
-// Each frame reports every stage it has with whether it ran and its wall time.
+// no photons); stages whose output has a closed form for the frame's fields
+// are not run (a uniform medium: render/graph/UniformMedium.h).
+// Each frame reports every stage it has with whether it ran, its wall time
+// and, for a stage not run though its inputs changed, why.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -36,6 +38,10 @@ struct StageReport {
     std::string name;
     bool ran = false;
     double milliseconds = 0.0;  // wall time with glFinish (GPU timer queries read 0 on llvmpipe)
+    // Why a stage whose inputs changed did not run (render/graph/UniformMedium.h);
+    // empty where it ran or nothing it reads changed. `milliseconds` is then
+    // the time of what was written in its place.
+    std::string skippedBecause;
 };
 
 // Of an image-space frame (render.method "image_space").
@@ -153,6 +159,8 @@ private:
     // With estimateErrors: the reference step labels (the scene's own step
     // structure's where it has one, else this one's) and the estimate.
     std::unique_ptr<StepStructureStage> referenceSteps_;
+    // Of the last uploaded fields (render/graph/UniformMedium.h).
+    bool uniformIndex_ = false, uniformMedium_ = false;
     std::unique_ptr<ErrorEstimateStage> errorEstimate_;
     PhotonSettings photonSettings_;
 

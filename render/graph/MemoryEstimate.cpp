@@ -3,6 +3,7 @@
 #include "bridge/core/Error.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "render/graph/FrameRenderer.h"
+#include "render/stages/StepStructureStage.h"
 
 #include <algorithm>
 #include <string>
@@ -38,20 +39,11 @@ std::string cellsText(const glm::ivec3& r) {
     return std::to_string(r.x) + "×" + std::to_string(r.y) + "×" + std::to_string(r.z) + " cells";
 }
 
-// The octree's step pyramid (StepStructureStage): RGBA32F, level 0 padded to
-// a multiple of its coarsest node, each level halving to one node.
+// The octree's step pyramid (StepStructureStage): RGBA32F, every level in
+// one texture of the grid's own nodes (common/octree_levels.glsl).
 Bytes stepPyramidBytes(const glm::ivec3& resolution) {
-    const int largest = std::max({resolution.x, resolution.y, resolution.z});
-    int levels = 1;
-    while ((1 << (levels - 1)) < largest) ++levels;
-    const int coarsest = 1 << (levels - 1);
-    const glm::ivec3 padded = (resolution + coarsest - 1) / coarsest * coarsest;
-    Bytes texels = 0;
-    for (int level = 0; level < levels; ++level) {
-        const glm::ivec3 size = glm::max(padded >> level, glm::ivec3(1));
-        texels += product(product(Bytes(size.x), Bytes(size.y)), Bytes(size.z));
-    }
-    return 16 * texels;
+    const glm::ivec3 size = stepPyramidSize(resolution);
+    return 16 * product(product(Bytes(size.x), Bytes(size.y)), Bytes(size.z));
 }
 
 // The fields of every cell: δn on the host (FieldSet) and as an R32F texture

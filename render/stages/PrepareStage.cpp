@@ -50,4 +50,11 @@ void PrepareStage::run(FieldTextures& fields) {
     gl::checkpoint("prepare stage");
 }
 
+void PrepareStage::fillUniform(FieldTextures& fields, float deltaIndex) {
+    const float texel[4] = {0.0f, 0.0f, 0.0f, deltaIndex};
+    glClearTexImage(fields.gradient().id(), 0, GL_RGBA, GL_FLOAT, texel);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    gl::checkpoint("prepare stage, uniform index");
+}
+
 }  // namespace eikon::render

@@ -15,6 +15,10 @@ class PrepareStage {
 public:
     PrepareStage(const GridDesc& grid, const FieldTextures& fields);
     void run(FieldTextures& fields);
+    // In place of run() where δn holds `deltaIndex` in every cell
+    // (render/graph/UniformMedium.h): the gradient texture gets (0, 0, 0, δn),
+    // what run() computes for such a field but for rounding in the smoothing.
+    void fillUniform(FieldTextures& fields, float deltaIndex);
 
     // δn after smoothing (the raw field when smoothing is off).
     const gl::Texture3D& smoothedIndex(const FieldTextures& fields) const;

@@ -3,6 +3,7 @@
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
+#include "shaders/common/cpp_shim.h"
 
 #include <glm/common.hpp>
 
@@ -11,23 +12,21 @@
 
 namespace eikon::render {
 
+glm::ivec3 stepPyramidSize(const glm::ivec3& cells) { return shader::octree_pyramid_size(cells); }
+
 StepStructureStage::StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction,
                                        bool hasEmission)
-    : grid_(grid), tracer_(tracer),
+    : grid_(grid), tracer_(tracer), levels_(shader::octree_levels(grid.resolution)),
       minmaxProgram_(gl::compileComputeProgram("octree_minmax.comp",
                                                {{"EIKON_HAS_EXTINCTION", hasExtinction ? "1" : "0"},
                                                 {"EIKON_HAS_EMISSION", hasEmission ? "1" : "0"}})),
       labelProgram_(gl::compileComputeProgram("octree_label.comp")) {
-    // Levels until one node spans the grid; level 0 padded to a multiple of
-    // the coarsest node so that every level halves exactly (a mip chain).
-    const int largest = std::max({grid.resolution.x, grid.resolution.y, grid.resolution.z});
-    while ((1 << (levels_ - 1)) < largest) ++levels_;
-    const int coarsest = 1 << (levels_ - 1);
-    paddedSize_ = (grid.resolution + coarsest - 1) / coarsest * coarsest;
     const glm::ivec3 r = grid.resolution;
-    pyramid_ = gl::Texture3D(GL_RGBA32F, paddedSize_.x, paddedSize_.y, paddedSize_.z, levels_,
-                             gl::gridResource("the octree step pyramid (padded to " + std::to_string(paddedSize_.x) +
-                                                  "³, " + std::to_string(levels_) + " levels)",
+    const glm::ivec3 size = stepPyramidSize(r);
+    pyramid_ = gl::Texture3D(GL_RGBA32F, size.x, size.y, size.z,
+                             gl::gridResource("the octree step pyramid (" + std::to_string(levels_) + " levels in " +
+                                                  std::to_string(size.x) + "×" + std::to_string(size.y) + "×" +
+                                                  std::to_string(size.z) + " texels)",
                                               r.x, r.y, r.z));
     step_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z, gl::gridResource("the octree step sizes", r.x, r.y, r.z));
 }
@@ -44,7 +43,6 @@ void StepStructureStage::label(const gl::Texture3D& target, double epsilon, doub
     labelProgram_.use();
     pyramid_.bindSampler(layout::kPyramidTexture);
     target.bindImage(layout::kStepImage, GL_WRITE_ONLY);
-    glUniform1i(labelProgram_.uniform("levels"), levels_);
     glUniform1f(labelProgram_.uniform("epsilon"), static_cast<float>(epsilon));
     glUniform1f(labelProgram_.uniform("epsilon_prime"), static_cast<float>(epsilonPrime));
     glUniform1f(labelProgram_.uniform("index_scale"), maxDispersion);
@@ -61,18 +59,26 @@ void StepStructureStage::label(const gl::Texture3D& target, double epsilon, doub
 void StepStructureStage::run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields) {
     minmaxProgram_.use();
     smoothedIndex.bindSampler(layout::kIndexTexture);
+    // One texture holds every level: read level k − 1 and write level k of it.
+    pyramid_.bindImage(layout::kFinerLevelImage, GL_READ_ONLY);
+    pyramid_.bindImage(layout::kPyramidLevelImage, GL_WRITE_ONLY);
     if (fields.hasExtinction() || fields.hasEmission()) fields.bindForTracing();  // κ, ε at their texture units
     for (int level = 0; level < levels_; ++level) {
         glUniform1i(minmaxProgram_.uniform("level"), level);
-        if (level > 0)
-            glBindImageTexture(layout::kFinerLevelImage, pyramid_.id(), level - 1, GL_TRUE, 0, GL_READ_ONLY, GL_RGBA32F);
-        glBindImageTexture(layout::kPyramidLevelImage, pyramid_.id(), level, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        minmaxProgram_.dispatchOverCells(glm::max(paddedSize_ >> level, glm::ivec3(1)));
+        minmaxProgram_.dispatchOverCells(shader::octree_level_size(grid_.resolution, level));
         glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     }
     label(step_, tracer_.epsilon, tracer_.epsilonPrime, tracer_.stepVoxels * grid_.smallestVoxelEdge());
     if (reference_.id()) label(reference_, 0.0, 0.0, referenceMinStep_);
     gl::checkpoint("step structure stage");
+}
+
+void StepStructureStage::fillUniform(bool emptyOfExtinction) {
+    const float texel[4] = {static_cast<float>(levels_ - 1), 1e30f, emptyOfExtinction ? 1.0f : 0.0f, 0.0f};
+    glClearTexImage(step_.id(), 0, GL_RGBA, GL_FLOAT, texel);
+    if (reference_.id()) glClearTexImage(reference_.id(), 0, GL_RGBA, GL_FLOAT, texel);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    gl::checkpoint("step structure stage, uniform medium");
 }
 
 }  // namespace eikon::render

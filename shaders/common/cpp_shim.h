@@ -42,6 +42,7 @@ namespace {
 #include "shaders/common/receiver.glsl"
 #include "shaders/common/fresnel.glsl"
 #include "shaders/common/step_size.glsl"
+#include "shaders/common/octree_levels.glsl"
 #include "shaders/common/sharp_surfaces.glsl"
 #include "shaders/common/footprint_coverage.glsl"
 #include "shaders/common/lattice_directions.glsl"

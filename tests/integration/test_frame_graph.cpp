@@ -37,12 +37,36 @@ protected:
     void SetUp() override { test::glContext(); }
 };
 
+// The default scene's air is uniform: prepare and step_structure are
+// written in closed form; one cell of graded δn makes them run.
 TEST_F(FrameGraph, FirstFrameRunsEveryStageItHas) {
     const Scene scene = smallDefaultScene();
-    const FieldSet fields = sim::voxelizeScene(scene);
+    FieldSet fields = sim::voxelizeScene(scene);
+    {
+        render::FrameRenderer renderer(scene, fields);
+        const render::FrameResult result = renderer.render(fields);
+        EXPECT_EQ(stagesThatRan(result), (std::set<std::string>{"upload", "photons", "view", "post"}));
+        for (const auto& stage : result.stages) {
+            if (stage.name == "prepare" || stage.name == "step_structure") {
+                EXPECT_NE(stage.skippedBecause.find("uniform"), std::string::npos) << stage.name;
+            }
+        }
+    }
+    fields.deltaIndex.at(fields.grid.linearIndex(1, 2, 3)) = 1e-4f;
     render::FrameRenderer renderer(scene, fields);
     EXPECT_EQ(stagesThatRan(renderer.render(fields)),
               (std::set<std::string>{"upload", "prepare", "step_structure", "photons", "view", "post"}));
+}
+
+// Uniform δn but graded κ: prepare is written, the step structure runs.
+TEST_F(FrameGraph, UniformIndexInAGradedMediumRunsTheStepStructure) {
+    const Scene scene = smallDefaultScene({"tracer.estimator=\"photons\""});
+    FieldSet fields = sim::voxelizeScene(scene);
+    fields.extinction.assign(3 * fields.grid.cellCount(), 0.0f);
+    fields.extinction.at(3 * fields.grid.linearIndex(4, 5, 6)) = 2.0f;
+    render::FrameRenderer renderer(scene, fields);
+    EXPECT_EQ(stagesThatRan(renderer.render(fields)),
+              (std::set<std::string>{"upload", "step_structure", "photons", "view", "post"}));
 }
 
 TEST_F(FrameGraph, CameraOnlyChangeRunsOnlyViewAndPost) {
