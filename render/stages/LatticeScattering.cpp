@@ -244,7 +244,7 @@ LatticeChannel LatticeScattering::runChannel(int channel, bool warm) {
     }
     LatticeChannel result;
     std::vector<float> previous = probeFluence(channel, pair[current]);
-    double previousDelta = -1.0;
+    double previousDelta = -1.0, previousDifference = -1.0;
     bool converged = false;
     while (!converged && result.iterations < settings_.maxIterations) {
         const int steps = std::min(settings_.checkInterval, settings_.maxIterations - result.iterations);
@@ -279,12 +279,18 @@ LatticeChannel LatticeScattering::runChannel(int channel, bool warm) {
             continue;
         }
         result.change = delta / steps;
-        const double ratio = previousDelta > 0.0 ? delta / previousDelta : std::numeric_limits<double>::infinity();
+        // The rate of convergence: the larger of the largest change's ratio
+        // and the summed change's (the largest may move from probe to
+        // probe between checks, and its ratio then understate the rate).
+        const double ratio = previousDelta > 0.0 && previousDifference > 0.0
+                                 ? std::max(delta / previousDelta, difference / previousDifference)
+                                 : std::numeric_limits<double>::infinity();
         result.remaining = delta == 0.0 ? 0.0
                            : ratio < 1.0 ? delta * ratio / (1.0 - ratio)
                                          : std::numeric_limits<double>::infinity();
         converged = result.remaining < settings_.tolerance;
         previousDelta = delta;
+        previousDifference = difference;
     }
     result.capped = !converged;
     const LatticeChannel tally = ledger(channel, pair[current]);

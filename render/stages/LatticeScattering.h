@@ -20,7 +20,8 @@
 // through a thick slab — count as much as the bright ones: a relative L1
 // change over all probes is the bright region's and understated the
 // faint one's remaining change about 25×), and r the ratio of successive
-// Δ (the lattice converges geometrically), the remaining change is
+// Δ or of successive summed changes over all probes, whichever is larger
+// (the lattice converges geometrically), the remaining change is
 // estimated as Δ·r/(1 − r), and the channel stops below the tolerance or at
 // the step cap. A frame starts
 // from the previous frame's densities (warm start) unless restart() is

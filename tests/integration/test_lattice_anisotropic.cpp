@@ -109,8 +109,8 @@ reference::SlabFractions monteCarloSlab(double tau, double albedo, double g) {
 // +13% at τ = 1, albedo 0.99 and +12% at τ = 20, albedo 0.9 (the
 // δ-Eddington phase function after the first scattering), −10% at τ = 5,
 // albedo 0.5, the other five within 9% (docs/accuracy.md). Before, with
-// the source born isotropically: R +62% to +222%, T −61% to −78%. The
-// ledger closes in each.
+// the source born isotropically and the similarity relation: R +42% to
+// +714%, T −47% to −75%. The ledger closes in each.
 TEST(LatticeAnisotropic, SlabsAgainstHenyeyGreensteinMonteCarlo) {
     const double g = 0.8;
     for (double tau : {1.0, 5.0, 20.0})

@@ -454,10 +454,11 @@ TEST(LatticeScattering, VoxelsBeyondTheDepthLimitAreNeverConverged) {
 // 0.99 on 80 cells lets out 0.75 of the light back and 0.015 through its
 // far face, where the fluence is some hundred times fainter than under the
 // lit face. Stopped at the default tolerance 1e-3 from a cold start, its
-// transmittance is within 2e-3 of the lattice's own at 1e-7 (a relative L1
-// change over all probes, the bright region's, stopped it 2.5% short), and
-// the reflectance within 1e-3; so is the remaining change it reported,
-// within a factor 3 of the true one.
+// transmittance is within 2e-3 of the lattice's own at 1e-7 and the
+// reflectance within 1e-3, and the remaining change it reported is within
+// a factor 3 of the true one (measured 8.6e-4 after 1392 steps, reported
+// 9.1e-4). A relative L1 change over all probes, the bright region's,
+// stopped it after 1104 steps 5.0e-3 short, reporting 9.3e-4.
 TEST(LatticeScattering, ConvergenceCountsTheFaintRegions) {
     const SlabResult stopped = latticeSlab(20.0, 0.99, 14, 1e-3, 80);
     const SlabResult reference = latticeSlab(20.0, 0.99, 14, 1e-7, 80);
