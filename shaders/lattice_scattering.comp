@@ -32,12 +32,30 @@
 // the mirror direction only for axis-aligned faces); the refraction of the
 // transmitted part is not followed. Smooth index changes are not
 // interfaces: light diffuses straight through them.
-// Anisotropic media scatter by the similarity relation
-// σs′ = σs(1 − g), σt′ = σt − σs + σs′ (the 6- or 18-link lattice scatters
-// isotropically by construction).
+// Anisotropic media (EIKON_LATTICE_DIRECTED). The light pass's beam is
+// attenuated by the true σt and its single scattering rendered with the
+// true Henyey–Greenstein phase function; the lattice's source, what the
+// beam loses to scattering (σs·φ_c), is light scattered exactly once. It is
+// born in the HG distribution about the beam projected on the links
+// (common/lattice_directions.glsl; the shares found once a frame by pass 5
+// into LatticeBirth): a g = 0.8 medium sends most of it on forward. Every
+// later scattering follows the δ-Eddington phase function
+// (common/lattice_directions.glsl, [Joseph76]): a share f goes straight
+// on, the rest with the linear phase function of asymmetry g′ ≤ 1/3, the
+// lattice's extinction and albedo being σt′ = σa + σs(1 − f) and
+// σs(1 − f)/σt′; the light arriving through link j scatters in its first
+// generation by w_i·(1 + 3g′ ĉ_i·ĉ_j) (later generations within the voxel
+// isotropically: a voxel is thin against a mean free path within the
+// validated resolution). Every watt is counted once: the unscattered beam
+// by the light pass, everything scattered by the lattice. The beam's
+// direction m and its coherence |m| ([Sun08] §4.4, as the view pass reads
+// it) come from the light pass's fluence and power-weighted direction; the
+// incoherent part is born isotropically. Where it stops being valid:
+// docs/accuracy.md.
 //
 // Passes (EIKON_LATTICE_PASS): 4 once a frame, each cell's interface
-// links and index (LatticeInterfaces); 0 one collide-and-stream step of one channel
+// links and index (LatticeInterfaces); 5 once a frame with
+// EIKON_LATTICE_DIRECTED, each cell's birth shares (LatticeBirth); 0 one collide-and-stream step of one channel
 // from LatticeIn to LatticeOut; 1 the fluence at the convergence probes
 // (every probe_stride-th cell on each axis); 2 the fluence of every cell
 // into MultipleFluence and per work group the power ledger (source,
@@ -48,7 +66,7 @@
 // copied to the other two; and the voxels too thick for the lattice's float
 // arithmetic (LatticeScattering.h, the depth limit).
 // Program options: EIKON_LATTICE_DIRECTIONS (6, 14 or 18), EIKON_LATTICE_PASS,
-// EIKON_HAS_ANISOTROPY, EIKON_LATTICE_INTERFACES.
+// EIKON_HAS_ANISOTROPY, EIKON_LATTICE_INTERFACES, EIKON_LATTICE_DIRECTED.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "common/grid_sampling.glsl"
@@ -66,6 +84,9 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #ifndef EIKON_LATTICE_INTERFACES
 #define EIKON_LATTICE_INTERFACES 0
 #endif
+#ifndef EIKON_LATTICE_DIRECTED
+#define EIKON_LATTICE_DIRECTED 0
+#endif
 #if EIKON_LATTICE_INTERFACES
 // Per cell: x the slots of its links that cross an interface; y, z (float
 // bits) the reflectance of light leaving the cell across it and of light
@@ -82,6 +103,21 @@ layout(std430, binding = kLatticeInterfaces) readonly buffer LatticeInterfaces {
 #endif
 #endif
 const int DIRECTIONS = EIKON_LATTICE_DIRECTIONS;
+#if EIKON_LATTICE_DIRECTED
+// Per link slot and cell (slot-major, as the densities): the share of the
+// cell's source born along the link, summing to 1 over its links.
+#if EIKON_LATTICE_PASS == 5
+layout(std430, binding = kLatticeBirth) buffer LatticeBirth { float birth_share[]; };  // collide reads it, compiled here too
+// The light pass's beam: smoothed fluence (RGB) and power-weighted direction (xyz) per cell.
+layout(std430, binding = kFluence) readonly buffer Fluence { float beam_fluence[]; };
+layout(std430, binding = kFluenceDirection) readonly buffer FluenceDirection { float beam_direction[]; };
+// Each link's share of the sphere's directions by nearest link (its
+// Voronoi cell), on this grid's voxels (latticeLinkSolidAngles).
+uniform float link_solid_angle[DIRECTIONS];
+#else
+layout(std430, binding = kLatticeBirth) readonly buffer LatticeBirth { float birth_share[]; };
+#endif
+#endif
 
 layout(std430, binding = kRawScattered) readonly buffer RawScattered { float raw_scattered[]; };
 layout(std430, binding = kLatticeIn) readonly buffer LatticeIn { float density_in[]; };
@@ -94,9 +130,20 @@ uniform int probe_stride;
 // channels_differ: 1 where the channels' media or sources differ; thick_voxels
 // and deepest_depth (float bits): the cells whose retention is below
 // min_retention in some channel, and the largest optical depth across the
-// shortest voxel edge among them.
-layout(std430, binding = kLatticeSurvey) buffer LatticeSurvey { uint channels_differ; uint thick_voxels; uint deepest_depth; };
+// shortest voxel edge among them; coarse_voxels and coarsest_depth (float
+// bits): the scattering cells whose optical depth (the lattice's σt′) along the longest
+// voxel edge exceeds validated_depth (LatticeScattering.h, the validated
+// resolution), and the largest such depth of any scattering cell.
+layout(std430, binding = kLatticeSurvey) buffer LatticeSurvey {
+    uint channels_differ;
+    uint thick_voxels;
+    uint deepest_depth;
+    uint coarse_voxels;
+    uint coarsest_depth;
+    uint survey_unused;
+};
 uniform float min_retention;
+uniform float validated_depth;
 #else
 layout(std430, binding = kMultipleFluence) writeonly buffer MultipleFluence { float multiple_fluence[]; };
 layout(std430, binding = kLatticeTallies) writeonly buffer LatticeTallies { vec4 group_tallies[]; };
@@ -139,10 +186,12 @@ struct Collision {
 };
 
 // A cell's medium as the lattice sees it in channel `c`: extinction and
-// albedo after the similarity relation.
+// albedo after the δ-Eddington scaling, and the asymmetry of what scatters.
 struct LatticeMedium {
-    float sigma_t;  // 1/m
+    float sigma_t;    // 1/m
     float albedo;
+    float forward;    // f, the share of scattering that goes straight on
+    float asymmetry;  // g′, the linear phase function's
 };
 
 LatticeMedium medium_at(ivec3 cell, int c) {
@@ -153,12 +202,17 @@ LatticeMedium medium_at(ivec3 cell, int c) {
 #else
     float g = 0.0f;
 #endif
-    float reduced = sigma_s * (1.0f - g);
     LatticeMedium m;
+    m.forward = lattice_delta_fraction(g);
+    m.asymmetry = lattice_residual_asymmetry(g);
+    float reduced = sigma_s * (1.0f - m.forward);
     m.sigma_t = max(kappa - sigma_s + reduced, 0.0f);
     m.albedo = m.sigma_t > 0.0f ? min(reduced / m.sigma_t, 1.0f) : 0.0f;
     return m;
 }
+
+// The unit direction of link slot i in metres.
+vec3 link_direction(int i) { return normalize(vec3(lattice_offset(lattice_link(i, DIRECTIONS))) * grid.voxel_size.xyz); }
 
 Collision collide(ivec3 cell) {
     LatticeMedium medium = medium_at(cell, channel);
@@ -169,6 +223,7 @@ Collision collide(ivec3 cell) {
 
     Collision c;
     c.source = raw_scattered[3 * index + channel];
+    int cells = cell_count();
     // Per length class (common/lattice_directions.glsl): a link's
     // transmittance, its mean transmittance, and those of half a link.
     const int K = LATTICE_LENGTH_CLASSES;
@@ -189,7 +244,9 @@ Collision collide(ivec3 cell) {
     float escape = 0.0f;        // share of light born here that leaves its half link unscattered
     float half_track = 0.0f;    // m: the mean track of that half link
     float half_link[DIRECTIONS];  // transmittance of each half link, weighted
-    int cells = cell_count();
+    float source_escape = 0.0f;   // share of the source that leaves its half link unscattered
+    float source_track = 0.0f;    // m: the source's mean track over that half link
+    vec3 current = vec3(0.0f);    // W: the arriving light's scattered power times its direction
 #if EIKON_LATTICE_INTERFACES
     uvec4 here = interfaces[index];
 #endif
@@ -207,24 +264,46 @@ Collision collide(ivec3 cell) {
             arriving = (1.0f - uintBitsToFloat(here.z)) * arriving +
                        uintBitsToFloat(here.y) * density_in[back * cells + index];
 #endif
-        c.outgoing[i] = arriving * transmittance[k];
-        interactions += arriving * (1.0f - transmittance[k]);
-        track += arriving * link_length[k] * track_per_length[k];
         float weight = lattice_weight(d, DIRECTIONS);
+#if EIKON_LATTICE_DIRECTED
+        float share = birth_share[i * cells + index];
+#else
+        float share = weight;
+#endif
+        // The source leaves along its links after half a link, like light
+        // born by the collision, but in its own shares.
+        float source_out = c.source * share * half_transmittance[k];
+        c.outgoing[i] = arriving * transmittance[k] + source_out;
+        source_escape += share * half_transmittance[k];
+        source_track += share * 0.5f * link_length[k] * half_track_per_length[k];
+        interactions += arriving * (1.0f - transmittance[k]);
+        current += arriving * (1.0f - transmittance[k]) * link_direction(i);
+        track += arriving * link_length[k] * track_per_length[k];
         half_link[i] = weight * half_transmittance[k];
         escape += half_link[i];
         half_track += weight * 0.5f * link_length[k] * half_track_per_length[k];
     }
-    float born = albedo * interactions + c.source;
-    // All generations born here: born / (1 − a(1 − escape)). A voxel so
-    // thick that its escape underflows keeps its born light (absorbed); the
-    // survey pass finds voxels whose retention is too small for float
-    // (LatticeScattering.h, the depth limit).
+    // What interacts here — arriving light and the source on its half links
+    // — scatters isotropically with the albedo. All generations born here:
+    // born / (1 − a(1 − escape)). A voxel so thick that its escape
+    // underflows keeps its born light (absorbed); the survey pass finds
+    // voxels whose retention is too small for float (LatticeScattering.h,
+    // the depth limit).
+    float interacting = interactions + c.source * (1.0f - source_escape);
+    float born = albedo * interacting;
     float retention = max(1.0f - albedo * (1.0f - escape), 1e-7f);
     float escaping = born * (escape / retention);
-    for (int i = 0; i < DIRECTIONS; ++i) c.outgoing[i] += escape > 0.0f ? escaping * (half_link[i] / escape) : 0.0f;
-    c.absorbed = (1.0f - albedo) * interactions + (born - escaping);
-    c.fluence = (track + born / retention * half_track) / volume;
+    // The arriving light's first scattering adds 3g′·w_i·(ĉ_i·J), J its
+    // scattered power times direction, to link i; over opposite links it
+    // sums to nothing, so it moves light between links without changing
+    // what interacts or leaves.
+    vec3 anisotropic = 3.0f * medium.asymmetry * albedo * current;
+    for (int i = 0; i < DIRECTIONS; ++i) {
+        c.outgoing[i] += escape > 0.0f ? escaping * (half_link[i] / escape) : 0.0f;
+        c.outgoing[i] += half_link[i] * dot(link_direction(i), anisotropic);
+    }
+    c.absorbed = (1.0f - albedo) * interacting + (born - escaping);
+    c.fluence = (track + c.source * source_track + born / retention * half_track) / volume;
     return c;
 }
 
@@ -233,7 +312,35 @@ vec3 cell_centre(ivec3 cell) { return grid.bounds_min.xyz + (vec3(cell) + 0.5f) 
 #endif
 
 void main() {
-#if EIKON_LATTICE_PASS == 4
+#if EIKON_LATTICE_PASS == 5
+    ivec3 cell = ivec3(gl_GlobalInvocationID);
+    if (any(greaterThanEqual(cell, grid.resolution.xyz))) return;
+    int index = grid_linear_index(cell);
+    int cells = cell_count();
+    vec3 sum = vec3(beam_direction[3 * index], beam_direction[3 * index + 1], beam_direction[3 * index + 2]);
+    float total = beam_fluence[3 * index] + beam_fluence[3 * index + 1] + beam_fluence[3 * index + 2];
+    float coherence = total > 0.0f ? min(length(sum) / total, 1.0f) : 0.0f;
+    float g = texelFetch(anisotropy_texture, cell, 0).r;
+    float mass[DIRECTIONS];
+    for (int i = 0; i < DIRECTIONS; ++i) mass[i] = 0.0f;
+    if (coherence > 0.0f && g != 0.0f) {
+        vec3 axis = normalize(sum);
+        for (int j = 0; j < LATTICE_BIRTH_RINGS; ++j)
+            for (int k = 0; k < LATTICE_BIRTH_AZIMUTHS; ++k)
+                mass[lattice_nearest_slot(lattice_birth_direction(axis, g, j, k), grid.voxel_size.xyz, DIRECTIONS)] += 1.0f;
+        float norm = 0.0f;
+        for (int i = 0; i < DIRECTIONS; ++i) {
+            mass[i] *= lattice_weight(lattice_link(i, DIRECTIONS), DIRECTIONS) / link_solid_angle[i];
+            norm += mass[i];
+        }
+        for (int i = 0; i < DIRECTIONS; ++i) mass[i] /= norm;
+    } else {
+        coherence = 0.0f;
+    }
+    for (int i = 0; i < DIRECTIONS; ++i)
+        birth_share[i * cells + index] =
+            (1.0f - coherence) * lattice_weight(lattice_link(i, DIRECTIONS), DIRECTIONS) + coherence * mass[i];
+#elif EIKON_LATTICE_PASS == 4
     ivec3 cell = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(cell, grid.resolution.xyz))) return;
     vec3 x = cell_centre(cell);
@@ -263,11 +370,13 @@ void main() {
     // Light born here leaves in the share escape / (1 − a(1 − escape)) per
     // generation, its denominator rounded to float near 1 (collide).
     bool thick = false;
-    float deepest = 0.0f;
+    float deepest = 0.0f, coarsest = 0.0f;
     float shortest_edge = min(grid.voxel_size.x, min(grid.voxel_size.y, grid.voxel_size.z));
+    float longest_edge = max(grid.voxel_size.x, max(grid.voxel_size.y, grid.voxel_size.z));
     for (int c = 0; c < 3; ++c) {
         LatticeMedium m = medium_at(cell, c);
         if (m.albedo == 0.0f) continue;
+        coarsest = max(coarsest, m.sigma_t * longest_edge);
         float escape = 0.0f;
         for (int i = 0; i < DIRECTIONS; ++i) {
             int d = lattice_link(i, DIRECTIONS);
@@ -283,6 +392,8 @@ void main() {
         atomicAdd(thick_voxels, 1u);
         atomicMax(deepest_depth, floatBitsToUint(deepest));  // non-negative floats order as their bits
     }
+    if (coarsest > validated_depth) atomicAdd(coarse_voxels, 1u);
+    if (coarsest > 0.0f) atomicMax(coarsest_depth, floatBitsToUint(coarsest));
     int index = 3 * grid_linear_index(cell);
     vec3 kappa = texelFetch(extinction_texture, cell, 0).rgb;
     vec3 sigma_s = texelFetch(scattering_texture, cell, 0).rgb;

@@ -78,6 +78,15 @@ nlohmann::json depthLimitJson(const render::LatticeDepth& depth) {
     return json;
 }
 
+// Scattering voxels coarser than the lattice's validated resolution, and the warning they give.
+nlohmann::json resolutionJson(const render::LatticeResolution& resolution) {
+    nlohmann::json json = {{"validated_reduced_depth", resolution.validated},
+                           {"coarse_voxels", resolution.coarseVoxels},
+                           {"coarsest_reduced_depth", resolution.coarsest}};
+    if (resolution.coarseVoxels > 0) json["warning"] = describeResolution(resolution);
+    return json;
+}
+
 // The lattice's steps and ledger per channel (render/stages/LatticeScattering.h).
 nlohmann::json latticeJson(const render::LatticeStats& lattice) {
     auto perChannel = [&](auto value) {
@@ -94,6 +103,7 @@ nlohmann::json latticeJson(const render::LatticeStats& lattice) {
             {"capped", lattice.capped()},
             {"converged", lattice.converged()},
             {"depth_limit", depthLimitJson(lattice.depth)},
+            {"voxel_resolution", resolutionJson(lattice.resolution)},
             {"change_per_iteration", perChannel([&](const render::LatticeChannel& c) { return finite(c.change); })},
             {"estimated_remaining", perChannel([&](const render::LatticeChannel& c) { return finite(c.remaining); })},
             {"power_w",
@@ -222,6 +232,9 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
     });
     if (diffuses && result.lattice) report["multiple_scattering"] = latticeJson(*result.lattice);
     if (result.errorEstimate) report["error_estimate"] = errorEstimateJson(*result.errorEstimate);
+    // The estimate sees the light pass's errors, not the lattice's resolution: said beside it.
+    if (result.errorEstimate && result.lattice && result.lattice->resolution.coarseVoxels > 0)
+        report["error_estimate"]["multiple_scattering"] = resolutionJson(result.lattice->resolution);
     if (result.imageSpace)
         report["image_space"] = {{"frames_averaged", result.imageSpace->framesAveraged},
                                  {"dropped", result.imageSpace->dropped}};

@@ -25,12 +25,27 @@ std::string describeDepthLimit(const render::LatticeDepth& depth) {
            "extinction there";
 }
 
+std::string describeResolution(const render::LatticeResolution& resolution) {
+    if (resolution.coarseVoxels == 0) return {};
+    return std::to_string(resolution.coarseVoxels) + " scattering voxels are coarser than the multiple-scattering "
+           "lattice's validated resolution: up to " + threeDigits(resolution.coarsest) + " reduced mean free paths "
+           "(σa + σs(1 − f))·h along a voxel, beyond " + threeDigits(resolution.validated) + " (slabs within 3.3% of "
+           "Monte Carlo; at 0.5 reflectance 4.3% low and deep transmission 12.6% low); use a finer grid "
+           "(grid.resolution)";
+}
+
 void LatticeWarning::check(int frame, const render::FrameResult& result) {
-    if (warned_ || !result.lattice) return;
-    const std::string description = describeDepthLimit(result.lattice->depth);
-    if (description.empty()) return;
-    std::cerr << "eikon: warning: frame " << frame << ": " << description << "; later frames are not reported here\n";
-    warned_ = true;
+    if (!result.lattice) return;
+    const std::string depth = warned_ ? std::string() : describeDepthLimit(result.lattice->depth);
+    if (!depth.empty()) {
+        std::cerr << "eikon: warning: frame " << frame << ": " << depth << "; later frames are not reported here\n";
+        warned_ = true;
+    }
+    const std::string resolution = warnedResolution_ ? std::string() : describeResolution(result.lattice->resolution);
+    if (!resolution.empty()) {
+        std::cerr << "eikon: warning: frame " << frame << ": " << resolution << "; later frames are not reported here\n";
+        warnedResolution_ = true;
+    }
 }
 
 }  // namespace eikon::app

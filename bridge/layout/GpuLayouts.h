@@ -87,7 +87,8 @@
     X(kRawScattered, 29)        /* buffer RawScattered { float scattered[]; }: RGB per cell, W the photons lost to scattering */ \
     X(kMultipleFluence, 30)     /* buffer MultipleFluence { float fluence[]; }: RGB per cell, W/m², light scattered ≥ once */ \
     X(kScatteredPower, 31)      /* buffer ScatteredPower { float scattered[]; }: RGB per cell, W, from the wavefront's fixed-point tallies */ \
-    X(kLatticeInterfaces, 31)   /* buffer LatticeInterfaces { uvec4 interfaces[]; }: per cell the lattice's links across sharp surfaces */
+    X(kLatticeInterfaces, 31)   /* buffer LatticeInterfaces { uvec4 interfaces[]; }: per cell the lattice's links across sharp surfaces */ \
+    X(kLatticeBirth, 13)        /* buffer LatticeBirth { float share[]; }: per link slot and cell, the share of the source born on it */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into
@@ -338,8 +339,11 @@ struct GpuLatticeSurvey {
     std::uint32_t channelsDiffer;  // 1 where the channels' media or sources differ
     std::uint32_t thickVoxels;     // cells beyond the depth limit (render/stages/LatticeScattering.h)
     std::uint32_t deepestDepth;    // float bits: the largest optical depth across a voxel among them
+    std::uint32_t coarseVoxels;    // scattering cells coarser than the lattice's validated resolution
+    std::uint32_t coarsestDepth;   // float bits: the largest reduced optical depth along a voxel's longest edge
+    std::uint32_t unused;
 };
-static_assert(sizeof(GpuLatticeSurvey) == 12);
+static_assert(sizeof(GpuLatticeSurvey) == 24);
 
 // A photon suspended at the driver's loop cap, to be resumed by the next
 // dispatch (shaders/common/suspended_photons.glsl).

@@ -245,7 +245,8 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         }));
     if (lattice_)
         result.stages.push_back(runStage("multiple_scattering", photonsNeeded, [&] {
-            last_.lattice = lattice_->run(fields_, photons_->scatteredPower());
+            last_.lattice = lattice_->run(fields_, photons_->scatteredPower(),
+                                          {&photons_->fluence(), &photons_->fluenceDirection()});
         }));
     const bool viewNeeded = view_ && (fieldsChanged || photonsNeeded || cameraChanged_);
     if (view_) result.stages.push_back(runStage("view", viewNeeded, [&] {

@@ -53,7 +53,8 @@ Bytes stepPyramidBytes(const glm::ivec3& resolution) {
 // sizes (StepStructureStage; with uniform steps an octree of its own for
 // them, FrameRenderer); a medium that attenuates or scatters fills every
 // cell with RGB on the host and RGBA32F on the GPU; the lattice holds its
-// links' densities twice per channel and an RGB fluence (LatticeScattering).
+// links' densities twice per channel and an RGB fluence (LatticeScattering),
+// in an anisotropic medium also its source's share per link.
 MemoryItem gridItem(const Scene& scene) {
     const glm::ivec3 r = scene.grid.resolution;
     const Bytes cells = product(product(Bytes(r.x), Bytes(r.y)), Bytes(r.z));
@@ -72,7 +73,7 @@ MemoryItem gridItem(const Scene& scene) {
     if (attenuates) hostPerCell += 12, glPerCell += 16;
     if (scatters) hostPerCell += 12, glPerCell += 16;
     if (eikonal && scatters && scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm)
-        glPerCell += 2 * 3 * Bytes(scene.tracer.lattice.directions) * 4 + 12;
+        glPerCell += (2 * 3 + (scene.medium.anisotropy != 0.0 ? 1 : 0)) * Bytes(scene.tracer.lattice.directions) * 4 + 12;
     return {"grid.resolution", "the fields over " + cellsText(r), cells * hostPerCell, cells * glPerCell + gl};
 }
 

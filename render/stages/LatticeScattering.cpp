@@ -51,6 +51,24 @@ double latticeDepthLimit(int directions, const glm::dvec3& voxelSize) {
     return 0.5 * (thin + thick);
 }
 
+std::vector<float> latticeLinkSolidAngles(int directions, const glm::dvec3& voxelSize) {
+    // Fibonacci points, equal areas on the sphere: 20 000 give each link's
+    // share to about 1e-4.
+    const int points = 20000;
+    std::vector<double> count(static_cast<std::size_t>(directions), 0.0);
+    for (int p = 0; p < points; ++p) {
+        const double z = 1.0 - (2.0 * p + 1.0) / points;
+        const double phi = p * 2.399963229728653;  // the golden angle
+        const double s = std::sqrt(1.0 - z * z);
+        const glm::vec3 direction(static_cast<float>(s * std::cos(phi)), static_cast<float>(s * std::sin(phi)),
+                                  static_cast<float>(z));
+        count[shader::lattice_nearest_slot(direction, glm::vec3(voxelSize), directions)] += 1.0;
+    }
+    std::vector<float> shares(count.size());
+    for (std::size_t i = 0; i < count.size(); ++i) shares[i] = static_cast<float>(count[i] / points);
+    return shares;
+}
+
 LatticeSettings LatticeSettings::of(const TracerDesc& tracer) {
     LatticeSettings settings;
     settings.directions = tracer.lattice.directions;
@@ -107,6 +125,9 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     probeValues_ = gl::Buffer(static_cast<std::size_t>(probes_.x) * probes_.y * probes_.z * sizeof(float));
     tallies_ = gl::Buffer(static_cast<std::size_t>(groupCount(r)) * 2 * sizeof(glm::vec4));
 
+    directed_ = fields.hasAnisotropy();
+    if (directed_)
+        birth_ = gl::Buffer(stateBytes, gl::gridResource("the lattice's birth shares", r.x, r.y, r.z));
     const bool interfaces = !surfaces_.empty();
     if (interfaces)
         interfaces_ = gl::Buffer(cells * sizeof(glm::uvec4), gl::gridResource("the lattice's interface links", r.x, r.y, r.z));
@@ -117,6 +138,7 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
                                         {"EIKON_HAS_ANISOTROPY", fields.hasAnisotropy() ? "1" : "0"},
                                         {"EIKON_LATTICE_DIRECTIONS", std::to_string(settings.directions)},
                                         {"EIKON_LATTICE_INTERFACES", interfaces ? "1" : "0"},
+                                        {"EIKON_LATTICE_DIRECTED", directed_ ? "1" : "0"},
                                         {"EIKON_LATTICE_PASS", std::to_string(pass)}});
     };
     step_ = compile(0);
@@ -124,6 +146,13 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     result_ = compile(2);
     survey_ = compile(3);
     if (interfaces) interfacePass_ = compile(4);
+    if (directed_) {
+        birthPass_ = compile(5);
+        birthPass_.use();
+        const std::vector<float> solidAngles = latticeLinkSolidAngles(settings.directions, grid.voxelSize());
+        glUniform1fv(birthPass_.uniform("link_solid_angle"), static_cast<GLsizei>(solidAngles.size()),
+                     solidAngles.data());
+    }
     surveyValues_ = gl::Buffer(sizeof(layout::GpuLatticeSurvey));
     depthLimit_ = latticeDepthLimit(settings.directions, grid.voxelSize());
 }
@@ -139,30 +168,51 @@ void LatticeScattering::findInterfaces() {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
+// Each cell's birth shares, once a frame (the beam may move).
+void LatticeScattering::findBirthShares(const LatticeBeam& beam) {
+    EIKON_CHECK_MSG(beam.fluence != nullptr && beam.direction != nullptr,
+                    "an anisotropic medium's lattice is given the beam its source was scattered out of");
+    birthPass_.use();
+    beam.fluence->bindStorage(layout::kFluence);
+    beam.direction->bindStorage(layout::kFluenceDirection);
+    birth_.bindStorage(layout::kLatticeBirth);
+    birthPass_.dispatchOverCells(grid_.resolution);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 LatticeScattering::Survey LatticeScattering::survey() {
     surveyValues_.clearToZero();
     surveyValues_.bindStorage(layout::kLatticeSurvey);
     survey_.use();
     glUniform1f(survey_.uniform("min_retention"), static_cast<float>(kMinRetention));
+    glUniform1f(survey_.uniform("validated_depth"), static_cast<float>(kValidatedVoxelDepth));
     survey_.dispatchOverCells(grid_.resolution);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     const auto values = surveyValues_.downloadAs<layout::GpuLatticeSurvey>();
     Survey result;
     result.channelsDiffer = values.channelsDiffer != 0;
     result.depth = {depthLimit_, values.thickVoxels, static_cast<double>(std::bit_cast<float>(values.deepestDepth))};
+    result.resolution = {kValidatedVoxelDepth, values.coarseVoxels,
+                         static_cast<double>(std::bit_cast<float>(values.coarsestDepth))};
     return result;
 }
 
-LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffer& scatteredPower) {
+LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffer& scatteredPower,
+                                    const LatticeBeam& beam) {
     LatticeStats stats;
     stats.directions = settings_.directions;
     stats.warmStart = warm_;
     fields.bindForTracing();
     if (!surfaces_.empty()) findInterfaces();
+    if (directed_) {
+        findBirthShares(beam);
+        birth_.bindStorage(layout::kLatticeBirth);
+    }
     scatteredPower.bindStorage(layout::kRawScattered);
     const Survey surveyed = survey();
     stats.grey = !surveyed.channelsDiffer;
     stats.depth = surveyed.depth;
+    stats.resolution = surveyed.resolution;
     if (stats.grey) {
         // The same bits in every channel: solve one, copy its densities, and
         // take the others' fluence and ledger from them.
@@ -194,7 +244,7 @@ LatticeChannel LatticeScattering::runChannel(int channel, bool warm) {
     }
     LatticeChannel result;
     std::vector<float> previous = probeFluence(channel, pair[current]);
-    double previousDelta = -1.0;
+    double previousDelta = -1.0, previousDifference = -1.0;
     bool converged = false;
     while (!converged && result.iterations < settings_.maxIterations) {
         const int steps = std::min(settings_.checkInterval, settings_.maxIterations - result.iterations);
@@ -210,27 +260,37 @@ LatticeChannel LatticeScattering::runChannel(int channel, bool warm) {
         }
         result.iterations += steps;
         const std::vector<float> probes = probeFluence(channel, pair[current]);
-        double norm = 0.0, difference = 0.0;
+        double brightest = 0.0;
+        for (const float value : probes) brightest = std::max(brightest, std::abs(static_cast<double>(value)));
+        // The largest relative change among the probes above the floor.
+        double delta = 0.0, difference = 0.0;
         for (std::size_t p = 0; p < probes.size(); ++p) {
-            norm += std::abs(static_cast<double>(probes[p]));
-            difference += std::abs(static_cast<double>(probes[p]) - previous[p]);
+            const double value = probes[p], change = std::abs(value - previous[p]);
+            difference += change;
+            if (std::abs(value) >= kFaintProbeFloor * brightest && brightest > 0.0)
+                delta = std::max(delta, change / std::abs(value));
         }
         previous = probes;
-        if (norm == 0.0) {
+        if (brightest == 0.0) {
             // No light at any probe yet: light born anywhere reaches one
             // within two probe spacings, unless there is none.
             converged = difference == 0.0 && result.iterations >= 2 * settings_.probeStride;
             result.change = result.remaining = converged ? 0.0 : std::numeric_limits<double>::infinity();
             continue;
         }
-        const double delta = difference / norm;
         result.change = delta / steps;
-        const double ratio = previousDelta > 0.0 ? delta / previousDelta : std::numeric_limits<double>::infinity();
+        // The rate of convergence: the larger of the largest change's ratio
+        // and the summed change's (the largest may move from probe to
+        // probe between checks, and its ratio then understate the rate).
+        const double ratio = previousDelta > 0.0 && previousDifference > 0.0
+                                 ? std::max(delta / previousDelta, difference / previousDifference)
+                                 : std::numeric_limits<double>::infinity();
         result.remaining = delta == 0.0 ? 0.0
                            : ratio < 1.0 ? delta * ratio / (1.0 - ratio)
                                          : std::numeric_limits<double>::infinity();
         converged = result.remaining < settings_.tolerance;
         previousDelta = delta;
+        previousDifference = difference;
     }
     result.capped = !converged;
     const LatticeChannel tally = ledger(channel, pair[current]);

@@ -3,17 +3,27 @@
 // to scattering is born on a lattice of 6, 14 or 18 links per voxel, which
 // collides and streams it until the flow is steady; the view pass then adds
 // σs·φ_ms/(4π), the fluence φ_ms of light scattered at least once scattered
-// again (isotropically: the lattice keeps no finer angular detail).
+// again (isotropically: the lattice keeps no finer angular detail). In an
+// anisotropic medium the source is born in the Henyey–Greenstein
+// distribution about the light pass's beam, projected on the links, and
+// later scatterings follow the δ-Eddington phase function
+// (shaders/lattice_scattering.comp).
 //
 // Channels run one after another (each has its own pair of density buffers,
 // so a 128³ grid of 6 links fits one storage block on every driver); where
 // the medium and the source are grey (the same in all three channels,
 // checked on the GPU each frame) the first is solved and copied. Each
 // converges on its own: every `checkInterval` steps the fluence at a sparse
-// set of probe cells is read back; with Δ the relative L1 change since the
-// last check and r the ratio of successive Δ (the lattice converges
-// geometrically), the remaining change is estimated as Δ·r/(1 − r), and
-// the channel stops below the tolerance or at the step cap. A frame starts
+// set of probe cells is read back; with Δ the largest relative change of a
+// probe since the last check, among the probes above kFaintProbeFloor of
+// the brightest (so the faint regions a picture shows — light transmitted
+// through a thick slab — count as much as the bright ones: a relative L1
+// change over all probes is the bright region's and understated the
+// faint one's remaining change about 25×), and r the ratio of successive
+// Δ or of successive summed changes over all probes, whichever is larger
+// (the lattice converges geometrically), the remaining change is
+// estimated as Δ·r/(1 − r), and the channel stops below the tolerance or at
+// the step cap. A frame starts
 // from the previous frame's densities (warm start) unless restart() is
 // called or nothing was there.
 //
@@ -67,6 +77,41 @@ inline constexpr double kMinRetention = 0x1p-25 / 1e-4;
 // edge: where the escape of a voxel of this shape falls to kMinRetention.
 double latticeDepthLimit(int directions, const glm::dvec3& voxelSize);
 
+// Each link slot's share of the sphere's directions when every direction
+// goes to its nearest link, on voxels of `voxelSize` (sums to 1): the
+// isotropic distribution the birth shares are taken relative to.
+std::vector<float> latticeLinkSolidAngles(int directions, const glm::dvec3& voxelSize);
+
+// The light pass's beam, which an anisotropic medium's source is born
+// about: smoothed fluence (RGB per cell) and power-weighted direction (xyz
+// per cell), PhotonStage::fluence() and fluenceDirection().
+struct LatticeBeam {
+    const gl::Buffer* fluence = nullptr;
+    const gl::Buffer* direction = nullptr;
+};
+
+// Probes fainter than this share of the brightest do not enter the
+// convergence measure: a thousandth of the brightest is about the faintest
+// an image exposed for the bright part shows (8 bits), and the relative
+// change of still fainter probes would set the step count alone.
+inline constexpr double kFaintProbeFloor = 1e-3;
+
+// The validated resolution: voxels up to a quarter of the lattice's mean
+// free path along their longest edge (σt′·h ≤ 1/4, σt′ = σa + σs(1 − f)
+// with f the δ-Eddington forward share, 0 where g ≤ 1/3), where the slabs
+// against Monte Carlo hold within 3.3% (docs/accuracy.md, multiple
+// scattering). At half a mean free path the lattice's reflectance is 4.3%
+// low at albedo 0.5 and its deep transmission 12.6% low at τ = 20, albedo
+// 0.99.
+inline constexpr double kValidatedVoxelDepth = 0.25;
+
+// Scattering voxels coarser than the validated resolution this frame.
+struct LatticeResolution {
+    double validated = kValidatedVoxelDepth;
+    std::uint64_t coarseVoxels = 0;  // scattering cells of σt′·h above it
+    double coarsest = 0.0;           // the largest σt′·h along a scattering voxel's longest edge
+};
+
 // Voxels beyond the depth limit this frame.
 struct LatticeDepth {
     double limit = 0.0;            // latticeDepthLimit of the grid
@@ -78,8 +123,8 @@ struct LatticeDepth {
 struct LatticeChannel {
     int iterations = 0;
     bool capped = false;         // stopped at maxIterations, not converged
-    double change = 0.0;         // relative L1 change at the probes per step, over the last check
-    double remaining = 0.0;      // estimated remaining relative change (the convergence measure)
+    double change = 0.0;         // largest relative change of a probe per step, over the last check
+    double remaining = 0.0;      // estimated remaining relative change of that probe (the convergence measure)
     double source = 0.0;         // born from the light pass's scattering
     double absorbed = 0.0;
     std::array<double, 6> escaped{};  // through the grid faces −x, +x, −y, +y, −z, +z
@@ -95,6 +140,7 @@ struct LatticeStats {
     bool grey = false;       // one channel solved for all three
     std::array<LatticeChannel, 3> channels;
     LatticeDepth depth;
+    LatticeResolution resolution;
     int iterations() const;  // all channels together
     bool capped() const;
     // Every channel met the tolerance and no voxel is beyond the depth limit.
@@ -113,8 +159,10 @@ public:
 
     // Diffuses the light the light pass scattered: `scatteredPower` holds,
     // RGB per cell in W, what the photons lost to scattering there
-    // (PhotonStage::scatteredPower).
-    LatticeStats run(const FieldTextures& fields, const gl::Buffer& scatteredPower);
+    // (PhotonStage::scatteredPower). `beam`: where the medium is anisotropic
+    // (FieldTextures::hasAnisotropy), the beam that light was scattered out
+    // of; required there, unused elsewhere.
+    LatticeStats run(const FieldTextures& fields, const gl::Buffer& scatteredPower, const LatticeBeam& beam = {});
     // The next run starts from no light rather than the last densities.
     void restart() { warm_ = false; }
 
@@ -134,12 +182,16 @@ private:
     struct Survey {
         bool channelsDiffer = false;
         LatticeDepth depth;
+        LatticeResolution resolution;
     };
     Survey survey();
     void findInterfaces();
-    gl::Program step_, probe_, result_, survey_, interfacePass_;
+    void findBirthShares(const LatticeBeam& beam);
+    gl::Program step_, probe_, result_, survey_, interfacePass_, birthPass_;
     SharpSurfaceBuffer surfaces_;
     gl::Buffer interfaces_;  // per cell uvec4 (lattice_scattering.comp); empty without sharp surfaces
+    bool directed_ = false;  // an anisotropic medium: the source is born in the beam's phase function
+    gl::Buffer birth_;       // per link slot and cell, the source's share (lattice_scattering.comp); empty unless directed_
     std::array<std::array<gl::Buffer, 2>, 3> states_;  // per channel, ping-pong
     std::array<int, 3> current_{0, 0, 0};              // which of the pair holds the densities
     gl::Buffer probeValues_, tallies_, fluence_, surveyValues_;

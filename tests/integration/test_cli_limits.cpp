@@ -1,6 +1,8 @@
 // What `eikon run` says where a scene goes past what eikon can compute or
 // hold: a multiple-scattering lattice whose voxels are too thick for its
-// float arithmetic (render/stages/LatticeScattering.h, the depth limit), and
+// float arithmetic (render/stages/LatticeScattering.h, the depth limit) or
+// coarser than its validated resolution (a quarter of a reduced mean free
+// path per voxel), and
 // documented sizes that need more memory than the machine's limit
 // (bridge/core/MemoryLimit.h, render/graph/MemoryEstimate.h), lowered here
 // by EIKON_MEMORY_LIMIT_MB: refused before the big allocation.
@@ -49,7 +51,8 @@ int count(const std::string& text, const std::string& what) {
 
 // A medium of albedo 1 on 16³ voxels of 1/16 m, lit from above, its light
 // diffused on the lattice: `extinction` 640/m is an optical depth of 40 per
-// voxel, far past the limit of 14 on 14 links; 32/m is 2.
+// voxel, far past the limit of 14 on 14 links; 32/m is 2, within it but
+// eight times the validated resolution; 3.2/m is 0.2, within both.
 std::string albedoOneScene(double extinction) {
     const std::string sigma = std::to_string(extinction);
     return R"({
@@ -66,12 +69,14 @@ std::string albedoOneScene(double extinction) {
 // Beyond the depth limit the lattice's state stops moving at once (its
 // change reads 0 and its ledger balances, all the light counted absorbed):
 // the report says it is not converged and why, and stderr says so once a
-// run, with the depth found, the limit and what to change.
+// run, with the depth found, the limit and what to change (and, once, that
+// the voxels are coarser than the validated resolution).
 TEST_F(CliLimits, LatticeBeyondItsDepthLimitIsWarnedAndNotConverged) {
     const std::string thick = writeScene("thick.json", albedoOneScene(640.0));
     const Outcome outcome = runEikon("run " + thick + " --out " + (dir_ / "thick").string() + " --frames 2 --quiet");
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
-    EXPECT_EQ(count(outcome.output, "eikon: warning:"), 1) << outcome.output;
+    EXPECT_EQ(count(outcome.output, "eikon: warning:"), 2) << outcome.output;
+    EXPECT_EQ(count(outcome.output, "too thick for the multiple-scattering lattice"), 1) << outcome.output;
     EXPECT_NE(outcome.output.find("optical depth up to 40 across a voxel, beyond its limit of 14"), std::string::npos)
         << outcome.output;
     EXPECT_NE(outcome.output.find("grid.resolution"), std::string::npos) << outcome.output;
@@ -93,11 +98,45 @@ TEST_F(CliLimits, LatticeBeyondItsDepthLimitIsWarnedAndNotConverged) {
     const std::string thin = writeScene("thin.json", albedoOneScene(32.0));
     const Outcome within = runEikon("run " + thin + " --out " + (dir_ / "thin").string() + " --quiet");
     ASSERT_EQ(within.exitCode, 0) << within.output;
-    EXPECT_EQ(count(within.output, "eikon: warning:"), 0) << within.output;
+    EXPECT_EQ(count(within.output, "too thick"), 0) << within.output;
     const nlohmann::json lattice = reportLines(dir_ / "thin").at(0).at("multiple_scattering");
     EXPECT_TRUE(lattice.at("converged").get<bool>()) << lattice;
     EXPECT_EQ(lattice.at("depth_limit").at("voxels_beyond").get<int>(), 0) << lattice;
     EXPECT_FALSE(lattice.at("depth_limit").contains("warning")) << lattice;
+}
+
+// Voxels of reduced optical depth 2 (albedo 1, g = 0: σt′ = σt), eight
+// times the validated quarter: stderr warns once, naming the depth, the
+// limit and grid.resolution; the report's multiple_scattering and its
+// per-frame error estimate carry the same. At 0.2 neither says anything.
+TEST_F(CliLimits, LatticeCoarserThanItsValidatedResolutionIsWarned) {
+    const std::string coarse = writeScene("coarse.json", albedoOneScene(32.0));
+    const Outcome outcome = runEikon("run " + coarse + " --out " + (dir_ / "coarse").string() +
+                                     " --frames 2 --quiet --set render.error_estimate=true");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    EXPECT_EQ(count(outcome.output, "coarser than the multiple-scattering lattice's validated resolution"), 1)
+        << outcome.output;
+    EXPECT_NE(outcome.output.find("up to 2 reduced mean free paths"), std::string::npos) << outcome.output;
+    EXPECT_NE(outcome.output.find("beyond 0.25"), std::string::npos) << outcome.output;
+    const nlohmann::json line = reportLines(dir_ / "coarse").at(0);
+    const nlohmann::json& resolution = line.at("multiple_scattering").at("voxel_resolution");
+    EXPECT_EQ(resolution.at("coarse_voxels").get<int>(), 16 * 16 * 16) << resolution;
+    EXPECT_NEAR(resolution.at("coarsest_reduced_depth").get<double>(), 2.0, 1e-5) << resolution;
+    EXPECT_NEAR(resolution.at("validated_reduced_depth").get<double>(), 0.25, 1e-12) << resolution;
+    EXPECT_NE(resolution.at("warning").get<std::string>().find("grid.resolution"), std::string::npos) << resolution;
+    EXPECT_EQ(line.at("error_estimate").at("multiple_scattering").at("warning"), resolution.at("warning")) << line;
+
+    const std::string fine = writeScene("fine.json", albedoOneScene(3.2));
+    const Outcome within = runEikon("run " + fine + " --out " + (dir_ / "fine").string() +
+                                    " --quiet --set render.error_estimate=true");
+    ASSERT_EQ(within.exitCode, 0) << within.output;
+    EXPECT_EQ(count(within.output, "lattice"), 0) << within.output;
+    const nlohmann::json fineLine = reportLines(dir_ / "fine").at(0);
+    const nlohmann::json& fineResolution = fineLine.at("multiple_scattering").at("voxel_resolution");
+    EXPECT_EQ(fineResolution.at("coarse_voxels").get<int>(), 0) << fineResolution;
+    EXPECT_NEAR(fineResolution.at("coarsest_reduced_depth").get<double>(), 0.2, 1e-6) << fineResolution;
+    EXPECT_FALSE(fineResolution.contains("warning")) << fineResolution;
+    EXPECT_FALSE(fineLine.at("error_estimate").contains("multiple_scattering")) << fineLine;
 }
 
 // ---- Memory -----------------------------------------------------------------

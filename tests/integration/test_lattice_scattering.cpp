@@ -450,6 +450,43 @@ TEST(LatticeScattering, VoxelsBeyondTheDepthLimitAreNeverConverged) {
     EXPECT_NEAR(thin.reflected + thin.transmitted, 1.0, 1e-3);
 }
 
+// The convergence measure sees faint regions. A slab of τ = 20, albedo
+// 0.99 on 80 cells lets out 0.75 of the light back and 0.015 through its
+// far face, where the fluence is some hundred times fainter than under the
+// lit face. Stopped at the default tolerance 1e-3 from a cold start, its
+// transmittance is within 2e-3 of the lattice's own at 1e-7 and the
+// reflectance within 1e-3, and the remaining change it reported is within
+// a factor 3 of the true one (measured 8.6e-4 after 1392 steps, reported
+// 9.1e-4). A relative L1 change over all probes, the bright region's,
+// stopped it after 1104 steps 5.0e-3 short, reporting 9.3e-4.
+TEST(LatticeScattering, ConvergenceCountsTheFaintRegions) {
+    const SlabResult stopped = latticeSlab(20.0, 0.99, 14, 1e-3, 80);
+    const SlabResult reference = latticeSlab(20.0, 0.99, 14, 1e-7, 80);
+    ASSERT_FALSE(stopped.stats.capped());
+    ASSERT_FALSE(reference.stats.capped());
+    const double transmittedChange = std::abs(stopped.transmitted / reference.transmitted - 1.0);
+    const double reflectedChange = std::abs(stopped.reflected / reference.reflected - 1.0);
+    test::reportFigure("faint_transmittance_remaining_change", transmittedChange);
+    test::reportFigure("bright_reflectance_remaining_change", reflectedChange);
+    test::reportFigure("reported_remaining_change", stopped.stats.channels[0].remaining);
+    test::reportFigure("steps_at_tolerance_1e-3", stopped.stats.channels[0].iterations);
+    EXPECT_LT(transmittedChange, 2e-3);
+    EXPECT_LT(reflectedChange, 1e-3);
+    EXPECT_LT(transmittedChange, 3.0 * stopped.stats.channels[0].remaining);
+}
+
+// Voxels coarser than the validated quarter of a reduced mean free path are
+// counted: τ = 20 on 40 cells (0.5 each, all 40 coarse), on 100 (0.2: none).
+TEST(LatticeScattering, VoxelsCoarserThanTheValidatedResolutionAreCounted) {
+    const SlabResult coarse = latticeSlab(20.0, 0.99, 14, 1e-3, 40);
+    EXPECT_EQ(coarse.stats.resolution.coarseVoxels, 40u);
+    EXPECT_NEAR(coarse.stats.resolution.coarsest, 0.5, 1e-6);
+    EXPECT_EQ(coarse.stats.resolution.validated, 0.25);
+    const SlabResult fine = latticeSlab(20.0, 0.99, 14, 1e-3, 100);
+    EXPECT_EQ(fine.stats.resolution.coarseVoxels, 0u);
+    EXPECT_NEAR(fine.stats.resolution.coarsest, 0.2, 1e-6);
+}
+
 // A frame starts from the last one's densities: the same source again is
 // converged at the first check, a source 10% stronger takes fewer steps
 // than from nothing; and two lattices given the same input agree bit for

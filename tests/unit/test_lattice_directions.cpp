@@ -2,7 +2,9 @@
 // are distinct, come in opposite pairs, and their weights are a quadrature
 // of the sphere — total 1, no mean direction, second moments δ/3 (the
 // diffusion limit's), on 18 links the fourth moments too, and on 14 links
-// the continuum's half-range flux.
+// the continuum's half-range flux; the δ-Eddington phase function the
+// lattice scatters anisotropic media by; and the quadrature that projects
+// the Henyey–Greenstein distribution of the first scattering on the links.
 #include "shaders/common/cpp_shim.h"
 
 #include <gtest/gtest.h>
@@ -100,6 +102,91 @@ TEST(LatticeDirections, MeanTransmittanceIsContinuousAtItsSeries) {
         const double exact = x > 0.0f ? -std::expm1(-static_cast<double>(x)) / x : 1.0;
         EXPECT_NEAR(shader::mean_transmittance(x), exact, 3e-7 * exact) << x;
     }
+}
+
+// The δ-Eddington split keeps the mean cosine, f + (1 − f)·g′ = g, with
+// |g′| ≤ 1/3 so the linear phase function stays non-negative on the links;
+// no δ part at or below g = 1/3.
+TEST(LatticeDirections, TheDeltaSplitKeepsTheMeanCosine) {
+    EXPECT_NEAR(shader::lattice_delta_fraction(0.8f), 0.7, 1e-6);
+    EXPECT_NEAR(shader::lattice_residual_asymmetry(0.8f), 1.0 / 3.0, 1e-6);
+    for (float g : {0.0f, 0.2f, 1.0f / 3.0f, 0.5f, 0.8f, 0.95f}) {
+        const double f = shader::lattice_delta_fraction(g), residual = shader::lattice_residual_asymmetry(g);
+        EXPECT_NEAR(f + (1.0 - f) * residual, g, 1e-6) << g;
+        EXPECT_LE(std::abs(residual), 1.0 / 3.0 + 1e-7) << g;
+    }
+    EXPECT_EQ(shader::lattice_delta_fraction(0.3f), 0.0f);
+    EXPECT_NEAR(shader::lattice_residual_asymmetry(-0.2f), -0.2, 1e-7);
+}
+
+// The linear phase function w_i·(1 + 3g′ ĉ_i·m) on the links: total 1 and
+// mean direction g′·m for any unit m, because the weights' second moments
+// are I/3.
+TEST(LatticeDirections, TheLinearPhaseFunctionHasItsMeanCosine) {
+    const glm::dvec3 m = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
+    const double residual = 1.0 / 3.0;
+    for (int directions : {6, 14, 18}) {
+        double total = 0.0;
+        glm::dvec3 mean(0.0);
+        for (int i = 0; i < directions; ++i) {
+            const int d = lattice_link(i, directions);
+            const glm::dvec3 c = glm::normalize(glm::dvec3(lattice_offset(d)));
+            const double share = lattice_weight(d, directions) * (1.0 + 3.0 * residual * glm::dot(c, m));
+            EXPECT_GE(share, 0.0);
+            total += share;
+            mean += share * c;
+        }
+        EXPECT_NEAR(total, 1.0, 1e-6) << directions;
+        EXPECT_NEAR(glm::length(mean - residual * m), 0.0, 1e-6) << directions;
+    }
+}
+
+// The HG quantile inverts the distribution's closed-form CDF
+// P(cos θ ≤ x) = (1 − g²)/(2g)·(1/√(1 + g² − 2gx) − 1/(1 + g)), and the
+// birth quadrature (32 rings × 8 azimuths about the axis) integrates the
+// first two moments of HG: ⟨cos θ⟩ = g and ⟨cos²θ⟩ = (1 + 2g²)/3 (the HG
+// Legendre coefficients g^l), within 3e-3 at g = 0.8 and 0 about a skew axis
+// (the midpoint rule's error in u at g = 0.8, h²/24 times the change of the
+// integrand's slope over [0, 1]: 1.3e-3 and 2.4e-3 measured).
+TEST(LatticeDirections, TheBirthQuadratureIntegratesHenyeyGreenstein) {
+    for (double g : {0.8, 0.3, -0.5}) {
+        for (double u : {0.01, 0.3, 0.5, 0.97}) {
+            const double x = shader::lattice_hg_quantile(static_cast<float>(u), static_cast<float>(g));
+            const double cdf = (1.0 - g * g) / (2.0 * g) * (1.0 / std::sqrt(1.0 + g * g - 2.0 * g * x) - 1.0 / (1.0 + g));
+            EXPECT_NEAR(cdf, u, 2e-5) << g << " " << u;
+        }
+    }
+    const glm::vec3 axis = glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f));
+    for (double g : {0.8, 0.0}) {
+        double first = 0.0, second = 0.0, unit = 0.0;
+        const int n = shader::LATTICE_BIRTH_RINGS * shader::LATTICE_BIRTH_AZIMUTHS;
+        for (int j = 0; j < shader::LATTICE_BIRTH_RINGS; ++j)
+            for (int k = 0; k < shader::LATTICE_BIRTH_AZIMUTHS; ++k) {
+                const glm::vec3 d = shader::lattice_birth_direction(axis, static_cast<float>(g), j, k);
+                const double mu = glm::dot(d, axis);
+                first += mu / n;
+                second += mu * mu / n;
+                unit = std::max(unit, std::abs(static_cast<double>(glm::length(d)) - 1.0));
+            }
+        EXPECT_NEAR(first, g, 3e-3) << g;
+        EXPECT_NEAR(second, (1.0 + 2.0 * g * g) / 3.0, 3e-3) << g;
+        EXPECT_LT(unit, 1e-5);
+    }
+}
+
+// The nearest link of a direction is the one at the smallest angle: along
+// a link, that link; on cubic voxels the 6-link lattice's cells are the
+// cube's faces (the largest component's axis).
+TEST(LatticeDirections, TheNearestLinkIsTheClosestInAngle) {
+    const glm::vec3 cube(1.0f);
+    for (int directions : {6, 14, 18})
+        for (int i = 0; i < directions; ++i) {
+            const glm::vec3 along = glm::normalize(glm::vec3(lattice_offset(lattice_link(i, directions))));
+            EXPECT_EQ(shader::lattice_nearest_slot(along, cube, directions), i) << directions;
+        }
+    EXPECT_EQ(shader::lattice_nearest_slot(glm::normalize(glm::vec3(0.2f, -0.9f, 0.5f)), cube, 6), 3);  // −y
+    // 14 links: (0.6, 0.55, 0.58) lies nearer the body diagonal than any axis.
+    EXPECT_EQ(lattice_link(shader::lattice_nearest_slot(glm::normalize(glm::vec3(0.6f, 0.55f, 0.58f)), cube, 14), 14), 18);
 }
 
 }  // namespace
