@@ -114,21 +114,30 @@ double FluidSimulation::maxCellCrossingRate() {
 
 void FluidSimulation::advanceFrame() {
     for (PhaseTiming& t : timings_) t = {t.phase};
+    report_ = {};
+    report_.budgetsKept = !device_;
     double remaining = desc_.frameTime;
     int minimumLeft = desc_.substeps;
-    lastSubsteps_ = 0;
+    double rate = maxCellCrossingRate();
     while (true) {
         // Substeps left: at least the requested count, and enough that the
-        // fastest face crosses at most `cfl` cells in one.
-        const double needed = std::ceil(remaining * maxCellCrossingRate() / desc_.cfl);
-        const int left = std::max(minimumLeft, static_cast<int>(std::min(needed, 1e9)));
+        // fastest face crosses at most `cfl` cells in one — refused before
+        // the frame's count would pass max_substeps (a stiff flow would
+        // otherwise run on for hours).
+        const double needed = std::ceil(remaining * rate / desc_.cfl);
+        if (report_.substeps + std::max(needed, static_cast<double>(minimumLeft)) > desc_.maxSubsteps)
+            refuseSubsteps(frames_ + 1, report_.substeps + needed, rate, desc_);
+        const int left = std::max(minimumLeft, static_cast<int>(needed));
         const double dt = left <= 1 ? remaining : remaining / left;
         substep(dt);
-        ++lastSubsteps_;
+        ++report_.substeps;
+        rate = maxCellCrossingRate();
+        report_.cellsPerSubstep = std::max(report_.cellsPerSubstep, rate * dt);
         if (left <= 1) break;
         remaining -= dt;
         minimumLeft = std::max(minimumLeft - 1, 1);
     }
+    report_.fastFlow = describeFastFlow(report_, desc_);
     ++frames_;
     updateTime();
 }
@@ -139,8 +148,12 @@ void FluidSimulation::updateTime() { time_ = static_cast<double>(frames_) * desc
 
 void FluidSimulation::step(double dt) {
     for (PhaseTiming& t : timings_) t = {t.phase};
+    report_ = {};
+    report_.budgetsKept = !device_;
     substep(dt);
-    lastSubsteps_ = 1;
+    report_.substeps = 1;
+    report_.cellsPerSubstep = maxCellCrossingRate() * dt;
+    report_.fastFlow = describeFastFlow(report_, desc_);
     steppedTime_ += dt;
     updateTime();
 }
@@ -161,9 +174,11 @@ void FluidSimulation::substep(double dt) {
 
 void FluidSimulation::substepOnCpu(double dt) {
     checkFinite(kSubstepStart, kScalars | kVelocity | kPressure);  // what was handed in from outside
+    std::array<double, 3> totals = scalarTotals();
     {
         PhaseClock clock(timing(kSources));
         sources_.applyScalars(state_);
+        totals = book(&ScalarBudget::sources, totals);
         addBuoyancy(state_, domain_, desc_, dt);
         sources_.applyVelocity(state_);
         enforceVelocityBoundaries(state_.flow, domain_);
@@ -177,8 +192,10 @@ void FluidSimulation::substepOnCpu(double dt) {
         } else {
             advectConserving(scalars, dt);
         }
+        totals = book(&ScalarBudget::advection, totals);
         enforceVelocityBoundaries(state_.flow, domain_);
         sources_.applyScalars(state_);
+        totals = book(&ScalarBudget::sources, totals);
         checkFinite(kAfterAdvection, kScalars | kVelocity);
     }
     {
@@ -193,6 +210,8 @@ void FluidSimulation::substepOnCpu(double dt) {
         run(temperatureDiffusion_, state_.temperature, desc_.thermalDiffusivity);
         run(concentrationDiffusion_, state_.concentration, desc_.concentrationDiffusivity);
         run(dyeDiffusion_, state_.dye, desc_.dyeDiffusivity);
+        // Only held cells change a total here: heat conducted out of hot plates.
+        book(&ScalarBudget::sources, totals);
         checkFinite(kAfterDiffusion, kScalars | kVelocity);
     }
     {
@@ -216,6 +235,23 @@ void FluidSimulation::advectConserving(const std::vector<GridField*>& scalars, d
     advect(state_.flow, scalars, dt, advection_);
     for (std::size_t f = 0; f < scalars.size(); ++f)
         restoreTotal(*scalars[f], budgets[f].total, budgets[f].low, budgets[f].high);
+}
+
+std::array<double, 3> FluidSimulation::scalarTotals() const {
+    const double volume = state_.flow.grid.voxelVolume();
+    const double cells = static_cast<double>(state_.temperature.count());
+    return {(sum(state_.temperature.values) - cells * desc_.ambientTemperature) * volume,
+            sum(state_.concentration.values) * volume, sum(state_.dye.values) * volume};
+}
+
+std::array<double, 3> FluidSimulation::book(double ScalarBudget::*part, const std::array<double, 3>& before) {
+    const std::array<double, 3> now = scalarTotals();
+    ScalarBudget* const budgets[3] = {&report_.heat, &report_.concentration, &report_.dye};
+    for (std::size_t s = 0; s < 3; ++s) {
+        budgets[s]->*part += now[s] - before[s];
+        budgets[s]->total = now[s];
+    }
+    return now;
 }
 
 void FluidSimulation::checkFinite(const SolverPhase& phase, unsigned fields) const {
