@@ -13,8 +13,8 @@ namespace eikon::sim {
 // Cells the fastest face may cross in one substep before the advected fields
 // stop meaning much. Semi-Lagrangian advection is stable at any step, but its
 // back-traced departure points then jump over the flow's structures;
-// [Bridson15] §3.2 (after Foster and Fedkiw) keeps the step within about five
-// cells of the fastest velocity.
+// [Bridson15] ch. 3, "Time Step Size" (after Foster and Fedkiw), keeps the
+// step within about five cells of the fastest velocity.
 constexpr double kMeaningfulCellsPerSubstep = 5.0;
 
 // The change of a scalar's volume integral Σ φ·V over a frame (V the cell
