@@ -133,7 +133,7 @@ TEST(FluidFrameReport, SourceHeatAndDyeAreTheClosedBoxsGain) {
 
 // Still fluid over a wall held ΔT above ambient: the heat the report says the
 // plate put in is the conduction into a half-space,
-// Q(t) = A·ΔT·2·√(κt/π) ([Carslaw59] §2.4, the integral of ΔT·erfc(y/2√(κt))),
+// Q(t) = A·ΔT·2·√(κt/π) ([Carslaw59] ch. II, the integral of ΔT·erfc(y/2√(κt))),
 // less the half cell between the held cell's centre and the first free
 // cell's face that the cell sum leaves out (trapezoid rule, A·ΔT·h/2).
 TEST(FluidFrameReport, PlateHeatIsConductionIntoAHalfSpace) {
