@@ -19,8 +19,9 @@
 //   sample (MapDisplacement.h), and its relative L1 change taken, plus the
 //   power of photons that end differently or change power. Fluence: the
 //   relative L1 change its photons would make if their displacements in
-//   voxels did not cancel (an upper bound; discretisationOfPhotons). The image's is the relative L1 change of
-//   a small view drawn with the scene's step and with the reference's. A step that jumps the medium shows at
+//   voxels did not cancel (an upper bound; discretisationOfPhotons). The
+//   image's is the relative L1 change of a small view drawn with the scene's
+//   step and with the reference's. A step that jumps the medium shows at
 //   once; an error both marches share (the grid's resolution, the smoothing)
 //   does not.
 #pragma once
