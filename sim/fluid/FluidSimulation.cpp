@@ -116,6 +116,7 @@ void FluidSimulation::advanceFrame() {
     for (PhaseTiming& t : timings_) t = {t.phase};
     report_ = {};
     report_.budgetsKept = !device_;
+    const std::array<double, 3> start = report_.budgetsKept ? scalarTotals() : std::array<double, 3>{};
     double remaining = desc_.frameTime;
     int minimumLeft = desc_.substeps;
     double rate = maxCellCrossingRate();
@@ -138,6 +139,7 @@ void FluidSimulation::advanceFrame() {
         minimumLeft = std::max(minimumLeft - 1, 1);
     }
     report_.fastFlow = describeFastFlow(report_, desc_);
+    if (report_.budgetsKept) closeBudgets(start);
     ++frames_;
     updateTime();
 }
@@ -150,10 +152,12 @@ void FluidSimulation::step(double dt) {
     for (PhaseTiming& t : timings_) t = {t.phase};
     report_ = {};
     report_.budgetsKept = !device_;
+    const std::array<double, 3> start = report_.budgetsKept ? scalarTotals() : std::array<double, 3>{};
     substep(dt);
     report_.substeps = 1;
     report_.cellsPerSubstep = maxCellCrossingRate() * dt;
     report_.fastFlow = describeFastFlow(report_, desc_);
+    if (report_.budgetsKept) closeBudgets(start);
     steppedTime_ += dt;
     updateTime();
 }
@@ -174,11 +178,9 @@ void FluidSimulation::substep(double dt) {
 
 void FluidSimulation::substepOnCpu(double dt) {
     checkFinite(kSubstepStart, kScalars | kVelocity | kPressure);  // what was handed in from outside
-    std::array<double, 3> totals = scalarTotals();
     {
         PhaseClock clock(timing(kSources));
-        sources_.applyScalars(state_);
-        totals = book(&ScalarBudget::sources, totals);
+        addToSources(sources_.applyScalars(state_));
         addBuoyancy(state_, domain_, desc_, dt);
         sources_.applyVelocity(state_);
         enforceVelocityBoundaries(state_.flow, domain_);
@@ -192,10 +194,8 @@ void FluidSimulation::substepOnCpu(double dt) {
         } else {
             advectConserving(scalars, dt);
         }
-        totals = book(&ScalarBudget::advection, totals);
         enforceVelocityBoundaries(state_.flow, domain_);
-        sources_.applyScalars(state_);
-        totals = book(&ScalarBudget::sources, totals);
+        addToSources(sources_.applyScalars(state_));
         checkFinite(kAfterAdvection, kScalars | kVelocity);
     }
     {
@@ -207,11 +207,14 @@ void FluidSimulation::substepOnCpu(double dt) {
         };
         for (int axis = 0; axis < 3; ++axis)
             run(velocityDiffusion_[axis], state_.flow.velocity[axis], desc_.viscosity);
+        // Heat conducted out of hot plates: the one change of a total here
+        // (Neumann edges, solids excluded; Diffusion.h).
+        const bool conducts = sources_.holdsTemperature();
+        const double heatBefore = conducts ? sum(state_.temperature.values) : 0.0;
         run(temperatureDiffusion_, state_.temperature, desc_.thermalDiffusivity);
+        if (conducts) addToSources({sum(state_.temperature.values) - heatBefore, 0.0, 0.0});
         run(concentrationDiffusion_, state_.concentration, desc_.concentrationDiffusivity);
         run(dyeDiffusion_, state_.dye, desc_.dyeDiffusivity);
-        // Only held cells change a total here: heat conducted out of hot plates.
-        book(&ScalarBudget::sources, totals);
         checkFinite(kAfterDiffusion, kScalars | kVelocity);
     }
     {
@@ -244,14 +247,20 @@ std::array<double, 3> FluidSimulation::scalarTotals() const {
             sum(state_.concentration.values) * volume, sum(state_.dye.values) * volume};
 }
 
-std::array<double, 3> FluidSimulation::book(double ScalarBudget::*part, const std::array<double, 3>& before) {
-    const std::array<double, 3> now = scalarTotals();
+void FluidSimulation::addToSources(const std::array<double, 3>& change) {
+    const double volume = state_.flow.grid.voxelVolume();
+    report_.heat.sources += change[0] * volume;
+    report_.concentration.sources += change[1] * volume;
+    report_.dye.sources += change[2] * volume;
+}
+
+void FluidSimulation::closeBudgets(const std::array<double, 3>& start) {
+    const std::array<double, 3> end = scalarTotals();
     ScalarBudget* const budgets[3] = {&report_.heat, &report_.concentration, &report_.dye};
     for (std::size_t s = 0; s < 3; ++s) {
-        budgets[s]->*part += now[s] - before[s];
-        budgets[s]->total = now[s];
+        budgets[s]->total = end[s];
+        budgets[s]->advection = end[s] - start[s] - budgets[s]->sources;
     }
-    return now;
 }
 
 void FluidSimulation::checkFinite(const SolverPhase& phase, unsigned fields) const {

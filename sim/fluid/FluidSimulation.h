@@ -101,8 +101,11 @@ private:
     void checkFinite(const SolverPhase& phase, unsigned fields) const;
     // Σ (φ − φ_ambient)·V of temperature, concentration and dye (FrameReport.h).
     std::array<double, 3> scalarTotals() const;
-    // Adds the change of the totals since `before` to the budgets' `part`, and returns the totals now.
-    std::array<double, 3> book(double ScalarBudget::*part, const std::array<double, 3>& before);
+    // Adds changes of Σ φ (over cells) to the budgets' sources.
+    void addToSources(const std::array<double, 3>& change);
+    // With the totals at the frame's start: the totals now, and advection as
+    // the rest of the change.
+    void closeBudgets(const std::array<double, 3>& start);
     PhaseTiming& timing(int phase) { return timings_[static_cast<std::size_t>(phase)]; }
 
     SimDesc desc_;

@@ -25,9 +25,10 @@ struct ScalarBudget {
     // again, and what diffuses out of held cells (the implicit diffusion has
     // Neumann edges and moves nothing into solids, Diffusion.h).
     double sources = 0.0;
-    // Changed by advection: what the flow carries through open faces; in a
-    // closed box 0 up to what the mass correction could not restore
-    // (MassCorrection.h).
+    // The rest of the frame's change: what advection carried through open
+    // faces, or in a closed box what the mass correction could not put back
+    // (MassCorrection.h), and the linear solves' rounding. Buoyancy and
+    // projection touch no scalar.
     double advection = 0.0;
     // Σ (φ − φ_ambient)·V at the end of the frame (φ_ambient: the ambient
     // temperature, 0 for concentration and dye).
