@@ -150,14 +150,9 @@ void FluidSimulation::updateTime() { time_ = static_cast<double>(frames_) * desc
 
 void FluidSimulation::step(double dt) {
     for (PhaseTiming& t : timings_) t = {t.phase};
-    report_ = {};
-    report_.budgetsKept = !device_;
-    const std::array<double, 3> start = report_.budgetsKept ? scalarTotals() : std::array<double, 3>{};
+    report_ = {};  // a step is no frame: its count alone, no crossing read back, no budgets
     substep(dt);
     report_.substeps = 1;
-    report_.cellsPerSubstep = maxCellCrossingRate() * dt;
-    report_.fastFlow = describeFastFlow(report_, desc_);
-    if (report_.budgetsKept) closeBudgets(start);
     steppedTime_ += dt;
     updateTime();
 }
@@ -209,7 +204,7 @@ void FluidSimulation::substepOnCpu(double dt) {
             run(velocityDiffusion_[axis], state_.flow.velocity[axis], desc_.viscosity);
         // Heat conducted out of hot plates: the one change of a total here
         // (Neumann edges, solids excluded; Diffusion.h).
-        const bool conducts = sources_.holdsTemperature();
+        const bool conducts = report_.budgetsKept && sources_.holdsTemperature();
         const double heatBefore = conducts ? sum(state_.temperature.values) : 0.0;
         run(temperatureDiffusion_, state_.temperature, desc_.thermalDiffusivity);
         if (conducts) addToSources({sum(state_.temperature.values) - heatBefore, 0.0, 0.0});

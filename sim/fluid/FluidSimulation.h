@@ -50,7 +50,8 @@ public:
     // a substep the frame's count would exceed it.
     void advanceFrame();
 
-    // One substep of dt seconds (tests, benchmarks); lastTimings() then holds its phases.
+    // One substep of dt seconds (tests, benchmarks); lastTimings() then holds
+    // its phases, lastReport() a count of 1 and nothing else.
     void step(double dt);
 
     // Temperature, concentration and dye on the solver grid, for the optical mapping.

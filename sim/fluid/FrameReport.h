@@ -43,8 +43,9 @@ struct FluidFrameReport {
     double cellsPerSubstep = 0.0;
     // describeFastFlow's words for this frame: empty, or what is wrong and what to change.
     std::string fastFlow;
-    // Whether the budgets were kept: on the CPU backend (the GPU backend
-    // keeps its fields in GPU memory and reports none).
+    // Whether the budgets were kept: by a frame on the CPU backend (the GPU
+    // backend keeps its fields in GPU memory and reports none; a lone
+    // FluidSimulation::step keeps none).
     bool budgetsKept = false;
     ScalarBudget heat, concentration, dye;
 };
