@@ -322,6 +322,11 @@ std::vector<PhaseTiming> SceneFields::lastTimings() const {
     return timings;
 }
 
+std::optional<FluidFrameReport> SceneFields::fluidReport() const {
+    if (!fluid_) return std::nullopt;
+    return fluid_->lastReport();
+}
+
 // The solver or the volume writes the medium (bumping the versions of what
 // changed), then the objects and strokes are composited over it again.
 void SceneFields::refreshFromSimulation() {

@@ -23,6 +23,7 @@
 #include "sim/voxelize/Compositor.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace eikon::sim {
@@ -98,6 +99,8 @@ public:
     // "deform" and "voxelize" (iterations: cells recomputed) for scenes with
     // mesh or water objects.
     std::vector<PhaseTiming> lastTimings() const;
+    // The fluid solver's last frame (FrameReport.h); empty without a solver.
+    std::optional<FluidFrameReport> fluidReport() const;
     // The simulation's own fields on the render grid, for export (empty for a
     // static scene): velocity, temperature, concentration, dye; a volume's
     // density, temperature, flame, velocity. A fluid solver's are only those

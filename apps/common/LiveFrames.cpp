@@ -96,6 +96,7 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     frame.time = fields_.time();
     frame.surfaceVersion = fields_.fields().surfaceVersion;
     frame.phases = fields_.lastTimings();
+    frame.fluid = fields_.fluidReport();
     const std::uint64_t exportedBytes = captureExport(index, frame);
     frame.simulationDevice = fields_.fluidDevice();
     const std::size_t ringFloats = slot.deltaIndex.size() + slot.extinction.size() + slot.scattering.size() +

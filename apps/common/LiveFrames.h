@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <future>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct ProducedFrame {
     double writeFieldsMs = 0.0;
     std::uint64_t surfaceVersion = 0;  // of the sharp surfaces written into the slot
     std::vector<sim::PhaseTiming> phases;
+    std::optional<sim::FluidFrameReport> fluid;  // the fluid solver's substeps and budgets, when it ran
     std::string simulationDevice;     // where the fluid solver or the water ran: "cpu" or "gpu"
     // Bytes that crossed between host and GPU memory to make this frame: the
     // solver's own traffic and the optical fields written into the mapped ring slot.

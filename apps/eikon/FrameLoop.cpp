@@ -4,6 +4,7 @@
 #include "apps/eikon/ErrorWarning.h"
 #include "apps/eikon/FrameOutputs.h"
 #include "apps/eikon/FrameShareLoop.h"
+#include "apps/eikon/FluidWarning.h"
 #include "apps/eikon/LatticeWarning.h"
 #include "apps/eikon/PowerWarning.h"
 #include "apps/eikon/Ranks.h"
@@ -133,6 +134,22 @@ nlohmann::json errorEstimateJson(const render::ErrorEstimate& estimate) {
     return {{"noise", noise}, {"discretisation", discretisation}, {"ms", estimate.milliseconds}};
 }
 
+// The fluid solver's frame (sim/fluid/FrameReport.h): its substeps, the
+// fastest crossing, and each scalar's budget where the CPU kept one.
+nlohmann::json fluidJson(const sim::FluidFrameReport& fluid) {
+    nlohmann::json json = {{"substeps", fluid.substeps}, {"cells_per_substep", fluid.cellsPerSubstep}};
+    if (!fluid.fastFlow.empty()) json["fast_flow_warning"] = fluid.fastFlow;
+    if (fluid.budgetsKept) {
+        auto budget = [](const sim::ScalarBudget& b, const char* unit) {
+            return nlohmann::json{{"unit", unit}, {"sources", b.sources}, {"advection", b.advection}, {"total", b.total}};
+        };
+        json["budgets"] = {{"heat", budget(fluid.heat, "K m3")},
+                           {"concentration", budget(fluid.concentration, "m3")},
+                           {"dye", budget(fluid.dye, "m3")}};
+    }
+    return json;
+}
+
 // Each turn renders the current frame and, while more follow, produces the
 // next (FrameSource.h). The host fields' frame time includes the advance
 // that produced the frame, as the ring's includes nothing of the next one's
@@ -157,6 +174,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
     PowerWarning warning;
     ErrorWarning errorWarning(scene.render.warnError);
     LatticeWarning latticeWarning;
+    FluidWarning fluidWarning;
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
         const bool more = frame + 1 < frames;
@@ -173,6 +191,7 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
             warning.check(frame, result);
             errorWarning.check(frame, result);
             latticeWarning.check(frame, result);
+            fluidWarning.check(frame, current);
             if (!outputs) outputs.emplace(scene, openOutput());
             outputs->write(frame, result,
                            frameReportJson(frame, current, simulated, result, timing,
@@ -248,6 +267,7 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
                               {"iterations", phase.iterations},
                               {"residual", phase.residual}});
         report["simulation"] = phases;
+        if (produced.fluid && produced.simulated) report["fluid"] = fluidJson(*produced.fluid);
         if (!produced.simulationDevice.empty()) report["simulation_device"] = produced.simulationDevice;
     }
     // Everything that crossed between host and GPU memory for this frame:

@@ -269,6 +269,7 @@ struct SimDesc {
     double frameTime = 1.0 / 30.0;      // s of simulated time per rendered frame, > 0
     int substeps = 1;                   // at least this many substeps per frame, >= 1
     double cfl = 2.0;                   // largest |u|·Δt/h of a substep, > 0 (more substeps are taken)
+    int maxSubsteps = 1000;             // a frame that would need more is refused, >= substeps
     glm::dvec3 gravity{0.0, -9.81, 0.0};      // m/s²
     double thermalExpansion = 1.0 / 293.15;   // β in 1/K, >= 0 (ideal gas: 1/T_ambient)
     double concentrationExpansion = 0.0;      // α: relative density excess per unit concentration, >= 0

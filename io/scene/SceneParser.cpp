@@ -35,6 +35,7 @@ constexpr long long kMaxSeed = 4294967295LL;  // 2^32 - 1
 constexpr int kMaxSmoothingWindow = 63;
 constexpr long long kMaxTracerSteps = 2147483647LL;  // 2^31 - 1
 constexpr long long kMaxSubsteps = 10000;
+constexpr long long kMaxSubstepLimit = 1000000;  // sim.max_substeps: a frame of a million substeps is hours
 
 const NumberRange kPositive = NumberRange::above(0.0);
 const NumberRange kNonNegative = NumberRange::atLeast(0.0);
@@ -505,7 +506,8 @@ void readSimOptics(const JsonReader& node, SimDesc& sim) {
 // keys left out.
 SimDesc readSim(const JsonReader& node) {
     SimDesc sim;
-    const auto fields = node.object({"fluid", "device", "resolution", "bounds", "frame_time", "substeps", "cfl", "gravity",
+    const auto fields = node.object({"fluid", "device", "resolution", "bounds", "frame_time", "substeps", "max_substeps", "cfl",
+                                     "gravity",
                                      "thermal_expansion", "concentration_expansion", "viscosity",
                                      "thermal_diffusivity", "concentration_diffusivity", "dye_diffusivity",
                                      "pressure_tolerance", "boundaries", "obstacles", "sources",
@@ -530,6 +532,12 @@ SimDesc readSim(const JsonReader& node) {
     if (auto bounds = fields.optional("bounds")) sim.bounds = readRegion(bounds->object({"min", "max"}));
     if (auto v = fields.optional("frame_time")) sim.frameTime = v->number(kPositive);
     if (auto v = fields.optional("substeps")) sim.substeps = static_cast<int>(v->integer(1, kMaxSubsteps));
+    sim.maxSubsteps = std::max(sim.maxSubsteps, sim.substeps);
+    if (auto v = fields.optional("max_substeps")) {
+        sim.maxSubsteps = static_cast<int>(v->integer(1, kMaxSubstepLimit));
+        if (sim.maxSubsteps < sim.substeps)
+            v->fail("at least sim.substeps (" + std::to_string(sim.substeps) + ")", std::to_string(sim.maxSubsteps));
+    }
     if (auto v = fields.optional("cfl")) sim.cfl = v->number(kPositive);
     if (auto v = fields.optional("gravity")) sim.gravity = v->vec3();
     if (auto v = fields.optional("ambient_temperature")) sim.ambientTemperature = v->number(kPositive);

@@ -1,5 +1,7 @@
 #include "render/stages/ErrorEstimateStage.h"
 
+#include "render/stages/MapDisplacement.h"
+
 #include "bridge/core/PrimeStride.h"
 #include "bridge/layout/GpuLayouts.h"
 #include "gl/GlContext.h"
@@ -149,16 +151,23 @@ ErrorEstimate ErrorEstimateStage::run(const FieldTextures& fields, const Inputs&
     return estimate;
 }
 
-// A photon of power w that lands one texel or more away takes w from one
-// texel and gives it to another: 2w of ‖M − M_ref‖₁; displaced by a fraction
-// f of a texel it crosses into the next with probability about f. One that
-// ends only in one of the two maps adds its power once; a change of power,
-// once. Summed over the probe and divided by the reference map's power, that
-// is the relative L1 change of the map if the displacements of neighbouring
-// photons did not cancel: an upper bound.
+// One probe photon's part that no displacement field describes: a photon
+// that ends only in one of the two maps (or on other receivers) adds its
+// power once; a change of power, once.
+//
+// Receivers: the rest is the frame's map moved by the displacements the
+// probe samples (MapDisplacement.h), so that neighbouring photons'
+// displacements cancel as they do in the map.
+//
+// Fluence: a photon of power w that ends one voxel or more away takes w from
+// one voxel and gives it to another, 2w of ‖M − M_ref‖₁; displaced by a
+// fraction f of a voxel it crosses into the next with probability about f:
+// the relative L1 change of the map if the displacements of neighbouring
+// photons did not cancel, an upper bound.
 double ErrorEstimateStage::discretisationOfPhotons(const std::vector<PhotonEnd>& traced,
                                                    const std::vector<PhotonEnd>& reference, bool onReceivers) const {
     double change = 0.0, referencePower = 0.0;
+    std::vector<std::vector<LandingPair>> pairs(onReceivers ? receivers_.count() : 0);
     const auto counts = [&](const PhotonEnd& end) { return !onReceivers || end.fate == layout::kReceived; };
     for (std::size_t i = 0; i < std::min(traced.size(), reference.size()); ++i) {
         const PhotonEnd& a = traced[i];
@@ -171,15 +180,35 @@ double ErrorEstimateStage::discretisationOfPhotons(const std::vector<PhotonEnd>&
             change += powerA + powerB;
             continue;
         }
-        double length = voxel_;
+        change += std::abs(powerA - powerB);
         if (onReceivers) {
-            const layout::GpuReceiver& receiver = receivers_.receiver(static_cast<unsigned>(a.receiver));
-            length = receiver.origin.w / static_cast<double>(receiver.map.y);  // a texel's edge
+            const auto r = static_cast<unsigned>(a.receiver);
+            pairs[r].push_back({texelOnMap(r, a.position), texelOnMap(r, b.position), std::min(powerA, powerB)});
+            continue;
         }
-        const double displacement = glm::length(glm::dvec3(a.position) - glm::dvec3(b.position)) / length;
-        change += 2.0 * std::min(powerA, powerB) * std::min(1.0, displacement) + std::abs(powerA - powerB);
+        const double displacement = glm::length(glm::dvec3(a.position) - glm::dvec3(b.position)) / voxel_;
+        change += 2.0 * std::min(powerA, powerB) * std::min(1.0, displacement);
     }
-    return referencePower > 0.0 ? change / referencePower : 0.0;
+    double relative = referencePower > 0.0 ? change / referencePower : 0.0;
+    if (onReceivers) {
+        MapChange maps;
+        for (unsigned r = 0; r < receivers_.count(); ++r) {
+            const MapChange map =
+                displacedMapChange(receivers_.download(r), static_cast<int>(receivers_.receiver(r).map.y), pairs[r]);
+            maps.difference += map.difference;
+            maps.norm += map.norm;
+        }
+        if (maps.norm > 0.0) relative += maps.difference / maps.norm;
+    }
+    return relative;
+}
+
+// Where `position` (on receiver r's plane) lies on its map, in texels.
+glm::dvec2 ErrorEstimateStage::texelOnMap(unsigned r, const glm::vec3& position) const {
+    const layout::GpuReceiver& receiver = receivers_.receiver(r);
+    const glm::dvec3 offset = glm::dvec3(position) - glm::dvec3(receiver.origin);
+    const glm::dvec2 uv(glm::dot(offset, glm::dvec3(receiver.axisU)), glm::dot(offset, glm::dvec3(receiver.axisV)));
+    return (uv / static_cast<double>(receiver.origin.w) + 0.5) * static_cast<double>(receiver.map.y);
 }
 
 }  // namespace eikon::render

@@ -14,12 +14,14 @@
 //   reference march — RK4, steps of half the scene's smallest (at most half a
 //   voxel) wherever the index or extinction varies at all, one flight only
 //   through exactly uniform nodes (StepStructureStage::enableReference), where
-//   a straight line is exact. Where they end is compared: from each photon's
-//   displacement in texels (receivers) or voxels (fluence), its change of
-//   power, and whether the two end alike, the relative L1 change of the map
-//   its photons would make if their displacements did not cancel (an upper
-//   bound; discretisationOfPhotons). The image's is the relative L1 change of
-//   a small view drawn with the scene's step and with the reference's. A step that jumps the medium shows at
+//   a straight line is exact. Where they end is compared. Receivers: the
+//   frame's map is moved by the displacement field the probe's landings
+//   sample (MapDisplacement.h), and its relative L1 change taken, plus the
+//   power of photons that end differently or change power. Fluence: the
+//   relative L1 change its photons would make if their displacements in
+//   voxels did not cancel (an upper bound; discretisationOfPhotons). The
+//   image's is the relative L1 change of a small view drawn with the scene's
+//   step and with the reference's. A step that jumps the medium shows at
 //   once; an error both marches share (the grid's resolution, the smoothing)
 //   does not.
 #pragma once
@@ -30,6 +32,8 @@
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/StepStructureStage.h"
 #include "render/stages/ViewStage.h"
+
+#include <glm/vec2.hpp>
 
 #include <memory>
 #include <optional>
@@ -79,6 +83,7 @@ public:
 private:
     double discretisationOfPhotons(const std::vector<PhotonEnd>& scene, const std::vector<PhotonEnd>& reference,
                                    bool onReceivers) const;
+    glm::dvec2 texelOnMap(unsigned receiver, const glm::vec3& position) const;
 
     const ReceiverMaps& receivers_;
     bool noiseByBatches_ = false;

@@ -114,21 +114,32 @@ double FluidSimulation::maxCellCrossingRate() {
 
 void FluidSimulation::advanceFrame() {
     for (PhaseTiming& t : timings_) t = {t.phase};
+    report_ = {};
+    report_.budgetsKept = !device_;
+    const std::array<double, 3> start = report_.budgetsKept ? scalarTotals() : std::array<double, 3>{};
     double remaining = desc_.frameTime;
     int minimumLeft = desc_.substeps;
-    lastSubsteps_ = 0;
+    double rate = maxCellCrossingRate();
     while (true) {
         // Substeps left: at least the requested count, and enough that the
-        // fastest face crosses at most `cfl` cells in one.
-        const double needed = std::ceil(remaining * maxCellCrossingRate() / desc_.cfl);
-        const int left = std::max(minimumLeft, static_cast<int>(std::min(needed, 1e9)));
+        // fastest face crosses at most `cfl` cells in one — refused before
+        // the frame's count would pass max_substeps (a stiff flow would
+        // otherwise run on for hours).
+        const double needed = std::ceil(remaining * rate / desc_.cfl);
+        if (report_.substeps + std::max(needed, static_cast<double>(minimumLeft)) > desc_.maxSubsteps)
+            refuseSubsteps(frames_ + 1, report_.substeps + needed, rate, desc_);
+        const int left = std::max(minimumLeft, static_cast<int>(needed));
         const double dt = left <= 1 ? remaining : remaining / left;
         substep(dt);
-        ++lastSubsteps_;
+        ++report_.substeps;
+        rate = maxCellCrossingRate();
+        report_.cellsPerSubstep = std::max(report_.cellsPerSubstep, rate * dt);
         if (left <= 1) break;
         remaining -= dt;
         minimumLeft = std::max(minimumLeft - 1, 1);
     }
+    report_.fastFlow = describeFastFlow(report_, desc_);
+    if (report_.budgetsKept) closeBudgets(start);
     ++frames_;
     updateTime();
 }
@@ -139,8 +150,9 @@ void FluidSimulation::updateTime() { time_ = static_cast<double>(frames_) * desc
 
 void FluidSimulation::step(double dt) {
     for (PhaseTiming& t : timings_) t = {t.phase};
+    report_ = {};  // a step is no frame: its count alone, no crossing read back, no budgets
     substep(dt);
-    lastSubsteps_ = 1;
+    report_.substeps = 1;
     steppedTime_ += dt;
     updateTime();
 }
@@ -163,7 +175,7 @@ void FluidSimulation::substepOnCpu(double dt) {
     checkFinite(kSubstepStart, kScalars | kVelocity | kPressure);  // what was handed in from outside
     {
         PhaseClock clock(timing(kSources));
-        sources_.applyScalars(state_);
+        addToSources(sources_.applyScalars(state_));
         addBuoyancy(state_, domain_, desc_, dt);
         sources_.applyVelocity(state_);
         enforceVelocityBoundaries(state_.flow, domain_);
@@ -178,7 +190,7 @@ void FluidSimulation::substepOnCpu(double dt) {
             advectConserving(scalars, dt);
         }
         enforceVelocityBoundaries(state_.flow, domain_);
-        sources_.applyScalars(state_);
+        addToSources(sources_.applyScalars(state_));
         checkFinite(kAfterAdvection, kScalars | kVelocity);
     }
     {
@@ -190,7 +202,12 @@ void FluidSimulation::substepOnCpu(double dt) {
         };
         for (int axis = 0; axis < 3; ++axis)
             run(velocityDiffusion_[axis], state_.flow.velocity[axis], desc_.viscosity);
+        // Heat conducted out of hot plates: the one change of a total here
+        // (Neumann edges, solids excluded; Diffusion.h).
+        const bool conducts = report_.budgetsKept && sources_.holdsTemperature();
+        const double heatBefore = conducts ? sum(state_.temperature.values) : 0.0;
         run(temperatureDiffusion_, state_.temperature, desc_.thermalDiffusivity);
+        if (conducts) addToSources({sum(state_.temperature.values) - heatBefore, 0.0, 0.0});
         run(concentrationDiffusion_, state_.concentration, desc_.concentrationDiffusivity);
         run(dyeDiffusion_, state_.dye, desc_.dyeDiffusivity);
         checkFinite(kAfterDiffusion, kScalars | kVelocity);
@@ -216,6 +233,29 @@ void FluidSimulation::advectConserving(const std::vector<GridField*>& scalars, d
     advect(state_.flow, scalars, dt, advection_);
     for (std::size_t f = 0; f < scalars.size(); ++f)
         restoreTotal(*scalars[f], budgets[f].total, budgets[f].low, budgets[f].high);
+}
+
+std::array<double, 3> FluidSimulation::scalarTotals() const {
+    const double volume = state_.flow.grid.voxelVolume();
+    const double cells = static_cast<double>(state_.temperature.count());
+    return {(sum(state_.temperature.values) - cells * desc_.ambientTemperature) * volume,
+            sum(state_.concentration.values) * volume, sum(state_.dye.values) * volume};
+}
+
+void FluidSimulation::addToSources(const std::array<double, 3>& change) {
+    const double volume = state_.flow.grid.voxelVolume();
+    report_.heat.sources += change[0] * volume;
+    report_.concentration.sources += change[1] * volume;
+    report_.dye.sources += change[2] * volume;
+}
+
+void FluidSimulation::closeBudgets(const std::array<double, 3>& start) {
+    const std::array<double, 3> end = scalarTotals();
+    ScalarBudget* const budgets[3] = {&report_.heat, &report_.concentration, &report_.dye};
+    for (std::size_t s = 0; s < 3; ++s) {
+        budgets[s]->total = end[s];
+        budgets[s]->advection = end[s] - start[s] - budgets[s]->sources;
+    }
 }
 
 void FluidSimulation::checkFinite(const SolverPhase& phase, unsigned fields) const {

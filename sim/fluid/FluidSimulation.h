@@ -10,7 +10,8 @@
 //   projection MG-preconditioned CG to the pressure tolerance (PressureSolver.h)
 // Every field is checked for NaN/Inf after every phase (FiniteCheck.h).
 // A frame advances SimDesc::frameTime in at least SimDesc::substeps equal
-// substeps, more where the fastest face would cross more than SimDesc::cfl cells.
+// substeps, more where the fastest face would cross more than SimDesc::cfl cells,
+// and refuses (InputError) a frame that would need more than SimDesc::maxSubsteps.
 // The substeps run here on the CPU, or on an attached FluidDevice (the GPU,
 // sim/gpu/GpuFluidBackend.h), which runs the same phases.
 #pragma once
@@ -23,6 +24,7 @@
 #include "sim/fluid/FiniteCheck.h"
 #include "sim/fluid/FluidDevice.h"
 #include "sim/fluid/FluidState.h"
+#include "sim/fluid/FrameReport.h"
 #include "sim/fluid/PhaseTiming.h"
 #include "sim/fluid/PressureSolver.h"
 #include "sim/fluid/Sources.h"
@@ -44,10 +46,12 @@ public:
     FluidSimulation(const SimDesc& desc, const GridSpec& renderGrid);
 
     // Runs the substeps of one frame. Throws InputError naming field, cell and
-    // phase the moment a NaN or Inf appears.
+    // phase the moment a NaN or Inf appears, and at sim.max_substeps before
+    // a substep the frame's count would exceed it.
     void advanceFrame();
 
-    // One substep of dt seconds (tests, benchmarks); lastTimings() then holds its phases.
+    // One substep of dt seconds (tests, benchmarks); lastTimings() then holds
+    // its phases, lastReport() a count of 1 and nothing else.
     void step(double dt);
 
     // Temperature, concentration and dye on the solver grid, for the optical mapping.
@@ -64,7 +68,9 @@ public:
     const SceneSources& sources() const { return sources_; }
 
     double time() const { return time_; }
-    int lastSubsteps() const { return lastSubsteps_; }
+    int lastSubsteps() const { return report_.substeps; }
+    // The last frame's (or step's) substeps, fastest crossing and scalar budgets.
+    const FluidFrameReport& lastReport() const { return report_; }
     const std::vector<PhaseTiming>& lastTimings() const { return timings_; }
 
     // Adds solid cells (one byte per solver cell, x fastest; non-zero = solid)
@@ -94,6 +100,13 @@ private:
     // kScalars, kVelocity, kPressure), naming the field and the cell.
     enum CheckedFields : unsigned { kScalars = 1, kVelocity = 2, kPressure = 4 };
     void checkFinite(const SolverPhase& phase, unsigned fields) const;
+    // Σ (φ − φ_ambient)·V of temperature, concentration and dye (FrameReport.h).
+    std::array<double, 3> scalarTotals() const;
+    // Adds changes of Σ φ (over cells) to the budgets' sources.
+    void addToSources(const std::array<double, 3>& change);
+    // With the totals at the frame's start: the totals now, and advection as
+    // the rest of the change.
+    void closeBudgets(const std::array<double, 3>& start);
     PhaseTiming& timing(int phase) { return timings_[static_cast<std::size_t>(phase)]; }
 
     SimDesc desc_;
@@ -110,7 +123,7 @@ private:
     double time_ = 0.0;         // simulated time: frames_ · frame time + steppedTime_
     long long frames_ = 0;      // advanceFrame calls
     double steppedTime_ = 0.0;  // Σ dt of step() calls
-    int lastSubsteps_ = 0;
+    FluidFrameReport report_;
     std::unique_ptr<FluidDevice> device_;
     // Which copy is newer, while a device is attached; the host's scalars
     // may be current while the rest of its state is not (scalars()).

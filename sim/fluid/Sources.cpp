@@ -4,6 +4,8 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+
 #include <glm/vector_relational.hpp>
 
 namespace eikon::sim {
@@ -71,17 +73,28 @@ SceneSources::SceneSources(const SimDesc& desc, const MacGrid& mac, const FluidD
     }
 }
 
-void SceneSources::applyScalars(FluidState& state) const {
+std::array<double, 3> SceneSources::applyScalars(FluidState& state) const {
+    std::array<double, 3> change{0.0, 0.0, 0.0};
+    auto set = [&](GridField& field, std::size_t cell, double value, std::size_t scalar) {
+        change[scalar] += value - field.values[cell];
+        field.values[cell] = value;
+    };
     for (const Region& region : regions_) {
         for (std::size_t cell : region.cells) {
             if (region.source.kind == SimDesc::Source::Kind::HotPlate) {
-                state.temperature.values[cell] = region.source.temperature;
+                set(state.temperature, cell, region.source.temperature, 0);
             } else {
-                state.concentration.values[cell] = region.source.concentration;
-                state.dye.values[cell] = region.source.dye;
+                set(state.concentration, cell, region.source.concentration, 1);
+                set(state.dye, cell, region.source.dye, 2);
             }
         }
     }
+    return change;
+}
+
+bool SceneSources::holdsTemperature() const {
+    return std::any_of(regions_.begin(), regions_.end(),
+                       [](const Region& region) { return region.source.kind == SimDesc::Source::Kind::HotPlate; });
 }
 
 void SceneSources::applyVelocity(FluidState& state) const {

@@ -26,8 +26,12 @@ public:
     // ("sim.sources[i]") for a region that holds no cell centre of the solver grid.
     SceneSources(const SimDesc& desc, const MacGrid& mac, const FluidDomain& domain);
 
-    // Hot plates: temperature; jets: concentration and dye.
-    void applyScalars(FluidState& state) const;
+    // Hot plates: temperature; jets: concentration and dye. Returns what
+    // that changed Σ T, Σ c and Σ dye by (over cells, not volume).
+    std::array<double, 3> applyScalars(FluidState& state) const;
+    // Whether a hot plate holds cells (the temperature diffusion then
+    // conducts heat out of them).
+    bool holdsTemperature() const;
     // Jets: the velocity of every free face in the region.
     void applyVelocity(FluidState& state) const;
     // Marks hot-plate cells as Fixed for temperature diffusion.

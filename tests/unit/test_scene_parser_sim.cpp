@@ -25,7 +25,7 @@ json sceneWithSim(const json& sim) {
 const char* const kValidSim = R"({
   "fluid": "liquid", "resolution": [24, 32, 16],
   "bounds": {"min": [-0.2, 0, -0.1], "max": [0.2, 0.5, 0.1]},
-  "frame_time": 0.02, "substeps": 3, "cfl": 1.5, "gravity": [0, -9.8, 0],
+  "frame_time": 0.02, "substeps": 3, "max_substeps": 500, "cfl": 1.5, "gravity": [0, -9.8, 0],
   "thermal_expansion": 3e-4, "concentration_expansion": 0.2, "viscosity": 2e-6,
   "thermal_diffusivity": 1.5e-7, "concentration_diffusivity": 1e-9, "dye_diffusivity": 1e-8,
   "pressure_tolerance": 1e-5, "device": "gpu",
@@ -53,6 +53,7 @@ TEST(SceneParserSim, ParsesEverySimKey) {
     EXPECT_EQ(sim.bounds->max, glm::dvec3(0.2, 0.5, 0.1));
     EXPECT_DOUBLE_EQ(sim.frameTime, 0.02);
     EXPECT_EQ(sim.substeps, 3);
+    EXPECT_EQ(sim.maxSubsteps, 500);
     EXPECT_DOUBLE_EQ(sim.cfl, 1.5);
     EXPECT_EQ(sim.gravity, glm::dvec3(0, -9.8, 0));
     EXPECT_DOUBLE_EQ(sim.thermalExpansion, 3e-4);
@@ -100,6 +101,9 @@ TEST(SceneParserSim, AbsentSimAndFluidDefaults) {
     EXPECT_DOUBLE_EQ(air.viscosity, 1.5e-5);
     EXPECT_DOUBLE_EQ(air.concentrationExpansion, 0.0);
     EXPECT_DOUBLE_EQ(air.pressureTolerance, 1e-6);
+    EXPECT_EQ(air.maxSubsteps, 1000);
+    // A minimum above the default limit raises the limit with it.
+    EXPECT_EQ(parseScene(sceneWithSim(json::object({{"substeps", 5000}})), "test.json").sim->maxSubsteps, 5000);
     EXPECT_EQ(air.mixing, SimDesc::Mixing::Linear);
     EXPECT_DOUBLE_EQ(air.refractivity, 2.93e-4);
 
@@ -125,6 +129,8 @@ TEST(SceneParserSim, BadValuesNameTheirJsonPath) {
         {"frame_time", 0, "sim.frame_time", "a number > 0"},
         {"substeps", 2.5, "sim.substeps", "an integer in [1, 10000]"},
         {"cfl", -1, "sim.cfl", "a number > 0"},
+        {"max_substeps", 0, "sim.max_substeps", "an integer in [1, 1000000]"},
+        {"max_substeps", 1e7, "sim.max_substeps", "an integer in [1, 1000000]"},
         {"viscosity", -1e-6, "sim.viscosity", "a number >= 0"},
         {"pressure_tolerance", 1, "sim.pressure_tolerance", "a number in (0, 1)"},
         {"boundaries", json::object({{"y_max", "leaky"}}), "sim.boundaries.y_max", "one of"},
@@ -149,6 +155,8 @@ TEST(SceneParserSim, BadValuesNameTheirJsonPath) {
         SCOPED_TRACE(c.path);
         expectErrorAt(sceneWithSim(json::object({{c.key, c.value}})), c.path, c.detail);
     }
+    expectErrorAt(sceneWithSim(json::object({{"substeps", 20}, {"max_substeps", 10}})), "sim.max_substeps",
+                  "expected at least sim.substeps (20), found 10");
 }
 
 }  // namespace
