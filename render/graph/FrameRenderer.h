@@ -53,6 +53,7 @@ struct FrameResult {
     UploadBytes copied;           // host bytes the driver read, bytes copied on the GPU
     std::optional<ErrorEstimate> errorEstimate;  // with RendererOptions::estimateErrors
     int pixelStride = 1;  // of the image: 1 the full image, k a preview of one ray per k×k pixels
+    int viewSamples = 1;  // camera rays averaged in each pixel of the image (0: a preview)
     std::optional<ImageSpaceStats> imageSpace;  // where the scene renders in image space
 };
 
@@ -76,7 +77,15 @@ struct RendererOptions {
     // kTemporalFrames frames (ImageSpaceCaustics.h); false keeps the first
     // (the viewer's preview, drawn only while the camera moves).
     bool temporalMean = true;
+    // The viewer's progressive view: a frame that changed is drawn with one
+    // ray a pixel, and each frame after it in which nothing changes adds a
+    // pass of a finer sample grid (ViewStage::refine) until
+    // kProgressiveViewSamples are averaged; false: render.samples_per_pixel a frame.
+    bool progressiveView = false;
 };
+
+// Passes the progressive view averages at most: the grids 1×1 to 5×5, whole.
+constexpr int kProgressiveViewSamples = 1 + 4 + 9 + 16 + 25;
 
 // Whether a scene's frames trace light (photons or the wavefront): to light
 // receivers or in-scattering, or to keep the fluence it asks for.
@@ -144,6 +153,7 @@ private:
     std::unique_ptr<PhotonStage> photons_;
     std::unique_ptr<LatticeScattering> lattice_;
     std::unique_ptr<ViewStage> view_;
+    bool progressiveView_ = false;  // RendererOptions::progressiveView
     std::unique_ptr<DiagnosticStage> diagnostic_;  // in place of view_ where the scene has a diagnostic
     PostStage post_;
     // Image space only: the raster passes' surfaces, the caustic maps, the view.

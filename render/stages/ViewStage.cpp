@@ -92,7 +92,7 @@ layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render
 ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers,
                      bool hasStepStructure, bool multipleScattering, bool recordExit)
     : receivers_(receivers), surfaces_(scene), multipleScattering_(multipleScattering), render_(scene.render),
-      width_(scene.render.width), height_(scene.render.height), samplesPerPixel_(scene.render.samplesPerPixel) {
+      width_(scene.render.width), height_(scene.render.height), samplesPerPixel_(recordExit ? 1 : scene.render.samplesPerPixel) {
     const double voxel = fields.grid().smallestVoxelEdge();
     stepLength_ = scene.render.stepVoxels * voxel;
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);

@@ -32,7 +32,8 @@ struct ViewInputs {
 
 class ViewStage {
 public:
-    // recordExit: also keep each pixel's exit direction (tests).
+    // recordExit: also keep each pixel's exit direction (tests), of one ray
+    // through each pixel's centre (samplesPerPixel() 1).
     // multipleScattering: the scene's in-scattering adds the lattice's fluence.
     ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers, bool hasStepStructure,
               bool multipleScattering, bool recordExit = false);

@@ -159,5 +159,47 @@ TEST(AntiAliasing, GrazingCheckerboardConvergesToTheBoxFilteredImage) {
     EXPECT_LE(atDefault, 0.01) << "at the default render.samples_per_pixel = " << RenderDesc{}.samplesPerPixel;
 }
 
+// The viewer's progressive view: a changed frame is one ray a pixel; each
+// frame in which nothing changes adds a pass of the next finer grid to the
+// mean, which after the 2×2 grid is (I₁ + 4·I₄)/5 of the one-ray and
+// four-ray images, and stops at kProgressiveViewSamples; a moved camera
+// starts again.
+TEST(AntiAliasing, TheProgressiveViewAddsFinerGridsWhileNothingChanges) {
+    glContext();
+    Scene scene = grazingCheckerboard();
+    const std::vector<float> one = render(scene, 1), four = render(scene, 4);
+    const FieldSet fields = sim::voxelizeScene(scene);
+    render::FrameRenderer renderer(scene, fields, {.photons = {}, .progressiveView = true});
+    const auto ran = [](const render::FrameResult& frame, const char* name) {
+        for (const render::StageReport& stage : frame.stages)
+            if (stage.name == name) return stage.ran;
+        return false;
+    };
+    render::FrameResult frame = renderer.render(fields);
+    EXPECT_EQ(frame.viewSamples, 1);
+    EXPECT_EQ(renderer.viewStage().downloadHdr(), one);
+    for (int pass = 2; pass <= 5; ++pass) {
+        frame = renderer.render(fields);
+        EXPECT_TRUE(ran(frame, "view_refine"));
+        EXPECT_FALSE(ran(frame, "view"));
+        EXPECT_EQ(frame.viewSamples, pass);
+    }
+    const std::vector<float> mean = renderer.viewStage().downloadHdr();
+    double worst = 0.0;
+    for (std::size_t i = 0; i < mean.size(); ++i)
+        worst = std::max(worst, std::abs(mean[i] - (one[i] + 4.0 * four[i]) / 5.0));
+    EXPECT_LT(worst, 1e-5) << "the mean of the centre ray and the 2×2 grid";
+    while (frame.viewSamples < render::kProgressiveViewSamples) frame = renderer.render(fields);
+    frame = renderer.render(fields);
+    EXPECT_FALSE(ran(frame, "view_refine")) << "it stops at " << render::kProgressiveViewSamples << " passes";
+    EXPECT_EQ(frame.viewSamples, render::kProgressiveViewSamples);
+    CameraDesc moved = scene.camera;
+    moved.position.x += 0.01;
+    renderer.setCamera(moved);
+    frame = renderer.render(fields);
+    EXPECT_TRUE(ran(frame, "view"));
+    EXPECT_EQ(frame.viewSamples, 1);
+}
+
 }  // namespace
 }  // namespace eikon
