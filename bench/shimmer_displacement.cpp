@@ -13,8 +13,10 @@
 // frame k−1 and frame k is the apparent displacement of the background at
 // the pixel. Printed per frame: the RMS of it over the pixels whose straight
 // ray crosses the grid (the air that can shimmer) and meets the ground in
-// both frames, and the RMS displacement against the same view with no
-// medium (the background's mean distortion).
+// both frames; the same over the pixels that see the background through hot
+// air (displaced by at least 1 px against the same view with no medium, in
+// this frame or the one before); and the RMS displacement against no medium
+// (the background's mean distortion).
 #include "apps/common/FrameSource.h"
 #include "gl/GlContext.h"
 #include "io/scene/SceneParser.h"
@@ -97,14 +99,16 @@ int main(int argc, char** argv) {
             return camera.project(exit + ((exit.y - ground) / -d.y) * d);
         };
         std::vector<std::optional<glm::dvec2>> before;
+        std::vector<char> hotBefore;
         for (int frame = 0; frame < frames; ++frame) {
             const bool more = frame + 1 < frames;
             if (more) source.beginNext();
             source.render();
             const std::vector<glm::vec4> exits = source.renderer().viewStage().downloadExits();
             std::vector<std::optional<glm::dvec2>> seen(exits.size());
-            double shimmer = 0.0, distortion = 0.0;
-            long long counted = 0, distorted = 0;
+            double shimmer = 0.0, distortion = 0.0, hotShimmer = 0.0;
+            long long counted = 0, distorted = 0, hotCounted = 0;
+            std::vector<char> hot(exits.size(), 0);
             for (int py = 0; py < camera.height; ++py)
                 for (int px = 0; px < camera.width; ++px) {
                     const std::size_t i = static_cast<std::size_t>(py) * camera.width + px;
@@ -117,19 +121,26 @@ int main(int argc, char** argv) {
                         const glm::dvec2 shift = *seen[i] - *still;
                         distortion += glm::dot(shift, shift);
                         ++distorted;
+                        hot[i] = glm::dot(shift, shift) >= 1.0;
                     }
                     if (!before.empty() && before[i]) {
                         const glm::dvec2 shift = *seen[i] - *before[i];
                         shimmer += glm::dot(shift, shift);
                         ++counted;
+                        if (hot[i] || hotBefore[i]) {
+                            hotShimmer += glm::dot(shift, shift);
+                            ++hotCounted;
+                        }
                     }
                 }
-            std::printf("frame %d: RMS displacement since the frame before %.3f px over %lld pixels; "
-                        "against no medium %.3f px\n",
+            std::printf("frame %d: RMS displacement since the frame before %.3f px over %lld pixels, %.3f px over the "
+                        "%lld seen through hot air; against no medium %.3f px\n",
                         frame, counted ? std::sqrt(shimmer / counted) : 0.0, counted,
+                        hotCounted ? std::sqrt(hotShimmer / hotCounted) : 0.0, hotCounted,
                         distorted ? std::sqrt(distortion / distorted) : 0.0);
             std::fflush(stdout);
             before = std::move(seen);
+            hotBefore = std::move(hot);
             if (more) {
                 if (source.throughRing()) source.waitNext();
                 source.publishNext();
