@@ -79,7 +79,6 @@ void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, cons
         view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr,
                                             lattice_ != nullptr, options.recordViewExits);
     progressiveView_ = view_ && options.progressiveView;
-    if (progressiveView_) view_->setSamplesPerPixel(1);
     const double voxel = fields.grid.smallestVoxelEdge();
     photonSettings_.seed = scene.render.seed;
     photonSettings_.stepLength = scene.tracer.stepVoxels * voxel;
@@ -228,8 +227,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
                                 lattice_ ? &lattice_->fluence() : nullptr};
     if (view_) result.stages.push_back(runStage("view", viewNeeded, [&] { view_->run(fields_, viewInputs); }));
     // Nothing moved: the progressive view adds a pass to the image it shows.
-    const bool refineNeeded = progressiveView_ && !viewNeeded && view_->pixelStride() == 1 &&
-                              view_->samplesTaken() > 0 && view_->samplesTaken() < kProgressiveViewSamples;
+    const bool refineNeeded = progressiveView_ && !viewNeeded && view_->refinable(kProgressiveFinestGrid);
     if (progressiveView_)
         result.stages.push_back(runStage("view_refine", refineNeeded, [&] { view_->refine(fields_, viewInputs); }));
     if (view_) result.stages.push_back(runStage("post", viewNeeded || refineNeeded || exposureChanged_, [&] {

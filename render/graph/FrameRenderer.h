@@ -77,15 +77,15 @@ struct RendererOptions {
     // kTemporalFrames frames (ImageSpaceCaustics.h); false keeps the first
     // (the viewer's preview, drawn only while the camera moves).
     bool temporalMean = true;
-    // The viewer's progressive view: a frame that changed is drawn with one
-    // ray a pixel, and each frame after it in which nothing changes adds a
-    // pass of a finer sample grid (ViewStage::refine) until
-    // kProgressiveViewSamples are averaged; false: render.samples_per_pixel a frame.
+    // The viewer's progressive view: a frame that changed is drawn as `eikon
+    // run` draws it (render.samples_per_pixel), and each frame after it in
+    // which nothing changes adds a pass of the next finer sample grid
+    // (ViewStage::refine), up to the kProgressiveFinestGrid² grid whole.
     bool progressiveView = false;
 };
 
-// Passes the progressive view averages at most: the grids 1×1 to 5×5, whole.
-constexpr int kProgressiveViewSamples = 1 + 4 + 9 + 16 + 25;
+// The finest grid (a side of k cells) the progressive view refines to.
+constexpr int kProgressiveFinestGrid = 5;
 
 // Whether a scene's frames trace light (photons or the wavefront): to light
 // receivers or in-scattering, or to keep the fluence it asks for.

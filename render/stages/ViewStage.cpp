@@ -92,7 +92,8 @@ layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render
 ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers,
                      bool hasStepStructure, bool multipleScattering, bool recordExit)
     : receivers_(receivers), surfaces_(scene), multipleScattering_(multipleScattering), render_(scene.render),
-      width_(scene.render.width), height_(scene.render.height), samplesPerPixel_(recordExit ? 1 : scene.render.samplesPerPixel) {
+      width_(scene.render.width), height_(scene.render.height),
+      samplesPerPixel_(recordExit ? 1 : scene.render.samplesPerPixel) {
     const double voxel = fields.grid().smallestVoxelEdge();
     stepLength_ = scene.render.stepVoxels * voxel;
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
@@ -127,11 +128,6 @@ void ViewStage::setCamera(const CameraDesc& camera) {
 void ViewStage::setPixelStride(int stride) {
     EIKON_CHECK_MSG(stride >= 1, "a pixel stride of at least 1");
     pixelStride_ = stride;
-}
-
-void ViewStage::setSamplesPerPixel(int samples) {
-    EIKON_CHECK_MSG(sampleGridSide(samples) > 0, "a square number of samples a pixel");
-    samplesPerPixel_ = samples;
 }
 
 void ViewStage::bind(const FieldTextures& fields, const ViewInputs& inputs) {

@@ -33,24 +33,23 @@ struct ViewInputs {
 class ViewStage {
 public:
     // recordExit: also keep each pixel's exit direction (tests), of one ray
-    // through each pixel's centre (samplesPerPixel() 1).
+    // through each pixel's centre, whatever render.samples_per_pixel says.
     // multipleScattering: the scene's in-scattering adds the lattice's fluence.
     ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers, bool hasStepStructure,
               bool multipleScattering, bool recordExit = false);
 
-    // The image: at pixel stride 1 the mean of samplesPerPixel() = k² passes
+    // The image: at pixel stride 1 the mean of render.samples_per_pixel = k² passes
     // of a ray a pixel through the cells of a k × k grid
     // (render/stages/PixelSamples.h), else one preview pass.
     void run(const FieldTextures& fields, const ViewInputs& inputs);
     // One more pass into the mean of those run() and earlier refinements
     // took, through the next cell of the next finer grid: (k+1)², (k+2)², …
     // cells in turn, so that each finished grid is a box-filtered image of
-    // its own (the viewer while nothing moves). Only after a run() at pixel
-    // stride 1.
+    // its own (the viewer while nothing moves). Only where refinable().
     void refine(const FieldTextures& fields, const ViewInputs& inputs);
     int samplesTaken() const { return samplesTaken_; }  // passes in the image now (0 after a preview)
-    void setSamplesPerPixel(int samples);                // passes of run(), a square; render.samples_per_pixel at first
-    int samplesPerPixel() const { return samplesPerPixel_; }
+    // Whether refine() may run and its grid is no finer than finestSide × finestSide.
+    bool refinable(int finestSide) const { return pixelStride_ == 1 && samplesTaken_ > 0 && refineSide_ <= finestSide; }
     void setCamera(const CameraDesc& camera);
     // 1: a ray per pixel. k > 1: a preview, one ray per k×k block of pixels
     // filling the block (the viewer while the camera moves), about k² times

@@ -33,7 +33,8 @@ vec3 camera_ray_origin_at(vec2 point) {
 }
 
 vec3 camera_ray_direction_at(vec2 point) {
-    return camera_is_orthographic() ? camera.forward.xyz : normalize(camera.forward.xyz + camera_image_offset_at(point));
+    return camera_is_orthographic() ? camera.forward.xyz
+                                     : normalize(camera.forward.xyz + camera_image_offset_at(point));
 }
 
 // The ray through a pixel's centre.

@@ -159,15 +159,15 @@ TEST(AntiAliasing, GrazingCheckerboardConvergesToTheBoxFilteredImage) {
     EXPECT_LE(atDefault, 0.01) << "at the default render.samples_per_pixel = " << RenderDesc{}.samplesPerPixel;
 }
 
-// The viewer's progressive view: a changed frame is one ray a pixel; each
+// The viewer's progressive view: a changed frame is the image of
+// render.samples_per_pixel (4: the 2×2 grid), as `eikon run` draws it; each
 // frame in which nothing changes adds a pass of the next finer grid to the
-// mean, which after the 2×2 grid is (I₁ + 4·I₄)/5 of the one-ray and
-// four-ray images, and stops at kProgressiveViewSamples; a moved camera
-// starts again.
+// mean, which after the 3×3 grid is (4·I₄ + 9·I₉)/13, and it stops once the
+// 5×5 grid is whole (4 + 9 + 16 + 25 passes); a moved camera starts again.
 TEST(AntiAliasing, TheProgressiveViewAddsFinerGridsWhileNothingChanges) {
     glContext();
     Scene scene = grazingCheckerboard();
-    const std::vector<float> one = render(scene, 1), four = render(scene, 4);
+    const std::vector<float> four = render(scene, 4), nine = render(scene, 9);
     const FieldSet fields = sim::voxelizeScene(scene);
     render::FrameRenderer renderer(scene, fields, {.photons = {}, .progressiveView = true});
     const auto ran = [](const render::FrameResult& frame, const char* name) {
@@ -176,9 +176,9 @@ TEST(AntiAliasing, TheProgressiveViewAddsFinerGridsWhileNothingChanges) {
         return false;
     };
     render::FrameResult frame = renderer.render(fields);
-    EXPECT_EQ(frame.viewSamples, 1);
-    EXPECT_EQ(renderer.viewStage().downloadHdr(), one);
-    for (int pass = 2; pass <= 5; ++pass) {
+    EXPECT_EQ(frame.viewSamples, 4);
+    EXPECT_EQ(renderer.viewStage().downloadHdr(), four) << "the frame eikon run draws";
+    for (int pass = 5; pass <= 13; ++pass) {
         frame = renderer.render(fields);
         EXPECT_TRUE(ran(frame, "view_refine"));
         EXPECT_FALSE(ran(frame, "view"));
@@ -187,18 +187,19 @@ TEST(AntiAliasing, TheProgressiveViewAddsFinerGridsWhileNothingChanges) {
     const std::vector<float> mean = renderer.viewStage().downloadHdr();
     double worst = 0.0;
     for (std::size_t i = 0; i < mean.size(); ++i)
-        worst = std::max(worst, std::abs(mean[i] - (one[i] + 4.0 * four[i]) / 5.0));
-    EXPECT_LT(worst, 1e-5) << "the mean of the centre ray and the 2×2 grid";
-    while (frame.viewSamples < render::kProgressiveViewSamples) frame = renderer.render(fields);
+        worst = std::max(worst, std::abs(mean[i] - (4.0 * four[i] + 9.0 * nine[i]) / 13.0));
+    EXPECT_LT(worst, 1e-5) << "the mean of the 2×2 and 3×3 grids";
+    for (int pass = 14; pass <= 54; ++pass) frame = renderer.render(fields);
+    EXPECT_EQ(frame.viewSamples, 54);
     frame = renderer.render(fields);
-    EXPECT_FALSE(ran(frame, "view_refine")) << "it stops at " << render::kProgressiveViewSamples << " passes";
-    EXPECT_EQ(frame.viewSamples, render::kProgressiveViewSamples);
+    EXPECT_FALSE(ran(frame, "view_refine")) << "it stops once the 5×5 grid is whole";
+    EXPECT_EQ(frame.viewSamples, 54);
     CameraDesc moved = scene.camera;
     moved.position.x += 0.01;
     renderer.setCamera(moved);
     frame = renderer.render(fields);
     EXPECT_TRUE(ran(frame, "view"));
-    EXPECT_EQ(frame.viewSamples, 1);
+    EXPECT_EQ(frame.viewSamples, 4);
 }
 
 }  // namespace
