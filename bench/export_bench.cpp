@@ -1,7 +1,7 @@
 // Milliseconds and megabytes per exported 128³ frame: VTK ImageData with
 // zlib (level 1), LZ4 and no compression, and OpenVDB, all in one run on the
 // same frame. The frame is real data, not noise: the heat-shimmer plume
-// (scenes/heat_shimmer.json, 48³ solver) advanced 12 frames and mapped onto
+// (scenes/hot_plate_plume.json, 48³ solver) advanced 12 frames and mapped onto
 // a 128³ render grid, with the default field set of such a scene — index,
 // delta_index, velocity (3), temperature, concentration, dye: 8 floats per
 // cell, 67 MB raw. Each iteration writes one frame file (temporary, fsync,
@@ -23,7 +23,7 @@ using namespace eikon;
 
 const ExportFrame& plumeFrame() {
     static const ExportFrame frame = [] {
-        const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json",
+        const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/hot_plate_plume.json",
                                           {"grid.resolution=[128,128,128]"});
         sim::SceneFields fields(scene);
         for (int f = 0; f < 12; ++f) fields.advanceFrame();

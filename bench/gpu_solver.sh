@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The fluid solver's GPU-dependent figures in one run (docs/benchmarks-gpu-solver.md):
 # ms per step on both backends at 64³, 128³ and 256³ (bench_fluid_step), and
-# the live frame rate of heat_shimmer with its solver at 128³ and 256³ on
+# the live frame rate of hot_plate_plume with its solver at 128³ and 256³ on
 # each backend and of pool_caustics with its water on each device. Run from
 # the repository root after `./dev.sh test` (or a release build); on a
 # machine without a GPU it measures llvmpipe, as the development machine's
@@ -25,11 +25,11 @@ frames_per_second() {
 
 for resolution in 128 256; do
     for device in gpu cpu; do
-        run="$out/heat_shimmer_${device}_${resolution}"
-        "$build/eikon" run scenes/heat_shimmer.json --frames 12 --quiet --force --out "$run" \
+        run="$out/hot_plate_plume_${device}_${resolution}"
+        "$build/eikon" run scenes/hot_plate_plume.json --frames 12 --quiet --force --out "$run" \
             --set sim.device="$device" --set "sim.resolution=[$resolution,$resolution,$resolution]" \
             --set "grid.resolution=[128,128,128]"
-        echo "heat_shimmer, solver ${resolution}³ on the $device: $(frames_per_second "$run")" | tee -a "$out/summary.txt"
+        echo "hot_plate_plume, solver ${resolution}³ on the $device: $(frames_per_second "$run")" | tee -a "$out/summary.txt"
     done
 done
 for device in gpu cpu; do

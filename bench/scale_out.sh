@@ -26,14 +26,14 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { print a / b }'; }
 photon_ms() { grep -o '{"ms":[0-9.e+-]*,"name":"photons"' "$1" | head -1 | sed 's/{"ms":\([^,]*\),.*/\1/'; }
 
 echo "# the sequence: 24 frames of the heat-shimmer plume's temperature"
-"$EIKON" run scenes/heat_shimmer.json --frames 24 --quiet --force --out "$WORK/source" \
+"$EIKON" run scenes/hot_plate_plume.json --frames 24 --quiet --force --out "$WORK/source" \
     --set export.vdb.enabled=true --set 'export.vdb.fields=["temperature"]' --set render.width=64 \
     --set render.height=48
 # The heat-shimmer scene with the sequence for its medium. The exported
 # kelvin are absolute and the import adds them to its ambient temperature:
 # a hotter plume than the source's, whose box shows as faint lines in the
 # picture; it changes nothing of what a frame costs.
-sed -e '/"sim": {/,$d' scenes/heat_shimmer.json > "$WORK/volume.json"
+sed -e '/"sim": {/,$d' scenes/hot_plate_plume.json > "$WORK/volume.json"
 {
     echo "  \"volume\": {\"path\": \"$WORK/source/vdb/fields_#####.vdb\", \"frame_start\": 0,"
     echo "             \"frame_time\": 0.04, \"grids\": {\"density\": \"\", \"temperature\": \"temperature\"}}"

@@ -20,13 +20,22 @@
 // A preview (pixel_stride k > 1, the viewer while the camera moves) traces
 // one ray per k×k block of pixels, through the pixel nearest the block's
 // centre, and fills the block with it; k = 1 is the image itself.
+// A pass traces one ray a pixel, through the point `sample_offset` of it
+// (render/stages/PixelSamples.h); the image is the running mean of the
+// `samples_before` passes before it and this one — a box filter over the pixel.
+// The environment's checkerboard is filtered over the share of the pixel a
+// ray stands for (`footprint_pixels` pixels wide; common/environment.glsl),
+// spread as a straight ray from the camera spreads over the distance from
+// the camera to where it looks up the environment: media and surfaces that
+// focus or spread the ray change its true footprint, which the samples then
+// cover.
 //
 // Program options: EIKON_HAS_EXTINCTION, EIKON_HAS_SCATTERING,
 // EIKON_HAS_ANISOTROPY, EIKON_HAS_EMISSION, EIKON_MULTIPLE_SCATTERING (1: add the
 // lattice's multiply scattered fluence, σs·φ_ms/(4π)), EIKON_STEP_STRUCTURE (1: large steps through empty
 // nodes), EIKON_FRESNEL, EIKON_ENVIRONMENT (layout::EnvironmentKind),
 // EIKON_SHARP_SURFACES (1: the scene has sharp surfaces),
-// EIKON_RECORD_EXIT (1: write each pixel's exit direction, for tests).
+// EIKON_RECORD_EXIT (1: write each pixel's exit direction from the first pass, for tests).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/grid_sampling.glsl"
@@ -112,7 +121,7 @@ layout(binding = kAnisotropyTexture) uniform sampler3D anisotropy_texture;
 #if EIKON_STEP_STRUCTURE
 layout(binding = kStepTexture) uniform sampler3D step_structure;
 #endif
-layout(std430, binding = kHdrImage) writeonly buffer HdrImage { vec4 hdr_radiance[]; };
+layout(std430, binding = kHdrImage) buffer HdrImage { vec4 hdr_radiance[]; };
 #if EIKON_RECORD_EXIT
 layout(std430, binding = kViewExit) writeonly buffer ViewExit { vec4 view_exit[]; };  // xyz direction; w: 1 escaped, 2 receiver, 0 cut
 #endif
@@ -121,6 +130,23 @@ uniform float step_length;
 uniform uint max_steps;
 uniform float interface_half_width;  // m: beyond the smoothing kernel, where n is the bulk value
 uniform uint pixel_stride;           // 1: a ray per pixel; k: a ray per k×k block (preview)
+uniform vec2 sample_offset;          // where in its pixel the ray passes, as a fraction of the pixel (x right, y down)
+uniform uint samples_before;         // passes already averaged into the image (0: this pass writes it)
+uniform float footprint_pixels;      // the width of the pixel's share a ray stands for, in pixels
+
+vec3 footprint_start;  // where the camera ray left the camera
+
+// The environment seen from x along d, its checkerboard filtered over the ray's footprint there.
+vec3 environment_seen(vec3 x, vec3 d) {
+    float pixel = 2.0f * camera.position.w / float(camera.image.y);  // at unit distance, or m (orthographic)
+    if (camera_is_orthographic()) {
+        footprint_width = footprint_pixels * pixel;
+    } else {
+        footprint_growth = footprint_pixels * pixel;
+        footprint_width = footprint_growth * distance(footprint_start, x);
+    }
+    return environment_radiance(x, d);
+}
 
 // σs·φ·p toward the camera (d: the ray's direction of travel). The radiance
 // stored per voxel is its fluence φ and the power-weighted mean direction
@@ -250,9 +276,11 @@ void main() {
     uvec2 block = gl_GlobalInvocationID.xy * pixel_stride;
     if (any(greaterThanEqual(block, camera.image.xy))) return;
     uvec2 pixel = min(block + pixel_stride / 2u, camera.image.xy - 1u);
-    vec3 direction = camera_ray_direction(pixel);
+    vec2 point = vec2(pixel) + sample_offset;
+    vec3 direction = camera_ray_direction_at(point);
     ViewRay ray;
-    ray.x = camera_ray_origin(pixel);
+    ray.x = camera_ray_origin_at(point);
+    footprint_start = ray.x;
     ray.inside_mask = 0u;
 #if EIKON_SHARP_SURFACES
     if (grid_contains(ray.x)) ray.inside_mask = inside_mask_at(ray.x);
@@ -300,7 +328,7 @@ void main() {
                     break;
                 }
                 if (!flight.enters_grid) {
-                    radiance += ray.throughput * environment_radiance(x, d);
+                    radiance += ray.throughput * environment_seen(x, d);
                     branch_exit = 1.0f;
                     break;
                 }
@@ -361,7 +389,7 @@ void main() {
             vec3 normal = vec3(0.0f);
             float reflection = fresnel_share(start, x, d, n_start, gradient, normal);
             if (reflection > 0.0f) {
-                radiance += ray.throughput * reflection * environment_radiance(start, reflect(d, normal));
+                radiance += ray.throughput * reflection * environment_seen(start, reflect(d, normal));
                 ray.throughput *= 1.0f - reflection;
             }
             if (hit.receiver >= 0) {
@@ -397,9 +425,15 @@ void main() {
 #endif
     }
     uvec2 block_end = min(block + pixel_stride, camera.image.xy);
-    for (uint y = block.y; y < block_end.y; ++y)
-        for (uint x = block.x; x < block_end.x; ++x) hdr_radiance[y * camera.image.x + x] = vec4(radiance, 1.0f);
+    if (samples_before > 0u) {
+        uint i = pixel.y * camera.image.x + pixel.x;  // a pass of the full image: the block is the pixel
+        vec3 mean = hdr_radiance[i].rgb;
+        hdr_radiance[i] = vec4(mean + (radiance - mean) / float(samples_before + 1u), 1.0f);
+    } else {
+        for (uint y = block.y; y < block_end.y; ++y)
+            for (uint x = block.x; x < block_end.x; ++x) hdr_radiance[y * camera.image.x + x] = vec4(radiance, 1.0f);
+    }
 #if EIKON_RECORD_EXIT
-    view_exit[pixel.y * camera.image.x + pixel.x] = vec4(exit_direction, exit_kind);
+    if (samples_before == 0u) view_exit[pixel.y * camera.image.x + pixel.x] = vec4(exit_direction, exit_kind);
 #endif
 }

@@ -64,7 +64,7 @@ void drawFigures(const render::FrameResult& last, const ViewerStatus& status) {
     else if (last.pixelStride > 1)
         ImGui::Text("preview: a ray per %d×%d pixels", last.pixelStride, last.pixelStride);
     else
-        ImGui::Text("full image");
+        ImGui::Text("full image, %d rays a pixel averaged", last.viewSamples);
     if (status.simulated)
         ImGui::Text("simulated time %.3f s%s", status.simulatedTime,
                     status.simulationHeld ? " (held while the camera moves)" : "");

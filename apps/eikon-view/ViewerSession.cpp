@@ -28,7 +28,8 @@ std::unique_ptr<sim::SceneFields> placedFields(const Scene& scene, bool hardware
 ViewerSession::ViewerSession(const Scene& scene, bool hardwareGpu)
     : scene_(scene),
       fields_(placedFields(scene, hardwareGpu)),
-      source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{}, false, app::ExportNeeds())) {
+      source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{.photons = {}, .progressiveView = true},
+                                                 false, app::ExportNeeds())) {
     if (scene.render.method == RenderDesc::Method::Eikonal && imageSpaceOmissions(scene).empty()) {
         imageSpaceScene_ = scene;
         imageSpaceScene_->render.method = RenderDesc::Method::ImageSpace;

@@ -175,6 +175,9 @@ struct RenderDesc {
     double exposureEv = 0.0;      // exposure compensation in stops
     double stepVoxels = 1.0;      // camera-ray step in media, in voxels, > 0 ([Sun08] §4.5: one voxel)
     int surfaceDepth = 4;         // sharp-surface events that split a camera ray into reflection and refraction, 0..8
+    // Camera rays per pixel, 1..1024, through stratified points of the pixel
+    // (render/stages/PixelSamples.h), averaged: a box filter over the pixel.
+    int samplesPerPixel = 4;
     EnvironmentDesc environment;  // `background` in the file sets a uniform environment's radiance
     bool writeHdr = true;         // also write the linear image as Radiance .hdr
     // Estimate each frame's noise and discretisation error

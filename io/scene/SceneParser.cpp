@@ -29,6 +29,7 @@ namespace {
 constexpr long long kMaxGridCells = 512LL * 512 * 512;
 constexpr long long kMaxPhotons = 2147483647LL;  // 2^31 - 1
 constexpr int kMaxImageEdge = 16384;
+constexpr long long kMaxSamplesPerPixel = 1024;  // camera rays a pixel, 32²
 constexpr int kMaxReceiverResolution = 4096;
 constexpr int kMaxSupersampling = 16;
 constexpr long long kMaxSeed = 4294967295LL;  // 2^32 - 1
@@ -318,8 +319,8 @@ EnvironmentDesc readEnvironment(const JsonReader& node, const std::string& scene
 RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     RenderDesc render;
     const auto fields = node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background",
-                                     "environment", "write_hdr", "surface_depth", "error_estimate", "warn_error",
-                                     "method", "method_fallback", "caustic_map_texels"});
+                                     "environment", "write_hdr", "surface_depth", "samples_per_pixel", "error_estimate",
+                                     "warn_error", "method", "method_fallback", "caustic_map_texels"});
     if (auto photons = fields.optional("photons")) render.photons = photons->integer(1, kMaxPhotons);
     if (auto width = fields.optional("width")) render.width = static_cast<int>(width->integer(1, kMaxImageEdge));
     if (auto height = fields.optional("height")) render.height = static_cast<int>(height->integer(1, kMaxImageEdge));
@@ -334,6 +335,13 @@ RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     if (auto writeHdr = fields.optional("write_hdr")) render.writeHdr = writeHdr->boolean();
     if (auto depth = fields.optional("surface_depth"))
         render.surfaceDepth = static_cast<int>(depth->integer(0, 8));
+    if (auto samples = fields.optional("samples_per_pixel")) {
+        render.samplesPerPixel = static_cast<int>(samples->integer(1, kMaxSamplesPerPixel));
+        const auto side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(render.samplesPerPixel))));
+        if (side * side != render.samplesPerPixel)
+            samples->fail("a square number (the rays pass through a k × k grid of the pixel): 1, 4, 9, 16, ...",
+                          std::to_string(render.samplesPerPixel));
+    }
     if (auto estimate = fields.optional("error_estimate")) render.errorEstimate = estimate->boolean();
     if (auto warn = fields.optional("warn_error")) render.warnError = warn->number(kPositive);
     readRenderMethod(fields, render);

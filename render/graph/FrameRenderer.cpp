@@ -91,6 +91,7 @@ void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, cons
     else if (drawsView)
         view_ = std::make_unique<ViewStage>(scene_, fields_, receivers_, stepStructure_ != nullptr,
                                             lattice_ != nullptr, options.recordViewExits);
+    progressiveView_ = view_ && options.progressiveView;
     const double voxel = fields.grid.smallestVoxelEdge();
     photonSettings_.seed = scene.render.seed;
     photonSettings_.stepLength = scene.tracer.stepVoxels * voxel;
@@ -249,12 +250,15 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
                                           {&photons_->fluence(), &photons_->fluenceDirection()});
         }));
     const bool viewNeeded = view_ && (fieldsChanged || photonsNeeded || cameraChanged_);
-    if (view_) result.stages.push_back(runStage("view", viewNeeded, [&] {
-        view_->run(fields_, {photons_ ? &photons_->fluence() : nullptr,
-                             photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture(),
-                             lattice_ ? &lattice_->fluence() : nullptr});
-    }));
-    if (view_) result.stages.push_back(runStage("post", viewNeeded || exposureChanged_, [&] {
+    const ViewInputs viewInputs{photons_ ? &photons_->fluence() : nullptr,
+                                photons_ ? &photons_->fluenceDirection() : nullptr, stepTexture(),
+                                lattice_ ? &lattice_->fluence() : nullptr};
+    if (view_) result.stages.push_back(runStage("view", viewNeeded, [&] { view_->run(fields_, viewInputs); }));
+    // Nothing moved: the progressive view adds a pass to the image it shows.
+    const bool refineNeeded = progressiveView_ && !viewNeeded && view_->refinable(kProgressiveFinestGrid);
+    if (progressiveView_)
+        result.stages.push_back(runStage("view_refine", refineNeeded, [&] { view_->refine(fields_, viewInputs); }));
+    if (view_) result.stages.push_back(runStage("post", viewNeeded || refineNeeded || exposureChanged_, [&] {
         last_.image = post_.run(view_->hdrTexels(), scene_.render.exposureEv);
     }));
     // A diagnostic sees the index and, through its transmittance, the extinction.
@@ -277,6 +281,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.lattice = last_.lattice;
     result.errorEstimate = last_.errorEstimate;
     result.pixelStride = view_ ? view_->pixelStride() : 1;
+    result.viewSamples = view_ ? view_->samplesTaken() : 1;
     return result;
 }
 

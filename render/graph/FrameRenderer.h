@@ -59,6 +59,7 @@ struct FrameResult {
     UploadBytes copied;           // host bytes the driver read, bytes copied on the GPU
     std::optional<ErrorEstimate> errorEstimate;  // with RendererOptions::estimateErrors
     int pixelStride = 1;  // of the image: 1 the full image, k a preview of one ray per k×k pixels
+    int viewSamples = 1;  // camera rays averaged in each pixel of the image (0: a preview)
     std::optional<ImageSpaceStats> imageSpace;  // where the scene renders in image space
 };
 
@@ -82,7 +83,15 @@ struct RendererOptions {
     // kTemporalFrames frames (ImageSpaceCaustics.h); false keeps the first
     // (the viewer's preview, drawn only while the camera moves).
     bool temporalMean = true;
+    // The viewer's progressive view: a frame that changed is drawn as `eikon
+    // run` draws it (render.samples_per_pixel), and each frame after it in
+    // which nothing changes adds a pass of the next finer sample grid
+    // (ViewStage::refine), up to the kProgressiveFinestGrid² grid whole.
+    bool progressiveView = false;
 };
+
+// The finest grid (a side of k cells) the progressive view refines to.
+constexpr int kProgressiveFinestGrid = 5;
 
 // Whether a scene's frames trace light (photons or the wavefront): to light
 // receivers or in-scattering, or to keep the fluence it asks for.
@@ -150,6 +159,7 @@ private:
     std::unique_ptr<PhotonStage> photons_;
     std::unique_ptr<LatticeScattering> lattice_;
     std::unique_ptr<ViewStage> view_;
+    bool progressiveView_ = false;  // RendererOptions::progressiveView
     std::unique_ptr<DiagnosticStage> diagnostic_;  // in place of view_ where the scene has a diagnostic
     PostStage post_;
     // Image space only: the raster passes' surfaces, the caustic maps, the view.

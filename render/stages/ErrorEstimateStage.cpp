@@ -101,6 +101,8 @@ ErrorEstimateStage::ErrorEstimateStage(const Scene& scene, const FieldTextures& 
     viewScene.render.height = std::max(
         1, static_cast<int>(std::lround(viewScene.render.width * static_cast<double>(scene.render.height) /
                                         scene.render.width)));
+    // The march's errors are the same in every ray of a pixel: one, through its centre.
+    viewScene.render.samplesPerPixel = 1;
     view_ = std::make_unique<ViewStage>(viewScene, fields, receivers_, sceneHasStepStructure, false);
     if (noiseByBatches_) halfView_ = std::make_unique<ViewStage>(viewScene, fields, evenHalf_, sceneHasStepStructure, false);
     viewScene.render.stepVoxels = referenceStepVoxels(scene);

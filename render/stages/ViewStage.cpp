@@ -6,6 +6,7 @@
 #include "gl/ShaderLibrary.h"
 #include "render/stages/GaussianKernel.h"
 #include "render/stages/PhotonStage.h"
+#include "render/stages/PixelSamples.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -91,7 +92,8 @@ layout::GpuCamera cameraBlock(const CameraDesc& camera, const RenderDesc& render
 ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers,
                      bool hasStepStructure, bool multipleScattering, bool recordExit)
     : receivers_(receivers), surfaces_(scene), multipleScattering_(multipleScattering), render_(scene.render),
-      width_(scene.render.width), height_(scene.render.height) {
+      width_(scene.render.width), height_(scene.render.height),
+      samplesPerPixel_(recordExit ? 1 : scene.render.samplesPerPixel) {
     const double voxel = fields.grid().smallestVoxelEdge();
     stepLength_ = scene.render.stepVoxels * voxel;
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
@@ -128,7 +130,7 @@ void ViewStage::setPixelStride(int stride) {
     pixelStride_ = stride;
 }
 
-void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
+void ViewStage::bind(const FieldTextures& fields, const ViewInputs& inputs) {
     fields.bindForTracing();
     receivers_.bind();
     camera_.bindUniform(layout::kCameraBlock);
@@ -154,10 +156,42 @@ void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
     glUniform1ui(program_.uniform("max_steps"), maxSteps_);
     glUniform1f(program_.uniform("interface_half_width"), interfaceHalfWidth_);
     glUniform1ui(program_.uniform("pixel_stride"), static_cast<GLuint>(pixelStride_));
+}
+
+void ViewStage::pass(int cell, int k) {
+    const glm::vec2 offset = pixelStride_ > 1 ? glm::vec2(0.5f) : gridSampleOffset(cell, k);
+    glUniform2f(program_.uniform("sample_offset"), offset.x, offset.y);
+    glUniform1ui(program_.uniform("samples_before"), static_cast<GLuint>(samplesTaken_));
+    // A preview's ray stands for its block, a sample for its cell.
+    if (environmentKind(render_.environment) == layout::kSkyEnvironment)  // the only filtered environment
+        glUniform1f(program_.uniform("footprint_pixels"), pixelStride_ > 1 ? static_cast<float>(pixelStride_)
+                                                                            : 1.0f / static_cast<float>(k));
     const auto blocks = [&](int pixels) { return static_cast<std::size_t>((pixels + pixelStride_ - 1) / pixelStride_); };
     program_.dispatchCovering(blocks(width_), blocks(height_), 1, 8, 8, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    ++samplesTaken_;
+}
+
+void ViewStage::run(const FieldTextures& fields, const ViewInputs& inputs) {
+    bind(fields, inputs);
+    samplesTaken_ = 0;
+    const int k = pixelStride_ == 1 ? sampleGridSide(samplesPerPixel_) : 1;
+    for (int cell = 0; cell < k * k; ++cell) pass(cell, k);
+    if (pixelStride_ > 1) samplesTaken_ = 0;  // a preview is not refined
+    refineSide_ = k + 1;
+    refineCell_ = 0;
     gl::checkpoint("view stage");
+}
+
+void ViewStage::refine(const FieldTextures& fields, const ViewInputs& inputs) {
+    EIKON_CHECK_MSG(pixelStride_ == 1 && samplesTaken_ > 0, "a full image to refine");
+    bind(fields, inputs);
+    pass(refineCell_, refineSide_);
+    if (++refineCell_ == refineSide_ * refineSide_) {
+        ++refineSide_;
+        refineCell_ = 0;
+    }
+    gl::checkpoint("view stage refinement");
 }
 
 std::vector<float> ViewStage::downloadHdr() const {

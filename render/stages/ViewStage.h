@@ -32,12 +32,24 @@ struct ViewInputs {
 
 class ViewStage {
 public:
-    // recordExit: also keep each pixel's exit direction (tests).
+    // recordExit: also keep each pixel's exit direction (tests), of one ray
+    // through each pixel's centre, whatever render.samples_per_pixel says.
     // multipleScattering: the scene's in-scattering adds the lattice's fluence.
     ViewStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers, bool hasStepStructure,
               bool multipleScattering, bool recordExit = false);
 
+    // The image: at pixel stride 1 the mean of render.samples_per_pixel = k² passes
+    // of a ray a pixel through the cells of a k × k grid
+    // (render/stages/PixelSamples.h), else one preview pass.
     void run(const FieldTextures& fields, const ViewInputs& inputs);
+    // One more pass into the mean of those run() and earlier refinements
+    // took, through the next cell of the next finer grid: (k+1)², (k+2)², …
+    // cells in turn, so that each finished grid is a box-filtered image of
+    // its own (the viewer while nothing moves). Only where refinable().
+    void refine(const FieldTextures& fields, const ViewInputs& inputs);
+    int samplesTaken() const { return samplesTaken_; }  // passes in the image now (0 after a preview)
+    // Whether refine() may run and its grid is no finer than finestSide × finestSide.
+    bool refinable(int finestSide) const { return pixelStride_ == 1 && samplesTaken_ > 0 && refineSide_ <= finestSide; }
     void setCamera(const CameraDesc& camera);
     // 1: a ray per pixel. k > 1: a preview, one ray per k×k block of pixels
     // filling the block (the viewer while the camera moves), about k² times
@@ -54,6 +66,10 @@ public:
     int height() const { return height_; }
 
 private:
+    void bind(const FieldTextures& fields, const ViewInputs& inputs);
+    // Cell `cell` of the k × k grid of each pixel, averaged with the samplesTaken_ passes before it.
+    void pass(int cell, int k);
+
     const ReceiverMaps& receivers_;
     SharpSurfaceBuffer surfaces_;
     bool multipleScattering_;
@@ -62,6 +78,9 @@ private:
     double stepLength_;
     unsigned maxSteps_;
     int pixelStride_ = 1;
+    int samplesPerPixel_;
+    int samplesTaken_ = 0;
+    int refineSide_ = 0, refineCell_ = 0;  // the grid refine() is filling, and its next cell
     float interfaceHalfWidth_;
     gl::Program program_;
     gl::Buffer camera_;

@@ -445,7 +445,7 @@ TEST_F(Cli, MaxStepsNotTheDriversLoopCapStopsPhotons) {
 // eikon ends by the signal as a program does, and removes the temporaries it
 // was writing, so only whole files remain under final names.
 TEST_F(Cli, SigtermLeavesNoTemporaries) {
-    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/hot_plate_plume.json";
     const fs::path out = dir_ / "run";
     const pid_t child = fork();
     ASSERT_GE(child, 0);

@@ -84,7 +84,7 @@ DeviceRuns runOnBothDevices(const fs::path& folder, const std::string& scene, co
 // byte is copied on the host, and simulating the next frame during the
 // render changes no pixel.
 TEST_F(LiveCli, LiveSimulationCopiesNoHostBytesAndPipeliningChangesNoPixel) {
-    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/hot_plate_plume.json";
     const std::string small = " --frames 6 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
                               " --set render.width=48 --set render.height=36";
     const fs::path pipelined = dir_ / "pipelined", sequential = dir_ / "sequential";
@@ -116,7 +116,7 @@ TEST_F(LiveCli, LiveSimulationCopiesNoHostBytesAndPipeliningChangesNoPixel) {
 // the solver's stopping tests, CFL count and NaN checks cross the bus — a
 // few hundred bytes — where the CPU backend writes δn through the ring.
 TEST_F(LiveCli, SolverOnTheGpuRendersTheCpuBackendsFrames) {
-    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/hot_plate_plume.json";
     const std::string small = " --frames 4 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
                               " --set render.width=48 --set render.height=36";
     const auto [cpu, gpu] = runOnBothDevices(dir_, scene, small, "sim.device");
@@ -173,7 +173,7 @@ TEST_F(LiveCli, WaterOnTheGpuRendersTheHostPathsFrames) {
 // The exported values are the CPU backend's to float rounding (1e-6 of the
 // largest; 9e-8 measured).
 TEST_F(LiveCli, ExportsOfASolverOnTheGpuReadBackOnlyWhatTheyExport) {
-    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/hot_plate_plume.json";
     const std::string small = " --frames 5 --quiet --set grid.resolution=[16,16,16] --set sim.resolution=[12,24,12]"
                               " --set render.width=48 --set render.height=36 --set export.vtk.enabled=true"
                               " --set export.vtk.every=2 --set 'export.vtk.fields=[\"temperature\",\"delta_index\"]'";

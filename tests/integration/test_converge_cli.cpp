@@ -137,7 +137,7 @@ TEST_F(ConvergeCli, ReferenceTheSceneFileCouldNotHoldIsRefused) {
 TEST_F(ConvergeCli, ABudgetThatCannotReachTheFrameOfAFluidSceneIsRefused) {
     const fs::path out = dir_ / "never";
     const Outcome outcome = runEikonWithin(300, "converge " + std::string(EIKON_SOURCE_DIR) +
-                                                    "/scenes/heat_shimmer.json --frame 500 --budget-s 20 --out " +
+                                                    "/scenes/hot_plate_plume.json --frame 500 --budget-s 20 --out " +
                                                     out.string(),
                                            "LP_NUM_THREADS=2");
     EXPECT_EQ(outcome.exitCode, 2) << outcome.output;

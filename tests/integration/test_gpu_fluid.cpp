@@ -21,7 +21,7 @@
 namespace eikon::sim {
 namespace {
 
-// The heat-shimmer scene's solver (scenes/heat_shimmer.json: air over a
+// The hot-plate plume's solver (scenes/hot_plate_plume.json: air over a
 // 450 K plate, open top, frame 0.04 s in 2 substeps) at `cells`³ over a 0.4 m box.
 SimDesc shimmerPlume(int cells) {
     SimDesc desc;

@@ -397,7 +397,7 @@ TEST_F(Mpi, RanksReadingDifferentCopiesOfAMeshAreRefused) {
 TEST_F(Mpi, SharingTheFramesOfALiveSimulationIsRefused) {
     const fs::path out = dir_ / "out";
     const Outcome outcome = runCommand(mpirun(2) + eikon() + "run " + EIKON_SOURCE_DIR +
-                                       "/scenes/heat_shimmer.json --quiet --distribute frames --out " + out.string());
+                                       "/scenes/hot_plate_plume.json --quiet --distribute frames --out " + out.string());
     EXPECT_EQ(outcome.exitCode, 2) << outcome.output;
     EXPECT_NE(outcome.output.find("--distribute: expected photons for a scene whose frames depend on each other"),
               std::string::npos)
@@ -410,7 +410,7 @@ TEST_F(Mpi, SharingTheFramesOfALiveSimulationIsRefused) {
 TEST_F(Mpi, WithoutMpirunTheRunIsOneProcess) {
     const fs::path out = dir_ / "out";
     const Outcome outcome = runCommand(eikon() + "run " + EIKON_SOURCE_DIR +
-                                       "/scenes/heat_shimmer.json --frames 2 --quiet --distribute frames "
+                                       "/scenes/hot_plate_plume.json --frames 2 --quiet --distribute frames "
                                        "--set render.photons=4096 --out " + out.string());
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
     for (const auto& line : readReport(out / "report.jsonl")) EXPECT_FALSE(line.contains("distribution"));
@@ -435,7 +435,7 @@ struct KilledRun {
 KilledRun killRankOne(const fs::path& out, int signal) {
     KilledRun run;
     const std::string command = mpirun(2) + eikon() + "run " + EIKON_SOURCE_DIR +
-                                "/scenes/heat_shimmer.json --frames 500 --quiet --vtk --set export.vdb.enabled=true "
+                                "/scenes/hot_plate_plume.json --frames 500 --quiet --vtk --set export.vdb.enabled=true "
                                 "--set render.width=64 --set render.height=48 --set render.photons=4096 --out " +
                                 out.string();
     std::thread killer([&] {

@@ -130,7 +130,7 @@ struct RunResult {
 // `eikon run` of the heat-shimmer scene exporting VTK and OpenVDB every
 // frame, its stderr to `log`.
 pid_t startExportingRun(const fs::path& out, int frames, const fs::path& log, bool force = false) {
-    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json";
+    const std::string scene = std::string(EIKON_SOURCE_DIR) + "/scenes/hot_plate_plume.json";
     const std::string framesArgument = std::to_string(frames);
     std::vector<const char*> arguments = {EIKON_EXECUTABLE, "run", scene.c_str(), "--out", out.c_str(), "--frames",
                                           framesArgument.c_str(), "--quiet", "--vtk", "--set", "export.vdb.enabled=true",

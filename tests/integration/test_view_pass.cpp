@@ -186,14 +186,16 @@ TEST(ViewPass, DefaultPictureMatchesReference) {
 }
 
 // The viewer's preview (a pixel stride k): each k×k block of the image is
-// the full image's pixel at the block's centre, the blocks at the right and
+// the pixel at the block's centre of the full image of one ray a pixel
+// (through each pixel's centre), the blocks at the right and
 // bottom edges cut short; back at stride 1 the image is the full one again,
 // bit for bit, and only the view and post stages ran for either change.
 TEST(ViewPass, APreviewFillsBlocksWithTheFullImagesCentrePixel) {
     glContext();
     const Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json",
                                       {"grid.resolution=[48,40,48]", "render.photons=65536", "render.width=160",
-                                       "render.height=121", "receivers.0.resolution=96"});
+                                       "render.height=121", "receivers.0.resolution=96",
+                                       "render.samples_per_pixel=1"});
     const FieldSet fields = sim::voxelizeScene(scene);
     render::FrameRenderer renderer(scene, fields);
     const render::Image8 full = renderer.render(fields).image;

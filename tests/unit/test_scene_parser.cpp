@@ -364,6 +364,19 @@ TEST(SceneParserErrors, FieldOfViewOutOfRange) {
     expectErrorAt(scene, "camera.fov_deg", "a number in (0, 180), found 180");
 }
 
+TEST(SceneParserErrors, SamplesPerPixelIsASquareUpTo1024) {
+    json scene = validScene();
+    scene["render"]["samples_per_pixel"] = 8;
+    expectErrorAt(scene, "render.samples_per_pixel",
+                  "a square number (the rays pass through a k × k grid of the pixel): 1, 4, 9, 16, ..., found 8");
+    scene["render"]["samples_per_pixel"] = 0;
+    expectErrorAt(scene, "render.samples_per_pixel", "an integer in [1, 1024], found 0");
+    scene["render"]["samples_per_pixel"] = 1089;
+    expectErrorAt(scene, "render.samples_per_pixel", "an integer in [1, 1024], found 1089");
+    scene["render"]["samples_per_pixel"] = 9;
+    EXPECT_EQ(parseScene(scene, "scene.json").render.samplesPerPixel, 9);
+}
+
 TEST(SceneParserErrors, CameraTargetAtPosition) {
     json scene = validScene();
     scene["camera"]["target"] = {0, 1, 4};
