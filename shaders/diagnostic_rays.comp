@@ -215,7 +215,7 @@ void main() {
     vec3 transmittance = exp(-measured.optical_depth);
 #if EIKON_INSTRUMENT == EIKON_BOS
     // The background point this pixel sees without the medium, and with it.
-    vec3 offset = camera_image_offset(pixel);
+    vec3 offset = camera_image_offset_at(vec2(pixel) + 0.5f);
     vec2 straight = plane_depth * vec2(dot(offset, camera.right.xyz), dot(offset, camera.up.xyz));
     vec3 intensity = transmittance * background_intensity(straight + measured.landing);
     // The feature seen here with the medium is, without it, seen where its
