@@ -91,8 +91,13 @@ LightFrame lightFrameOver(const LightDesc& light, const std::vector<RefractorExt
     }
     const bool anyRefractor = !refractors.empty();
     const glm::dvec3 centre = anyRefractor ? 0.5 * (low + high) : glm::dvec3(0.0);
-    // Not below 1e-30 m: any refractor's size is the scale, however small.
-    const double radius = anyRefractor ? std::max(0.5 * glm::length(high - low) * kMargin, 1e-30) : 1e-6;
+    // Not below 1e-30 m: any refractor's size is the scale, however small. A
+    // millionth more than the bound, at any scale (as the former absolute
+    // 1e-6 m was in a metre-sized scene): a frame whose texels align exactly
+    // with a mesh's round coordinates drew a crease's beam 3.4% off in one
+    // floor texel (CausticPolygons.KeepTheGapUnderACreaseDark).
+    const double radius =
+        anyRefractor ? std::max(0.5 * glm::length(high - low) * kMargin * (1.0 + 1e-6), 1e-30) : 1e-6;
 
     LightFrame frame;
     const bool directional = light.kind == LightDesc::Kind::Directional;

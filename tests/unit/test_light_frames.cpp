@@ -29,7 +29,7 @@ TEST(LightFrames, ASphereUnderAPointLightFillsItsFrame) {
     const LightFrame frame = lightFrameOver(light, {RefractorExtent::ofSphere({0.0, 0.55, 0.0}, r)}, kMapTexels);
     // The bounding sphere of the sphere's box sets the texels' size; the
     // sphere's own cone (1% margin) how many are used.
-    const double bounding = std::tan(std::asin((std::sqrt(3.0) * r * 1.01) / distance));
+    const double bounding = std::tan(std::asin((std::sqrt(3.0) * r * 1.01 * (1.0 + 1e-6)) / distance));
     const double cone = std::tan(std::asin(1.01 * r / distance));
     EXPECT_EQ(frame.texels, static_cast<int>(std::ceil(kMapTexels * cone / bounding)));
     EXPECT_NEAR(2.0 * frame.halfExtent / frame.texels, 2.0 * bounding / kMapTexels, 1e-12);
@@ -80,7 +80,7 @@ TEST(LightFrames, AFlatBoxUnderTheSunFitsItsOutline) {
     sun.direction = glm::normalize(glm::dvec3(-0.15, -1.0, -0.1));
     const RefractorExtent pool = RefractorExtent::ofBox({-0.52, -0.02, -0.52}, {0.52, 0.3, 0.52});
     const LightFrame frame = lightFrameOver(sun, {pool}, kMapTexels);
-    const double bounding = 0.5 * glm::length(pool.high - pool.low) * 1.01;
+    const double bounding = 0.5 * glm::length(pool.high - pool.low) * 1.01 * (1.0 + 1e-6);
     EXPECT_NEAR(2.0 * frame.halfExtent / frame.texels, 2.0 * bounding / kMapTexels, 1e-12);
     EXPECT_LT(frame.texels, 200);
     // Every corner inside; the outermost within a texel and the margin of the edge.
