@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -31,6 +32,14 @@ inline Outcome runEikon(const std::string& arguments, const std::string& environ
     const int status = pclose(pipe);
     outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return outcome;
+}
+
+// The lines of a run's report.jsonl, each parsed.
+inline std::vector<nlohmann::json> readReport(const std::filesystem::path& path) {
+    std::ifstream report(path);
+    std::vector<nlohmann::json> lines;
+    for (std::string line; std::getline(report, line);) lines.push_back(nlohmann::json::parse(line));
+    return lines;
 }
 
 // runEikon, stopped after `seconds` (coreutils timeout: exit 124), so that a

@@ -17,19 +17,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using eikon::test::Outcome;
+using eikon::test::readReport;
 using eikon::test::runEikonWithin;
 
 class FluidCli : public eikon::test::CliFolderTest {
 protected:
     FluidCli() : CliFolderTest("eikon_fluid_cli_") {}
 };
-
-std::vector<nlohmann::json> readReport(const fs::path& path) {
-    std::ifstream report(path);
-    std::vector<nlohmann::json> lines;
-    for (std::string line; std::getline(report, line);) lines.push_back(nlohmann::json::parse(line));
-    return lines;
-}
 
 // A 0.5 m closed box over a plate 200 K above ambient, thermal_expansion
 // 1000/K and no viscosity: buoyancy g·β·ΔT ≈ 2·10⁶ m/s² (issue 56's case).

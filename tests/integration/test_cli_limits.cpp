@@ -28,19 +28,12 @@ namespace {
 
 namespace fs = std::filesystem;
 using eikon::test::Outcome;
+using eikon::test::readReport;
 using eikon::test::runEikon;
 
 class CliLimits : public eikon::test::CliFolderTest {
 protected:
     CliLimits() : CliFolderTest("eikon_cli_limits_") {}
-
-    // Lines of report.jsonl in `out`.
-    static std::vector<nlohmann::json> reportLines(const fs::path& out) {
-        std::vector<nlohmann::json> lines;
-        std::ifstream report(out / "report.jsonl");
-        for (std::string line; std::getline(report, line);) lines.push_back(nlohmann::json::parse(line));
-        return lines;
-    }
 };
 
 int count(const std::string& text, const std::string& what) {
@@ -80,7 +73,7 @@ TEST_F(CliLimits, LatticeBeyondItsDepthLimitIsWarnedAndNotConverged) {
     EXPECT_NE(outcome.output.find("optical depth up to 40 across a voxel, beyond its limit of 14"), std::string::npos)
         << outcome.output;
     EXPECT_NE(outcome.output.find("grid.resolution"), std::string::npos) << outcome.output;
-    const std::vector<nlohmann::json> lines = reportLines(dir_ / "thick");
+    const std::vector<nlohmann::json> lines = readReport(dir_ / "thick" / "report.jsonl");
     ASSERT_EQ(lines.size(), 2u);
     ASSERT_TRUE(lines[0].contains("multiple_scattering"));
     for (const nlohmann::json& line : lines) {
@@ -99,7 +92,7 @@ TEST_F(CliLimits, LatticeBeyondItsDepthLimitIsWarnedAndNotConverged) {
     const Outcome within = runEikon("run " + thin + " --out " + (dir_ / "thin").string() + " --quiet");
     ASSERT_EQ(within.exitCode, 0) << within.output;
     EXPECT_EQ(count(within.output, "too thick"), 0) << within.output;
-    const nlohmann::json lattice = reportLines(dir_ / "thin").at(0).at("multiple_scattering");
+    const nlohmann::json lattice = readReport(dir_ / "thin" / "report.jsonl").at(0).at("multiple_scattering");
     EXPECT_TRUE(lattice.at("converged").get<bool>()) << lattice;
     EXPECT_EQ(lattice.at("depth_limit").at("voxels_beyond").get<int>(), 0) << lattice;
     EXPECT_FALSE(lattice.at("depth_limit").contains("warning")) << lattice;
@@ -118,7 +111,7 @@ TEST_F(CliLimits, LatticeCoarserThanItsValidatedResolutionIsWarned) {
         << outcome.output;
     EXPECT_NE(outcome.output.find("up to 2 reduced mean free paths"), std::string::npos) << outcome.output;
     EXPECT_NE(outcome.output.find("beyond 0.25"), std::string::npos) << outcome.output;
-    const nlohmann::json line = reportLines(dir_ / "coarse").at(0);
+    const nlohmann::json line = readReport(dir_ / "coarse" / "report.jsonl").at(0);
     const nlohmann::json& resolution = line.at("multiple_scattering").at("voxel_resolution");
     EXPECT_EQ(resolution.at("coarse_voxels").get<int>(), 16 * 16 * 16) << resolution;
     EXPECT_NEAR(resolution.at("coarsest_reduced_depth").get<double>(), 2.0, 1e-5) << resolution;
@@ -131,7 +124,7 @@ TEST_F(CliLimits, LatticeCoarserThanItsValidatedResolutionIsWarned) {
                                     " --quiet --set render.error_estimate=true");
     ASSERT_EQ(within.exitCode, 0) << within.output;
     EXPECT_EQ(count(within.output, "lattice"), 0) << within.output;
-    const nlohmann::json fineLine = reportLines(dir_ / "fine").at(0);
+    const nlohmann::json fineLine = readReport(dir_ / "fine" / "report.jsonl").at(0);
     const nlohmann::json& fineResolution = fineLine.at("multiple_scattering").at("voxel_resolution");
     EXPECT_EQ(fineResolution.at("coarse_voxels").get<int>(), 0) << fineResolution;
     EXPECT_NEAR(fineResolution.at("coarsest_reduced_depth").get<double>(), 0.2, 1e-6) << fineResolution;
@@ -293,7 +286,7 @@ TEST_F(CliLimits, AWavefrontThatStartsWithAMillionPatchesIsWarnedOfItsCost) {
     EXPECT_NE(costly.output.find("the wavefronts start with 1.05 million patches a frame (tracer.wavefront.grid_cells)"),
               std::string::npos)
         << costly.output;
-    for (const nlohmann::json& line : reportLines(out)) {
+    for (const nlohmann::json& line : readReport(out / "report.jsonl")) {
         const nlohmann::json& wavefront = line.at("photons").at("wavefront");
         EXPECT_EQ(wavefront.at("start_patches").get<long long>(), 512 * 512 * 2 * 2) << wavefront;
         EXPECT_NE(wavefront.at("cost_warning").get<std::string>().find("1.05 million patches"), std::string::npos);
@@ -303,7 +296,7 @@ TEST_F(CliLimits, AWavefrontThatStartsWithAMillionPatchesIsWarnedOfItsCost) {
                                    " --set 'tracer.estimator=\"wavefront\"'");
     ASSERT_EQ(usual.exitCode, 0) << usual.output;
     EXPECT_EQ(count(usual.output, "eikon: warning:"), 0) << usual.output;
-    const nlohmann::json wavefront = reportLines(dir_ / "usual").at(0).at("photons").at("wavefront");
+    const nlohmann::json wavefront = readReport(dir_ / "usual" / "report.jsonl").at(0).at("photons").at("wavefront");
     EXPECT_EQ(wavefront.at("start_patches").get<long long>(), 64 * 64 * 2 * 2) << wavefront;
     EXPECT_FALSE(wavefront.contains("cost_warning")) << wavefront;
 }

@@ -30,19 +30,13 @@ namespace {
 
 namespace fs = std::filesystem;
 using eikon::test::Outcome;
+using eikon::test::readReport;
 using eikon::test::runEikon;
 
 class LiveCli : public eikon::test::CliFolderTest {
 protected:
     LiveCli() : CliFolderTest("eikon_live_cli_") {}
 };
-
-std::vector<nlohmann::json> readReport(const fs::path& path) {
-    std::ifstream report(path);
-    std::vector<nlohmann::json> lines;
-    for (std::string line; std::getline(report, line);) lines.push_back(nlohmann::json::parse(line));
-    return lines;
-}
 
 // Every cell-data array of a VTK ImageData file, by name, its components flattened.
 std::map<std::string, std::vector<double>> vtiArrays(const fs::path& path) {
