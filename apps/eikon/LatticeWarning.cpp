@@ -36,16 +36,13 @@ std::string describeResolution(const render::LatticeResolution& resolution) {
 
 void LatticeWarning::check(int frame, const render::FrameResult& result) {
     if (!result.lattice) return;
-    const std::string depth = warned_ ? std::string() : describeDepthLimit(result.lattice->depth);
-    if (!depth.empty()) {
-        std::cerr << "eikon: warning: frame " << frame << ": " << depth << "; later frames are not reported here\n";
-        warned_ = true;
-    }
-    const std::string resolution = warnedResolution_ ? std::string() : describeResolution(result.lattice->resolution);
-    if (!resolution.empty()) {
-        std::cerr << "eikon: warning: frame " << frame << ": " << resolution << "; later frames are not reported here\n";
-        warnedResolution_ = true;
-    }
+    const auto warnOnce = [frame](bool& warned, const std::string& words) {
+        if (warned || words.empty()) return;
+        std::cerr << "eikon: warning: frame " << frame << ": " << words << "; later frames are not reported here\n";
+        warned = true;
+    };
+    warnOnce(warned_, describeDepthLimit(result.lattice->depth));
+    warnOnce(warnedResolution_, describeResolution(result.lattice->resolution));
 }
 
 }  // namespace eikon::app
