@@ -197,6 +197,48 @@ std::string listArrays(vtkDataSet& data) {
     return names.empty() ? "no arrays" : "the arrays " + names;
 }
 
+// The OpenFOAM case's internal mesh at `time`.
+vtkSmartPointer<vtkDataSet> readFoamStep(vtkOpenFOAMReader& reader, double time, const std::string& name) {
+    const VtkErrors errors(reader);
+    reader.UpdateTimeStep(time);
+    vtkMultiBlockDataSet* blocks = reader.GetOutput();
+    vtkDataSet* mesh = nullptr;
+    for (unsigned b = 0; blocks && b < blocks->GetNumberOfBlocks(); ++b) {
+        vtkInformation* meta = blocks->GetMetaData(b);
+        if (meta && meta->Has(vtkCompositeDataSet::NAME()) &&
+            std::string(meta->Get(vtkCompositeDataSet::NAME())) == "internalMesh")
+            mesh = vtkDataSet::SafeDownCast(blocks->GetBlock(b));
+    }
+    if (errors.any() || !mesh || mesh->GetNumberOfCells() == 0)
+        throw InputError(name, "an OpenFOAM internal mesh with cells that VTK's reader reads",
+                         errors.any() ? errors.message() : "none");
+    vtkSmartPointer<vtkDataSet> copy = vtkSmartPointer<vtkDataSet>::Take(mesh->NewInstance());
+    copy->ShallowCopy(mesh);  // the reader reuses its output for the next step
+    return copy;
+}
+
+// The probe's source: the data set's cells with the requested arrays only,
+// point data before cell data of the same name. `name`: the step's, for a refusal.
+vtkSmartPointer<vtkDataSet> requestedArrays(vtkDataSet& data, const std::vector<VtkArrayRequest>& requests,
+                                            const std::string& name) {
+    const vtkSmartPointer<vtkDataSet> source = vtkSmartPointer<vtkDataSet>::Take(data.NewInstance());
+    source->CopyStructure(&data);
+    for (const VtkArrayRequest& request : requests) {
+        const bool onPoints = data.GetPointData()->GetArray(request.name.c_str()) != nullptr;
+        vtkDataArray* array = onPoints ? data.GetPointData()->GetArray(request.name.c_str())
+                                       : data.GetCellData()->GetArray(request.name.c_str());
+        if (!array)
+            throw InputError(name, "a point or cell array \"" + request.name + "\" (" + request.key + ")",
+                             listArrays(data));
+        if (array->GetNumberOfComponents() != 1 && array->GetNumberOfComponents() != 3)
+            throw InputError(name + ": array \"" + request.name + "\"", "1 or 3 components",
+                             std::to_string(array->GetNumberOfComponents()));
+        if (onPoints) source->GetPointData()->AddArray(array);
+        else source->GetCellData()->AddArray(array);
+    }
+    return source;
+}
+
 }  // namespace
 
 bool isVtkVolumePath(const fs::path& path) {
@@ -210,6 +252,12 @@ struct VtkVolumeSource::Steps {
     vtkSmartPointer<vtkOpenFOAMReader> foam;
     std::vector<double> times;    // an OpenFOAM case's time directories
     fs::path foamCase;
+
+    // Step `step`'s data set; `name` is stepName's.
+    vtkSmartPointer<vtkDataSet> read(int step, const std::string& name) const {
+        const auto s = static_cast<std::size_t>(step);
+        return foam ? readFoamStep(*foam, times.at(s), name) : readDataSetFile(files.at(s));
+    }
 };
 
 VtkVolumeSource::VtkVolumeSource(const fs::path& path) : path_(path), steps_(std::make_unique<Steps>()) {
@@ -275,54 +323,14 @@ std::string VtkVolumeSource::stepName(int step) const {
     return steps_->files.at(s).string();
 }
 
-namespace {
-
-// The OpenFOAM case's internal mesh at `time`.
-vtkSmartPointer<vtkDataSet> readFoamStep(vtkOpenFOAMReader& reader, double time, const std::string& name) {
-    const VtkErrors errors(reader);
-    reader.UpdateTimeStep(time);
-    vtkMultiBlockDataSet* blocks = reader.GetOutput();
-    vtkDataSet* mesh = nullptr;
-    for (unsigned b = 0; blocks && b < blocks->GetNumberOfBlocks(); ++b) {
-        vtkInformation* meta = blocks->GetMetaData(b);
-        if (meta && meta->Has(vtkCompositeDataSet::NAME()) &&
-            std::string(meta->Get(vtkCompositeDataSet::NAME())) == "internalMesh")
-            mesh = vtkDataSet::SafeDownCast(blocks->GetBlock(b));
-    }
-    if (errors.any() || !mesh || mesh->GetNumberOfCells() == 0)
-        throw InputError(name, "an OpenFOAM internal mesh with cells that VTK's reader reads",
-                         errors.any() ? errors.message() : "none");
-    vtkSmartPointer<vtkDataSet> copy = vtkSmartPointer<vtkDataSet>::Take(mesh->NewInstance());
-    copy->ShallowCopy(mesh);  // the reader reuses its output for the next step
-    return copy;
+void VtkVolumeSource::check(int step, const std::vector<VtkArrayRequest>& requests) const {
+    requestedArrays(*steps_->read(step, stepName(step)), requests, stepName(step));
 }
-
-}  // namespace
 
 VtkResampled VtkVolumeSource::resample(int step, const std::vector<VtkArrayRequest>& requests, const GridSpec& grid,
                                        const glm::dmat4& placement) const {
     const std::string name = stepName(step);
-    const vtkSmartPointer<vtkDataSet> data =
-        steps_->foam ? readFoamStep(*steps_->foam, steps_->times[static_cast<std::size_t>(step)], name)
-                     : readDataSetFile(steps_->files[static_cast<std::size_t>(step)]);
-
-    // The probe's source: the data set's cells with the requested arrays
-    // only, point data before cell data of the same name.
-    const vtkSmartPointer<vtkDataSet> source = vtkSmartPointer<vtkDataSet>::Take(data->NewInstance());
-    source->CopyStructure(data);
-    for (const VtkArrayRequest& request : requests) {
-        const bool onPoints = data->GetPointData()->GetArray(request.name.c_str()) != nullptr;
-        vtkDataArray* array = onPoints ? data->GetPointData()->GetArray(request.name.c_str())
-                                       : data->GetCellData()->GetArray(request.name.c_str());
-        if (!array)
-            throw InputError(name, "a point or cell array \"" + request.name + "\" (" + request.key + ")",
-                             listArrays(*data));
-        if (array->GetNumberOfComponents() != 1 && array->GetNumberOfComponents() != 3)
-            throw InputError(name + ": array \"" + request.name + "\"", "1 or 3 components",
-                             std::to_string(array->GetNumberOfComponents()));
-        if (onPoints) source->GetPointData()->AddArray(array);
-        else source->GetCellData()->AddArray(array);
-    }
+    const vtkSmartPointer<vtkDataSet> source = requestedArrays(*steps_->read(step, name), requests, name);
 
     // Each render cell centre in the file's world.
     const glm::dmat4 toFile = glm::inverse(placement);

@@ -74,6 +74,10 @@ public:
     // finite (with its world position).
     VtkResampled resample(int step, const std::vector<VtkArrayRequest>& requests, const GridSpec& grid,
                           const glm::dmat4& placement) const;
+    // What resample refuses before it probes: reads step `step` whole and
+    // checks each requested array is there with 1 or 3 components. The same
+    // InputErrors.
+    void check(int step, const std::vector<VtkArrayRequest>& requests) const;
 
 private:
     struct Steps;

@@ -121,8 +121,10 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
         const double t = volumeTemperature(volume, samples, c);
         if (!(t > 0.0) || !std::isfinite(t))
             refuse(c, temperatureKeys, "the temperature",
-                   "a finite temperature > 0 K (ambient_temperature + temperature_scale·t + flame_temperature·f, "
-                   "t and f the file's temperature and flame)",
+                   aboveAmbient ? "a finite temperature > 0 K (ambient_temperature + temperature_scale·t + "
+                                  "flame_temperature·f, t and f the file's temperature and flame)"
+                                : "a finite temperature > 0 K (the file's temperature in its temperature_unit, plus "
+                                  "flame_temperature·f)",
                    t, " K");
         // The index where the volume is: the medium's, or the file's own.
         const bool inData = samples.covers(c);

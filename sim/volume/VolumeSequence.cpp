@@ -10,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vector_relational.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace eikon::sim {
@@ -92,16 +93,24 @@ void checkVtkSteps(const io::VtkVolumeSource& source, const std::string& path, i
                          std::to_string(source.stepCount()) + " steps");
 }
 
+// The slots whose arrays volume.fields declares, and the requests for them.
+std::vector<const GridSlot*> vtkSlots(const VolumeDesc& desc) {
+    std::vector<const GridSlot*> slots;
+    for (const GridSlot& slot : kGridSlots)
+        if (!(desc.*slot.name).empty()) slots.push_back(&slot);
+    return slots;
+}
+std::vector<io::VtkArrayRequest> vtkRequests(const VolumeDesc& desc, const std::vector<const GridSlot*>& slots) {
+    std::vector<io::VtkArrayRequest> requests;
+    for (const GridSlot* slot : slots) requests.push_back({desc.*slot->name, std::string("volume.fields.") + slot->key});
+    return requests;
+}
+
 // The arrays volume.fields declares, read from a VTK step onto the render grid.
 VolumeSamples sampleVtkStep(const VolumeDesc& desc, const io::VtkVolumeSource& source, int step,
                             const GridSpec& grid) {
-    std::vector<io::VtkArrayRequest> requests;
-    std::vector<const GridSlot*> slots;
-    for (const GridSlot& slot : kGridSlots) {
-        if ((desc.*slot.name).empty()) continue;
-        requests.push_back({desc.*slot.name, std::string("volume.fields.") + slot.key});
-        slots.push_back(&slot);
-    }
+    const std::vector<const GridSlot*> slots = vtkSlots(desc);
+    const std::vector<io::VtkArrayRequest> requests = vtkRequests(desc, slots);
     io::VtkResampled resampled = source.resample(step, requests, grid, desc.placement);
     VolumeSamples samples;
     for (std::size_t r = 0; r < slots.size(); ++r) {
@@ -135,7 +144,12 @@ void readNamedByScene(const std::string& scenePath, Read&& read) {
 
 void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int frames, const std::string& scenePath) {
     if (desc.format == VolumeDesc::Format::Vtk) {
-        readNamedByScene(scenePath, [&] { checkVtkSteps(io::VtkVolumeSource(desc.path), desc.path, frames); });
+        readNamedByScene(scenePath, [&] {
+            const io::VtkVolumeSource source(desc.path);
+            checkVtkSteps(source, desc.path, frames);
+            const std::vector<io::VtkArrayRequest> requests = vtkRequests(desc, vtkSlots(desc));
+            for (int frame = 0; frame < std::min(frames, source.stepCount()); ++frame) source.check(frame, requests);
+        });
         return;
     }
     if (!desc.sequence) return;

@@ -29,7 +29,8 @@ namespace eikon::sim {
 // Run before anything is written, so that a damaged later file stops the
 // run before frame 0 (docs/scene-format.md, volume). InputError as the
 // constructor's. A single file is left to the constructor. VTK data: the
-// series' file list (each present) and that it has a step per frame.
+// series' file list (each present), a step per frame, and each step read
+// whole with the declared arrays in it (io/vtk/VtkVolumeSource::check).
 void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int frames, const std::string& scenePath);
 
 class VolumeSequence {

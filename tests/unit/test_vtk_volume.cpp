@@ -270,8 +270,8 @@ TEST_F(VtkVolume, SurfaceDataAndUndeclaredArraysAreRefused) {
 }
 
 // A .pvd and a .series of two image-data steps: rendered frame k shows step
-// k (listed out of order, sorted by time), and a third frame is refused
-// before anything runs.
+// k (listed out of order, sorted by time), and a third frame, or a damaged
+// second step, is refused before anything runs.
 TEST_F(VtkVolume, TimeSeriesShowStepKAtFrameK) {
     for (int step = 0; step < 2; ++step) {
         vtkNew<vtkImageData> image;
@@ -311,6 +311,32 @@ TEST_F(VtkVolume, TimeSeriesShowStepKAtFrameK) {
             EXPECT_NEAR(set.deltaIndex[13], expected, 1e-10) << "frame " << frame;
         }
         EXPECT_THROW(fields.advanceFrame(), InputError);
+    }
+    // A damaged later step is found before frame 0: a file that is not VTK,
+    // then a valid one without the declared array.
+    const Scene s = scene(R"({"path": "plume.pvd", "fields": {"temperature": "T", "temperature_unit": "kelvin"}})", grid);
+    for (const bool xml : {false, true}) {
+        if (xml) {
+            vtkNew<vtkImageData> image;
+            image->SetDimensions(2, 2, 2);
+            vtkNew<vtkXMLImageDataWriter> writer;
+            writer->SetFileName((folder_ / "step_1.vti").c_str());
+            writer->SetInputData(image);
+            ASSERT_EQ(writer->Write(), 1);
+        } else {
+            std::ofstream(folder_ / "step_1.vti") << "not VTK";
+        }
+        try {
+            checkVolumeFrames(*s.volume, s.grid.spec(), 2, s.sourcePath);
+            ADD_FAILURE() << "no error";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find("volume.path: " + (folder_ / "step_1.vti").string() + ": expected "),
+                      std::string::npos)
+                << error.what();
+            if (xml) {
+                EXPECT_NE(std::string(error.what()).find("found no arrays"), std::string::npos) << error.what();
+            }
+        }
     }
 }
 
