@@ -24,7 +24,7 @@ set(rules
   "sim/optics|bridge/,sim/field/"
   "sim/voxelize|bridge/,sim/optics/"
   "sim/deform|bridge/,io/mesh/"
-  "sim/volume|bridge/,io/vdb/,sim/optics/"
+  "sim/volume|bridge/,io/vdb/,io/vtk/,sim/optics/"
   "sim/gpu|bridge/,sim/field/,sim/fluid/,sim/deform/,gl/"
   "gl|bridge/core/"
   "render/stages|bridge/,shaders/,gl/"

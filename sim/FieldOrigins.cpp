@@ -37,6 +37,8 @@ std::vector<std::string> keysOf(const Scene& scene, std::string_view field, cons
         if (volume) {
             addVolumeGrid(volume->indexGrid, "index", keys);
             addVolumeGrid(volume->deltaIndexGrid, "delta_index", keys);
+            if (!volume->gasDensityGrid.empty()) keys.insert(keys.end(), {"volume.fields.density", "volume.gladstone_dale"});
+            if (!volume->pressureGrid.empty()) keys.push_back("volume.fields.pressure");
             keys.insert(keys.end(), {"volume.refractivity", "volume.pressure", "volume.reference_temperature"});
         }
         if (scene.airProfile) keys.push_back("medium.air_temperature_profile");

@@ -1,8 +1,10 @@
-// An OpenVDB volume imported into the scene (docs/scene-format.md, `volume`):
-// one .vdb file, or a numbered sequence stepped one file per frame, whose
-// grids are sampled onto the render grid and mapped to optics (sim/optics):
-// density → κ, σs; temperature (and flame) → index by Gladstone–Dale; and
-// optical grids (index, κ, σs, g) taken as they are.
+// A volume imported into the scene (docs/scene-format.md, `volume`): one
+// .vdb file, or a numbered sequence stepped one file per frame, or VTK data
+// (.vti, .vtu, .vtk, a .pvd or .series time series, an OpenFOAM case), whose
+// grids or arrays are sampled onto the render grid and mapped to optics
+// (sim/optics): density → κ, σs; temperature (and flame), gas density or
+// pressure → index by Gladstone–Dale; and optical grids (index, κ, σs, g)
+// taken as they are.
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -16,6 +18,9 @@ namespace eikon {
 using VolumeRgb = glm::dvec3;
 
 struct VolumeDesc {
+    // Which reader opens `path`: OpenVDB, or VTK's readers (io/vtk/VtkVolumeSource).
+    enum class Format { OpenVdb, Vtk };
+    Format format = Format::OpenVdb;
     // A file, or a sequence pattern whose single run of '#' stands for the
     // zero-padded frame number (Blender: fluid_data_####.vdb). Resolved
     // against the scene file's folder.
@@ -38,6 +43,11 @@ struct VolumeDesc {
     std::string scatteringGrid;
     std::string anisotropyGrid;
     std::string emissionGrid;  // ε in W/(m³·sr), grey or RGB, added to the blackbody term
+    // Declared by volume.fields (docs/scene-format.md): a gas density in
+    // kg/m³ (index by Gladstone–Dale's constant) and a pressure in Pa (with
+    // the temperature, the ideal-gas density), per cell.
+    std::string gasDensityGrid;
+    std::string pressureGrid;
 
     // The file's world into the scene's, affine: translate(offset) · up axis
     // (Z-up files turned to eikon's Y-up) · transform (translate · rotate ·
@@ -54,9 +64,19 @@ struct VolumeDesc {
     // Blender's N panel shows them; the location and rotation are in placement.
     std::optional<glm::dvec3> blenderDomainDimensions;
 
+    // What the temperature grid holds. KelvinAboveAmbient is Blender's and
+    // Houdini's unitless heat (volume.grids, the default there); declared by
+    // volume.fields.temperature_unit otherwise. implicitTemperatureUnit: the
+    // default was taken, so a grid that looks absolute is refused.
+    enum class TemperatureUnit { KelvinAboveAmbient, Kelvin, Celsius };
+    TemperatureUnit temperatureUnit = TemperatureUnit::KelvinAboveAmbient;
+    bool implicitTemperatureUnit = true;
+
     // Optics: κ = densityExtinction·ρ, σs = densityScattering·ρ per channel;
-    // T = ambientTemperature + temperatureScale·t + flameTemperature·f, and
-    // δn += n_air(T) − n_air(T_ambient) (Gladstone–Dale, sim/optics/AirOptics.h).
+    // T = ambientTemperature + temperatureScale·t + flameTemperature·f (above
+    // ambient; t in K or t + 273.15 for the absolute units), and
+    // δn += n_gas − n_air(T_ambient): n_gas − 1 = gladstoneDale·ρ_gas, or
+    // Gladstone–Dale of T at the cell's pressure (sim/optics/AirOptics.h).
     VolumeRgb densityExtinction{0.0};  // 1/m per unit density, >= 0
     VolumeRgb densityScattering{0.0};  // <= densityExtinction per channel
     double anisotropy = 0.0;           // HG g of the scattering, in (−1, 1)
@@ -66,6 +86,9 @@ struct VolumeDesc {
     double refractivity = 2.93e-4;       // n0 − 1 of air at T0, p0, > 0
     double referenceTemperature = 273.15;  // T0, K, > 0
     double pressure = 101325.0;            // Pa, > 0 (p0 = 101325 Pa)
+    // n − 1 per kg/m³ of the gas density grid; absent: air's, the
+    // refractivity over the ideal-gas density of air at T0 and p0.
+    std::optional<double> gladstoneDale;  // m³/kg, > 0
 
     // Emission, the L_e of [Ihrke07] §3, eqs. 1–2. Blackbody: each cell glows
     // by Kirchhoff's law, ε = emissionScale · κa · B(T) per channel, κa = κ − σs

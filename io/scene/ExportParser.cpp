@@ -2,6 +2,8 @@
 
 #include "bridge/core/Error.h"
 #include "io/export/ExportArrays.h"
+#include "io/scene/VolumeFieldsParser.h"
+#include "io/vtk/VtkVolumeSource.h"
 #include "io/vdb/VolumeFramePath.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -254,7 +256,8 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
                                      "density_extinction",
                                      "density_scattering", "anisotropy", "ambient_temperature", "temperature_scale",
                                      "flame_temperature", "refractivity", "reference_temperature", "pressure",
-                                     "emission", "emission_scale", "flame_absorption", "emission_lights"});
+                                     "emission", "emission_scale", "flame_absorption", "emission_lights", "fields",
+                                     "gladstone_dale"});
     const JsonReader pathNode = fields.member("path");
     const std::filesystem::path path = pathNode.string();
     volume.path = (path.is_absolute() ? path : std::filesystem::path(sceneFolder) / path).string();
@@ -268,6 +271,8 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
             pathNode.fail("'#' only in the file name, not in its folders", "\"" + path.string() + "\"");
         volume.sequence = true;
     }
+    if (io::isVtkVolumePath(volume.path)) volume.format = VolumeDesc::Format::Vtk;
+    checkVolumeReaderKeys(fields, volume);
     if (auto start = fields.optional("frame_start")) volume.frameStart = static_cast<int>(start->integer(0, kMaxFrameNumber));
     if (auto time = fields.optional("frame_time")) volume.frameTime = time->number(kPositive);
     // Presets: the grid names and axes of a Blender (Mantaflow) or Houdini
@@ -299,6 +304,7 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
         if (fields.optional("transform")) transform = readVolumeTransform(fields.member("transform"));
     }
     if (auto grids = fields.optional("grids")) readGridNames(*grids, volume);
+    if (auto declared = fields.optional("fields")) readVolumeFields(*declared, volume);
     glm::dvec3 offset(0.0);
     if (auto v = fields.optional("offset")) offset = v->vec3(kCoordinateRange);
     if (fields.optional("up_axis")) zUp = fields.member("up_axis").oneOf({"y", "z"}) == "z";
@@ -323,13 +329,22 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     if (auto v = fields.optional("refractivity")) volume.refractivity = v->number(kPositive);
     if (auto v = fields.optional("reference_temperature")) volume.referenceTemperature = v->number(kPositive);
     if (auto v = fields.optional("pressure")) volume.pressure = v->number(kPositive);
+    if (auto v = fields.optional("gladstone_dale")) volume.gladstoneDale = v->number(kPositive);
+    checkVolumeFieldKeys(fields, volume);
     if (volume.densityGrid.empty() && volume.temperatureGrid.empty() && volume.flameGrid.empty() &&
+        volume.gasDensityGrid.empty() && volume.pressureGrid.empty() &&
         volume.indexGrid.empty() && volume.deltaIndexGrid.empty() && volume.extinctionGrid.empty() &&
         volume.scatteringGrid.empty() && volume.emissionGrid.empty())
         fields.member("grids").fail("at least one grid named (density, temperature, flame, or an optical grid)",
                                     "every grid left empty");
     readVolumeEmission(fields, volume);
 
+    if (volume.format == VolumeDesc::Format::Vtk) {
+        if (!std::filesystem::exists(volume.path))
+            pathNode.fail("an existing VTK file or OpenFOAM case folder (relative paths start at the scene file's folder)",
+                          "\"" + volume.path + "\", which does not exist");
+        return volume;
+    }
     const std::string firstFile = volumeFramePath(volume, volume.frameStart);
     if (!std::filesystem::is_regular_file(firstFile))
         pathNode.fail(std::string("an existing .vdb file") + (volume.sequence ? " for frame_start" : "") +

@@ -16,7 +16,7 @@ namespace eikon {
 // and photon_direction), so call it after every other section.
 void readExport(const JsonReader& node, Scene& scene);
 
-// `volume`: an OpenVDB file or sequence; the (first) file must exist.
+// `volume`: an OpenVDB file or sequence, or VTK data; the (first) file must exist.
 VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder);
 
 }  // namespace eikon

@@ -10,6 +10,9 @@
 
 namespace eikon::sim {
 
+// R/M of dry air, J/(kg·K) (M = 28.9647 g/mol, R = 8.314462 J/(mol·K)).
+inline constexpr double kAirSpecificGasConstant = 287.05;
+
 struct GladstoneDale {
     double refractivity = 2.93e-4;          // n0 − 1
     double referenceTemperature = 273.15;   // T0, K
@@ -18,6 +21,11 @@ struct GladstoneDale {
     // n − 1 at temperature T (K) and pressure p (Pa).
     double refractivityAt(double temperature, double pressure) const {
         return refractivity * (pressure / referencePressure) * (referenceTemperature / temperature);
+    }
+    // Gladstone–Dale's K = (n0 − 1)/ρ0 in m³/kg, ρ0 = p0/(R_air·T0) air's
+    // ideal-gas density at the reference state: 2.267e-4 by default.
+    double airConstant() const {
+        return refractivity * kAirSpecificGasConstant * referenceTemperature / referencePressure;
     }
 };
 

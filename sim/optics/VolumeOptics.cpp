@@ -15,6 +15,29 @@ namespace {
 
 bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
 
+constexpr double kZeroCelsius = 273.15;  // K
+
+// A temperature grid read as kelvin above ambient by default whose nonzero
+// samples all lie at least kAbsoluteTemperatureLooking K above: an absolute
+// temperature, which the default would count the ambient into twice.
+void refuseAbsoluteLookingTemperature(const VolumeDesc& volume, const VolumeSamples& samples,
+                                      const VolumeOrigin& origin) {
+    if (!volume.implicitTemperatureUnit || volume.temperatureUnit != VolumeDesc::TemperatureUnit::KelvinAboveAmbient ||
+        samples.temperature.empty())
+        return;
+    float smallest = std::numeric_limits<float>::infinity();
+    for (const float t : samples.temperature)
+        if (t != 0.0f) smallest = std::min(smallest, t);
+    if (!(smallest >= kAbsoluteTemperatureLooking) || !std::isfinite(smallest)) return;
+    throw InputError(origin.scene + ": volume.grids.temperature (grid \"" + volume.temperatureGrid + "\" in " +
+                         origin.file + ")",
+                     "a temperature above ambient (the default for Blender's and Houdini's caches), within " +
+                         formatRounded(kAbsoluteTemperatureLooking) +
+                         " K of 0 somewhere; for an absolute temperature declare volume.fields with "
+                         "temperature_unit \"kelvin\" or \"celsius\"",
+                     "every nonzero sample at least " + formatRounded(smallest) + " (an absolute temperature?)");
+}
+
 // Built on first use (4097 Planck integrals), by scenes that glow only.
 const BlackbodyTable& planckTable() {
     static const BlackbodyTable table;
@@ -24,16 +47,26 @@ const BlackbodyTable& planckTable() {
 }  // namespace
 
 double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples, std::size_t cell) {
+    if (!samples.covers(cell)) return volume.ambientTemperature;
     double t = volume.ambientTemperature;
-    if (!samples.temperature.empty()) t += volume.temperatureScale * samples.temperature[cell];
+    if (!samples.temperature.empty()) {
+        const double sample = samples.temperature[cell];
+        switch (volume.temperatureUnit) {
+        case VolumeDesc::TemperatureUnit::KelvinAboveAmbient: t += volume.temperatureScale * sample; break;
+        case VolumeDesc::TemperatureUnit::Kelvin: t = sample; break;
+        case VolumeDesc::TemperatureUnit::Celsius: t = sample + kZeroCelsius; break;
+        }
+    }
     if (!samples.flame.empty()) t += volume.flameTemperature * samples.flame[cell];
     return t;
 }
 
 void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
                        const VolumeOrigin& origin, FieldSet& fields) {
+    refuseAbsoluteLookingTemperature(volume, samples, origin);
     const std::size_t cells = fields.grid.cellCount();
     const GladstoneDale air{volume.refractivity, volume.referenceTemperature, 101325.0};
+    const double gladstoneDale = volume.gladstoneDale.value_or(air.airConstant());
     const double ambient = air.refractivityAt(volume.ambientTemperature, volume.pressure);
     const double mediumDelta = medium.index - fields.referenceIndex;
     const bool dense = !samples.density.empty();
@@ -48,12 +81,17 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
         scatters && (medium.anisotropy != 0.0 || volume.anisotropy != 0.0 || !samples.anisotropy.empty());
 
     // The keys each refused quantity is computed from, as a user edits them.
+    const bool aboveAmbient = volume.temperatureUnit == VolumeDesc::TemperatureUnit::KelvinAboveAmbient;
     const std::string temperatureKeys =
-        std::string(samples.temperature.empty() ? "" : "volume.temperature_scale, ") +
+        std::string(samples.temperature.empty() ? ""
+                    : aboveAmbient          ? "volume.temperature_scale, "
+                                            : "volume.fields.temperature, volume.fields.temperature_unit, ") +
         (samples.flame.empty() ? "" : "volume.flame_temperature, ") + "volume.ambient_temperature";
     const std::string indexKeys =
         std::string(!samples.index.empty() ? "volume.grids.index" : !samples.deltaIndex.empty() ? "volume.grids.delta_index"
                                                                                                   : "medium.index") +
+        (!samples.gasDensity.empty() ? ", volume.fields.density, volume.gladstone_dale"
+                                     : !samples.pressure.empty() ? ", volume.fields.pressure" : "") +
         ", volume.refractivity, volume.pressure, volume.reference_temperature";
     const std::string extinctionKeys = std::string(samples.extinction.empty() ? "" : "volume.grids.extinction, ") +
                                        (dense ? "volume.density_extinction, " : "") +
@@ -83,21 +121,38 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
         const double t = volumeTemperature(volume, samples, c);
         if (!(t > 0.0) || !std::isfinite(t))
             refuse(c, temperatureKeys, "the temperature",
-                   "a finite temperature > 0 K (ambient_temperature + temperature_scale·t + flame_temperature·f, "
-                   "t and f the file's temperature and flame)",
+                   aboveAmbient ? "a finite temperature > 0 K (ambient_temperature + temperature_scale·t + "
+                                  "flame_temperature·f, t and f the file's temperature and flame)"
+                                : "a finite temperature > 0 K (the file's temperature in its temperature_unit, plus "
+                                  "flame_temperature·f)",
                    t, " K");
         // The index where the volume is: the medium's, or the file's own.
+        const bool inData = samples.covers(c);
         double baseDelta = mediumDelta;
-        if (!samples.index.empty()) {
+        if (inData && !samples.index.empty()) {
             if (!(samples.index[c] > 0.0f))
                 refuse(c, "volume.grids.index", "grid \"" + volume.indexGrid + "\"",
                        "an index > 0 in the index grid (outside its active voxels a grid reads its background)",
                        samples.index[c]);
             baseDelta = static_cast<double>(samples.index[c]) - fields.referenceIndex;
-        } else if (!samples.deltaIndex.empty()) {
+        } else if (inData && !samples.deltaIndex.empty()) {
             baseDelta = samples.deltaIndex[c];
         }
-        const double delta = baseDelta + air.refractivityAt(t, volume.pressure) - ambient;
+        // The gas's n − 1: Gladstone–Dale of its density, or of T at its pressure.
+        double gas = ambient;
+        if (inData && !samples.gasDensity.empty()) {
+            if (!(samples.gasDensity[c] >= 0.0f))
+                refuse(c, "volume.fields.density", "array \"" + volume.gasDensityGrid + "\"",
+                       "a gas density >= 0 kg/m³", samples.gasDensity[c], " kg/m³");
+            gas = gladstoneDale * samples.gasDensity[c];
+        } else if (inData) {
+            const double p = samples.pressure.empty() ? volume.pressure : samples.pressure[c];
+            if (!(p > 0.0))
+                refuse(c, "volume.fields.pressure", "array \"" + volume.pressureGrid + "\"",
+                       "a pressure > 0 Pa (an absolute pressure)", p, " Pa");
+            gas = air.refractivityAt(t, p);
+        }
+        const double delta = baseDelta + gas - ambient;
         if (!finiteFloat(delta) || !(fields.referenceIndex + delta > 0.0))
             refuse(c, indexKeys, "the refractive index",
                    "a finite index n > 0 (the medium's or the index grid's, plus n_air(T) − "

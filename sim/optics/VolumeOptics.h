@@ -3,11 +3,16 @@
 //   κ = κ_medium + density_extinction · ρ,  σs = σs_medium + density_scattering · ρ
 //   (Beer–Lambert coefficients linear in density; ρ < 0 from a solver's
 //   undershoot is taken as 0), g the σs-weighted mean of the medium's and the volume's;
-//   T = ambient_temperature + temperature_scale · t + flame_temperature · f,
-//   δn = (n_medium − n_ref) + [n_air(T) − n_air(T_ambient)]
-//   with n_air by Gladstone–Dale (AirOptics.h): the volume perturbs the
-//   medium by the index change its temperature causes, so cold, empty
-//   regions keep the medium's index.
+//   T = ambient_temperature + temperature_scale · t + flame_temperature · f
+//   (t above ambient; an absolute temperature grid: t, or t + 273.15 in °C,
+//   plus the flame term),
+//   δn = (n_medium − n_ref) + [n_gas − n_air(T_ambient)]
+//   with n_gas − 1 = K·ρ for a gas density grid (Gladstone–Dale, K in
+//   m³/kg), else n_air(T) at the cell's pressure (a pressure grid, or
+//   volume.pressure) by Gladstone–Dale (AirOptics.h): the volume perturbs
+//   the medium by the index change its gas causes, so cold, empty regions
+//   keep the medium's index. Cells the file's data do not cover (VTK data
+//   resampled, VolumeSamples::covered) are the ambient medium.
 // Optical grids made in other tools are taken as they are: an `index` grid
 // (n) or a `delta_index` grid (n − n_ref) replaces the medium's index in
 // the first term; `extinction` and `scattering` (1/m, grey or RGB) add to κ
@@ -22,6 +27,7 @@
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,13 +45,20 @@ struct VolumeSamples {
     std::vector<float> scattering;  // RGB per cell
     std::vector<float> anisotropy;
     std::vector<float> emission;    // RGB per cell, W/(m³·sr)
+    std::vector<float> gasDensity;  // kg/m³
+    std::vector<float> pressure;    // Pa
+    // 1 where the file's data cover the cell; empty: every cell (OpenVDB
+    // grids read their background outside their active voxels).
+    std::vector<std::uint8_t> covered;
+
+    bool covers(std::size_t cell) const { return covered.empty() || covered[cell] != 0; }
 };
 
-// Temperature in K of a cell from the samples (ambient where absent).
+// Temperature in K of a cell from the samples (ambient where absent or not covered).
 double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples, std::size_t cell);
 
 // Where the samples came from, for a refusal: the scene file whose `volume`
-// keys map them, and the OpenVDB file they were read from.
+// keys map them, and the OpenVDB or VTK file they were read from.
 struct VolumeOrigin {
     std::string scene;
     std::string file;
@@ -55,7 +68,13 @@ struct VolumeOrigin {
 // (left empty where the scene makes them zero everywhere) on fields.grid, bumping the versions of what
 // changed. InputError where a value is not finite or T <= 0, n <= 0, κ < 0,
 // σs > κ, |g| >= 1 or ε < 0, naming the scene file and the `volume` keys it
-// was computed from, the OpenVDB file and the world position.
+// was computed from, the OpenVDB file and the world position; and where a
+// temperature grid read as kelvin above ambient by default (Blender's
+// convention, VolumeDesc::implicitTemperatureUnit) holds absolute
+// temperatures: its smallest nonzero sample at least
+// kAbsoluteTemperatureLooking K.
+inline constexpr double kAbsoluteTemperatureLooking = 150.0;  // K
+
 void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
                        const VolumeOrigin& origin, FieldSet& fields);
 

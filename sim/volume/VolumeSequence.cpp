@@ -2,6 +2,7 @@
 
 #include "io/vdb/VdbVolumeFile.h"
 #include "io/vdb/VolumeFramePath.h"
+#include "io/vtk/VtkVolumeSource.h"
 
 #include "bridge/core/Error.h"
 
@@ -9,6 +10,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vector_relational.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace eikon::sim {
@@ -49,23 +51,79 @@ glm::dmat4 placementOf(const VolumeDesc& desc, const io::VdbVolumeFile& file) {
 constexpr int kRgb = 0;  // κ, σs, ε: RGB from a vec3s grid, grey from a float grid
 
 // Where each scalar grid the scene may read goes, sampled as how many
-// components (the velocity, turned with the volume, apart).
+// components (the velocity, turned with the volume, apart), and the key
+// under volume.grids or volume.fields that names it.
 struct GridSlot {
     std::string VolumeDesc::*name;
     std::vector<float> VolumeSamples::*samples;
     int components;  // 1 or kRgb
+    const char* key;
 };
 constexpr GridSlot kGridSlots[] = {
-    {&VolumeDesc::densityGrid, &VolumeSamples::density, 1},
-    {&VolumeDesc::temperatureGrid, &VolumeSamples::temperature, 1},
-    {&VolumeDesc::flameGrid, &VolumeSamples::flame, 1},
-    {&VolumeDesc::indexGrid, &VolumeSamples::index, 1},
-    {&VolumeDesc::deltaIndexGrid, &VolumeSamples::deltaIndex, 1},
-    {&VolumeDesc::anisotropyGrid, &VolumeSamples::anisotropy, 1},
-    {&VolumeDesc::extinctionGrid, &VolumeSamples::extinction, kRgb},
-    {&VolumeDesc::scatteringGrid, &VolumeSamples::scattering, kRgb},
-    {&VolumeDesc::emissionGrid, &VolumeSamples::emission, kRgb},
+    {&VolumeDesc::densityGrid, &VolumeSamples::density, 1, "density"},
+    {&VolumeDesc::temperatureGrid, &VolumeSamples::temperature, 1, "temperature"},
+    {&VolumeDesc::flameGrid, &VolumeSamples::flame, 1, "flame"},
+    {&VolumeDesc::indexGrid, &VolumeSamples::index, 1, "index"},
+    {&VolumeDesc::deltaIndexGrid, &VolumeSamples::deltaIndex, 1, "delta_index"},
+    {&VolumeDesc::anisotropyGrid, &VolumeSamples::anisotropy, 1, "anisotropy"},
+    {&VolumeDesc::extinctionGrid, &VolumeSamples::extinction, kRgb, "extinction"},
+    {&VolumeDesc::scatteringGrid, &VolumeSamples::scattering, kRgb, "scattering"},
+    {&VolumeDesc::emissionGrid, &VolumeSamples::emission, kRgb, "emission"},
+    {&VolumeDesc::gasDensityGrid, &VolumeSamples::gasDensity, 1, "density"},
+    {&VolumeDesc::pressureGrid, &VolumeSamples::pressure, 1, "pressure"},
 };
+
+// A grey grid's values as RGB: the same value in each channel.
+std::vector<float> greyToRgb(const std::vector<float>& values) {
+    std::vector<float> channels(3 * values.size());
+    for (std::size_t c = 0; c < values.size(); ++c) channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = values[c];
+    return channels;
+}
+
+// The VTK step rendered frame `frame` shows: step k for frame k of a time
+// series; a single data set for every frame.
+int vtkStepOf(const io::VtkVolumeSource& source, int frame) { return source.stepCount() == 1 ? 0 : frame; }
+
+// A time series too short for the frames asked.
+void checkVtkSteps(const io::VtkVolumeSource& source, const std::string& path, int frames) {
+    if (source.stepCount() > 1 && frames > source.stepCount())
+        throw InputError(path,
+                         "a time step for each of the " + std::to_string(frames) +
+                             " rendered frames (rendered frame k shows step k)",
+                         std::to_string(source.stepCount()) + " steps");
+}
+
+// The slots whose arrays volume.fields declares, and the requests for them.
+std::vector<const GridSlot*> vtkSlots(const VolumeDesc& desc) {
+    std::vector<const GridSlot*> slots;
+    for (const GridSlot& slot : kGridSlots)
+        if (!(desc.*slot.name).empty()) slots.push_back(&slot);
+    return slots;
+}
+std::vector<io::VtkArrayRequest> vtkRequests(const VolumeDesc& desc, const std::vector<const GridSlot*>& slots) {
+    std::vector<io::VtkArrayRequest> requests;
+    for (const GridSlot* slot : slots) requests.push_back({desc.*slot->name, std::string("volume.fields.") + slot->key});
+    return requests;
+}
+
+// The arrays volume.fields declares, read from a VTK step onto the render grid.
+VolumeSamples sampleVtkStep(const VolumeDesc& desc, const io::VtkVolumeSource& source, int step,
+                            const GridSpec& grid) {
+    const std::vector<const GridSlot*> slots = vtkSlots(desc);
+    const std::vector<io::VtkArrayRequest> requests = vtkRequests(desc, slots);
+    io::VtkResampled resampled = source.resample(step, requests, grid, desc.placement);
+    VolumeSamples samples;
+    for (std::size_t r = 0; r < slots.size(); ++r) {
+        io::VtkResampled::Array& array = resampled.arrays[r];
+        const bool rgb = slots[r]->components == kRgb;
+        if (array.components == 3 && !rgb)
+            throw InputError(source.stepName(step) + ": array \"" + requests[r].name + "\" (" + requests[r].key + ")",
+                             "a scalar array (1 component)", "3 components");
+        samples.*slots[r]->samples = rgb && array.components == 1 ? greyToRgb(array.values) : std::move(array.values);
+    }
+    samples.covered = std::move(resampled.covered);
+    return samples;
+}
 
 int componentsOf(const GridSlot& slot, const std::string& grid, const io::VdbVolumeFile& file) {
     return slot.components == kRgb ? file.componentsOf(grid) : slot.components;
@@ -85,6 +143,15 @@ void readNamedByScene(const std::string& scenePath, Read&& read) {
 }  // namespace
 
 void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int frames, const std::string& scenePath) {
+    if (desc.format == VolumeDesc::Format::Vtk) {
+        readNamedByScene(scenePath, [&] {
+            const io::VtkVolumeSource source(desc.path);
+            checkVtkSteps(source, desc.path, frames);
+            const std::vector<io::VtkArrayRequest> requests = vtkRequests(desc, vtkSlots(desc));
+            for (int frame = 0; frame < std::min(frames, source.stepCount()); ++frame) source.check(frame, requests);
+        });
+        return;
+    }
     if (!desc.sequence) return;
     for (int frame = 0; frame < frames; ++frame) {  // a missing file first: the cheapest to find
         const std::string path = volumeFramePath(desc, desc.frameStart + frame);
@@ -107,20 +174,38 @@ void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int f
 VolumeSequence::VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid,
                                const std::string& scenePath)
     : desc_(desc), medium_(medium), grid_(renderGrid), scenePath_(scenePath) {
+    if (desc_.format == VolumeDesc::Format::Vtk)
+        readNamedByScene(scenePath_, [&] { vtk_ = std::make_unique<io::VtkVolumeSource>(desc_.path); });
     load(0);
 }
 
+VolumeSequence::~VolumeSequence() = default;
+
+bool VolumeSequence::isSequence() const { return desc_.sequence || (vtk_ && vtk_->stepCount() > 1); }
+
 void VolumeSequence::advanceFrame() {
-    if (desc_.sequence) load(frame_ + 1);
+    if (isSequence()) load(frame_ + 1);
     else ++frame_;
 }
 
 void VolumeSequence::seekFrame(int frame) {
-    if (desc_.sequence) load(frame);
+    if (isSequence()) load(frame);
     else frame_ = frame;
 }
 
 void VolumeSequence::load(int frame) {
+    if (vtk_) {
+        VolumeSamples samples;
+        const int step = vtkStepOf(*vtk_, frame);
+        readNamedByScene(scenePath_, [&] {
+            checkVtkSteps(*vtk_, desc_.path, frame + 1);
+            samples = sampleVtkStep(desc_, *vtk_, step, grid_);
+        });
+        samples_ = std::move(samples);
+        file_ = vtk_->stepName(step);
+        frame_ = frame;
+        return;
+    }
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
     VolumeSamples samples;
     std::vector<float> velocity;
@@ -132,13 +217,7 @@ void VolumeSequence::load(int frame) {
             if (grid.empty()) continue;
             const int components = componentsOf(slot, grid, file);
             std::vector<float> values = file.sample(grid, components, grid_, placement);
-            if (slot.components == kRgb && components == 1) {  // grey: the same value in each channel
-                std::vector<float> channels(3 * values.size());
-                for (std::size_t c = 0; c < values.size(); ++c)
-                    channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = values[c];
-                values = std::move(channels);
-            }
-            samples.*slot.samples = std::move(values);
+            samples.*slot.samples = slot.components == kRgb && components == 1 ? greyToRgb(values) : std::move(values);
         }
         if (desc_.velocityGrid.empty()) return;
         velocity = file.sample(desc_.velocityGrid, 3, grid_, placement);

@@ -1,8 +1,9 @@
-// An imported OpenVDB volume (scene `volume`) as a source of fields: one
+// An imported volume (scene `volume`) as a source of fields: one OpenVDB
 // file, or a numbered sequence of which rendered frame f shows file number
-// frame_start + f. Each frame's grids are sampled onto the render grid
-// (io/vdb, sparse until sampled) and mapped to δn, κ, σs, g by
-// sim/optics/VolumeOptics.h.
+// frame_start + f; or VTK data (io/vtk/VtkVolumeSource), a time series or an
+// OpenFOAM case of which rendered frame f shows step f. Each frame's grids
+// are sampled onto the render grid (io/vdb, sparse until sampled; VTK's
+// probe filter) and mapped to δn, κ, σs, g by sim/optics/VolumeOptics.h.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -10,8 +11,13 @@
 #include "bridge/scene/Scene.h"
 #include "sim/optics/VolumeOptics.h"
 
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace eikon::io {
+class VtkVolumeSource;
+}
 
 namespace eikon::sim {
 
@@ -22,7 +28,9 @@ namespace eikon::sim {
 // metadata and a transform that places it (io/vdb/VdbVolumeFile::check).
 // Run before anything is written, so that a damaged later file stops the
 // run before frame 0 (docs/scene-format.md, volume). InputError as the
-// constructor's. A single file is left to the constructor.
+// constructor's. A single file is left to the constructor. VTK data: the
+// series' file list (each present), a step per frame, and each step read
+// whole with the declared arrays in it (io/vtk/VtkVolumeSource::check).
 void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int frames, const std::string& scenePath);
 
 class VolumeSequence {
@@ -32,8 +40,12 @@ public:
     // expected and found, for a missing file or grid or a bad file.
     VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid,
                    const std::string& scenePath);
+    ~VolumeSequence();
+    VolumeSequence(const VolumeSequence&) = delete;
+    VolumeSequence& operator=(const VolumeSequence&) = delete;
 
-    bool isSequence() const { return desc_.sequence; }
+    // Frames show different files (or VTK steps).
+    bool isSequence() const;
     int frame() const { return frame_; }
     double time() const { return frame_ * desc_.frameTime; }
     const std::string& currentFile() const { return file_; }
@@ -61,6 +73,7 @@ private:
     std::string scenePath_;
     int frame_ = 0;
     std::string file_;
+    std::unique_ptr<io::VtkVolumeSource> vtk_;  // VTK data; OpenVDB files are opened per frame
     VolumeSamples samples_;
     std::vector<float> velocity_;
 };

@@ -8,6 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include <signal.h>
 #include <sys/wait.h>
@@ -199,6 +207,69 @@ TEST_F(Cli, VolumeSequenceRunsAndExportsOpenVdb) {
         EXPECT_EQ(file.gridNames(), (std::vector<std::string>{"index", "extinction", "temperature"}));
         EXPECT_FLOAT_EQ(file.sample("temperature", 1, cell, {0, 0, 0})[0], 293.15f + 10.0f * float(frame + 1));
         EXPECT_FLOAT_EQ(file.sample("extinction", 3, cell, {0, 0, 0})[1], 0.25f);
+    }
+}
+
+// VTK input from the command line: a .vtp is surface data, refused with
+// exit 2 before anything is written; a .pvd of two image-data steps (T in
+// kelvin) refuses a third frame before anything is written, and renders two,
+// frame k showing step k in the exported temperature.
+TEST_F(Cli, VtkTimeSeriesRunsAndSurfaceDataIsRefused) {
+    vtkNew<vtkPolyData> surface;
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0, 0, 0);
+    surface->SetPoints(points);
+    vtkNew<vtkXMLPolyDataWriter> surfaceWriter;
+    surfaceWriter->SetFileName((dir_ / "surface.vtp").c_str());
+    surfaceWriter->SetInputData(surface);
+    ASSERT_EQ(surfaceWriter->Write(), 1);
+    for (int step = 0; step < 2; ++step) {
+        vtkNew<vtkImageData> image;  // covers the scene's grid, [-0.5, 0.5] × [0, 1] × [-0.5, 0.5]
+        image->SetDimensions(5, 5, 5);
+        image->SetSpacing(0.25, 0.25, 0.25);
+        image->SetOrigin(-0.5, 0.0, -0.5);
+        vtkNew<vtkDoubleArray> t;
+        t->SetName("T");
+        for (int p = 0; p < 125; ++p) t->InsertNextValue(300.0 + 100.0 * step);
+        image->GetPointData()->AddArray(t);
+        vtkNew<vtkXMLImageDataWriter> writer;
+        writer->SetFileName((dir_ / ("step_" + std::to_string(step) + ".vti")).c_str());
+        writer->SetInputData(image);
+        ASSERT_EQ(writer->Write(), 1);
+    }
+    std::ofstream(dir_ / "flow.pvd") << R"(<?xml version="1.0"?>
+<VTKFile type="Collection" version="0.1"><Collection>
+  <DataSet timestep="0" file="step_0.vti"/><DataSet timestep="1" file="step_1.vti"/>
+</Collection></VTKFile>)";
+    const auto sceneFor = [&](const std::string& path) {
+        std::string text = validScene();
+        text.insert(text.rfind('}'), R"(, "volume": {"path": ")" + path +
+                                         R"(", "fields": {"temperature": "T", "temperature_unit": "kelvin"}},
+            "export": {"vdb": {"fields": ["temperature"]}})");
+        return writeScene(path + ".json", text);
+    };
+    const fs::path out = dir_ / "out";
+    const Outcome surfaceRun = runEikon("run " + sceneFor("surface.vtp") + " --out " + out.string() + " --quiet");
+    EXPECT_EQ(surfaceRun.exitCode, 2) << surfaceRun.output;
+    EXPECT_NE(surfaceRun.output.find("surface.vtp: expected volume data"), std::string::npos) << surfaceRun.output;
+    EXPECT_NE(surfaceRun.output.find("found polygonal data: a surface"), std::string::npos) << surfaceRun.output;
+    EXPECT_FALSE(fs::exists(out));
+    const std::string scene = sceneFor("flow.pvd");
+    const Outcome tooMany = runEikon("run " + scene + " --out " + out.string() + " --frames 3 --quiet");
+    EXPECT_EQ(tooMany.exitCode, 2) << tooMany.output;
+    EXPECT_NE(tooMany.output.find("expected a time step for each of the 3 rendered frames (rendered frame k shows "
+                                  "step k), found 2 steps"),
+              std::string::npos)
+        << tooMany.output;
+    EXPECT_FALSE(fs::exists(out));
+    const Outcome outcome = runEikon("run " + scene + " --out " + out.string() + " --frames 2 --quiet");
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const eikon::GridSpec cell{{1, 1, 1}, {0.1, 0.1, 0.1}, {0.1625, 0.1625, 0.1625}};
+    for (int frame = 0; frame < 2; ++frame) {
+        char name[64];
+        std::snprintf(name, sizeof name, "fields_%05d.vdb", frame);
+        const eikon::io::VdbVolumeFile file(out / "vdb" / name);
+        EXPECT_FLOAT_EQ(file.sample("temperature", 1, cell, {0, 0, 0})[0], 300.0f + 100.0f * float(frame));
     }
 }
 
