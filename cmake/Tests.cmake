@@ -171,6 +171,9 @@ eikon_test(test_imported_lens LABELS integration LIBS eikon_accuracy eikon_refer
 eikon_test(test_lattice_scattering LABELS integration LIBS eikon_render eikon_reference SOURCES
   tests/integration/GlTestContext.cpp
   tests/integration/test_lattice_scattering.cpp)
+# How the lattice shares Henyey–Greenstein light among its links: the moments kept, the phase table.
+eikon_test(test_lattice_phase LABELS unit LIBS eikon_render SOURCES
+  tests/unit/test_lattice_phase.cpp)
 # The lattice in a forward-scattering (Henyey–Greenstein) slab against Monte Carlo; the reduced-scattering limit.
 eikon_test(test_lattice_anisotropic LABELS integration LIBS eikon_render eikon_reference SOURCES
   tests/integration/GlTestContext.cpp
