@@ -226,6 +226,8 @@ eikon_test(test_cli LABELS integration LIBS eikon_io eikon_vdb_test_files VTK::C
   tests/integration/test_converge_cli.cpp)
 vtk_module_autoinit(TARGETS test_cli MODULES VTK::CommonCore VTK::CommonDataModel VTK::IOXML)
 add_dependencies(test_cli eikon)
+# eikon converge's rungs: what each knob refines.
+eikon_test(test_converge_ladder LABELS unit LIBS eikon_converge SOURCES tests/unit/test_converge_ladder.cpp)
 eikon_test(test_diagnostic_cli LABELS integration LIBS eikon_io eikon_vdb_test_files VTK::CommonCore VTK::CommonDataModel VTK::IOXML SOURCES
   tests/integration/test_diagnostic_cli.cpp)
 vtk_module_autoinit(TARGETS test_diagnostic_cli MODULES VTK::CommonCore VTK::CommonDataModel VTK::IOXML)
