@@ -175,6 +175,9 @@ eikon_test(test_imported_lens LABELS integration LIBS eikon_accuracy eikon_refer
 eikon_test(test_lattice_scattering LABELS integration LIBS eikon_render eikon_reference SOURCES
   tests/integration/GlTestContext.cpp
   tests/integration/test_lattice_scattering.cpp)
+# How the lattice shares Henyey–Greenstein light among its links: the moments kept, the phase table.
+eikon_test(test_lattice_phase LABELS unit LIBS eikon_render SOURCES
+  tests/unit/test_lattice_phase.cpp)
 # The lattice in a forward-scattering (Henyey–Greenstein) slab against Monte Carlo; the reduced-scattering limit.
 eikon_test(test_lattice_anisotropic LABELS integration LIBS eikon_render eikon_reference SOURCES
   tests/integration/GlTestContext.cpp
@@ -227,6 +230,8 @@ eikon_test(test_cli LABELS integration LIBS eikon_io eikon_vdb_test_files VTK::C
   tests/integration/test_converge_cli.cpp)
 vtk_module_autoinit(TARGETS test_cli MODULES VTK::CommonCore VTK::CommonDataModel VTK::IOXML)
 add_dependencies(test_cli eikon)
+# eikon converge's rungs: what each knob refines.
+eikon_test(test_converge_ladder LABELS unit LIBS eikon_converge SOURCES tests/unit/test_converge_ladder.cpp)
 eikon_test(test_diagnostic_cli LABELS integration LIBS eikon_io eikon_vdb_test_files VTK::CommonCore VTK::CommonDataModel VTK::IOXML SOURCES
   tests/integration/test_diagnostic_cli.cpp)
 vtk_module_autoinit(TARGETS test_diagnostic_cli MODULES VTK::CommonCore VTK::CommonDataModel VTK::IOXML)

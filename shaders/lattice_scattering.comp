@@ -37,17 +37,19 @@
 // true Henyey–Greenstein phase function; the lattice's source, what the
 // beam loses to scattering (σs·φ_c), is light scattered exactly once. It is
 // born in the HG distribution about the beam projected on the links
-// (common/lattice_directions.glsl; the shares found once a frame by pass 5
+// (common/lattice_phase.glsl; the shares found once a frame by pass 5
 // into LatticeBirth): a g = 0.8 medium sends most of it on forward. Every
-// later scattering follows the δ-Eddington phase function
-// (common/lattice_directions.glsl, [Joseph76]): a share f goes straight
-// on, the rest with the linear phase function of asymmetry g′ ≤ 1/3, the
-// lattice's extinction and albedo being σt′ = σa + σs(1 − f) and
-// σs(1 − f)/σt′; the light arriving through link j scatters in its first
-// generation by w_i·(1 + 3g′ ĉ_i·ĉ_j) (later generations within the voxel
-// isotropically: a voxel is thin against a mean free path within the
-// validated resolution). Every watt is counted once: the unscattered beam
-// by the light pass, everything scattered by the lattice. The beam's
+// later scattering counts its δ-Eddington forward peak f = g² as no
+// scattering ([Joseph76]), the lattice's extinction and albedo being
+// σt′ = σa + σs(1 − f) and σs(1 − f)/σt′, and scatters the rest from link j
+// to link i by the phase matrix P′_ij (common/lattice_phase.glsl; the
+// table over g in LatticePhase, interpolated at the cell's g): the light
+// arriving through link j and the source born on link j that interact in
+// this voxel scatter in their first generation by P′_·j (later
+// generations within the voxel isotropically: a voxel is thin against a
+// mean free path within the validated resolution). Every watt is counted
+// once: the unscattered beam by the light pass, everything scattered by
+// the lattice. The beam's
 // direction m and its coherence |m| ([Sun08] §4.4, as the view pass reads
 // it) come from the light pass's fluence and power-weighted direction; the
 // incoherent part is born isotropically. Where it stops being valid:
@@ -71,6 +73,7 @@ layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 #include "common/grid_sampling.glsl"
 #include "common/lattice_directions.glsl"
+#include "common/lattice_phase.glsl"
 
 #ifndef EIKON_LATTICE_DIRECTIONS
 #define EIKON_LATTICE_DIRECTIONS 6
@@ -112,8 +115,9 @@ layout(std430, binding = kLatticeBirth) buffer LatticeBirth { float birth_share[
 layout(std430, binding = kFluence) readonly buffer Fluence { float beam_fluence[]; };
 layout(std430, binding = kFluenceDirection) readonly buffer FluenceDirection { float beam_direction[]; };
 // Each link's share of the sphere's directions by nearest link (its
-// Voronoi cell), on this grid's voxels (latticeLinkSolidAngles).
-uniform float link_solid_angle[DIRECTIONS];
+// Voronoi cell), on this grid's voxels (latticeLinkSolidAngles); the first
+// DIRECTIONS are set.
+uniform float link_solid_angle[LATTICE_MAX_LINKS];
 #else
 layout(std430, binding = kLatticeBirth) readonly buffer LatticeBirth { float birth_share[]; };
 #endif
@@ -151,6 +155,9 @@ shared float group_values[64 * 8];
 #endif
 #if EIKON_HAS_ANISOTROPY
 layout(binding = kAnisotropyTexture) uniform sampler3D anisotropy_texture;
+// The phase matrix of later scatterings over g (LatticePhase; layout:
+// common/lattice_phase.glsl); collide reads it, compiled in every pass.
+layout(std430, binding = kLatticePhase) readonly buffer LatticePhase { float phase_matrix[]; };
 #endif
 
 uniform int channel;     // 0, 1, 2: the lattice runs one channel at a time
@@ -186,12 +193,12 @@ struct Collision {
 };
 
 // A cell's medium as the lattice sees it in channel `c`: extinction and
-// albedo after the δ-Eddington scaling, and the asymmetry of what scatters.
+// albedo after the δ-Eddington scaling, and the HG asymmetry.
 struct LatticeMedium {
-    float sigma_t;    // 1/m
+    float sigma_t;  // 1/m
     float albedo;
-    float forward;    // f, the share of scattering that goes straight on
-    float asymmetry;  // g′, the linear phase function's
+    float forward;  // f, the share of scattering that goes straight on
+    float g;        // the Henyey–Greenstein asymmetry
 };
 
 LatticeMedium medium_at(ivec3 cell, int c) {
@@ -203,16 +210,13 @@ LatticeMedium medium_at(ivec3 cell, int c) {
     float g = 0.0f;
 #endif
     LatticeMedium m;
+    m.g = g;
     m.forward = lattice_delta_fraction(g);
-    m.asymmetry = lattice_residual_asymmetry(g);
     float reduced = sigma_s * (1.0f - m.forward);
     m.sigma_t = max(kappa - sigma_s + reduced, 0.0f);
     m.albedo = m.sigma_t > 0.0f ? min(reduced / m.sigma_t, 1.0f) : 0.0f;
     return m;
 }
-
-// The unit direction of link slot i in metres.
-vec3 link_direction(int i) { return normalize(vec3(lattice_offset(lattice_link(i, DIRECTIONS))) * grid.voxel_size.xyz); }
 
 Collision collide(ivec3 cell) {
     LatticeMedium medium = medium_at(cell, channel);
@@ -246,7 +250,9 @@ Collision collide(ivec3 cell) {
     float half_link[DIRECTIONS];  // transmittance of each half link, weighted
     float source_escape = 0.0f;   // share of the source that leaves its half link unscattered
     float source_track = 0.0f;    // m: the source's mean track over that half link
-    vec3 current = vec3(0.0f);    // W: the arriving light's scattered power times its direction
+#if EIKON_HAS_ANISOTROPY
+    float interacting_on[DIRECTIONS];  // W: of what arrives through link j or is born on it, what interacts here
+#endif
 #if EIKON_LATTICE_INTERFACES
     uvec4 here = interfaces[index];
 #endif
@@ -277,33 +283,58 @@ Collision collide(ivec3 cell) {
         source_escape += share * half_transmittance[k];
         source_track += share * 0.5f * link_length[k] * half_track_per_length[k];
         interactions += arriving * (1.0f - transmittance[k]);
-        current += arriving * (1.0f - transmittance[k]) * link_direction(i);
+#if EIKON_HAS_ANISOTROPY
+        interacting_on[i] = arriving * (1.0f - transmittance[k]) + c.source * share * (1.0f - half_transmittance[k]);
+#endif
         track += arriving * link_length[k] * track_per_length[k];
         half_link[i] = weight * half_transmittance[k];
         escape += half_link[i];
         half_track += weight * 0.5f * link_length[k] * half_track_per_length[k];
     }
     // What interacts here — arriving light and the source on its half links
-    // — scatters isotropically with the albedo. All generations born here:
+    // — scatters with the albedo. All generations born isotropically here:
     // born / (1 − a(1 − escape)). A voxel so thick that its escape
     // underflows keeps its born light (absorbed); the survey pass finds
     // voxels whose retention is too small for float (LatticeScattering.h,
     // the depth limit).
     float interacting = interactions + c.source * (1.0f - source_escape);
-    float born = albedo * interacting;
     float retention = max(1.0f - albedo * (1.0f - escape), 1e-7f);
-    float escaping = born * (escape / retention);
-    // The arriving light's first scattering adds 3g′·w_i·(ĉ_i·J), J its
-    // scattered power times direction, to link i; over opposite links it
-    // sums to nothing, so it moves light between links without changing
-    // what interacts or leaves.
-    vec3 anisotropic = 3.0f * medium.asymmetry * albedo * current;
+#if EIKON_HAS_ANISOTROPY
+    // The first generation scatters from link j to link i by the phase
+    // matrix P′ at the cell's g, leaving along link i after half a link;
+    // what interacts on those half links is born again isotropically, all
+    // its generations as above. Every watt that interacts here is absorbed,
+    // leaves, or is born again, so the ledger closes whatever P′ rounds to.
+    vec2 position = lattice_phase_position(medium.g);
+    int lower = int(position.x) * DIRECTIONS * DIRECTIONS;
+    int upper = lower + DIRECTIONS * DIRECTIONS;
+    float first_born = 0.0f;      // W scattered in the first generation
+    float first_escaping = 0.0f;  // W of it that leaves its half links unscattered
+    float first_track = 0.0f;     // W·m: its track over them
     for (int i = 0; i < DIRECTIONS; ++i) {
-        c.outgoing[i] += escape > 0.0f ? escaping * (half_link[i] / escape) : 0.0f;
-        c.outgoing[i] += half_link[i] * dot(link_direction(i), anisotropic);
+        float scattered = 0.0f;
+        for (int j = 0; j < DIRECTIONS; ++j)
+            scattered += interacting_on[j] * mix(phase_matrix[lower + j * DIRECTIONS + i],
+                                                 phase_matrix[upper + j * DIRECTIONS + i], position.y);
+        scattered *= albedo;
+        int k = lattice_length_class(lattice_link(i, DIRECTIONS));
+        c.outgoing[i] += scattered * half_transmittance[k];
+        first_born += scattered;
+        first_escaping += scattered * half_transmittance[k];
+        first_track += scattered * 0.5f * link_length[k] * half_track_per_length[k];
     }
+    float again = first_born - first_escaping;  // W: interacts on the first generation's half links
+    float born = albedo * again;
+    float escaping = born * (escape / retention);
+    c.absorbed = (interacting - first_born) + (again - escaping);
+    c.fluence = (track + c.source * source_track + first_track + born / retention * half_track) / volume;
+#else
+    float born = albedo * interacting;
+    float escaping = born * (escape / retention);
     c.absorbed = (1.0f - albedo) * interacting + (born - escaping);
     c.fluence = (track + c.source * source_track + born / retention * half_track) / volume;
+#endif
+    for (int i = 0; i < DIRECTIONS; ++i) c.outgoing[i] += escape > 0.0f ? escaping * (half_link[i] / escape) : 0.0f;
     return c;
 }
 
@@ -321,25 +352,19 @@ void main() {
     float total = beam_fluence[3 * index] + beam_fluence[3 * index + 1] + beam_fluence[3 * index + 2];
     float coherence = total > 0.0f ? min(length(sum) / total, 1.0f) : 0.0f;
     float g = texelFetch(anisotropy_texture, cell, 0).r;
-    float mass[DIRECTIONS];
-    for (int i = 0; i < DIRECTIONS; ++i) mass[i] = 0.0f;
+    LatticeLinkValues shares;
     if (coherence > 0.0f && g != 0.0f) {
-        vec3 axis = normalize(sum);
-        for (int j = 0; j < LATTICE_BIRTH_RINGS; ++j)
-            for (int k = 0; k < LATTICE_BIRTH_AZIMUTHS; ++k)
-                mass[lattice_nearest_slot(lattice_birth_direction(axis, g, j, k), grid.voxel_size.xyz, DIRECTIONS)] += 1.0f;
-        float norm = 0.0f;
-        for (int i = 0; i < DIRECTIONS; ++i) {
-            mass[i] *= lattice_weight(lattice_link(i, DIRECTIONS), DIRECTIONS) / link_solid_angle[i];
-            norm += mass[i];
-        }
-        for (int i = 0; i < DIRECTIONS; ++i) mass[i] /= norm;
+        LatticeLinkValues cells_on_sphere;
+        for (int i = 0; i < LATTICE_MAX_LINKS; ++i) cells_on_sphere.value[i] = link_solid_angle[i];
+        shares = lattice_hg_shares(normalize(sum), g, grid.voxel_size.xyz, DIRECTIONS, cells_on_sphere,
+                                   LATTICE_BIRTH_RINGS);
     } else {
         coherence = 0.0f;
+        for (int i = 0; i < LATTICE_MAX_LINKS; ++i) shares.value[i] = 0.0f;
     }
     for (int i = 0; i < DIRECTIONS; ++i)
         birth_share[i * cells + index] =
-            (1.0f - coherence) * lattice_weight(lattice_link(i, DIRECTIONS), DIRECTIONS) + coherence * mass[i];
+            (1.0f - coherence) * lattice_weight(lattice_link(i, DIRECTIONS), DIRECTIONS) + coherence * shares.value[i];
 #elif EIKON_LATTICE_PASS == 4
     ivec3 cell = ivec3(gl_GlobalInvocationID);
     if (any(greaterThanEqual(cell, grid.resolution.xyz))) return;

@@ -88,7 +88,8 @@
     X(kMultipleFluence, 30)     /* buffer MultipleFluence { float fluence[]; }: RGB per cell, W/m², light scattered ≥ once */ \
     X(kScatteredPower, 31)      /* buffer ScatteredPower { float scattered[]; }: RGB per cell, W, from the wavefront's fixed-point tallies */ \
     X(kLatticeInterfaces, 31)   /* buffer LatticeInterfaces { uvec4 interfaces[]; }: per cell the lattice's links across sharp surfaces */ \
-    X(kLatticeBirth, 13)        /* buffer LatticeBirth { float share[]; }: per link slot and cell, the share of the source born on it */
+    X(kLatticeBirth, 13)        /* buffer LatticeBirth { float share[]; }: per link slot and cell, the share of the source born on it */ \
+    X(kLatticePhase, 14)        /* buffer LatticePhase { float phase_matrix[]; }: the link-to-link phase matrix of later scatterings over g (common/lattice_phase.glsl) */
 
 // Texture (sampler) units. Unit 0 carries δn into the passes that derive
 // from it (smoothing, gradient, min/max pyramid) and later the pyramid into

@@ -5,6 +5,7 @@
 #include "gl/GlDebug.h"
 #include "gl/GpuMemory.h"
 #include "gl/ShaderLibrary.h"
+#include "render/stages/LatticePhase.h"
 #include "shaders/common/cpp_shim.h"
 
 #include <algorithm>
@@ -49,24 +50,6 @@ double latticeDepthLimit(int directions, const glm::dvec3& voxelSize) {
         (escapeShare(directions, voxelSize, middle / edge) > kMinRetention ? thin : thick) = middle;
     }
     return 0.5 * (thin + thick);
-}
-
-std::vector<float> latticeLinkSolidAngles(int directions, const glm::dvec3& voxelSize) {
-    // Fibonacci points, equal areas on the sphere: 20 000 give each link's
-    // share to about 1e-4.
-    const int points = 20000;
-    std::vector<double> count(static_cast<std::size_t>(directions), 0.0);
-    for (int p = 0; p < points; ++p) {
-        const double z = 1.0 - (2.0 * p + 1.0) / points;
-        const double phi = p * 2.399963229728653;  // the golden angle
-        const double s = std::sqrt(1.0 - z * z);
-        const glm::vec3 direction(static_cast<float>(s * std::cos(phi)), static_cast<float>(s * std::sin(phi)),
-                                  static_cast<float>(z));
-        count[shader::lattice_nearest_slot(direction, glm::vec3(voxelSize), directions)] += 1.0;
-    }
-    std::vector<float> shares(count.size());
-    for (std::size_t i = 0; i < count.size(); ++i) shares[i] = static_cast<float>(count[i] / points);
-    return shares;
 }
 
 LatticeSettings LatticeSettings::of(const TracerDesc& tracer) {
@@ -126,8 +109,11 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     tallies_ = gl::Buffer(static_cast<std::size_t>(groupCount(r)) * 2 * sizeof(glm::vec4));
 
     directed_ = fields.hasAnisotropy();
-    if (directed_)
+    if (directed_) {
         birth_ = gl::Buffer(stateBytes, gl::gridResource("the lattice's birth shares", r.x, r.y, r.z));
+        const std::vector<float> phase = latticePhaseTable(settings.directions, grid.voxelSize());
+        phase_ = gl::Buffer(phase.size() * sizeof(float), phase.data());
+    }
     const bool interfaces = !surfaces_.empty();
     if (interfaces)
         interfaces_ = gl::Buffer(cells * sizeof(glm::uvec4), gl::gridResource("the lattice's interface links", r.x, r.y, r.z));
@@ -207,6 +193,7 @@ LatticeStats LatticeScattering::run(const FieldTextures& fields, const gl::Buffe
     if (directed_) {
         findBirthShares(beam);
         birth_.bindStorage(layout::kLatticeBirth);
+        phase_.bindStorage(layout::kLatticePhase);
     }
     scatteredPower.bindStorage(layout::kRawScattered);
     const Survey surveyed = survey();

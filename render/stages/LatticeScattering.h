@@ -6,8 +6,9 @@
 // again (isotropically: the lattice keeps no finer angular detail). In an
 // anisotropic medium the source is born in the Henyey–Greenstein
 // distribution about the light pass's beam, projected on the links, and
-// later scatterings follow the δ-Eddington phase function
-// (shaders/lattice_scattering.comp).
+// later scatterings follow HG's remainder once its δ-Eddington forward peak
+// is taken out, as a link-to-link phase matrix (render/stages/LatticePhase,
+// shaders/common/lattice_phase.glsl).
 //
 // Channels run one after another (each has its own pair of density buffers,
 // so a 128³ grid of 6 links fits one storage block on every driver); where
@@ -77,11 +78,6 @@ inline constexpr double kMinRetention = 0x1p-25 / 1e-4;
 // edge: where the escape of a voxel of this shape falls to kMinRetention.
 double latticeDepthLimit(int directions, const glm::dvec3& voxelSize);
 
-// Each link slot's share of the sphere's directions when every direction
-// goes to its nearest link, on voxels of `voxelSize` (sums to 1): the
-// isotropic distribution the birth shares are taken relative to.
-std::vector<float> latticeLinkSolidAngles(int directions, const glm::dvec3& voxelSize);
-
 // The light pass's beam, which an anisotropic medium's source is born
 // about: smoothed fluence (RGB per cell) and power-weighted direction (xyz
 // per cell), PhotonStage::fluence() and fluenceDirection().
@@ -98,7 +94,7 @@ inline constexpr double kFaintProbeFloor = 1e-3;
 
 // The validated resolution: voxels up to a quarter of the lattice's mean
 // free path along their longest edge (σt′·h ≤ 1/4, σt′ = σa + σs(1 − f)
-// with f the δ-Eddington forward share, 0 where g ≤ 1/3), where the slabs
+// with f = g² the δ-Eddington forward share, 0 where g ≤ 0), where the slabs
 // against Monte Carlo hold within 3.3% (docs/accuracy.md, multiple
 // scattering). At half a mean free path the lattice's reflectance is 4.3%
 // low at albedo 0.5 and its deep transmission 12.6% low at τ = 20, albedo
@@ -192,6 +188,7 @@ private:
     gl::Buffer interfaces_;  // per cell uvec4 (lattice_scattering.comp); empty without sharp surfaces
     bool directed_ = false;  // an anisotropic medium: the source is born in the beam's phase function
     gl::Buffer birth_;       // per link slot and cell, the source's share (lattice_scattering.comp); empty unless directed_
+    gl::Buffer phase_;       // the phase matrix of later scatterings over g (LatticePhase); empty unless directed_
     std::array<std::array<gl::Buffer, 2>, 3> states_;  // per channel, ping-pong
     std::array<int, 3> current_{0, 0, 0};              // which of the pair holds the densities
     gl::Buffer probeValues_, tallies_, fluence_, surveyValues_;

@@ -46,6 +46,7 @@ namespace {
 #include "shaders/common/sharp_surfaces.glsl"
 #include "shaders/common/footprint_coverage.glsl"
 #include "shaders/common/lattice_directions.glsl"
+#include "shaders/common/lattice_phase.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 

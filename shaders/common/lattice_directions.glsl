@@ -97,79 +97,43 @@ float mean_transmittance(float x) {
     return (1.0f - exp(-x)) / x;
 }
 
-// ---- Anisotropic scattering on the lattice ---------------------------------
-// A Henyey–Greenstein medium of asymmetry g scatters on the lattice by the
-// δ-Eddington approximation ([Joseph76]; [Bernabei12] eq. 1 is the
-// transport equation it approximates): the phase function is replaced by
-// f·δ(forward) + (1 − f)·(1 + 3g′ cos θ)/(4π), with the same mean cosine,
-// f + (1 − f)·g′ = g. The forward share f counts as no scattering at all
-// (σs′ = σs(1 − f), σt′ = σa + σs′); the rest scatters with the linear
-// phase function, which the lattice carries exactly: link i of a light
-// that travelled along ĉ_j takes w_i·(1 + 3g′ ĉ_i·ĉ_j), whose mean direction
-// is g′ ĉ_j because Σ w_i ĉ_i ĉ_iᵀ = I/3 on every lattice here, and which is
-// never negative while |g′| ≤ 1/3. [Joseph76] keeps f = g²; here f is the
-// least that keeps g′ within ±1/3: 0 for |g| ≤ 1/3, else (g − 1/3)/(2/3)
-// for g > 1/3 (g = 0.8: f = 0.7, g′ = 1/3). Below g = −1/3 g′ is held at
-// −1/3 and the backward excess is not kept.
+// The largest lattice's link count.
+const int LATTICE_MAX_LINKS = 18;
 
-// f: the share of scattering counted as going straight on.
-float lattice_delta_fraction(float g) { return g > 1.0f / 3.0f ? (g - 1.0f / 3.0f) / (2.0f / 3.0f) : 0.0f; }
-
-// g′: the asymmetry of the rest.
-float lattice_residual_asymmetry(float g) {
-    float f = lattice_delta_fraction(g);
-    return clamp((g - f) / (1.0f - f), -1.0f / 3.0f, 1.0f / 3.0f);
+// The unit direction in metres of link `slot` on voxels of `voxel_size`.
+vec3 lattice_link_direction(int slot, vec3 voxel_size, int directions) {
+    return normalize(vec3(lattice_offset(lattice_link(slot, directions))) * voxel_size);
 }
 
-// ---- The first scattering --------------------------------------------------
-// Light the light pass scatters out of its beam is born on the lattice in
-// the true Henyey–Greenstein distribution about the beam's direction
-// ([Ihrke07] eq. 3), projected on the links: each direction goes to its
-// nearest link (the link's Voronoi cell on the sphere), and each link's
-// share is the HG mass of its cell relative to an isotropic distribution's,
-// times the link's weight (so g = 0 gives the weights themselves). The mass
-// is summed over a fixed product quadrature of LATTICE_BIRTH_RINGS rings of
-// equal HG probability (midpoints of the inverse distribution) times
-// LATTICE_BIRTH_AZIMUTHS azimuths.
-const int LATTICE_BIRTH_RINGS = 32;
-const int LATTICE_BIRTH_AZIMUTHS = 8;
+// Every link's unit direction in metres, found once for many look-ups.
+struct LatticeLinkDirections {
+    vec3 unit[LATTICE_MAX_LINKS];
+};
 
-// cos θ at which the HG distribution of asymmetry g reaches probability u.
-float lattice_hg_quantile(float u, float g) {
-    if (abs(g) < 1e-4f) return 2.0f * u - 1.0f;
-    float s = (1.0f - g * g) / (1.0f - g + 2.0f * g * u);
-    return clamp((1.0f + g * g - s * s) / (2.0f * g), -1.0f, 1.0f);
+LatticeLinkDirections lattice_link_directions(vec3 voxel_size, int directions) {
+    LatticeLinkDirections links;
+    for (int i = 0; i < LATTICE_MAX_LINKS; ++i)
+        links.unit[i] = i < directions ? lattice_link_direction(i, voxel_size, directions) : vec3(0.0f);
+    return links;
 }
 
-// Quadrature direction (ring j, azimuth k) about the unit vector `axis`;
-// each ring is turned by the golden ratio of an azimuth step against the
-// last. The frame about the axis is [Duff17]'s, defined for every unit
-// axis.
-vec3 lattice_birth_direction(vec3 axis, float g, int j, int k) {
-    float mu = lattice_hg_quantile((float(j) + 0.5f) / float(LATTICE_BIRTH_RINGS), g);
-    float s = sqrt(max(0.0f, 1.0f - mu * mu));
-    float turn = 0.618034f * float(j);
-    float phi = 6.2831853f * (float(k) + turn - floor(turn)) / float(LATTICE_BIRTH_AZIMUTHS);
-    float sign_ = axis.z >= 0.0f ? 1.0f : -1.0f;
-    float a = -1.0f / (sign_ + axis.z);
-    float b = axis.x * axis.y * a;
-    vec3 t1 = vec3(1.0f + sign_ * axis.x * axis.x * a, sign_ * b, -sign_ * axis.x);
-    vec3 t2 = vec3(b, sign_ + axis.y * axis.y * a, -axis.y);
-    return mu * axis + s * (cos(phi) * t1 + sin(phi) * t2);
-}
-
-// The slot of the link nearest to the unit vector `direction` on voxels of
-// `voxel_size` (the link's direction in metres).
-int lattice_nearest_slot(vec3 direction, vec3 voxel_size, int directions) {
+// The slot of the link nearest to the unit vector `direction` (the largest
+// cosine) among `links`.
+int lattice_nearest_of(vec3 direction, LatticeLinkDirections links, int directions) {
     int best = 0;
     float best_cosine = -2.0f;
     for (int i = 0; i < directions; ++i) {
-        vec3 link = normalize(vec3(lattice_offset(lattice_link(i, directions))) * voxel_size);
-        float cosine = dot(link, direction);
+        float cosine = dot(links.unit[i], direction);
         if (cosine > best_cosine) {
             best_cosine = cosine;
             best = i;
         }
     }
     return best;
+}
+
+// The slot of the link nearest to the unit vector `direction` on voxels of
+// `voxel_size` (the link's direction in metres).
+int lattice_nearest_slot(vec3 direction, vec3 voxel_size, int directions) {
+    return lattice_nearest_of(direction, lattice_link_directions(voxel_size, directions), directions);
 }

@@ -90,6 +90,7 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"LatticeSurvey", {layout::kLatticeSurvey, sizeof(layout::GpuLatticeSurvey), 0}},
         {"LatticeInterfaces", {layout::kLatticeInterfaces, 0, sizeof(glm::uvec4)}},
         {"LatticeBirth", {layout::kLatticeBirth, 0, sizeof(float)}},
+        {"LatticePhase", {layout::kLatticePhase, 0, sizeof(float)}},
         // Image space (render/stages/ImageSpace*, CausticPolygons).
         {"SurfacePixels", {layout::kSurfacePixels, 0, sizeof(std::uint32_t)}},
         {"SurfacePixelCount", {layout::kSurfacePixelCount, sizeof(glm::uvec4), 0}},

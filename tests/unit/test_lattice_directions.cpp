@@ -2,9 +2,8 @@
 // are distinct, come in opposite pairs, and their weights are a quadrature
 // of the sphere — total 1, no mean direction, second moments δ/3 (the
 // diffusion limit's), on 18 links the fourth moments too, and on 14 links
-// the continuum's half-range flux; the δ-Eddington phase function the
-// lattice scatters anisotropic media by; and the quadrature that projects
-// the Henyey–Greenstein distribution of the first scattering on the links.
+// the continuum's half-range flux; and the quadrature that projects the
+// Henyey–Greenstein distribution on the links (lattice_phase.glsl).
 #include "shaders/common/cpp_shim.h"
 
 #include <gtest/gtest.h>
@@ -104,43 +103,6 @@ TEST(LatticeDirections, MeanTransmittanceIsContinuousAtItsSeries) {
     }
 }
 
-// The δ-Eddington split keeps the mean cosine, f + (1 − f)·g′ = g, with
-// |g′| ≤ 1/3 so the linear phase function stays non-negative on the links;
-// no δ part at or below g = 1/3.
-TEST(LatticeDirections, TheDeltaSplitKeepsTheMeanCosine) {
-    EXPECT_NEAR(shader::lattice_delta_fraction(0.8f), 0.7, 1e-6);
-    EXPECT_NEAR(shader::lattice_residual_asymmetry(0.8f), 1.0 / 3.0, 1e-6);
-    for (float g : {0.0f, 0.2f, 1.0f / 3.0f, 0.5f, 0.8f, 0.95f}) {
-        const double f = shader::lattice_delta_fraction(g), residual = shader::lattice_residual_asymmetry(g);
-        EXPECT_NEAR(f + (1.0 - f) * residual, g, 1e-6) << g;
-        EXPECT_LE(std::abs(residual), 1.0 / 3.0 + 1e-7) << g;
-    }
-    EXPECT_EQ(shader::lattice_delta_fraction(0.3f), 0.0f);
-    EXPECT_NEAR(shader::lattice_residual_asymmetry(-0.2f), -0.2, 1e-7);
-}
-
-// The linear phase function w_i·(1 + 3g′ ĉ_i·m) on the links: total 1 and
-// mean direction g′·m for any unit m, because the weights' second moments
-// are I/3.
-TEST(LatticeDirections, TheLinearPhaseFunctionHasItsMeanCosine) {
-    const glm::dvec3 m = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
-    const double residual = 1.0 / 3.0;
-    for (int directions : {6, 14, 18}) {
-        double total = 0.0;
-        glm::dvec3 mean(0.0);
-        for (int i = 0; i < directions; ++i) {
-            const int d = lattice_link(i, directions);
-            const glm::dvec3 c = glm::normalize(glm::dvec3(lattice_offset(d)));
-            const double share = lattice_weight(d, directions) * (1.0 + 3.0 * residual * glm::dot(c, m));
-            EXPECT_GE(share, 0.0);
-            total += share;
-            mean += share * c;
-        }
-        EXPECT_NEAR(total, 1.0, 1e-6) << directions;
-        EXPECT_NEAR(glm::length(mean - residual * m), 0.0, 1e-6) << directions;
-    }
-}
-
 // The HG quantile inverts the distribution's closed-form CDF
 // P(cos θ ≤ x) = (1 − g²)/(2g)·(1/√(1 + g² − 2gx) − 1/(1 + g)), and the
 // birth quadrature (32 rings × 8 azimuths about the axis) integrates the
@@ -162,7 +124,8 @@ TEST(LatticeDirections, TheBirthQuadratureIntegratesHenyeyGreenstein) {
         const int n = shader::LATTICE_BIRTH_RINGS * shader::LATTICE_BIRTH_AZIMUTHS;
         for (int j = 0; j < shader::LATTICE_BIRTH_RINGS; ++j)
             for (int k = 0; k < shader::LATTICE_BIRTH_AZIMUTHS; ++k) {
-                const glm::vec3 d = shader::lattice_birth_direction(axis, static_cast<float>(g), j, k);
+                const glm::vec3 d =
+                    shader::lattice_birth_direction(axis, static_cast<float>(g), j, k, shader::LATTICE_BIRTH_RINGS);
                 const double mu = glm::dot(d, axis);
                 first += mu / n;
                 second += mu * mu / n;

@@ -45,9 +45,16 @@ Rung refinedRung(const Scene& scene, const std::string& knob, const Refinement& 
             w.splitTexels = refined(scene.tracer.wavefront.splitTexels);
             w.tearTexels = refined(scene.tracer.wavefront.tearTexels);
             w.splitVoxels = refined(scene.tracer.wavefront.splitVoxels);
+            // The reflected branches' split on their starting power refines
+            // with the rest, coarsening at most to 1 (no such split, the
+            // most the scene file holds); at 1 it stays off.
+            if (scene.tracer.wavefront.reflectionSplit < 1.0)
+                w.reflectionSplit = std::min(1.0, scene.tracer.wavefront.reflectionSplit / refinement.photons);
             changed.push_back("tracer.wavefront.split_texels=" + set("tracer.wavefront.split_texels", w.splitTexels) +
                               ", tear_texels=" + set("tracer.wavefront.tear_texels", w.tearTexels) +
-                              ", split_voxels=" + set("tracer.wavefront.split_voxels", w.splitVoxels));
+                              ", split_voxels=" + set("tracer.wavefront.split_voxels", w.splitVoxels) +
+                              ", reflection_split=" +
+                              set("tracer.wavefront.reflection_split", w.reflectionSplit));
         } else {
             // Within kFinestReference of a count the scene file could hold: no overflow.
             s.render.photons = std::max(1LL, std::llround(static_cast<double>(scene.render.photons) * refinement.photons));

@@ -1,10 +1,10 @@
 // The settings `eikon converge` renders the user's scene at: one ladder per
 // knob the scene has — the photon count (or the wavefront's split
-// threshold), the step (photons' and camera rays' together), the grid
-// resolution — each varying that knob alone about the scene's own value,
-// one ladder refining all of them together, and a reference finer than
-// every rung in every knob, rendered with another seed so that its noise is
-// independent of theirs.
+// thresholds, reflection_split among them), the step (photons' and camera
+// rays' together), the grid resolution — each varying that knob alone
+// about the scene's own value, one ladder refining all of them together,
+// and a reference finer than every rung in every knob, rendered with
+// another seed so that its noise is independent of theirs.
 #pragma once
 
 #include "bridge/scene/Scene.h"
