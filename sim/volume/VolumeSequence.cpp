@@ -52,19 +52,19 @@ constexpr int kRgb = 0;  // κ, σs, ε: RGB from a vec3s grid, grey from a floa
 // components (the velocity, turned with the volume, apart).
 struct GridSlot {
     std::string VolumeDesc::*name;
-    std::vector<float> VolumeSamples::*samples;
+    std::vector<float> VolumeGrids::*samples;
     int components;  // 1 or kRgb
 };
 constexpr GridSlot kGridSlots[] = {
-    {&VolumeDesc::densityGrid, &VolumeSamples::density, 1},
-    {&VolumeDesc::temperatureGrid, &VolumeSamples::temperature, 1},
-    {&VolumeDesc::flameGrid, &VolumeSamples::flame, 1},
-    {&VolumeDesc::indexGrid, &VolumeSamples::index, 1},
-    {&VolumeDesc::deltaIndexGrid, &VolumeSamples::deltaIndex, 1},
-    {&VolumeDesc::anisotropyGrid, &VolumeSamples::anisotropy, 1},
-    {&VolumeDesc::extinctionGrid, &VolumeSamples::extinction, kRgb},
-    {&VolumeDesc::scatteringGrid, &VolumeSamples::scattering, kRgb},
-    {&VolumeDesc::emissionGrid, &VolumeSamples::emission, kRgb},
+    {&VolumeDesc::densityGrid, &VolumeGrids::density, 1},
+    {&VolumeDesc::temperatureGrid, &VolumeGrids::temperature, 1},
+    {&VolumeDesc::flameGrid, &VolumeGrids::flame, 1},
+    {&VolumeDesc::indexGrid, &VolumeGrids::index, 1},
+    {&VolumeDesc::deltaIndexGrid, &VolumeGrids::deltaIndex, 1},
+    {&VolumeDesc::anisotropyGrid, &VolumeGrids::anisotropy, 1},
+    {&VolumeDesc::extinctionGrid, &VolumeGrids::extinction, kRgb},
+    {&VolumeDesc::scatteringGrid, &VolumeGrids::scattering, kRgb},
+    {&VolumeDesc::emissionGrid, &VolumeGrids::emission, kRgb},
 };
 
 int componentsOf(const GridSlot& slot, const std::string& grid, const io::VdbVolumeFile& file) {
@@ -122,7 +122,7 @@ void VolumeSequence::seekFrame(int frame) {
 
 void VolumeSequence::load(int frame) {
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
-    VolumeSamples samples;
+    VolumeGrids samples;
     std::vector<float> velocity;
     readNamedByScene(scenePath_, [&] {
         const io::VdbVolumeFile file(path);
@@ -155,7 +155,7 @@ void VolumeSequence::load(int frame) {
 }
 
 void VolumeSequence::writeFields(FieldSet& fields) const {
-    writeVolumeOptics(desc_, medium_, samples_, {scenePath_, file_}, fields);
+    writeVolumeOptics(desc_, medium_, samples_.view(), {scenePath_, file_}, fields);
 }
 
 std::vector<NamedArray> VolumeSequence::exportArrays() const {
@@ -166,8 +166,9 @@ std::vector<NamedArray> VolumeSequence::exportArrays() const {
     if (!samples_.temperature.empty() || !samples_.flame.empty()) {
         const auto ambient = static_cast<float>(desc_.ambientTemperature);
         NamedArray temperature{"temperature", 1, std::vector<float>(grid_.cellCount()), {"K", ArrayRole::Scalar, ambient}};
+        const VolumeSamples samples = samples_.view();
         for (std::size_t c = 0; c < temperature.values.size(); ++c)
-            temperature.values[c] = static_cast<float>(volumeTemperature(desc_, samples_, c));
+            temperature.values[c] = static_cast<float>(volumeTemperature(desc_, samples, c));
         arrays.push_back(std::move(temperature));
     }
     if (!samples_.flame.empty()) arrays.push_back({"flame", 1, samples_.flame, {"cache units", ArrayRole::Density}});

@@ -61,7 +61,7 @@ private:
     std::string scenePath_;
     int frame_ = 0;
     std::string file_;
-    VolumeSamples samples_;
+    VolumeGrids samples_;
     std::vector<float> velocity_;
 };
 
