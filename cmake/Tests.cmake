@@ -283,3 +283,8 @@ add_test(NAME Library.InstalledPackageBuildsTheExample
          COMMAND ${CMAKE_COMMAND} -DBUILD=${CMAKE_BINARY_DIR} -DSOURCE=${CMAKE_SOURCE_DIR}
                  -DWORK=${CMAKE_BINARY_DIR}/installed_package_test -P ${CMAKE_SOURCE_DIR}/tests/integration/InstalledPackage.cmake)
 set_tests_properties(Library.InstalledPackageBuildsTheExample PROPERTIES LABELS integration)
+# The Python module from the build folder (tests/python).
+add_test(NAME Python.Module COMMAND ${Python3_EXECUTABLE} -m unittest -v test_module
+         WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}/tests/python)
+set_tests_properties(Python.Module PROPERTIES LABELS integration
+                     ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/python")
