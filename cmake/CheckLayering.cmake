@@ -38,13 +38,16 @@ set(rules
   "apps/common|bridge/,io/,sim/,render/,gl/"
   "apps/eikon|bridge/,io/,sim/,render/,gl/,verify/,apps/common/"
   "apps/eikon-view|bridge/,io/,sim/,render/,gl/,apps/common/"
+  "apps/library|eikon/,bridge/,io/,sim/,render/,gl/,apps/common/"
+  "apps/python|eikon/"
+  "include/eikon|"
 )
 # What a GPU stage must not use: it gets its inputs as data (docs/architecture.md).
 set(file_system_patterns "#[ \t]*include[ \t]*<(fstream|filesystem)>" "fopen[ \t]*\\(" "std::[io]?fstream")
 
 set(violations "")
 file(GLOB_RECURSE sources
-     ${ROOT}/bridge/* ${ROOT}/io/* ${ROOT}/sim/* ${ROOT}/render/* ${ROOT}/shaders/* ${ROOT}/verify/* ${ROOT}/apps/*)
+     ${ROOT}/bridge/* ${ROOT}/io/* ${ROOT}/sim/* ${ROOT}/render/* ${ROOT}/shaders/* ${ROOT}/verify/* ${ROOT}/apps/* ${ROOT}/include/*)
 list(FILTER sources INCLUDE REGEX "\\.(h|cpp|glsl|comp)$")
 foreach(source IN LISTS sources)
   file(RELATIVE_PATH rel ${ROOT} ${source})

@@ -281,3 +281,19 @@ eikon_test(test_viewer_window LABELS integration LIBS eikon_io SOURCES tests/int
 target_compile_definitions(test_viewer_window PRIVATE
   EIKON_VIEW_EXECUTABLE="$<TARGET_FILE:eikon-view>" EIKON_XVFB_RUN="${XVFB_RUN}")
 add_dependencies(test_viewer_window eikon eikon-view)
+
+# The library through its public header alone (include/eikon/eikon.h):
+# fields handed in against the same fields read from an OpenVDB file, and
+# each refusal.
+eikon_test(test_library LABELS integration LIBS eikon_library eikon_vdb_test_files nlohmann_json::nlohmann_json
+  SOURCES tests/integration/test_library.cpp)
+# The installed package builds and runs examples/cpp outside the source tree.
+add_test(NAME Library.InstalledPackageBuildsTheExample
+         COMMAND ${CMAKE_COMMAND} -DBUILD=${CMAKE_BINARY_DIR} -DSOURCE=${CMAKE_SOURCE_DIR}
+                 -DWORK=${CMAKE_BINARY_DIR}/installed_package_test -P ${CMAKE_SOURCE_DIR}/tests/integration/InstalledPackage.cmake)
+set_tests_properties(Library.InstalledPackageBuildsTheExample PROPERTIES LABELS integration)
+# The Python module from the build folder (tests/python).
+add_test(NAME Python.Module COMMAND ${Python3_EXECUTABLE} -m unittest -v test_module
+         WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}/tests/python)
+set_tests_properties(Python.Module PROPERTIES LABELS integration
+                     ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/python")

@@ -337,6 +337,22 @@ void SceneFields::refreshFromSimulation() {
     validateFields(fields_, sceneFieldOrigin(scene_, volume_ ? volume_->currentFile() : ""));
 }
 
+void SceneFields::writeCallerFields(const VolumeSamples& samples, const std::string& origin) {
+    EIKON_CHECK_MSG(!fluid_, "a scene with a fluid solver makes its own fields");
+    VolumeDesc optics = scene_.volume ? *scene_.volume : VolumeDesc{};
+    // A refusal names the caller's fields by the names they were handed as.
+    optics.indexGrid = "index";
+    optics.deltaIndexGrid = "delta_index";
+    optics.extinctionGrid = "extinction";
+    optics.scatteringGrid = "scattering";
+    optics.anisotropyGrid = "anisotropy";
+    optics.emissionGrid = "emission";
+    writeVolumeOptics(optics, scene_.medium, samples, {scene_.sourcePath, origin}, fields_);
+    paintObjects(scene_, fields_, coverageGrids());
+    paintStrokes(scene_, fields_);
+    validateFields(fields_, sceneFieldOrigin(scene_, origin));
+}
+
 std::vector<NamedArray> SceneFields::exportArrays(const std::vector<std::string>& names) const {
     if (volume_) return volume_->exportArrays();
     if (!fluid_) return {};

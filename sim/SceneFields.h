@@ -50,6 +50,18 @@ public:
     // would, bit for bit).
     void seekFrame(int frame);
 
+    // A frame of the caller's own fields (the library, include/eikon/eikon.h)
+    // in place of a volume file's grids: `samples` are read where they lie,
+    // mapped to δn, κ, σs, g, ε by the scene's `volume` optics (its keys, or
+    // their defaults without a `volume` section; sim/optics/VolumeOptics.h),
+    // and the objects and strokes are composited over them, as over a
+    // volume file's frame. `origin` names them in a refusal (InputError as
+    // writeVolumeOptics'), which leaves fields() as it was — but for one by
+    // validateFields after the objects are composited, which leaves the
+    // refused fields: render them not. Not for a scene with a fluid solver,
+    // whose fields are its own.
+    void writeCallerFields(const VolumeSamples& samples, const std::string& origin);
+
     // The live loop's two halves of advanceFrame for a scene with a fluid
     // solver, whose fields go straight into GPU memory
     // (render/stages/FieldRing.h): simulateFrame() advances the solver and

@@ -4,7 +4,7 @@
 #include "apps/eikon/FrameExport.h"
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/FrameOutputs.h"
-#include "apps/eikon/LatticeWarning.h"
+#include "apps/common/LatticeWarning.h"
 #include "apps/eikon/ErrorWarning.h"
 #include "apps/eikon/PowerWarning.h"
 #include "apps/eikon/Ranks.h"
@@ -68,7 +68,8 @@ void renderFrameShare(const Scene& scene, sim::SceneFields& fields, int frames,
         latticeWarning.check(frame, result);
         if (!outputs) openOutputs();
         outputs->write(frame, result,
-                       frameReportJson(frame, current, simulated, result, timing, false, Distribution::Frames),
+                       frameReportJson(frame, current, simulated, result, timing, false, Distribution::Frames,
+                                       ranks.size()),
                        source.renderer(), {current.time, source.currentViews(), current.exportArrays, current.meshes});
         progress.advance();
     }

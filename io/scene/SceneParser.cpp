@@ -671,6 +671,10 @@ nlohmann::json loadSceneDocument(const std::string& path, const std::vector<std:
     return root;
 }
 
+Scene parseSceneText(const std::string& text, const std::string& sourceName) {
+    return parseScene(parseJsonText(text, sourceName), sourceName);
+}
+
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides) {
     return parseScene(loadSceneDocument(path, overrides), path);
 }

@@ -21,6 +21,10 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName);
 // order, not yet validated.
 nlohmann::json loadSceneDocument(const std::string& path, const std::vector<std::string>& overrides = {});
 
+// Parses and validates scene text (JSON, with the file's checks) as if it
+// were the file `sourceName`: relative paths start at its folder.
+Scene parseSceneText(const std::string& text, const std::string& sourceName);
+
 // Reads the file at path, applies each `--set` override in order, then parses.
 Scene loadSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
 

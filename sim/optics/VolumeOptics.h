@@ -28,30 +28,46 @@
 #include "bridge/scene/Scene.h"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace eikon::sim {
 
-// Grids of one volume frame on the render grid (one value per cell); a grid
-// the scene does not read is empty.
+// Grids of one volume frame on the render grid (one value per cell, x
+// fastest), as views: of a file's samples (VolumeGrids below) or of a
+// caller's own arrays (the library, include/eikon/eikon.h), read where they
+// lie. A grid the scene does not read is empty.
 struct VolumeSamples {
-    std::vector<float> density;
-    std::vector<float> temperature;
-    std::vector<float> flame;
-    std::vector<float> index;       // n
-    std::vector<float> deltaIndex;  // n − n_ref
-    std::vector<float> extinction;  // RGB per cell (a grey grid's value in each channel)
-    std::vector<float> scattering;  // RGB per cell
-    std::vector<float> anisotropy;
-    std::vector<float> emission;    // RGB per cell, W/(m³·sr)
-    std::vector<float> gasDensity;  // kg/m³
-    std::vector<float> pressure;    // Pa
+    std::span<const float> density;
+    std::span<const float> temperature;
+    std::span<const float> flame;
+    std::span<const float> index;       // n
+    std::span<const float> deltaIndex;  // n − n_ref
+    std::span<const float> extinction;  // RGB per cell (a grey grid's value in each channel)
+    std::span<const float> scattering;  // RGB per cell
+    std::span<const float> anisotropy;
+    std::span<const float> emission;    // RGB per cell, W/(m³·sr)
+    std::span<const float> gasDensity;  // kg/m³
+    std::span<const float> pressure;    // Pa
     // 1 where the file's data cover the cell; empty: every cell (OpenVDB
     // grids read their background outside their active voxels).
-    std::vector<std::uint8_t> covered;
+    std::span<const std::uint8_t> covered;
 
     bool covers(std::size_t cell) const { return covered.empty() || covered[cell] != 0; }
+};
+
+// The grids of one volume frame held in memory (a file's samples), laid out
+// as VolumeSamples views them.
+struct VolumeGrids {
+    std::vector<float> density, temperature, flame, index, deltaIndex, extinction, scattering, anisotropy, emission,
+        gasDensity, pressure;
+    std::vector<std::uint8_t> covered;
+
+    VolumeSamples view() const {
+        return {density, temperature, flame,    index,    deltaIndex, extinction,
+                scattering, anisotropy, emission, gasDensity, pressure, covered};
+    }
 };
 
 // Temperature in K of a cell from the samples (ambient where absent or not covered).

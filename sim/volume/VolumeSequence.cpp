@@ -55,22 +55,22 @@ constexpr int kRgb = 0;  // κ, σs, ε: RGB from a vec3s grid, grey from a floa
 // under volume.grids or volume.fields that names it.
 struct GridSlot {
     std::string VolumeDesc::*name;
-    std::vector<float> VolumeSamples::*samples;
+    std::vector<float> VolumeGrids::*samples;
     int components;  // 1 or kRgb
     const char* key;
 };
 constexpr GridSlot kGridSlots[] = {
-    {&VolumeDesc::densityGrid, &VolumeSamples::density, 1, "density"},
-    {&VolumeDesc::temperatureGrid, &VolumeSamples::temperature, 1, "temperature"},
-    {&VolumeDesc::flameGrid, &VolumeSamples::flame, 1, "flame"},
-    {&VolumeDesc::indexGrid, &VolumeSamples::index, 1, "index"},
-    {&VolumeDesc::deltaIndexGrid, &VolumeSamples::deltaIndex, 1, "delta_index"},
-    {&VolumeDesc::anisotropyGrid, &VolumeSamples::anisotropy, 1, "anisotropy"},
-    {&VolumeDesc::extinctionGrid, &VolumeSamples::extinction, kRgb, "extinction"},
-    {&VolumeDesc::scatteringGrid, &VolumeSamples::scattering, kRgb, "scattering"},
-    {&VolumeDesc::emissionGrid, &VolumeSamples::emission, kRgb, "emission"},
-    {&VolumeDesc::gasDensityGrid, &VolumeSamples::gasDensity, 1, "density"},
-    {&VolumeDesc::pressureGrid, &VolumeSamples::pressure, 1, "pressure"},
+    {&VolumeDesc::densityGrid, &VolumeGrids::density, 1, "density"},
+    {&VolumeDesc::temperatureGrid, &VolumeGrids::temperature, 1, "temperature"},
+    {&VolumeDesc::flameGrid, &VolumeGrids::flame, 1, "flame"},
+    {&VolumeDesc::indexGrid, &VolumeGrids::index, 1, "index"},
+    {&VolumeDesc::deltaIndexGrid, &VolumeGrids::deltaIndex, 1, "delta_index"},
+    {&VolumeDesc::anisotropyGrid, &VolumeGrids::anisotropy, 1, "anisotropy"},
+    {&VolumeDesc::extinctionGrid, &VolumeGrids::extinction, kRgb, "extinction"},
+    {&VolumeDesc::scatteringGrid, &VolumeGrids::scattering, kRgb, "scattering"},
+    {&VolumeDesc::emissionGrid, &VolumeGrids::emission, kRgb, "emission"},
+    {&VolumeDesc::gasDensityGrid, &VolumeGrids::gasDensity, 1, "density"},
+    {&VolumeDesc::pressureGrid, &VolumeGrids::pressure, 1, "pressure"},
 };
 
 // A grey grid's values as RGB: the same value in each channel.
@@ -107,12 +107,12 @@ std::vector<io::VtkArrayRequest> vtkRequests(const VolumeDesc& desc, const std::
 }
 
 // The arrays volume.fields declares, read from a VTK step onto the render grid.
-VolumeSamples sampleVtkStep(const VolumeDesc& desc, const io::VtkVolumeSource& source, int step,
+VolumeGrids sampleVtkStep(const VolumeDesc& desc, const io::VtkVolumeSource& source, int step,
                             const GridSpec& grid) {
     const std::vector<const GridSlot*> slots = vtkSlots(desc);
     const std::vector<io::VtkArrayRequest> requests = vtkRequests(desc, slots);
     io::VtkResampled resampled = source.resample(step, requests, grid, desc.placement);
-    VolumeSamples samples;
+    VolumeGrids samples;
     for (std::size_t r = 0; r < slots.size(); ++r) {
         io::VtkResampled::Array& array = resampled.arrays[r];
         const bool rgb = slots[r]->components == kRgb;
@@ -195,7 +195,7 @@ void VolumeSequence::seekFrame(int frame) {
 
 void VolumeSequence::load(int frame) {
     if (vtk_) {
-        VolumeSamples samples;
+        VolumeGrids samples;
         const int step = vtkStepOf(*vtk_, frame);
         readNamedByScene(scenePath_, [&] {
             checkVtkSteps(*vtk_, desc_.path, frame + 1);
@@ -207,7 +207,7 @@ void VolumeSequence::load(int frame) {
         return;
     }
     const std::string path = volumeFramePath(desc_, desc_.frameStart + frame);
-    VolumeSamples samples;
+    VolumeGrids samples;
     std::vector<float> velocity;
     readNamedByScene(scenePath_, [&] {
         const io::VdbVolumeFile file(path);
@@ -234,7 +234,7 @@ void VolumeSequence::load(int frame) {
 }
 
 void VolumeSequence::writeFields(FieldSet& fields) const {
-    writeVolumeOptics(desc_, medium_, samples_, {scenePath_, file_}, fields);
+    writeVolumeOptics(desc_, medium_, samples_.view(), {scenePath_, file_}, fields);
 }
 
 std::vector<NamedArray> VolumeSequence::exportArrays() const {
@@ -245,8 +245,9 @@ std::vector<NamedArray> VolumeSequence::exportArrays() const {
     if (!samples_.temperature.empty() || !samples_.flame.empty()) {
         const auto ambient = static_cast<float>(desc_.ambientTemperature);
         NamedArray temperature{"temperature", 1, std::vector<float>(grid_.cellCount()), {"K", ArrayRole::Scalar, ambient}};
+        const VolumeSamples samples = samples_.view();
         for (std::size_t c = 0; c < temperature.values.size(); ++c)
-            temperature.values[c] = static_cast<float>(volumeTemperature(desc_, samples_, c));
+            temperature.values[c] = static_cast<float>(volumeTemperature(desc_, samples, c));
         arrays.push_back(std::move(temperature));
     }
     if (!samples_.flame.empty()) arrays.push_back({"flame", 1, samples_.flame, {"cache units", ArrayRole::Density}});

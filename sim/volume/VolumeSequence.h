@@ -74,7 +74,7 @@ private:
     int frame_ = 0;
     std::string file_;
     std::unique_ptr<io::VtkVolumeSource> vtk_;  // VTK data; OpenVDB files are opened per frame
-    VolumeSamples samples_;
+    VolumeGrids samples_;
     std::vector<float> velocity_;
 };
 

@@ -1,4 +1,4 @@
-#include "apps/eikon/LatticeWarning.h"
+#include "apps/common/LatticeWarning.h"
 
 #include <cstdio>
 

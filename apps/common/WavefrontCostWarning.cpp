@@ -1,4 +1,4 @@
-#include "apps/eikon/WavefrontCostWarning.h"
+#include "apps/common/WavefrontCostWarning.h"
 
 #include "render/graph/FrameRenderer.h"
 #include "render/stages/WavefrontStage.h"

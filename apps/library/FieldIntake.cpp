@@ -1,0 +1,123 @@
+#include "apps/library/FieldIntake.h"
+
+#include "bridge/core/NumberFormat.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+namespace eikon::library {
+
+namespace {
+
+// The fields a caller may hand, the samples each becomes, and whether it
+// is RGB (one or three channels) or a scalar.
+struct FieldSlot {
+    const char* name;
+    std::span<const float> sim::VolumeSamples::*samples;
+    bool rgb;
+};
+constexpr FieldSlot kSlots[] = {
+    {"delta_index", &sim::VolumeSamples::deltaIndex, false},
+    {"index", &sim::VolumeSamples::index, false},
+    {"temperature", &sim::VolumeSamples::temperature, false},
+    {"density", &sim::VolumeSamples::density, false},
+    {"flame", &sim::VolumeSamples::flame, false},
+    {"extinction", &sim::VolumeSamples::extinction, true},
+    {"scattering", &sim::VolumeSamples::scattering, true},
+    {"anisotropy", &sim::VolumeSamples::anisotropy, false},
+    {"emission", &sim::VolumeSamples::emission, true},
+};
+
+std::string knownNames() {
+    std::string names;
+    for (const FieldSlot& slot : kSlots) names += std::string(names.empty() ? "" : ", ") + slot.name;
+    return names;
+}
+
+[[noreturn]] void refuse(const std::string& field, const std::string& expected, const std::string& found) {
+    throw Error("eikon::Renderer::setFields: field \"" + field + "\": expected " + expected + ", found " + found);
+}
+
+std::string triple(std::size_t a, std::size_t b, std::size_t c) {
+    return "(" + std::to_string(a) + ", " + std::to_string(b) + ", " + std::to_string(c) + ")";
+}
+
+std::string box(const std::array<double, 3>& lo, const std::array<double, 3>& hi) {
+    return "[" + formatPosition({lo[0], lo[1], lo[2]}) + ", " + formatPosition({hi[0], hi[1], hi[2]}) + "] m";
+}
+
+// The grid box within a millionth of a voxel: the same placement, whatever
+// rounding the caller's arithmetic made of the scene's numbers.
+bool sameBox(const Field& field, const GridSpec& grid) {
+    const glm::dvec3 tolerance = 1e-6 * grid.voxelSize();
+    for (int a = 0; a < 3; ++a)
+        if (std::abs(field.boundsMin[a] - grid.boundsMin[a]) > tolerance[a] ||
+            std::abs(field.boundsMax[a] - grid.boundsMax[a]) > tolerance[a])
+            return false;
+    return true;
+}
+
+void checkFinite(const Field& field, const GridSpec& grid, std::size_t count) {
+    const float* end = field.values + count;
+    const float* bad = std::find_if(field.values, end, [](float v) { return !std::isfinite(v); });
+    if (bad == end) return;
+    const auto at = static_cast<std::size_t>(bad - field.values);
+    const std::size_t cell = at / static_cast<std::size_t>(field.channels);
+    const auto nx = static_cast<std::size_t>(grid.resolution.x), ny = static_cast<std::size_t>(grid.resolution.y);
+    const int i = static_cast<int>(cell % nx), j = static_cast<int>(cell / nx % ny),
+              k = static_cast<int>(cell / (nx * ny));
+    refuse(field.name, "finite values",
+           std::string(std::isnan(*bad) ? "NaN" : "an infinity") + " at cell (i, j, k) = " +
+               triple(static_cast<std::size_t>(i), static_cast<std::size_t>(j), static_cast<std::size_t>(k)) + ", " +
+               formatPosition(grid.cellCentre(i, j, k)) + " m");
+}
+
+}  // namespace
+
+FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
+    const auto nx = static_cast<std::size_t>(grid.resolution.x), ny = static_cast<std::size_t>(grid.resolution.y),
+               nz = static_cast<std::size_t>(grid.resolution.z);
+    const std::size_t cells = grid.cellCount();
+    FieldIntake intake;
+    for (const Field& field : fields) {
+        const FieldSlot* slot = std::find_if(std::begin(kSlots), std::end(kSlots),
+                                             [&](const FieldSlot& s) { return field.name == s.name; });
+        if (slot == std::end(kSlots)) refuse(field.name, "one of " + knownNames(), "an unknown name");
+        if (std::find(intake.names.begin(), intake.names.end(), field.name) != intake.names.end())
+            refuse(field.name, "each field named once", "it twice");
+        if (!field.values) refuse(field.name, "values", "a null pointer");
+        if (field.shape != std::array<std::size_t, 3>{nz, ny, nx})
+            refuse(field.name, "shape (nz, ny, nx) = " + triple(nz, ny, nx) + ", the scene's grid",
+                   triple(field.shape[0], field.shape[1], field.shape[2]));
+        if (field.channels != 1 && !(slot->rgb && field.channels == 3))
+            refuse(field.name, slot->rgb ? "1 (grey) or 3 (RGB) channels" : "1 channel",
+                   std::to_string(field.channels));
+        if (!sameBox(field, grid))
+            refuse(field.name, "the scene's grid box " + box({grid.boundsMin.x, grid.boundsMin.y, grid.boundsMin.z},
+                                                              {grid.boundsMax.x, grid.boundsMax.y, grid.boundsMax.z}),
+                   box(field.boundsMin, field.boundsMax));
+        checkFinite(field, grid, cells * static_cast<std::size_t>(field.channels));
+        intake.names.push_back(field.name);
+    }
+    if (std::find(intake.names.begin(), intake.names.end(), "index") != intake.names.end() &&
+        std::find(intake.names.begin(), intake.names.end(), "delta_index") != intake.names.end())
+        refuse("index", "index or delta_index, not both (each sets the index)", "both");
+    // Every field passed: take them.
+    for (const Field& field : fields) {
+        const FieldSlot& slot = *std::find_if(std::begin(kSlots), std::end(kSlots),
+                                              [&](const FieldSlot& s) { return field.name == s.name; });
+        std::span<const float> values(field.values, cells * static_cast<std::size_t>(field.channels));
+        if (slot.rgb && field.channels == 1) {  // grey: the same value in each channel, as a grey grid of a file
+            std::vector<float>& channels = intake.expanded.emplace_back(3 * cells);
+            for (std::size_t c = 0; c < cells; ++c)
+                channels[3 * c] = channels[3 * c + 1] = channels[3 * c + 2] = values[c];
+            intake.copiedBytes += channels.size() * sizeof(float);
+            values = channels;
+        }
+        intake.samples.*slot.samples = values;
+    }
+    return intake;
+}
+
+}  // namespace eikon::library

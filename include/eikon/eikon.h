@@ -1,0 +1,123 @@
+// eikon as a library: a renderer that a program's own solver feeds with
+// its fields frame after frame, and that hands back the frame's image,
+// receiver maps, fluence and report. This header is the whole public
+// interface (installed with the library and its CMake package,
+// `find_package(eikon)`, target `eikon::eikon`); nothing else of eikon's
+// is installed or stable. docs/library.md shows its use and its costs.
+//
+// The scene (docs/scene-format.md) sets the grid, lights, camera,
+// receivers and the medium; the caller's fields replace what a `volume`
+// file would give, mapped by the same optics (the scene's `volume` keys,
+// or their defaults where it has no `volume` section): a field handed in
+// renders as the same field read from an OpenVDB file, bit for bit.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eikon {
+
+// Every refusal of the library: a scene, a field or a call it cannot take.
+// what() names the file or field, and what was expected and found. After
+// one, the renderer is as it was before the call and stays usable.
+class Error : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// The scene's render grid: cells per axis (x, y, z) over a world box in m,
+// cell-centred samples.
+struct Grid {
+    std::array<int, 3> cells{};
+    std::array<double, 3> boundsMin{};
+    std::array<double, 3> boundsMax{};
+};
+
+// One dense field of a frame, read where it lies (no copy; RGB fields given
+// grey are the one exception, docs/library.md). Cell (i, j, k), channel c
+// is values[((k·ny + j)·nx + i)·channels + c]: x fastest, as a C-ordered
+// NumPy array of shape (nz, ny, nx) or (nz, ny, nx, 3).
+//   name          unit     channels  meaning
+//   delta_index   1        1         n − n_ref (replaces the medium's index)
+//   index         1        1         n (not with delta_index)
+//   temperature   K        1         T − volume.ambient_temperature, scaled by
+//                                    volume.temperature_scale: δn by Gladstone–Dale
+//   density       1        1         κ, σs by volume.density_extinction, _scattering
+//   flame         1        1         as the volume's flame grid
+//   extinction    1/m      1 or 3    κ added to the medium's
+//   scattering    1/m      1 or 3    σs added to the medium's (≤ κ)
+//   anisotropy    1        1         Henyey–Greenstein g
+//   emission      W/(m³·sr) 1 or 3   ε
+// boundsMin and boundsMax place the field; they must be the scene's grid's.
+struct Field {
+    std::string name;
+    const float* values = nullptr;
+    std::array<std::size_t, 3> shape{};  // (nz, ny, nx)
+    int channels = 1;
+    std::array<double, 3> boundsMin{};
+    std::array<double, 3> boundsMax{};
+};
+
+// An array handed back: C order, x (or the image column) fastest, with its unit.
+struct FloatArray {
+    std::vector<std::size_t> shape;
+    std::vector<float> values;
+    std::string unit;
+};
+struct ByteArray {
+    std::vector<std::size_t> shape;
+    std::vector<std::uint8_t> values;
+};
+
+class Renderer {
+public:
+    // The scene from a file, or from JSON text whose relative paths start at
+    // `folder`. Error for a scene eikon refuses (as `eikon run` would, with
+    // the file and key path), for a scene with a `sim` section (its solver
+    // makes its own fields), and when no OpenGL 4.5 context can be made.
+    static Renderer fromFile(const std::string& path);
+    static Renderer fromJson(const std::string& json, const std::string& folder = ".");
+    ~Renderer();
+    Renderer(Renderer&&) noexcept;
+    Renderer& operator=(Renderer&&) noexcept;
+
+    Grid grid() const;
+
+    // The fields of the next frame, each named once; fields not named are
+    // those the scene gives without them (the medium's, or the scene's
+    // volume file's until the first call). Error naming the field for an
+    // unknown name, a wrong shape or channel count, a grid that is not the
+    // scene's, a value that is not finite or out of range (n ≤ 0, κ < 0,
+    // σs > κ, |g| ≥ 1, ε < 0, T ≤ 0 K): nothing is changed.
+    void setFields(const std::vector<Field>& fields);
+    // Renders the current fields: the stages whose inputs changed run.
+    void render();
+
+    // Of the last rendered frame (Error before the first):
+    // the image as the PNG of `eikon run`, (height, width, 3) sRGB 8-bit, row 0 at the top;
+    ByteArray image() const;
+    // its linear radiance, (height, width, 3) in W/(m²·sr);
+    FloatArray radiance() const;
+    // receiver r's irradiance map, (texels, texels, 3) in W/m², rows along
+    // the receiver's v axis (receiverCount() of them, in scene order);
+    std::size_t receiverCount() const;
+    FloatArray receiver(std::size_t r) const;
+    // the fluence φ, (nz, ny, nx, 3) in W/m² (Error where the scene keeps none:
+    // it keeps one where its medium scatters or export.vtk asks for it);
+    FloatArray fluence() const;
+    // the frame's report, a JSON object as a line of `eikon run`'s
+    // report.jsonl (units in its keys: _ms, _w, _bytes).
+    std::string report() const;
+
+private:
+    struct Impl;
+    explicit Renderer(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace eikon

@@ -1,0 +1,127 @@
+"""The Python module (`import eikon`, apps/python/EikonModule.cpp) from the
+build folder: NumPy fields in, arrays out, read in place, and each refusal
+an eikon.Error with eikon's words, after which the renderer renders its
+earlier fields unchanged. Run by ctest (Python.Module) with PYTHONPATH at
+the build folder's python/."""
+
+import json
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+import eikon
+
+SCENE = {
+    "grid": {"bounds": {"min": [0, 0, 0], "max": [0.5, 0.5, 0.5]}, "resolution": [32, 32, 32]},
+    "lights": [{"type": "directional", "direction": [0.1, -1, 0.05], "irradiance": [1, 1, 1]}],
+    "receivers": [{"type": "plane", "point": [0.25, -0.05, 0.25], "normal": [0, 1, 0], "albedo": 0.8,
+                   "size": 0.6, "resolution": 24}],
+    "camera": {"position": [0.25, 0.6, 1.4], "target": [0.25, 0.1, 0.25], "fov_deg": 40},
+    "render": {"width": 40, "height": 32, "photons": 20000, "seed": 3},
+}
+
+
+def bump(width):
+    """A Gaussian about the grid's centre on the cell centres, (nz, ny, nx) float32."""
+    h = 0.5 / 32
+    c = (np.arange(32) + 0.5) * h - 0.25
+    z, y, x = np.meshgrid(c, c, c, indexing="ij")
+    return np.exp(-(x * x + y * y + z * z) / width**2).astype(np.float32)
+
+
+def fields():
+    return {"delta_index": 0.01 * bump(0.08), "temperature": 300 * bump(0.05),
+            "extinction": 2 * bump(0.1), "scattering": np.stack([0.5 * bump(0.1)] * 3, axis=-1)}
+
+
+class Module(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.renderer = eikon.Renderer(SCENE)
+        cls.fields = fields()
+        cls.renderer.set_fields(**cls.fields)
+        cls.renderer.render()
+        cls.image = cls.renderer.image()
+
+    def test_arrays_out_have_their_shapes_and_the_frame_is_a_picture(self):
+        r = self.renderer
+        self.assertEqual(r.grid["shape"], (32, 32, 32))
+        self.assertEqual((self.image.shape, self.image.dtype), ((32, 40, 3), np.uint8))
+        self.assertGreater(int(self.image.max()) - int(self.image.min()), 50, "not a flat image")
+        radiance = r.radiance()
+        self.assertEqual((radiance.shape, radiance.dtype), ((32, 40, 3), np.float32))
+        self.assertEqual(r.receiver_count, 1)
+        irradiance = r.receiver(0)
+        self.assertEqual(irradiance.shape, (24, 24, 3))
+        self.assertGreater(irradiance[..., 0].min(), 0.1)
+        self.assertGreater(irradiance[..., 0].max() / irradiance[..., 0].min(), 1.2, "the bump's caustic")
+        self.assertEqual(r.fluence().shape, (32, 32, 32, 3))
+        report = r.report()
+        self.assertLess(abs(report["photons"]["energy_balance_error"]), 1e-3)
+
+    def test_contiguous_float32_fields_are_not_copied(self):
+        # Grey extinction is spread into three channels: the one copy, 12 bytes a cell.
+        self.renderer.set_fields(**self.fields)
+        self.renderer.render()
+        report = self.renderer.report()
+        self.assertEqual(report["caller_fields"]["host_bytes_copied"], 12 * 32**3)
+        self.assertEqual(sorted(report["caller_fields"]["names"]), sorted(self.fields))
+        rgb = dict(self.fields, extinction=np.stack([self.fields["extinction"]] * 3, axis=-1))
+        self.renderer.set_fields(**rgb)
+        self.renderer.render()
+        self.assertEqual(self.renderer.report()["caller_fields"]["host_bytes_copied"], 0)
+
+    def test_a_scene_file_and_its_dict_render_the_same_bytes(self):
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "scene.json")
+            with open(path, "w") as f:
+                json.dump(SCENE, f)
+            from_file = eikon.Renderer(path)
+            from_file.set_fields(**self.fields)
+            from_file.render()
+            self.assertTrue(np.array_equal(from_file.image(), self.image))
+
+    def test_render_image_for_a_notebook(self):
+        image = eikon.render_image(SCENE, **self.fields)
+        self.assertTrue(np.array_equal(image, self.image))
+
+    def refused(self, words, **arrays):
+        with self.assertRaises(eikon.Error) as caught:
+            self.renderer.set_fields(**arrays)
+        for word in words:
+            self.assertIn(word, str(caught.exception))
+        self.renderer.render()
+        self.assertTrue(np.array_equal(self.renderer.image(), self.image), "the refused fields were not rendered")
+
+    def test_a_wrong_dtype(self):
+        self.refused(["\"temperature\"", "float32", "float64"], temperature=self.fields["temperature"].astype(np.float64))
+
+    def test_a_non_contiguous_array(self):
+        self.refused(["\"temperature\"", "C-contiguous"], temperature=self.fields["temperature"].transpose(2, 1, 0))
+
+    def test_a_wrong_shape(self):
+        self.refused(["\"temperature\"", "(32, 32, 32)", "(16, 32, 32)"],
+                     temperature=np.ascontiguousarray(self.fields["temperature"][:16]))
+
+    def test_a_nan(self):
+        t = self.fields["temperature"].copy()
+        t[5, 4, 3] = np.nan
+        self.refused(["\"temperature\"", "NaN", "(3, 4, 5)"], temperature=t)
+
+    def test_a_grid_that_is_not_the_scenes(self):
+        with self.assertRaises(eikon.Error) as caught:
+            self.renderer.set_fields(temperature=self.fields["temperature"], bounds=((0, 0, 0), (1, 1, 1)))
+        self.assertIn("grid box", str(caught.exception))
+
+    def test_a_bad_scene_names_the_key(self):
+        scene = json.loads(json.dumps(SCENE))
+        scene["render"]["width"] = -4
+        with self.assertRaises(eikon.Error) as caught:
+            eikon.Renderer(scene)
+        self.assertIn("render.width", str(caught.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
