@@ -5,14 +5,14 @@
 // graded field by the camera rays' leapfrog (common/integrators.glsl;
 // view_rays.comp) with fixed steps of `step_length`, the last one cut at the
 // grid's far face — or, as the error estimate's reference march
-// (render/stages/DiagnosticErrorEstimate.h), by RK4. Along the way it sums the optical path difference
-// OPD = ∫ (n − n_ref) ds by the trapezoid rule over each step (second
-// order, as the leapfrog is); where it leaves the grid (the medium is
-// uniform beyond) its deflection ε is the change of its unit direction on
-// its frame's right and up axes. Where the scene has extinction it also
-// sums the optical depth ∫κ ds, by the same rule. The instrument
-// (common/diagnostic_instruments.glsl) turns (OPD, ε, the transmittance)
-// into the pixel's I/I₀.
+// (render/stages/DiagnosticErrorEstimate.h), by RK4. Along the way it sums
+// the optical path difference OPD = ∫ (n − n_ref) ds by the trapezoid rule
+// over each step (second order, as the leapfrog is); where it leaves the
+// grid (the medium is uniform beyond) its deflection ε is the change of its
+// unit direction on its frame's right and up axes. Where the scene has
+// extinction it also sums the optical depth ∫κ ds, by the same rule. The
+// instrument (common/diagnostic_instruments.glsl) turns (OPD, ε, the
+// transmittance) into the ray's I/I₀.
 //
 // Shadowgraph and BOS follow each ray on, straight, from where it leaves the
 // grid to a plane across the camera's axis `plane_depth` from the camera
@@ -44,7 +44,8 @@
 // write where they land and their transmittance (DiagnosticLanding) for
 // shadowgraph_screen.comp.
 // Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET,
-// EIKON_INTEGRATOR (1 leapfrog, 2 RK4, as common/ray_march.glsl numbers them).
+// EIKON_INTEGRATOR (1 leapfrog, 2 RK4, as common/ray_march.glsl numbers them),
+// EIKON_BOS_IMAGE (1: BOS's background is an image, common/bos_background.glsl).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/grid_sampling.glsl"

@@ -49,7 +49,7 @@ public:
     DiagnosticStage(const Scene& scene, const FieldTextures& fields,
                     TracerDesc::Integrator integrator = TracerDesc::Integrator::Leapfrog);
 
-    // Marches every pixel's ray and forms the picture: I/I₀ as a linear
+    // Marches every pixel's k² rays and forms the picture: I/I₀ as a linear
     // camera records it, sRGB-encoded (no exposure, no filmic curve).
     Image8 run(const FieldTextures& fields);
     void setCamera(const CameraDesc& camera);
