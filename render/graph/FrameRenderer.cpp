@@ -135,6 +135,10 @@ void FrameRenderer::setCamera(const CameraDesc& camera) {
 }
 
 void FrameRenderer::setPixelStride(int stride) {
+    if (diagnostic_ && diagnostic_->preview() != (stride > 1)) {  // a diagnostic previews with one ray a pixel
+        diagnostic_->setPreview(stride > 1);
+        cameraChanged_ = true;
+    }
     if (!view_ || stride == view_->pixelStride()) return;
     view_->setPixelStride(stride);
     cameraChanged_ = true;
@@ -287,7 +291,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.lattice = last_.lattice;
     result.errorEstimate = last_.errorEstimate;
     result.pixelStride = view_ ? view_->pixelStride() : 1;
-    result.viewSamples = view_ ? view_->samplesTaken() : 1;
+    result.viewSamples = view_ ? view_->samplesTaken() : diagnostic_ ? diagnostic_->raysPerPixel() : 1;
     return result;
 }
 

@@ -87,7 +87,7 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
             {{"EIKON_SCREEN_PASS", "0"}, {"EIKON_HAS_EXTINCTION", extinction}, {"EIKON_LOOP_BUDGET", loopBudget}});
         resolve_ = gl::compileComputeProgram("shadowgraph_screen.comp",
                                              {{"EIKON_SCREEN_PASS", "1"}, {"EIKON_HAS_EXTINCTION", extinction}});
-        const std::size_t corners = beamCorners(width) * beamCorners(height);
+        const std::size_t corners = beamCorners(width, sampleSide_) * beamCorners(height, sampleSide_);
         rays_ = gl::Buffer(corners * sizeof(glm::vec4),
                            gl::GpuResource{"render.width × render.height", "the shadowgraph's rays"});
         landing_ = gl::Buffer(2 * corners * sizeof(glm::vec4),
@@ -123,8 +123,8 @@ void DiagnosticStage::setCamera(const CameraDesc& camera) {
     cameraDesc_ = camera;
 }
 
-std::size_t DiagnosticStage::beamCorners(std::size_t pixels) const {
-    return static_cast<std::size_t>(sampleSide_) * (pixels + 2 * kBeamMargin) + 1;
+std::size_t DiagnosticStage::beamCorners(std::size_t pixels, int side) {
+    return static_cast<std::size_t>(side) * (pixels + 2 * kBeamMargin) + 1;
 }
 
 double DiagnosticStage::planeDepth(const CameraDesc& camera) const {
@@ -171,7 +171,7 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         case Instrument::Shadowgraph:
             glUniform1f(program_.uniform("plane_depth"), static_cast<float>(planeDepth(cameraDesc_)));
             glUniform1ui(program_.uniform("beam_margin"), kBeamMargin);
-            glUniform1ui(program_.uniform("beam_subdivision"), static_cast<GLuint>(sampleSide_));
+            glUniform1ui(program_.uniform("beam_subdivision"), static_cast<GLuint>(drawnSide()));
             landing_.bindStorage(layout::kDiagnosticLanding);
             break;
         case Instrument::BackgroundOriented: {
@@ -193,22 +193,24 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         }
     }
     if (instrumentOf(diagnostic_) == Instrument::Shadowgraph) {
-        program_.dispatchCovering(beamCorners(width), beamCorners(height), 1, 8, 8, 1);
+        const std::size_t cornersX = beamCorners(width, drawnSide()), cornersY = beamCorners(height, drawnSide());
+        program_.dispatchCovering(cornersX, cornersY, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         screen_.clearToZero();
         screen_.bindStorage(layout::kDiagnosticScreen);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         deposit_.use();
         glUniform1ui(deposit_.uniform("beam_margin"), kBeamMargin);
-        glUniform1ui(deposit_.uniform("beam_subdivision"), static_cast<GLuint>(sampleSide_));
-        deposit_.dispatchCovering(beamCorners(width) - 1, beamCorners(height) - 1, 1, 8, 8, 1);
+        glUniform1ui(deposit_.uniform("beam_subdivision"), static_cast<GLuint>(drawnSide()));
+        deposit_.dispatchCovering(cornersX - 1, cornersY - 1, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         resolve_.use();
         resolve_.dispatchCovering(width, height, 1, 8, 8, 1);
     } else {
         // k² passes, one ray a pixel each, averaged as the view's are.
-        for (int cell = 0; cell < sampleSide_ * sampleSide_; ++cell) {
-            const glm::vec2 offset = gridSampleOffset(cell, sampleSide_);
+        const int side = drawnSide();
+        for (int cell = 0; cell < side * side; ++cell) {
+            const glm::vec2 offset = gridSampleOffset(cell, side);
             glUniform2f(program_.uniform("sample_offset"), offset.x, offset.y);
             glUniform1ui(program_.uniform("samples_before"), static_cast<GLuint>(cell));
             program_.dispatchCovering(width, height, 1, 8, 8, 1);

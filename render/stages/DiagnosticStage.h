@@ -53,6 +53,12 @@ public:
     // camera records it, sRGB-encoded (no exposure, no filmic curve).
     Image8 run(const FieldTextures& fields);
     void setCamera(const CameraDesc& camera);
+    // The viewer's preview while the camera moves: one ray a pixel (the
+    // shadowgraph: one square a pixel of its beam); false: k².
+    void setPreview(bool preview) { preview_ = preview; }
+    bool preview() const { return preview_; }
+    // The rays each pixel of the latest picture averages (the shadowgraph: squares of its beam).
+    int raysPerPixel() const { return preview_ ? 1 : sampleSide_ * sampleSide_; }
 
     std::vector<float> downloadHdr() const;  // linear I/I₀, RGBA per pixel
     DiagnosticMeasurements downloadMeasurements() const;
@@ -76,14 +82,17 @@ public:
     double planeDepth(const CameraDesc& camera) const;
 
 private:
-    // The shadowgraph's corner rays along a side of `pixels` pixels.
-    std::size_t beamCorners(std::size_t pixels) const;
+    // k, or 1 in a preview.
+    int drawnSide() const { return preview_ ? 1 : sampleSide_; }
+    // The shadowgraph's corner rays along a side of `pixels` pixels, `side` squares a pixel.
+    static std::size_t beamCorners(std::size_t pixels, int side);
 
     RenderDesc render_;
     DiagnosticDesc diagnostic_;
     CameraDesc cameraDesc_;
     GridSpec grid_;
     int sampleSide_;  // k: render.samples_per_pixel = k²
+    bool preview_ = false;
     double stepLength_;
     unsigned maxSteps_;
     double dotDiameter_ = 0.0;  // BOS, m

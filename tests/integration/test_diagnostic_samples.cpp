@@ -142,5 +142,35 @@ TEST(DiagnosticSamples, TheShadowgraphsCausticConvergesToTheManySquareImage) {
     EXPECT_LT(errors[2], 0.7 * errors[1]);
 }
 
+// The viewer's preview while the camera moves (FrameRenderer::setPixelStride
+// k > 1): one ray a pixel — the picture a scene of one ray a pixel draws,
+// bit for bit — and at rest again all k², as before the preview.
+TEST(DiagnosticSamples, APreviewDrawsOneRayAPixelAndRestDrawsAllOfThem) {
+    glContext();
+    DiagnosticDesc shadowgraph;
+    shadowgraph.type = DiagnosticDesc::Type::Shadowgraph;
+    shadowgraph.screenDistance = 20.0;
+    for (const DiagnosticDesc& diagnostic : {DiagnosticDesc{}, shadowgraph}) {
+        Scene scene = bumpScene(32, 24, diagnostic);
+        Bump bump;
+        bump.amplitude = 3e-5;
+        const FieldSet fields = sampledBump(scene, bump);
+        const std::vector<float> one = diagnose(scene, bump, 1).intensity;
+        scene.render.samplesPerPixel = 16;
+        render::FrameRenderer renderer(scene, fields);
+        const render::FrameResult full = renderer.render(fields);
+        EXPECT_EQ(full.viewSamples, 16);
+        const std::vector<float> all = renderer.diagnosticStage()->downloadHdr();
+        renderer.setPixelStride(4);
+        const render::FrameResult preview = renderer.render(fields);
+        EXPECT_EQ(preview.viewSamples, 1);
+        EXPECT_EQ(renderer.diagnosticStage()->downloadHdr(), one);
+        renderer.setPixelStride(1);
+        renderer.render(fields);
+        EXPECT_EQ(renderer.diagnosticStage()->downloadHdr(), all);
+        EXPECT_NE(all, one) << "the fringes and the screen differ between 1 and 16 rays";
+    }
+}
+
 }  // namespace
 }  // namespace eikon
