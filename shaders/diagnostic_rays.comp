@@ -4,14 +4,15 @@
 // camera's pinhole for background-oriented schlieren — marched through the
 // graded field by the camera rays' leapfrog (common/integrators.glsl;
 // view_rays.comp) with fixed steps of `step_length`, the last one cut at the
-// grid's far face. Along the way it sums the optical path difference
-// OPD = ∫ (n − n_ref) ds by the trapezoid rule over each step (second
-// order, as the leapfrog is); where it leaves the grid (the medium is
-// uniform beyond) its deflection ε is the change of its unit direction on
-// its frame's right and up axes. Where the scene has extinction it also
-// sums the optical depth ∫κ ds, by the same rule. The instrument
-// (common/diagnostic_instruments.glsl) turns (OPD, ε, the transmittance)
-// into the pixel's I/I₀.
+// grid's far face — or, as the error estimate's reference march
+// (render/stages/DiagnosticErrorEstimate.h), by RK4. Along the way it sums
+// the optical path difference OPD = ∫ (n − n_ref) ds by the trapezoid rule
+// over each step (second order, as the leapfrog is); where it leaves the
+// grid (the medium is uniform beyond) its deflection ε is the change of its
+// unit direction on its frame's right and up axes. Where the scene has
+// extinction it also sums the optical depth ∫κ ds, by the same rule. The
+// instrument (common/diagnostic_instruments.glsl) turns (OPD, ε, the
+// transmittance) into the ray's I/I₀.
 //
 // Shadowgraph and BOS follow each ray on, straight, from where it leaves the
 // grid to a plane across the camera's axis `plane_depth` from the camera
@@ -25,17 +26,26 @@
 // directions near 1; and OPD sums δn as the field holds it, since
 // n_ref + δn in float32 rounds δn.
 //
-// Writes per ray (ε_right, ε_up, OPD, how the ray ended: 1 crossed the
-// grid, 2 missed it, 0 cut by the step cap or the loop budget). Every
-// instrument but the shadowgraph writes the linear I/I₀ (HdrImage) and its
-// sRGB encoding (LdrImage), row 0 at the top; BOS also writes the
-// background without the medium (DiagnosticReference) and per pixel its
-// displacement (DiagnosticLanding). The shadowgraph's rays start at the
-// pixels' corners over a beam `beam_margin` pixels wider than the picture on
-// every side, (width + 1 + 2·margin) × (height + 1 + 2·margin) of them, and
+// A pass traces one ray a pixel, through the point `sample_offset` of it
+// (render/stages/PixelSamples.h: render.samples_per_pixel = k² passes
+// through the centres of a k × k grid of cells, as the view's); each
+// measurement is the running mean of the `samples_before` passes before it
+// and this one — a box filter over the pixel, for the picture and for the
+// measured quantities alike. Writes per pixel (ε_right, ε_up, OPD, how its
+// rays ended: 1 crossed the grid, 2 all missed it, 0 one was cut by the
+// step cap or the loop budget). Every instrument but the shadowgraph writes
+// the linear I/I₀ (HdrImage) and its sRGB encoding (LdrImage), row 0 at the
+// top; BOS also writes the background without the medium
+// (DiagnosticReference) and per pixel its displacement (DiagnosticLanding).
+// The shadowgraph's rays start at the corners of a beam `beam_margin`
+// pixels wider than the picture on every side, each pixel's square of it
+// cut into k × k squares (`beam_subdivision` k), so
+// (k·(width + 2·margin) + 1) × (k·(height + 2·margin) + 1) of them, and
 // write where they land and their transmittance (DiagnosticLanding) for
 // shadowgraph_screen.comp.
-// Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET.
+// Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET,
+// EIKON_INTEGRATOR (1 leapfrog, 2 RK4, as common/ray_march.glsl numbers them),
+// EIKON_BOS_IMAGE (1: BOS's background is an image, common/bos_background.glsl).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/grid_sampling.glsl"
@@ -66,16 +76,28 @@ vec4 field_at(vec3 local) {
 
 #include "common/integrators.glsl"
 
-layout(std430, binding = kDiagnosticRays) writeonly buffer DiagnosticRays { vec4 rays[]; };
+#ifndef EIKON_INTEGRATOR
+#define EIKON_INTEGRATOR 1
+#endif
+
+layout(std430, binding = kDiagnosticRays) buffer DiagnosticRays { vec4 rays[]; };
 #if EIKON_INSTRUMENT >= EIKON_SHADOWGRAPH
 // Shadowgraph: per corner ray (landing right, up in pixels; 0; 0), (T rgb, how it ended).
-// BOS: per pixel (displacement right, up in pixels; 0; 0) and nothing.
-layout(std430, binding = kDiagnosticLanding) writeonly buffer DiagnosticLanding { vec4 landing[]; };
+// BOS: per pixel (displacement right, up in pixels; the background's
+// intensity without the medium; 0) and nothing.
+layout(std430, binding = kDiagnosticLanding) buffer DiagnosticLanding { vec4 landing[]; };
 uniform float plane_depth;  // m from the camera (its pinhole or image plane) along its axis
 #endif
 #if EIKON_INSTRUMENT != EIKON_SHADOWGRAPH
-layout(std430, binding = kHdrImage) writeonly buffer HdrImage { vec4 hdr_radiance[]; };
+layout(std430, binding = kHdrImage) buffer HdrImage { vec4 hdr_radiance[]; };
 layout(std430, binding = kLdrImage) writeonly buffer LdrImage { uint ldr_rgba8[]; };
+uniform vec2 sample_offset;   // where in its pixel the ray passes, as a fraction of the pixel (x right, y down)
+uniform uint samples_before;  // passes already averaged into the measurements (0: this pass writes them)
+
+// A pixel's mean of `samples_before` rays' `mean` and this ray's `value`.
+vec4 running_mean(vec4 mean, vec4 value) {
+    return samples_before == 0u ? value : mean + (value - mean) / float(samples_before + 1u);
+}
 #endif
 #if EIKON_INSTRUMENT == EIKON_BOS
 layout(std430, binding = kDiagnosticReference) writeonly buffer DiagnosticReference { uint reference_rgba8[]; };
@@ -162,7 +184,11 @@ Measured march(vec3 start, vec3 direction) {
                 }
                 ds = min(step_length, remaining);
             }
+#if EIKON_INTEGRATOR == 2
+            integrate_rk4(x, x_lost, v, field, ds);  // its last sample is at the new x, as the trapezoid needs
+#else
             integrate_leapfrog(x, x_lost, v, field, ds);
+#endif
             travelled += ds;
             opd += 0.5f * (delta_before + sampled_delta) * ds;
             delta_before = sampled_delta;
@@ -189,17 +215,16 @@ Measured march(vec3 start, vec3 direction) {
 float pixel_size() { return 2.0f * camera.position.w / float(camera.image.y); }
 
 #if EIKON_INSTRUMENT == EIKON_SHADOWGRAPH
-uniform uint beam_margin;  // pixels of the beam beside the picture on every side
+uniform uint beam_margin;       // pixels of the beam beside the picture on every side
+uniform uint beam_subdivision;  // k: each pixel's square of the beam cut into k × k
 
-// One ray per pixel corner of the beam, (width + 1 + 2·margin) × (height + 1 + 2·margin).
+// One ray per corner of the beam's squares, (k·(width + 2·margin) + 1) × (k·(height + 2·margin) + 1).
 void main() {
     uvec2 corner = gl_GlobalInvocationID.xy;
-    uvec2 corners = camera.image.xy + 2u * beam_margin;
+    uvec2 corners = beam_subdivision * (camera.image.xy + 2u * beam_margin);
     if (any(greaterThan(corner, corners))) return;
-    vec2 ndc = (vec2(corner) - float(beam_margin)) / vec2(camera.image.xy) * 2.0f - 1.0f;
-    vec3 start = camera.position.xyz + ndc.x * camera.position.w * camera.forward.w * camera.right.xyz -
-                 ndc.y * camera.position.w * camera.up.xyz;
-    Measured measured = march(start, camera.forward.xyz);
+    vec2 point = vec2(corner) / float(beam_subdivision) - float(beam_margin);  // pixels from the picture's corner
+    Measured measured = march(camera_ray_origin_at(point), camera.forward.xyz);
     uint i = corner.y * (corners.x + 1u) + corner.x;
     rays[i] = vec4(measured.deflection, measured.opd, measured.ended);
     landing[2u * i] = vec4(measured.landing / pixel_size(), 0.0f, 0.0f);
@@ -209,24 +234,30 @@ void main() {
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, camera.image.xy))) return;
-    Measured measured = march(camera_ray_origin(pixel), camera_ray_direction(pixel));
+    vec2 point = vec2(pixel) + sample_offset;
+    Measured measured = march(camera_ray_origin_at(point), camera_ray_direction_at(point));
     uint i = pixel.y * camera.image.x + pixel.x;
-    rays[i] = vec4(measured.deflection, measured.opd, measured.ended);
+    // One cut ray marks its pixel cut; one that crossed, crossed (0 < 1 < 2).
+    float ended = samples_before == 0u ? measured.ended : min(rays[i].w, measured.ended);
+    rays[i] = vec4(running_mean(rays[i], vec4(measured.deflection, measured.opd, 0.0f)).xyz, ended);
     vec3 transmittance = exp(-measured.optical_depth);
 #if EIKON_INSTRUMENT == EIKON_BOS
-    // The background point this pixel sees without the medium, and with it.
-    vec3 offset = camera_image_offset_at(vec2(pixel) + 0.5f);
+    // The background point this ray sees without the medium, and with it.
+    vec3 offset = camera_image_offset_at(point);
     vec2 straight = plane_depth * vec2(dot(offset, camera.right.xyz), dot(offset, camera.up.xyz));
     vec3 intensity = transmittance * background_intensity(straight + measured.landing);
     // The feature seen here with the medium is, without it, seen where its
     // straight ray points: the apparent displacement, reference to measurement.
-    landing[i] = vec4(-measured.landing / (plane_depth * pixel_size()), 0.0f, 0.0f);
-    reference_rgba8[i] = packUnorm4x8(vec4(srgb_encode(vec3(background_intensity(straight))), 1.0f));
+    vec4 moved = running_mean(landing[i], vec4(-measured.landing / (plane_depth * pixel_size()),
+                                               background_intensity(straight), 0.0f));
+    landing[i] = moved;
+    reference_rgba8[i] = packUnorm4x8(vec4(srgb_encode(vec3(moved.z)), 1.0f));
 #else
-    float u = (float(pixel.x) + 0.5f) / float(camera.image.x);
+    float u = point.x / float(camera.image.x);
     vec3 intensity = instrument_intensity(measured.opd, measured.deflection, u, transmittance);
 #endif
-    hdr_radiance[i] = vec4(intensity, 1.0f);
-    ldr_rgba8[i] = packUnorm4x8(vec4(srgb_encode(intensity), 1.0f));
+    vec3 mean = running_mean(hdr_radiance[i], vec4(intensity, 1.0f)).rgb;
+    hdr_radiance[i] = vec4(mean, 1.0f);
+    ldr_rgba8[i] = packUnorm4x8(vec4(srgb_encode(mean), 1.0f));
 }
 #endif

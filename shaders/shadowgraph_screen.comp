@@ -4,19 +4,20 @@
 // wavefront pass spreads a patch's power, common/wavefront_deposits.glsl).
 // The beam is `beam_margin` pixels wider than the picture on every side, so
 // that light bent onto the picture from beside it is there (light bent
-// farther is not). Each pixel's square of the parallel beam carries the
-// power I₀·T of one pixel (T its corners' mean transmittance); its corner rays land on the
-// screen at four points, and the square's two triangles (corners 00–10–11
-// and 00–11–01) each carry half of it onto the triangle their corners span
-// there, at the irradiance of its power over its area — the piecewise-
-// linear mapping's exact intensity law, 1/|det J| of the mapping, also
-// where the mapping folds (caustics: every sheet of it adds). The screen's
+// farther is not). Each pixel's square of the parallel beam is cut into
+// k × k squares (`beam_subdivision` k, render.samples_per_pixel = k²), each
+// carrying its share I₀·T/k² of the pixel's power (T its corners' mean
+// transmittance); its corner rays land on the screen at four points, and
+// the square's two triangles (corners 00–10–11 and 00–11–01) each carry
+// half of it onto the triangle their corners span there, at the
+// irradiance of its power over its area — the piecewise-linear mapping's
+// exact intensity law, 1/|det J| of the mapping, also where it folds (caustics: every sheet of it adds). The screen's
 // pixels take each triangle's power by the share of its area over them
 // (common/footprint_coverage.glsl), into 64-bit fixed-point tallies, so
 // that each pixel holds its mean irradiance and the power is kept exactly.
 // A square with a corner ray cut by the step cap carries nothing.
 //
-// EIKON_SCREEN_PASS 0: one invocation per square of the beam, deposits; 1: one per
+// EIKON_SCREEN_PASS 0: one invocation per square of the beam's k × k a pixel, deposits; 1: one per
 // pixel, I/I₀ from the tallies into HdrImage and, exposed so that I₀ is
 // mid-grey, LdrImage (row 0 at the top). Program options: EIKON_SCREEN_PASS, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET.
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -99,15 +100,18 @@ void deposit_triangle(ivec2 origin, vec2 a, vec2 b, vec2 c, vec3 power) {
         }
 }
 
-uniform uint beam_margin;  // pixels of the beam beside the picture on every side
+uniform uint beam_margin;       // pixels of the beam beside the picture on every side
+uniform uint beam_subdivision;  // k: each pixel's square of the beam cut into k × k
 
 void main() {
     uvec2 square = gl_GlobalInvocationID.xy;
-    uvec2 squares = camera.image.xy + 2u * beam_margin;
+    uvec2 squares = beam_subdivision * (camera.image.xy + 2u * beam_margin);
     if (any(greaterThanEqual(square, squares))) return;
     uint stride = squares.x + 1u;
     uint corners[4] = uint[4](square.y * stride + square.x, square.y * stride + square.x + 1u,
                               (square.y + 1u) * stride + square.x, (square.y + 1u) * stride + square.x + 1u);
+    vec2 within = vec2(square % beam_subdivision);  // the square's place in its pixel's k × k
+    float side = 1.0f / float(beam_subdivision);
     vec2 lands[4];
     vec3 transmittance = vec3(0.0f);
     for (int k = 0; k < 4; ++k) {
@@ -115,12 +119,13 @@ void main() {
         vec4 light = landing[2u * corners[k] + 1u];
         if (light.w == 0.0f) return;  // cut by the step cap: where its light went is not known
         // From the square's own pixel's top-left corner; the image's up is the pixels' −y.
-        lands[k] = vec2(float(k & 1), float(k >> 1)) + vec2(moved.x, -moved.y);
+        lands[k] = (within + vec2(float(k & 1), float(k >> 1))) * side + vec2(moved.x, -moved.y);
         transmittance += 0.25f * light.xyz;
     }
-    ivec2 origin = ivec2(square) - int(beam_margin);
-    deposit_triangle(origin, lands[0], lands[1], lands[3], 0.5f * transmittance);
-    deposit_triangle(origin, lands[0], lands[3], lands[2], 0.5f * transmittance);
+    ivec2 origin = ivec2(square / beam_subdivision) - int(beam_margin);
+    vec3 power = side * side * transmittance;  // the square's share of its pixel's I₀·T
+    deposit_triangle(origin, lands[0], lands[1], lands[3], 0.5f * power);
+    deposit_triangle(origin, lands[0], lands[3], lands[2], 0.5f * power);
 }
 #else
 layout(std430, binding = kHdrImage) writeonly buffer HdrImage { vec4 hdr_radiance[]; };

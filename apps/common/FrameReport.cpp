@@ -107,13 +107,16 @@ nlohmann::json outputErrorsJson(const render::OutputErrors& errors) {
     if (errors.receivers) json["receivers"] = *errors.receivers;
     if (errors.image) json["image"] = *errors.image;
     if (errors.fluence) json["fluence"] = *errors.fluence;
+    if (errors.deflection) json["deflection"] = *errors.deflection;
+    if (errors.opticalPathDifference) json["optical_path_difference"] = *errors.opticalPathDifference;
+    if (errors.displacement) json["displacement"] = *errors.displacement;
     return json;
 }
 
 nlohmann::json errorEstimateJson(const render::ErrorEstimate& estimate) {
     nlohmann::json noise = estimate.noiseEstimated ? outputErrorsJson(estimate.noise) : nlohmann::json::object();
     noise["method"] = estimate.noiseEstimated ? "two batches (even and odd photons), relative RMS"
-                                              : "none (a deterministic wavefront, or a light pass shared among ranks)";
+                                              : "none (a deterministic wavefront or diagnostic, or a light pass shared among ranks)";
     nlohmann::json discretisation = outputErrorsJson(estimate.discretisation);
     discretisation["method"] = "against the reference march (RK4, steps of reference_step_voxels)";
     discretisation["reference_step_voxels"] = estimate.referenceStepVoxels;

@@ -18,7 +18,9 @@ struct Worst {
 Worst worstOf(const render::OutputErrors& errors) {
     Worst worst;
     const std::pair<const char*, std::optional<double>> outputs[] = {
-        {"the receiver maps", errors.receivers}, {"the image", errors.image}, {"the fluence", errors.fluence}};
+        {"the receiver maps", errors.receivers}, {"the image", errors.image}, {"the fluence", errors.fluence},
+        {"the deflection", errors.deflection}, {"the optical path difference", errors.opticalPathDifference},
+        {"the displacement", errors.displacement}};
     for (const auto& [name, error] : outputs)
         if (error && *error > worst.error) worst = {*error, name};
     return worst;

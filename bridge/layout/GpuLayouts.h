@@ -113,7 +113,8 @@
     X(kSurfaceNodeTexture, 14)  /* rgba32f buffer texture of the SurfaceNodes buffer: image space reads the meshes' root boxes */ \
     X(kReceiverTallyTexture, 15) /* rg32ui buffer texture of the ReceiverTallies buffer: (low, high) words, the filter reads */ \
     X(kHdrImageTexture, 16)     /* rgba32f buffer texture of an HdrImage buffer: the radiance the tone map reads */ \
-    X(kWaterNodeTexture, 17)    /* rgba32f buffer texture of the WaterNodeGrids buffer: image space walks the water's height fields */
+    X(kWaterNodeTexture, 17)    /* rgba32f buffer texture of the WaterNodeGrids buffer: image space walks the water's height fields */ \
+    X(kBackgroundPatternTexture, 18) /* rgba32f linear RGB of BOS's background image (common/bos_background.glsl) */
 
 // Image units of the passes that write textures; each program binds its own.
 #define EIKON_LAYOUT_IMAGE_UNITS(X)                                                              \

@@ -7,8 +7,12 @@
 // picture.
 #pragma once
 
+#include "bridge/scene/FloatImage.h"
+
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <string>
 
 namespace eikon {
 
@@ -17,7 +21,7 @@ struct DiagnosticDesc {
         Interferometry,  // Mach–Zehnder: fringes of the optical path difference
         Schlieren,       // an ideal schlieren head and a cut-off in its focal plane
         Shadowgraph,     // the irradiance on a screen behind the volume
-        Bos,             // background-oriented schlieren: a random-dot background seen through the volume
+        Bos,             // background-oriented schlieren: a random-dot or image background seen through the volume
     } type = Type::Interferometry;
 
     // Interferometry: I = I₀·cos²(π·OPD/λ + π·fringeTilt·u), u the
@@ -43,7 +47,11 @@ struct DiagnosticDesc {
 
     // BOS's background: seeded random dark dots on white, one a cell of a
     // square lattice at a random place in it; a dot's darkness
-    // exp(−8·r²/d²), d its 1/e² diameter.
+    // exp(−8·r²/d²), d its 1/e² diameter. Or an image file's luminance,
+    // centred on the camera's axis and repeated across the plane.
+    std::string patternPath;                         // the image file; empty: the dots
+    std::shared_ptr<const FloatImage> patternImage;  // its linear RGBA, read with the scene
+    std::optional<double> patternWidth;              // m, > 0; none: the background's width as the camera sees it
     std::uint32_t seed = 1;
     std::optional<double> dotDiameter;  // d, m, > 0; none: three pixels' width on the background
     double dotDensity = 0.3;            // π·d²/4 over the cell's area, in (0, 0.5]

@@ -8,6 +8,8 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <system_error>
@@ -119,6 +121,19 @@ Rgba8Image readImage(const std::filesystem::path& path) {
     const std::string bytes = checkedImageBytes(path, kExpected);
     Rgba8Image image;
     image.rgba = loadRgba<stbi_uc>(path, bytes, image.width, image.height, kExpected, stbi_load_from_memory);
+    return image;
+}
+
+FloatImage readSrgbImageAsLinear(const std::filesystem::path& path) {
+    const Rgba8Image encoded = readImage(path);
+    std::array<float, 256> decoded{};
+    for (std::size_t value = 0; value < decoded.size(); ++value) {
+        const double v = static_cast<double>(value) / 255.0;
+        decoded[value] = static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
+    }
+    FloatImage image{encoded.width, encoded.height, std::vector<float>(encoded.rgba.size())};
+    for (std::size_t i = 0; i < encoded.rgba.size(); ++i)
+        image.rgba[i] = i % 4 == 3 ? static_cast<float>(encoded.rgba[i]) / 255.0f : decoded[encoded.rgba[i]];
     return image;
 }
 

@@ -26,6 +26,11 @@ struct Rgba8Image {
 // image (checked as readFloatImage's are).
 Rgba8Image readImage(const std::filesystem::path& path);
 
+// An 8-bit image (PNG, JPEG) as linear RGBA floats: its colour channels
+// decoded by the sRGB transfer function (IEC 61966-2-1), alpha as stored.
+// Throws InputError naming the path when it cannot be read (as readImage).
+FloatImage readSrgbImageAsLinear(const std::filesystem::path& path);
+
 // Linear radiance as Radiance .hdr (RGBE), written atomically; rgba has
 // width·height·4 floats (alpha ignored).
 void writeHdr(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgba);

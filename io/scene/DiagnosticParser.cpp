@@ -1,8 +1,14 @@
 #include "io/scene/DiagnosticParser.h"
 
+#include "bridge/core/Error.h"
+#include "bridge/core/MemoryLimit.h"
 #include "bridge/core/NumberFormat.h"
+#include "io/image/ImageIo.h"
 
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
 #include <string>
 
 namespace eikon {
@@ -22,9 +28,32 @@ DiagnosticDesc::Cutoff readCutoff(const JsonReader& node) {
     return name == "colour" ? DiagnosticDesc::Cutoff::Colour : DiagnosticDesc::Cutoff::KnifeEdge;
 }
 
+// BOS's `pattern`: "dots", or an image file read now, so that a bad one
+// stops the run before anything is written.
+void readPatternImage(const JsonReader& node, const std::string& sceneFolder, DiagnosticDesc& diagnostic) {
+    const std::string name = node.string();
+    if (name == "dots") return;
+    constexpr const char* kExpected =
+        "\"dots\" or an existing PNG or JPEG image file (relative paths start at the scene file's folder)";
+    const std::filesystem::path path = name;
+    diagnostic.patternPath = (path.is_absolute() ? path : std::filesystem::path(sceneFolder) / path).string();
+    if (!std::filesystem::is_regular_file(diagnostic.patternPath))
+        node.fail(kExpected, "\"" + diagnostic.patternPath + "\", which does not exist");
+    const MemoryLimit limit = machineMemoryLimit();  // checked before the image is decoded
+    const std::uint64_t decoding = io::floatImageDecodingBytes(diagnostic.patternPath);
+    if (limit.bytes && decoding > limit.bytes)
+        node.fail("an image whose decoding fits " + limit.source,
+                  "\"" + diagnostic.patternPath + "\", " + mebibytes(decoding) + " to decode");
+    try {
+        diagnostic.patternImage = std::make_shared<const FloatImage>(io::readSrgbImageAsLinear(diagnostic.patternPath));
+    } catch (const InputError& error) {
+        node.fail(kExpected, "\"" + diagnostic.patternPath + "\", which is not one (" + error.what() + ")");
+    }
+}
+
 }  // namespace
 
-DiagnosticDesc readDiagnostic(const JsonReader& node) {
+DiagnosticDesc readDiagnostic(const JsonReader& node, const std::string& sceneFolder) {
     DiagnosticDesc diagnostic;
     const std::string type = node.member("type").oneOf({"interferometry", "schlieren", "shadowgraph", "bos"});
     if (type == "shadowgraph") {
@@ -34,12 +63,17 @@ DiagnosticDesc readDiagnostic(const JsonReader& node) {
         return diagnostic;
     }
     if (type == "bos") {
-        const auto fields =
-            node.object({"type", "background_distance", "pattern", "seed", "dot_diameter", "dot_density"});
+        const auto fields = node.object(
+            {"type", "background_distance", "pattern", "pattern_width", "seed", "dot_diameter", "dot_density"});
         diagnostic.type = DiagnosticDesc::Type::Bos;
         if (auto distance = fields.optional("background_distance"))
             diagnostic.backgroundDistance = distance->number(kLengthRange);
-        if (auto pattern = fields.optional("pattern")) pattern->oneOf({"dots"});
+        if (auto pattern = fields.optional("pattern")) readPatternImage(*pattern, sceneFolder, diagnostic);
+        if (auto width = fields.optional("pattern_width")) {
+            if (diagnostic.patternPath.empty())
+                width->fail("no pattern_width with the \"dots\" pattern (dot_diameter sizes the dots)");
+            diagnostic.patternWidth = width->number(kLengthRange);
+        }
         if (auto seed = fields.optional("seed")) diagnostic.seed = static_cast<std::uint32_t>(seed->integer(0, 4294967295LL));
         if (auto diameter = fields.optional("dot_diameter")) diagnostic.dotDiameter = diameter->number(kLengthRange);
         if (auto density = fields.optional("dot_density")) diagnostic.dotDensity = density->number(kDotDensityRange);

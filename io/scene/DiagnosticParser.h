@@ -1,15 +1,18 @@
 // The top-level `diagnostic` section (bridge/scene/DiagnosticDesc.h): an
-// interferometer or a schlieren system looking through the scene in place
-// of the camera's picture.
+// interferometer, a schlieren system, a shadowgraph or background-oriented
+// schlieren looking through the scene in place of the camera's picture.
 #pragma once
 
 #include "bridge/scene/Scene.h"
 #include "io/scene/JsonReader.h"
 
+#include <string>
+
 namespace eikon {
 
-// The section; each type takes only its own keys.
-DiagnosticDesc readDiagnostic(const JsonReader& node);
+// The section; each type takes only its own keys. BOS's image pattern is
+// read here, its path relative to sceneFolder.
+DiagnosticDesc readDiagnostic(const JsonReader& node, const std::string& sceneFolder);
 
 // Once the whole scene is read, where a diagnostic is set: the camera must
 // be orthographic (the light is parallel), the method eikonal, every object

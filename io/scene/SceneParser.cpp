@@ -657,7 +657,7 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
     const bool volumeLights = scene.volume && scene.volume->emissionLights;
     if (scene.lights.empty() && !volumeLights)
         fields.member("lights").fail("an array of at least one light (or a volume with emission_lights)");
-    if (auto diagnostic = fields.optional("diagnostic")) scene.diagnostic = readDiagnostic(*diagnostic);
+    if (auto diagnostic = fields.optional("diagnostic")) scene.diagnostic = readDiagnostic(*diagnostic, sceneFolder);
     checkDiagnostic(fields, scene);
     checkCameraProjection(fields, scene);
     checkRenderMethod(fields, scene);  // after everything image space might drop

@@ -100,6 +100,8 @@ void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, cons
     photonSettings_.powerCutoff = scene.tracer.powerCutoff;
     photonSettings_.share = options.share;
     photonSettings_.exchange = options.exchange;
+    if (options.estimateErrors && diagnostic_)
+        diagnosticEstimate_ = std::make_unique<DiagnosticErrorEstimate>(scene_, fields_, *diagnostic_);
     if (options.estimateErrors && view_) {
         const double referenceStep = ErrorEstimateStage::referenceStepVoxels(scene) * voxel;
         if (stepStructure_) {
@@ -127,11 +129,16 @@ void FrameRenderer::setCamera(const CameraDesc& camera) {
     scene_.camera = camera;
     if (view_) view_->setCamera(camera);
     if (diagnostic_) diagnostic_->setCamera(camera);
+    if (diagnosticEstimate_) diagnosticEstimate_->setCamera(camera);
     if (imageSpaceView_) imageSpaceView_->setCamera(camera);
     cameraChanged_ = true;
 }
 
 void FrameRenderer::setPixelStride(int stride) {
+    if (diagnostic_ && diagnostic_->preview() != (stride > 1)) {  // a diagnostic previews with one ray a pixel
+        diagnostic_->setPreview(stride > 1);
+        cameraChanged_ = true;
+    }
     if (!view_ || stride == view_->pixelStride()) return;
     view_->setPixelStride(stride);
     cameraChanged_ = true;
@@ -266,6 +273,9 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     if (diagnostic_) result.stages.push_back(runStage("diagnostic", diagnosticNeeded, [&] {
         last_.image = diagnostic_->run(fields_);
     }));
+    if (diagnosticEstimate_)
+        result.stages.push_back(runStage("error_estimate", diagnosticNeeded,
+                                         [&] { last_.errorEstimate = diagnosticEstimate_->run(fields_); }));
     // The estimate is of the full image, not of a preview.
     if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded && view_->pixelStride() == 1, [&] {
         const StepStructureStage& reference = referenceSteps_ ? *referenceSteps_ : *stepStructure_;
@@ -281,7 +291,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.lattice = last_.lattice;
     result.errorEstimate = last_.errorEstimate;
     result.pixelStride = view_ ? view_->pixelStride() : 1;
-    result.viewSamples = view_ ? view_->samplesTaken() : 1;
+    result.viewSamples = view_ ? view_->samplesTaken() : diagnostic_ ? diagnostic_->raysPerPixel() : 1;
     return result;
 }
 

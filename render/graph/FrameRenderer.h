@@ -13,6 +13,7 @@
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/scene/Scene.h"
+#include "render/stages/DiagnosticErrorEstimate.h"
 #include "render/stages/DiagnosticStage.h"
 #include "render/stages/ErrorEstimateStage.h"
 #include "render/stages/FieldRing.h"
@@ -75,7 +76,8 @@ struct RendererOptions {
     // and the frame's image stays empty (another process draws it).
     bool drawsImage = true;
     // Estimate each frame's noise and discretisation error (an
-    // "error_estimate" stage, ErrorEstimateStage.h); `eikon run` sets it
+    // "error_estimate" stage, ErrorEstimateStage.h, or a diagnostic's,
+    // DiagnosticErrorEstimate.h); `eikon run` sets it
     // from render.error_estimate. Where the light pass is shared among
     // processes, the noise is not estimated.
     bool estimateErrors = false;
@@ -120,7 +122,8 @@ public:
     // Exposure of the tone map: post runs again.
     void setExposure(double exposureEv);
     // 1: the full image; k > 1: a preview of one camera ray per k×k pixels
-    // (the viewer while the camera moves). A changed stride draws anew.
+    // (the viewer while the camera moves; a diagnostic's preview is one ray
+    // a pixel, DiagnosticStage::setPreview). A changed stride draws anew.
     void setPixelStride(int stride);
     const Scene& scene() const { return scene_; }
     // Traces the photons of the last rendered fields again (a relight, as
@@ -161,6 +164,7 @@ private:
     std::unique_ptr<ViewStage> view_;
     bool progressiveView_ = false;  // RendererOptions::progressiveView
     std::unique_ptr<DiagnosticStage> diagnostic_;  // in place of view_ where the scene has a diagnostic
+    std::unique_ptr<DiagnosticErrorEstimate> diagnosticEstimate_;  // in place of errorEstimate_, with diagnostic_
     PostStage post_;
     // Image space only: the raster passes' surfaces, the caustic maps, the view.
     std::unique_ptr<SurfaceRaster> raster_;

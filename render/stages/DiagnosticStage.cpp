@@ -6,6 +6,7 @@
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
 #include "render/stages/PhotonStage.h"
+#include "render/stages/PixelSamples.h"
 #include "render/stages/ViewStage.h"
 
 #include <glm/trigonometric.hpp>
@@ -42,21 +43,38 @@ Instrument instrumentOf(const DiagnosticDesc& diagnostic) {
     return Instrument::KnifeEdge;
 }
 
+// BOS's background image, repeated both ways across the plane.
+gl::Texture2D patternTexture(const FloatImage& image) {
+    GLint largest = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+    if (image.width > largest || image.height > largest)
+        throw InputError("diagnostic.pattern",
+                         "an image at most " + std::to_string(largest) + " pixels a side (GL_MAX_TEXTURE_SIZE)",
+                         std::to_string(image.width) + " × " + std::to_string(image.height));
+    gl::Texture2D texture(image.width, image.height, image.rgba.data(), {"diagnostic.pattern", "the BOS background"});
+    glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return texture;
+}
+
 }  // namespace
 
-DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields)
+DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields, TracerDesc::Integrator integrator)
     : render_(scene.render), diagnostic_(scene.diagnostic.value_or(DiagnosticDesc{})), cameraDesc_(scene.camera),
-      grid_(fields.grid()) {
+      grid_(fields.grid()), sampleSide_(sampleGridSide(scene.render.samplesPerPixel)) {
+    EIKON_CHECK_MSG(sampleSide_ > 0, "render.samples_per_pixel a square (io/scene/SceneParser)");
     const bool bos = diagnostic_.type == DiagnosticDesc::Type::Bos;
     EIKON_CHECK_MSG(scene.diagnostic && scene.camera.orthographic() != bos,
                     "BOS looks through a perspective camera, the other diagnostics through an orthographic one "
                     "(io/scene/DiagnosticParser)");
     stepLength_ = scene.render.stepVoxels * fields.grid().smallestVoxelEdge();
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
+    EIKON_CHECK_MSG(integrator != TracerDesc::Integrator::Euler, "a diagnostic marches by leapfrog or RK4");
     const std::string loopBudget = std::to_string(gl::currentLoopBudget());
     program_ = gl::compileComputeProgram(
         "diagnostic_rays.comp", {{"EIKON_INSTRUMENT", std::to_string(static_cast<int>(instrumentOf(diagnostic_)))},
                                  {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
+                                 {"EIKON_BOS_IMAGE", diagnostic_.patternImage ? "1" : "0"},
+                                 {"EIKON_INTEGRATOR", integrator == TracerDesc::Integrator::Rk4 ? "2" : "1"},
                                  {"EIKON_LOOP_BUDGET", loopBudget}});
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
@@ -69,7 +87,7 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
             {{"EIKON_SCREEN_PASS", "0"}, {"EIKON_HAS_EXTINCTION", extinction}, {"EIKON_LOOP_BUDGET", loopBudget}});
         resolve_ = gl::compileComputeProgram("shadowgraph_screen.comp",
                                              {{"EIKON_SCREEN_PASS", "1"}, {"EIKON_HAS_EXTINCTION", extinction}});
-        const std::size_t corners = (width + 1 + 2 * kBeamMargin) * (height + 1 + 2 * kBeamMargin);
+        const std::size_t corners = beamCorners(width, sampleSide_) * beamCorners(height, sampleSide_);
         rays_ = gl::Buffer(corners * sizeof(glm::vec4),
                            gl::GpuResource{"render.width × render.height", "the shadowgraph's rays"});
         landing_ = gl::Buffer(2 * corners * sizeof(glm::vec4),
@@ -83,10 +101,16 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
         landing_ = pixelBuffer(scene, "the background's displacement");
         reference_ = gl::Buffer(width * height * 4,
                                 gl::GpuResource{"render.width × render.height", "the background without the medium"});
-        // Three pixels' width on the background as the scene's camera sees it.
-        dotDiameter_ = diagnostic_.dotDiameter.value_or(3.0 * planeDepth(scene.camera) * 2.0 *
-                                                        std::tan(glm::radians(scene.camera.fovDeg) / 2) /
-                                                        static_cast<double>(render_.height));
+        // The background's height as the scene's camera sees it.
+        const double seen = planeDepth(scene.camera) * 2.0 * std::tan(glm::radians(scene.camera.fovDeg) / 2);
+        // Three pixels' width.
+        dotDiameter_ = diagnostic_.dotDiameter.value_or(3.0 * seen / static_cast<double>(render_.height));
+        if (const FloatImage* image = diagnostic_.patternImage.get()) {
+            pattern_ = patternTexture(*image);
+            const double aspect = static_cast<double>(render_.width) / static_cast<double>(render_.height);
+            const double patternWidth = diagnostic_.patternWidth.value_or(seen * aspect);
+            patternSize_ = {patternWidth, patternWidth * image->height / image->width};
+        }
     }
     hdr_ = pixelBuffer(scene, "the diagnostic's linear picture");
     ldr_ = gl::Buffer(static_cast<std::size_t>(render_.width) * static_cast<std::size_t>(render_.height) * 4,
@@ -97,6 +121,10 @@ void DiagnosticStage::setCamera(const CameraDesc& camera) {
     const layout::GpuCamera block = cameraBlock(camera, render_);
     camera_.upload(&block, sizeof block);
     cameraDesc_ = camera;
+}
+
+std::size_t DiagnosticStage::beamCorners(std::size_t pixels, int side) {
+    return static_cast<std::size_t>(side) * (pixels + 2 * kBeamMargin) + 1;
 }
 
 double DiagnosticStage::planeDepth(const CameraDesc& camera) const {
@@ -143,34 +171,51 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         case Instrument::Shadowgraph:
             glUniform1f(program_.uniform("plane_depth"), static_cast<float>(planeDepth(cameraDesc_)));
             glUniform1ui(program_.uniform("beam_margin"), kBeamMargin);
+            glUniform1ui(program_.uniform("beam_subdivision"), static_cast<GLuint>(drawnSide()));
             landing_.bindStorage(layout::kDiagnosticLanding);
             break;
         case Instrument::BackgroundOriented: {
             glUniform1f(program_.uniform("plane_depth"), static_cast<float>(planeDepth(cameraDesc_)));
-            // One dot a cell: its share of the cell's area π·d²/4 / cell² is the dot density.
-            const double cell = 0.5 * dotDiameter_ * std::sqrt(std::numbers::pi / diagnostic_.dotDensity);
-            glUniform1ui(program_.uniform("dot_seed"), diagnostic_.seed);
-            glUniform1f(program_.uniform("dot_cell"), static_cast<float>(cell));
-            glUniform1f(program_.uniform("dot_diameter"), static_cast<float>(dotDiameter_));
+            if (pattern_.id()) {
+                pattern_.bindSampler(layout::kBackgroundPatternTexture);
+                glUniform2f(program_.uniform("pattern_size"), static_cast<float>(patternSize_.x),
+                            static_cast<float>(patternSize_.y));
+            } else {
+                // One dot a cell: its share of the cell's area π·d²/4 / cell² is the dot density.
+                const double cell = 0.5 * dotDiameter_ * std::sqrt(std::numbers::pi / diagnostic_.dotDensity);
+                glUniform1ui(program_.uniform("dot_seed"), diagnostic_.seed);
+                glUniform1f(program_.uniform("dot_cell"), static_cast<float>(cell));
+                glUniform1f(program_.uniform("dot_diameter"), static_cast<float>(dotDiameter_));
+            }
             landing_.bindStorage(layout::kDiagnosticLanding);
             reference_.bindStorage(layout::kDiagnosticReference);
             break;
         }
     }
     if (instrumentOf(diagnostic_) == Instrument::Shadowgraph) {
-        program_.dispatchCovering(width + 1 + 2 * kBeamMargin, height + 1 + 2 * kBeamMargin, 1, 8, 8, 1);
+        const std::size_t cornersX = beamCorners(width, drawnSide()), cornersY = beamCorners(height, drawnSide());
+        program_.dispatchCovering(cornersX, cornersY, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         screen_.clearToZero();
         screen_.bindStorage(layout::kDiagnosticScreen);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         deposit_.use();
         glUniform1ui(deposit_.uniform("beam_margin"), kBeamMargin);
-        deposit_.dispatchCovering(width + 2 * kBeamMargin, height + 2 * kBeamMargin, 1, 8, 8, 1);
+        glUniform1ui(deposit_.uniform("beam_subdivision"), static_cast<GLuint>(drawnSide()));
+        deposit_.dispatchCovering(cornersX - 1, cornersY - 1, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         resolve_.use();
         resolve_.dispatchCovering(width, height, 1, 8, 8, 1);
     } else {
-        program_.dispatchCovering(width, height, 1, 8, 8, 1);
+        // k² passes, one ray a pixel each, averaged as the view's are.
+        const int side = drawnSide();
+        for (int cell = 0; cell < side * side; ++cell) {
+            const glm::vec2 offset = gridSampleOffset(cell, side);
+            glUniform2f(program_.uniform("sample_offset"), offset.x, offset.y);
+            glUniform1ui(program_.uniform("samples_before"), static_cast<GLuint>(cell));
+            program_.dispatchCovering(width, height, 1, 8, 8, 1);
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        }
     }
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     Image8 image{render_.width, render_.height,

@@ -8,7 +8,11 @@
 // cut-off, shaders/common/diagnostic_instruments.glsl; the screen's
 // intensity law, shaders/shadowgraph_screen.comp; the random-dot
 // background, shaders/common/bos_background.glsl) makes the picture of
-// them. Runs alone when only the camera changes.
+// them. render.samples_per_pixel = k² rays a pixel, through the centres of
+// a k × k grid over it as the view's (render/stages/PixelSamples.h), each
+// pixel the mean of its rays' picture and measurements: a box filter over
+// the pixel. The shadowgraph cuts each pixel's square of its beam into
+// k × k. Runs alone when only the camera changes.
 #pragma once
 
 #include "bridge/scene/Scene.h"
@@ -16,13 +20,14 @@
 #include "render/stages/FieldTextures.h"
 #include "render/stages/PostStage.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include <vector>
 
 namespace eikon::render {
 
-// What a frame's rays measured, per pixel, row 0 at the top.
+// What a frame's rays measured, per pixel (the mean of its rays), row 0 at the top.
 // Each is empty where the instrument does not measure it.
 struct DiagnosticMeasurements {
     int width = 0, height = 0;
@@ -38,37 +43,61 @@ public:
     // light bent onto the picture from at most this far is on it.
     static constexpr std::size_t kBeamMargin = 8;
 
-    // The scene's diagnostic and orthographic camera (checked by the scene parser).
-    DiagnosticStage(const Scene& scene, const FieldTextures& fields);
+    // The scene's diagnostic and orthographic camera (checked by the scene
+    // parser). The rays march by the camera's leapfrog, or by RK4 for the
+    // error estimate's reference march (render/stages/DiagnosticErrorEstimate.h).
+    DiagnosticStage(const Scene& scene, const FieldTextures& fields,
+                    TracerDesc::Integrator integrator = TracerDesc::Integrator::Leapfrog);
 
-    // Marches every pixel's ray and forms the picture: I/I₀ as a linear
+    // Marches every pixel's k² rays and forms the picture: I/I₀ as a linear
     // camera records it, sRGB-encoded (no exposure, no filmic curve).
     Image8 run(const FieldTextures& fields);
     void setCamera(const CameraDesc& camera);
+    // The viewer's preview while the camera moves: one ray a pixel (the
+    // shadowgraph: one square a pixel of its beam); false: k².
+    void setPreview(bool preview) { preview_ = preview; }
+    bool preview() const { return preview_; }
+    // The rays each pixel of the latest picture averages (the shadowgraph: squares of its beam).
+    int raysPerPixel() const { return preview_ ? 1 : sampleSide_ * sampleSide_; }
 
     std::vector<float> downloadHdr() const;  // linear I/I₀, RGBA per pixel
     DiagnosticMeasurements downloadMeasurements() const;
-    // Per ray (ε right, ε up, OPD, how the ray ended: 1 crossed the grid,
-    // 2 missed it, 0 cut by the step cap), as the pass wrote it: per pixel,
-    // or for the shadowgraph per pixel corner of its beam, kBeamMargin
-    // pixels wider than the picture on every side.
+    // (ε right, ε up, OPD, how the rays ended: 1 crossed the grid, 2 all
+    // missed it, 0 one was cut by the step cap), as the pass wrote it: per
+    // pixel, the mean of its rays; or for the shadowgraph per corner ray of
+    // its beam, kBeamMargin pixels wider than the picture on every side, k
+    // corners a pixel along each side (k² = render.samples_per_pixel).
     std::vector<glm::vec4> downloadRays() const;
     // BOS: the background seen without the medium (sRGB, as the picture).
     Image8 downloadReference() const;
     bool hasReference() const { return diagnostic_.type == DiagnosticDesc::Type::Bos; }
+    // BOS: the dots' 1/e² diameter on the background, m (0 for the others;
+    // unused with an image pattern).
+    double dotDiameter() const { return dotDiameter_; }
+    // BOS: the background image's width on the background, m (0 without one).
+    double patternWidth() const { return patternSize_.x; }
 
     // The screen's or background's distance from the camera along its axis:
     // the diagnostic's distance behind the grid's farthest corner.
     double planeDepth(const CameraDesc& camera) const;
 
 private:
+    // k, or 1 in a preview.
+    int drawnSide() const { return preview_ ? 1 : sampleSide_; }
+    // The shadowgraph's corner rays along a side of `pixels` pixels, `side` squares a pixel.
+    static std::size_t beamCorners(std::size_t pixels, int side);
+
     RenderDesc render_;
     DiagnosticDesc diagnostic_;
     CameraDesc cameraDesc_;
     GridSpec grid_;
+    int sampleSide_;  // k: render.samples_per_pixel = k²
+    bool preview_ = false;
     double stepLength_;
     unsigned maxSteps_;
     double dotDiameter_ = 0.0;  // BOS, m
+    gl::Texture2D pattern_;     // BOS: the background image, where the scene names one
+    glm::dvec2 patternSize_{0.0};  // its width and height on the background, m
     gl::Program program_;
     gl::Program deposit_;  // shadowgraph: the screen's two passes
     gl::Program resolve_;

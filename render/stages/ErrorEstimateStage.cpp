@@ -1,6 +1,7 @@
 #include "render/stages/ErrorEstimateStage.h"
 
 #include "render/stages/MapDisplacement.h"
+#include "render/stages/RelativeChange.h"
 
 #include "bridge/core/PrimeStride.h"
 #include "bridge/layout/GpuLayouts.h"
@@ -36,17 +37,6 @@ double relativeRms(const std::vector<float>& a, const std::vector<float>& b, std
     return norm > 0.0 ? std::sqrt(difference / norm) : 0.0;
 }
 
-// ‖a − b‖₁ / ‖b‖₁ over the RGB of every pixel (RGBA).
-double relativeL1(const std::vector<float>& a, const std::vector<float>& b) {
-    double difference = 0.0, norm = 0.0;
-    for (std::size_t i = 0; i + 3 < b.size(); i += 4)
-        for (std::size_t c = 0; c < 3; ++c) {
-            difference += std::abs(static_cast<double>(a[i + c]) - b[i + c]);
-            norm += std::abs(static_cast<double>(b[i + c]));
-        }
-    return norm > 0.0 ? difference / norm : 0.0;
-}
-
 std::vector<float> allMaps(const ReceiverMaps& maps) {
     std::vector<float> texels;
     for (unsigned r = 0; r < maps.count(); ++r) {
@@ -62,13 +52,24 @@ double totalPower(const glm::vec3& power) { return static_cast<double>(power.r) 
 
 double OutputErrors::worst() const {
     double worst = 0.0;
-    for (const auto& error : {receivers, image, fluence})
+    for (const auto& error : {receivers, image, fluence, deflection, opticalPathDifference, displacement})
         if (error) worst = std::max(worst, *error);
     return worst;
 }
 
 double ErrorEstimateStage::referenceStepVoxels(const Scene& scene) {
     return 0.5 * std::min({scene.tracer.stepVoxels, scene.render.stepVoxels, 1.0});
+}
+
+Scene ErrorEstimateStage::smallViewScene(const Scene& scene) {
+    Scene small = scene;
+    small.render.width = std::max(16, scene.render.width / kViewShrink);
+    small.render.height = std::max(
+        1, static_cast<int>(std::lround(small.render.width * static_cast<double>(scene.render.height) /
+                                        scene.render.width)));
+    // The march's errors are the same in every ray of a pixel: one, through its centre.
+    small.render.samplesPerPixel = 1;
+    return small;
 }
 
 ErrorEstimateStage::ErrorEstimateStage(const Scene& scene, const FieldTextures& fields, const ReceiverMaps& receivers,
@@ -96,13 +97,7 @@ ErrorEstimateStage::ErrorEstimateStage(const Scene& scene, const FieldTextures& 
         referenceScene.tracer.renormalize = false;
         reference_ = std::make_unique<PhotonStage>(referenceScene, fields, referenceReceivers_, options);
     }
-    Scene viewScene = scene;
-    viewScene.render.width = std::max(16, scene.render.width / kViewShrink);
-    viewScene.render.height = std::max(
-        1, static_cast<int>(std::lround(viewScene.render.width * static_cast<double>(scene.render.height) /
-                                        scene.render.width)));
-    // The march's errors are the same in every ray of a pixel: one, through its centre.
-    viewScene.render.samplesPerPixel = 1;
+    Scene viewScene = smallViewScene(scene);
     view_ = std::make_unique<ViewStage>(viewScene, fields, receivers_, sceneHasStepStructure, false);
     if (noiseByBatches_) halfView_ = std::make_unique<ViewStage>(viewScene, fields, evenHalf_, sceneHasStepStructure, false);
     viewScene.render.stepVoxels = referenceStepVoxels(scene);
@@ -131,7 +126,7 @@ ErrorEstimate ErrorEstimateStage::run(const FieldTextures& fields, const Inputs&
         estimate.noise.image = relativeRms(halfView_->downloadHdr(), image, 4);
     }
     referenceView_->run(fields, {sceneView.fluence, sceneView.fluenceDirection, inputs.referenceSteps});
-    estimate.discretisation.image = relativeL1(image, referenceView_->downloadHdr());
+    estimate.discretisation.image = relativeL1OfRgb(image, referenceView_->downloadHdr());
 
     if (probe_) {
         PhotonSettings settings = inputs.settings;

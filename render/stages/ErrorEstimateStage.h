@@ -43,6 +43,8 @@ namespace eikon::render {
 // Relative errors per output; unset where the frame has no such output.
 struct OutputErrors {
     std::optional<double> receivers, image, fluence;
+    // A diagnostic's measurements (render/stages/DiagnosticErrorEstimate.h).
+    std::optional<double> deflection, opticalPathDifference, displacement;
     // The largest of those set (0 where none is).
     double worst() const;
 };
@@ -66,6 +68,9 @@ public:
     // Half a step of the scene's smallest (camera or photon), at most half a
     // voxel, in voxels: what enableReference is given.
     static double referenceStepVoxels(const Scene& scene);
+    // The scene drawn small for the image's estimates: 8 times narrower, one
+    // ray a pixel.
+    static Scene smallViewScene(const Scene& scene);
 
     // The receivers of the even half: PhotonSettings::evenHalf, where noise
     // is estimated (a whole photon pass).

@@ -8,8 +8,25 @@
 // about a point are summed: with the dot density π·d²/(4·cell²) ≤ 0.5
 // (DiagnosticParser) a cell is at least 1.25·d wide, so any other dot is at
 // least that far and darkens the point by less than e^−12.5 (4·10⁻⁶).
+// Or (EIKON_BOS_IMAGE 1) an image file's luminance (Rec. 709 weights of
+// its linear RGB, io/image/ImageIo's readSrgbImageAsLinear), its texels
+// filtered bilinearly: the image `pattern_size` m wide and high, centred on
+// the camera's axis, row 0 at the top, repeated across the plane.
 // Coordinates on the background in m along the camera's right and up from
 // its axis. GLSL only.
+#ifndef EIKON_BOS_IMAGE
+#define EIKON_BOS_IMAGE 0
+#endif
+
+#if EIKON_BOS_IMAGE
+layout(binding = kBackgroundPatternTexture) uniform sampler2D pattern_texture;
+uniform vec2 pattern_size;  // m
+
+float background_intensity(vec2 q) {
+    vec2 uv = vec2(q.x / pattern_size.x + 0.5f, 0.5f - q.y / pattern_size.y);
+    return dot(textureLod(pattern_texture, uv, 0.0f).rgb, vec3(0.2126f, 0.7152f, 0.0722f));
+}
+#else
 #include "common/random.glsl"
 
 uniform uint dot_seed;
@@ -29,3 +46,4 @@ float background_intensity(vec2 q) {
         }
     return white;
 }
+#endif

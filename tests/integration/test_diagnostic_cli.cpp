@@ -6,6 +6,7 @@
 // the ParaView state (valid Python, the orthographic camera's scale). The
 // index is a Gaussian bump off the axis, imported as a delta_index grid;
 // `--set` switches the instrument.
+#include "io/image/ImageIo.h"
 #include "tests/integration/CliRun.h"
 #include "tests/unit/VdbTestFiles.h"
 
@@ -20,7 +21,9 @@
 #include <vtkStringArray.h>
 #include <vtkXMLImageDataReader.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +31,7 @@
 #include <numbers>
 #include <regex>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -140,6 +144,29 @@ TEST_F(DiagnosticCli, WritesThePictureAndTheMeasurementsForParaView) {
     EXPECT_LT(opd->GetComponent((29 - j) * 40 + i, 0), 0.1 * peak) << "the mirror image of the peak's pixel is dark";
 }
 
+// The per-frame error estimate covers the diagnostic's outputs: each
+// frame's report line holds the picture's, the deflection's and the optical
+// path difference's discretisation estimates (relative L1, finite, and small
+// on this bump at one-voxel steps), no noise, and its cost.
+TEST_F(DiagnosticCli, TheReportEstimatesTheErrorOfEveryMeasurement) {
+    const auto outcome = run("", 2);
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const std::vector<nlohmann::json> report = eikon::test::readReport(dir_ / "out" / "report.jsonl");
+    ASSERT_EQ(report.size(), 2u);
+    for (const nlohmann::json& frame : report) {
+        ASSERT_TRUE(frame.contains("error_estimate")) << frame.dump();
+        const nlohmann::json& discretisation = frame["error_estimate"]["discretisation"];
+        for (const char* output : {"image", "deflection", "optical_path_difference"}) {
+            ASSERT_TRUE(discretisation.contains(output)) << output << ": " << discretisation.dump();
+            EXPECT_GE(discretisation[output].get<double>(), 0.0) << output;
+            EXPECT_LT(discretisation[output].get<double>(), 0.01) << output;
+        }
+        EXPECT_FALSE(discretisation.contains("displacement"));
+        EXPECT_FALSE(frame["error_estimate"]["noise"].contains("image"));
+        EXPECT_GT(frame["error_estimate"]["ms"].get<double>(), 0.0);
+    }
+}
+
 TEST_F(DiagnosticCli, SetSwitchesTheInstrumentAndRefusesABadValueAtItsKey) {
     const auto schlieren = run("--set diagnostic.type=schlieren --set diagnostic.cutoff=colour");
     EXPECT_EQ(schlieren.exitCode, 0) << schlieren.output;
@@ -202,11 +229,56 @@ TEST_F(DiagnosticCli, BosWritesTheReferencePictureAndTheDisplacement) {
     double range[2];
     displacement->GetRange(range, 0);
     EXPECT_GT(range[1] - range[0], 1e-3) << "the bump moves the background";
+    EXPECT_TRUE(eikon::test::readReport(out / "report.jsonl")[0]["error_estimate"]["discretisation"].contains(
+        "displacement"));
     const auto refused = run("--force --set camera.projection=orthographic --set camera.width_m=1");
     EXPECT_EQ(refused.exitCode, 2) << refused.output;
     EXPECT_NE(refused.output.find("scene.json: camera.projection: expected \"perspective\" with a bos diagnostic"),
               std::string::npos)
         << refused.output;
+}
+
+// BOS over a background image (`pattern` names a PNG beside the scene):
+// the reference picture is the image where it fills the view at the
+// picture's own pixel count; a file that is no image, or none, is refused
+// with exit code 2 naming the key and the file, before anything is written.
+TEST_F(DiagnosticCli, BosReadsItsBackgroundFromAnImageFile) {
+    std::ofstream(dir_ / "scene.json") << R"({
+  "grid": {"resolution": [40, 40, 40], "bounds": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
+           "smoothing_sigma_voxels": 0},
+  "volume": {"path": "bump.vdb", "grids": {"density": "", "temperature": "", "delta_index": "dn"},
+             "offset": [0.0125, 0.0125, 0.0125]},
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
+  "camera": {"position": [0, 0, 2], "target": [0, 0, 0], "fov_deg": 25},
+  "render": {"width": 40, "height": 30, "samples_per_pixel": 1},
+  "diagnostic": {"type": "bos", "background_distance": 1.5, "pattern": "pattern.png"}
+})";
+    // Stripes four pixels wide, sRGB 40 and 220, and a white top row.
+    std::vector<std::uint8_t> pattern(40 * 30 * 4, 255);
+    for (int j = 1; j < 30; ++j)
+        for (int i = 0; i < 40; ++i)
+            for (int c = 0; c < 3; ++c) pattern[4 * (j * 40 + i) + c] = (i / 4) % 2 ? 220 : 40;
+    eikon::io::writePng(dir_ / "pattern.png", 40, 30, pattern);
+    const auto outcome = run();
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    const eikon::io::Rgba8Image reference = eikon::io::readImage(dir_ / "out" / "frames" / "reference_00000.png");
+    ASSERT_EQ(reference.rgba.size(), pattern.size());
+    int worst = 0;
+    for (std::size_t i = 0; i < pattern.size(); ++i)
+        if (i % 4 != 3) worst = std::max(worst, std::abs(int(reference.rgba[i]) - int(pattern[i])));
+    EXPECT_LE(worst, 1) << "the reference is the image, texel for pixel";
+
+    std::ofstream(dir_ / "notes.png") << "not an image";
+    for (const char* file : {"notes.png", "missing.png"}) {
+        const auto refused = runEikon("run " + (dir_ / "scene.json").string() + " --out " +
+                                          (dir_ / "refused").string() + " --quiet --set diagnostic.pattern=" + file,
+                                      "LP_NUM_THREADS=2");
+        EXPECT_EQ(refused.exitCode, 2) << refused.output;
+        EXPECT_NE(refused.output.find("scene.json: diagnostic.pattern: expected \"dots\" or an existing PNG"),
+                  std::string::npos) << refused.output;
+        EXPECT_NE(refused.output.find((dir_ / file).string()), std::string::npos) << refused.output;
+        EXPECT_FALSE(fs::exists(dir_ / "refused")) << "nothing written";
+    }
 }
 
 }  // namespace

@@ -127,8 +127,9 @@ TEST(Diagnostics, AnImportedDeltaIndexGridGivesTheSameMaps) {
 
 // A diagnostic draws the picture in place of view and post: with the
 // default octree policy and error estimates asked for, a frame has no step
-// structure, view, post or estimate (the march takes fixed steps), and a
-// camera change runs the diagnostic alone.
+// structure, view or post (the march takes fixed steps) and the
+// diagnostic's own estimate (DiagnosticErrorEstimate), and a camera change
+// runs the diagnostic and its estimate alone.
 TEST(Diagnostics, TheRendererDrawsTheDiagnosticInPlaceOfViewAndPost) {
     glContext();
     Scene scene = bumpScene(32, 24, kInterferometer);
@@ -144,14 +145,16 @@ TEST(Diagnostics, TheRendererDrawsTheDiagnosticInPlaceOfViewAndPost) {
         return names;
     };
     const render::FrameResult first = renderer.render(fields);
-    EXPECT_EQ(ran(first), (std::vector<std::string>{"upload", "prepare", "diagnostic"}));
-    EXPECT_EQ(first.stages.size(), 3u);
-    EXPECT_FALSE(first.errorEstimate);
+    EXPECT_EQ(ran(first), (std::vector<std::string>{"upload", "prepare", "diagnostic", "error_estimate"}));
+    EXPECT_EQ(first.stages.size(), 4u);
+    ASSERT_TRUE(first.errorEstimate);
+    EXPECT_TRUE(first.errorEstimate->discretisation.deflection);
+    EXPECT_FALSE(first.errorEstimate->noiseEstimated);
     EXPECT_EQ(first.image.width, 32);
     EXPECT_EQ(first.hdr.size(), 4u * 32 * 24);
     scene.camera.position.x = 0.1;
     renderer.setCamera(scene.camera);
-    EXPECT_EQ(ran(renderer.render(fields)), (std::vector<std::string>{"diagnostic"}));
+    EXPECT_EQ(ran(renderer.render(fields)), (std::vector<std::string>{"diagnostic", "error_estimate"}));
     EXPECT_TRUE(ran(renderer.render(fields)).empty());
 }
 

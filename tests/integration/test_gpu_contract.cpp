@@ -173,6 +173,7 @@ const std::map<std::string, unsigned>& samplers() {
         {"receiver_tally_texels", layout::kReceiverTallyTexture},
         {"hdr_radiance", layout::kHdrImageTexture},
         {"water_node_texels", layout::kWaterNodeTexture},
+        {"pattern_texture", layout::kBackgroundPatternTexture},
     };
     return rows;
 }
@@ -257,6 +258,7 @@ std::vector<Variant> productionVariants() {
         {"diagnostic_rays.comp", {{"EIKON_INSTRUMENT", "3"}}},
         {"diagnostic_rays.comp", {{"EIKON_INSTRUMENT", "4"}, {"EIKON_HAS_EXTINCTION", "1"}}},
         {"diagnostic_rays.comp", {{"EIKON_INSTRUMENT", "5"}}},
+        {"diagnostic_rays.comp", {{"EIKON_INSTRUMENT", "5"}, {"EIKON_BOS_IMAGE", "1"}, {"EIKON_INTEGRATOR", "2"}}},
         {"shadowgraph_screen.comp", {{"EIKON_SCREEN_PASS", "0"}, {"EIKON_HAS_EXTINCTION", "1"}}},
         {"shadowgraph_screen.comp", {{"EIKON_SCREEN_PASS", "1"}}},
         {"lattice_scattering.comp",

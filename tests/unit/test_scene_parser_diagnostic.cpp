@@ -3,11 +3,17 @@
 // camera, image space, sharp objects, values out of range, keys of another
 // type — with `--set` reaching the section as any other.
 #include "bridge/core/Error.h"
+#include "io/image/ImageIo.h"
 #include "io/scene/SceneOverride.h"
 #include "io/scene/SceneParser.h"
 #include "tests/unit/SceneParserTestSupport.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
 
 namespace eikon {
 namespace {
@@ -161,7 +167,10 @@ TEST(SceneParserDiagnostic, BosReadsItsBackgroundAndDots) {
     EXPECT_EQ(given.diagnostic->seed, 7u);
     EXPECT_DOUBLE_EQ(given.diagnostic->dotDiameter.value(), 0.002);
     EXPECT_DOUBLE_EQ(given.diagnostic->dotDensity, 0.5);
-    expectErrorAt(bosScene({{"type", "bos"}, {"pattern", "stripes"}}), "diagnostic.pattern", "one of \"dots\"");
+    expectErrorAt(bosScene({{"type", "bos"}, {"pattern", "stripes"}}), "diagnostic.pattern",
+                  "\"dots\" or an existing PNG or JPEG image file");
+    expectErrorAt(bosScene({{"type", "bos"}, {"pattern_width", 1.0}}), "diagnostic.pattern_width",
+                  "no pattern_width with the \"dots\" pattern");
     expectErrorAt(bosScene({{"type", "bos"}, {"seed", -1}}), "diagnostic.seed", "an integer in [0, 4294967295]");
     expectErrorAt(bosScene({{"type", "bos"}, {"seed", 1.5}}), "diagnostic.seed", "an integer");
     expectErrorAt(bosScene({{"type", "bos"}, {"dot_density", 0.6}}), "diagnostic.dot_density", "a number in (0, 0.5]");
@@ -172,6 +181,45 @@ TEST(SceneParserDiagnostic, BosReadsItsBackgroundAndDots) {
     expectErrorAt(bosScene({{"type", "bos"}, {"screen_distance", 1}}), "diagnostic.screen_distance", "an unknown key");
     expectErrorAt(diagnosticScene({{"type", "bos"}}), "camera.projection",
                   "\"perspective\" with a bos diagnostic");
+}
+
+// An image pattern is read with the scene, relative to the scene file's
+// folder, its sRGB values decoded to linear light (IEC 61966-2-1); a file
+// that is missing or no image stops the parse at the key, naming the file.
+TEST(SceneParserDiagnostic, BosReadsAnImagePatternRelativeToTheScene) {
+    const std::filesystem::path folder = std::filesystem::path(::testing::TempDir()) / "eikon_bos_pattern";
+    std::filesystem::create_directories(folder);
+    // 2 × 1 pixels: sRGB 0 and 188 (linear 0.5029), then 255 and a 50% grey alpha.
+    io::writePng(folder / "pattern.png", 2, 1, {0, 188, 255, 255, 255, 255, 255, 128});
+    const std::string sceneFile = (folder / "scene.json").string();
+    const Scene scene = parseScene(bosScene({{"type", "bos"}, {"pattern", "pattern.png"}, {"pattern_width", 0.4}}),
+                                   sceneFile);
+    const DiagnosticDesc& bos = *scene.diagnostic;
+    EXPECT_EQ(bos.patternPath, (folder / "pattern.png").string());
+    ASSERT_TRUE(bos.patternImage);
+    EXPECT_EQ(bos.patternImage->width, 2);
+    EXPECT_EQ(bos.patternImage->height, 1);
+    EXPECT_FLOAT_EQ(bos.patternImage->rgba[0], 0.0f);
+    EXPECT_NEAR(bos.patternImage->rgba[1], std::pow((188.0 / 255.0 + 0.055) / 1.055, 2.4), 1e-6);
+    EXPECT_FLOAT_EQ(bos.patternImage->rgba[4], 1.0f);
+    EXPECT_NEAR(bos.patternImage->rgba[7], 128.0 / 255.0, 1e-6);
+    EXPECT_DOUBLE_EQ(bos.patternWidth.value(), 0.4);
+
+    std::ofstream(folder / "notes.png") << "not an image";
+    try {
+        parseScene(bosScene({{"type", "bos"}, {"pattern", "notes.png"}}), sceneFile);
+        ADD_FAILURE() << "a file that is no image";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("diagnostic.pattern: expected \"dots\" or an existing PNG or JPEG image file"),
+                  std::string::npos) << message;
+        EXPECT_NE(message.find((folder / "notes.png").string() + "\", which is not one"), std::string::npos) << message;
+    }
+    expectErrorAt(bosScene({{"type", "bos"}, {"pattern", (folder / "missing.png").string()}}), "diagnostic.pattern",
+                  "\"dots\" or an existing PNG or JPEG image file");
+    expectErrorAt(bosScene({{"type", "bos"}, {"pattern", (folder / "pattern.png").string()}, {"pattern_width", 0}}),
+                  "diagnostic.pattern_width", "a number in (0, 1000000000]");
+    std::filesystem::remove_all(folder);
 }
 
 TEST(SceneParserDiagnostic, RefusesAPerspectiveCameraImageSpaceAndSharpObjects) {
