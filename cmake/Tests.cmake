@@ -242,6 +242,11 @@ add_dependencies(test_diagnostic_cli eikon)
 eikon_test(test_paraview_state LABELS integration LIBS eikon_io SOURCES
   tests/integration/test_paraview_state.cpp)
 add_dependencies(test_paraview_state eikon)
+# The ParaView and Blender round trips (issue 55's build item 5), each from its failure.
+eikon_test(test_cli_roundtrip LABELS integration LIBS eikon_vdb_test_files VTK::CommonCore VTK::CommonDataModel VTK::IOXML SOURCES
+  tests/integration/test_cli_roundtrip.cpp)
+vtk_module_autoinit(TARGETS test_cli_roundtrip MODULES VTK::CommonCore VTK::CommonDataModel VTK::IOXML)
+add_dependencies(test_cli_roundtrip eikon)
 # `mpirun -n 2 eikon run` against one process (FindMPI's MPIEXEC_EXECUTABLE).
 eikon_test(test_mpi LABELS integration LIBS eikon_io eikon_vdb_test_files SOURCES
   tests/integration/test_mpi.cpp)

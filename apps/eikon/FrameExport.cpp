@@ -4,16 +4,18 @@
 #include "bridge/core/PrimeStride.h"
 
 #include "io/vtk/ExportGeometry.h"
+#include "sim/optics/OpticalMapping.h"
 
 #include <algorithm>
 
 namespace eikon::app {
 
-ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer) {
-    ExportFrame frame{inputs.fields.grid, io::fieldArrays(inputs.fields)};
+ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer,
+                               double outsideDeltaIndex) {
+    ExportFrame frame{inputs.fields.grid, io::fieldArrays(inputs.fields, outsideDeltaIndex)};
     if (const render::PhotonStage* photons = renderer.photonStage(); photons && photons->storesFluence()) {
         frame.arrays.push_back({"fluence", 3, photons->downloadFluence(), {"W/m^2", ArrayRole::Density}});
-        frame.arrays.push_back({"photon_direction", 3, photons->downloadFluenceDirection(), {"1", ArrayRole::Direction}});
+        frame.arrays.push_back({"photon_direction", 3, photons->downloadFluenceDirection(), {"W/m^2", ArrayRole::Direction}});
     }
     for (const NamedArray& array : inputs.simulation) frame.arrays.push_back(array);
     return frame;
@@ -56,7 +58,8 @@ render::RendererOptions rendererOptionsFor(const Scene& scene) {
 
 FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder, bool deferIndexes)
     : exports_(scene.exports), camera_(scene.camera), paraview_(io::paraViewStateOf(scene)),
-      deferIndexes_(deferIndexes) {
+      deferIndexes_(deferIndexes),
+      outsideDeltaIndex_(scene.sim ? sim::ambientDeltaIndex(*scene.sim, scene.medium.index) : 0.0) {
     if (exports_.vtk.enabled) {
         vtk_.emplace(outputFolder, "fields", exports_.vtk.compression);
         if (exports_.vtk.receivers && !scene.receivers.empty())
@@ -104,7 +107,7 @@ bool FrameExporter::wantsFrame(int frame) const {
 
 void FrameExporter::write(int frame, const ExportInputs& inputs, const render::FrameRenderer& renderer) {
     const double time = inputs.time;
-    const ExportFrame arrays = gatherExportArrays(inputs, renderer);
+    const ExportFrame arrays = gatherExportArrays(inputs, renderer, outsideDeltaIndex_);
     if (vtk_ && exports_.vtk.exportsFrame(frame)) {
         vtk_->writeFrame(frame, time, io::selectCells(arrays, exports_.vtk, "export.vtk"));
         if (receivers_) {

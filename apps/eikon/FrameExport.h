@@ -35,7 +35,9 @@ struct ExportInputs {
 
 // The arrays a frame offers: fieldArrays, fluence and photon_direction when
 // the photon stage stores them, and the simulation's.
-ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer);
+// `outsideDeltaIndex`: δn outside the grid (io::fieldArrays).
+ExportFrame gatherExportArrays(const ExportInputs& inputs, const render::FrameRenderer& renderer,
+                               double outsideDeltaIndex);
 
 // Renderer options the export needs: photon-path recording (every k-th
 // photon, k the largest prime <= photons / photon_paths) when
@@ -65,6 +67,7 @@ private:
     io::ParaViewState paraview_;
     bool paraviewWritten_ = false;  // every collection has its index from the first exported frame on
     bool deferIndexes_;
+    double outsideDeltaIndex_;  // a simulated scene's ambient δn, else 0
     std::optional<io::VtkSeriesWriter> vtk_;
     std::optional<io::VdbFrameWriter> vdb_;
     std::optional<io::PolyDataSeries> receivers_;

@@ -6,7 +6,9 @@
 #include "bridge/core/Error.h"
 #include "apps/eikon/ProgressBar.h"
 #include "io/files/OutputFolder.h"
+#include "io/scene/SceneFingerprint.h"
 #include "io/scene/SceneParser.h"
+#include "io/vdb/VolumePlacement.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMemory.h"
 #include "render/graph/MemoryEstimate.h"
@@ -15,6 +17,7 @@
 #include "sim/volume/VolumeSequence.h"
 
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
 
@@ -40,8 +43,8 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
                     "objects); auto: frames where they are independent and there are several, else photons")
         ->check(CLI::IsMember({"auto", "photons", "frames"}));
     run->add_flag("--vtk", options.vtk,
-                  "Export every frame's fields as DIR/vtk/fields_NNNNN.vti with a .pvd and .series for ParaView, "
-                  "with the default field set, whatever the scene's export.vtk says");
+                  "Export the fields as DIR/vtk/fields_NNNNN.vti with a .pvd and .series for ParaView: turns "
+                  "export.vtk on, with the settings the scene and --set give it (every frame and field by default)");
 }
 
 namespace {
@@ -62,6 +65,14 @@ Distribution chooseDistribution(const RunOptions& options, const Scene& scene, c
     return independent && options.frames > 1 ? Distribution::Frames : Distribution::Photons;
 }
 
+// The user's --set assignments, then --vtk's: export.vtk turned on, its
+// other settings as the scene file and --set give them.
+std::vector<std::string> overridesOf(const RunOptions& options) {
+    std::vector<std::string> overrides = options.overrides;
+    if (options.vtk) overrides.push_back("export.vtk.enabled=true");
+    return overrides;
+}
+
 }  // namespace
 
 int runCommand(const RunOptions& options) {
@@ -72,19 +83,21 @@ int runCommand(const RunOptions& options) {
     std::unique_ptr<sim::SceneFields> fields;
     std::filesystem::path outDir;
     Distribution distribution = Distribution::None;
+    std::string fingerprint;
     // Everything the user supplied is checked before anything is written,
     // by every rank alike, and the ranks agree on it (Ranks::checkInputsTogether).
     Ranks::Agreement agreement;
     ranks.checkInputsTogether([&] {
-        const nlohmann::json document = loadSceneDocument(options.scenePath, options.overrides);
+        const nlohmann::json document = loadSceneDocument(options.scenePath, overridesOf(options));
         scene = parseScene(document, options.scenePath);
-        if (options.vtk) {  // the default field set, whatever the scene says
-            scene.exports.vtk = VtkExportDesc{};
-            scene.exports.vtk.enabled = true;
-        }
+        fingerprint = sceneFingerprint(document);
         if (scene.volume) sim::checkVolumeFrames(*scene.volume, scene.grid.spec(), options.frames, scene.sourcePath);
         render::requireMemoryFits(scene);  // before the fields, the GL context or anything the scene sizes
         fields = std::make_unique<sim::SceneFields>(scene);
+        if (scene.volume && ranks.first()) {  // once its first file has loaded: it is readable
+            const std::string outside = io::describeVolumeOutsideGrid(*scene.volume, scene.grid.spec());
+            if (!outside.empty()) std::cerr << "eikon: warning: " << scene.sourcePath << ": " << outside << "\n";
+        }
         distribution = chooseDistribution(options, scene, *fields, ranks);
         outDir = options.outDir.empty()
                      ? std::filesystem::path("out") / std::filesystem::path(options.scenePath).stem()
@@ -105,12 +118,24 @@ int runCommand(const RunOptions& options) {
     const bool pipelined = fields->fluidDevice() != "gpu" &&
                            (options.pipelining == "on" || (options.pipelining == "auto" && !context->info().rendersOnCpu()));
     std::optional<io::OutputFolder> output;
+    const auto openOutput = [&]() -> io::OutputFolder& {
+        output.emplace(outDir, options.force).recordScene(fingerprint);
+        return *output;
+    };
     try {
-        runFrames(scene, *fields, options.frames,
-                  [&]() -> io::OutputFolder& { return output.emplace(outDir, options.force); }, progress,
-                  {pipelined, distribution, outDir});
-    } catch (const gl::GpuMemoryError& error) {  // a size the scene asked for, too large for this machine
-        throw InputError(scene.sourcePath + ": " + error.what());
+        try {
+            runFrames(scene, *fields, options.frames, openOutput, progress, {pipelined, distribution, outDir});
+        } catch (const gl::GpuMemoryError& error) {  // a size the scene asked for, too large for this machine
+            throw InputError(scene.sourcePath + ": " + error.what());
+        }
+    } catch (const InputError& error) {
+        // An input found bad on a later frame (a volume file's values):
+        // the frames before it go too, as if it had been found first. (The
+        // ranks of an MPI job write into shares of the folder while they
+        // run: their files stay for --force.)
+        if (!output || ranks.distributed()) throw;
+        output->discard();
+        throw InputError(std::string(error.what()) + " (the frames this run wrote before are removed)");
     }
     return 0;
 }

@@ -15,7 +15,7 @@ struct RunOptions {
     std::vector<std::string> overrides;
     bool quiet = false;
     bool force = false;
-    bool vtk = false;                  // also export every frame's fields as a ParaView time series
+    bool vtk = false;                  // turn export.vtk on (the scene's and --set's settings apply)
     std::string pipelining = "auto";  // on, off, or auto: on unless OpenGL renders on the CPU
     std::string distribute = "auto";  // under mpirun: photons, frames, or auto (FrameLoop.h, Distribution)
 };

@@ -19,7 +19,7 @@ enum class ArrayRole { Scalar, Density, Velocity, Direction };
 struct ArrayMeaning {
     std::string unit;  // SI ("1/m", "K", "1" for dimensionless); "cache units" for an imported cache's own
     ArrayRole role = ArrayRole::Scalar;
-    float background = 0.0f;  // the value outside the grid (n_ref for index, the ambient temperature)
+    float background = 0.0f;  // the value outside the grid (the ambient n and δn, the ambient temperature)
 };
 
 // A named per-cell array: `components` floats per cell, x fastest, e.g.

@@ -32,6 +32,7 @@ struct GridDesc {
     double smoothingSigmaVoxels = 1.5;  // Gaussian σ of index smoothing in voxels ([Sun08] §4.1: 9³ window, σ = 9/6); 0: none
     int smoothingWindowVoxels = 0;      // odd kernel width; 0: 2·floor(3σ) + 1 (9 for σ = 1.5)
     int supersampling = 4;              // coverage samples per voxel axis ([Sun08] §4.1: 4)
+    bool fitVolume = false;             // grid.fit "volume": the bounds are the volume's (io/scene/GridFit.h)
 
     // The cells and world box this describes.
     GridSpec spec() const { return {resolution, boundsMin, boundsMax}; }

@@ -60,7 +60,7 @@ struct VolumeDesc {
     // the domain's corner (Blender's fluid.c: cell_size = size / base_res).
     // Each file's placement is then placement · T(−D/2) · S(D / (res·dx)) ·
     // T(dx/2), res from the grids' file_base_resolution metadata
-    // (sim/volume/VolumeSequence). D: the domain's dimensions (m), as
+    // (io/vdb/VolumePlacement). D: the domain's dimensions (m), as
     // Blender's N panel shows them; the location and rotation are in placement.
     std::optional<glm::dvec3> blenderDomainDimensions;
 

@@ -9,19 +9,24 @@
 
 namespace eikon::io {
 
-std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields) {
+std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields, double outsideDeltaIndex) {
     const std::size_t cells = fields.grid.cellCount();
     EIKON_CHECK_MSG(fields.deltaIndex.size() == cells, "deltaIndex size");
     std::vector<NamedArray> arrays;
     // n = n_ref + δn for viewing; float32 spacing near 1.0003 is ~1.2e-7, too
     // coarse for a mirage's Δn ≈ 1e-5 gradients (and for δn's own float32
     // precision), so δn itself goes out too, exactly as the FieldSet holds it.
-    NamedArray index{"index", 1, std::vector<float>(cells), {"1", ArrayRole::Scalar, static_cast<float>(fields.referenceIndex)}};
-    for (std::size_t c = 0; c < cells; ++c)
-        index.values[c] = static_cast<float>(fields.referenceIndex + static_cast<double>(fields.deltaIndex[c]));
+    // The backgrounds are rounded as the cells are, so that a cell holding
+    // the outside value is exactly background.
+    const auto outside = static_cast<float>(outsideDeltaIndex);
+    const auto indexOf = [&](float deltaIndex) {
+        return static_cast<float>(fields.referenceIndex + static_cast<double>(deltaIndex));
+    };
+    NamedArray index{"index", 1, std::vector<float>(cells), {"1", ArrayRole::Scalar, indexOf(outside)}};
+    for (std::size_t c = 0; c < cells; ++c) index.values[c] = indexOf(fields.deltaIndex[c]);
     arrays.push_back(std::move(index));
     auto copy = [](std::span<const float> values) { return std::vector<float>(values.begin(), values.end()); };
-    arrays.push_back({"delta_index", 1, copy(fields.deltaIndex), {"1", ArrayRole::Scalar}});
+    arrays.push_back({"delta_index", 1, copy(fields.deltaIndex), {"1", ArrayRole::Scalar, outside}});
     if (fields.hasExtinction()) arrays.push_back({"extinction", 3, copy(fields.extinction), {"1/m", ArrayRole::Density}});
     if (fields.hasScattering()) arrays.push_back({"scattering", 3, copy(fields.scattering), {"1/m", ArrayRole::Density}});
     if (fields.hasAnisotropy()) arrays.push_back({"anisotropy", 1, copy(fields.anisotropy), {"1", ArrayRole::Scalar}});

@@ -19,8 +19,11 @@
 namespace eikon::io {
 
 // index (n_ref + δn, float32), delta_index, and extinction, scattering,
-// anisotropy and emission where the field set has them.
-std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields);
+// anisotropy and emission where the field set has them. `outsideDeltaIndex`
+// is δn outside the grid — a simulated scene's ambient fluid, which render
+// cells outside the solver's box see too; 0 elsewhere — and so the
+// background of delta_index, and n_ref + it that of index.
+std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields, double outsideDeltaIndex = 0.0);
 
 // The cells [first, first + count) of `grid` whose centres lie in `region`
 // (each count >= 1), or nullopt when no cell centre does.

@@ -204,7 +204,7 @@ void OutputFolder::requireUsable(const fs::path& root, bool force) {
 OutputFolder::OutputFolder(fs::path root, bool force, bool withFrames) : root_(std::move(root)) {
     if (fs::exists(root_) && !fs::is_directory(root_)) throw InputError(root_.string(), "an output folder", "a file");
     std::error_code created;
-    fs::create_directories(root_, created);
+    createdRoot_ = fs::create_directories(root_, created);
     if (created) throw std::runtime_error(root_.string() + ": cannot create the output folder: " + created.message());
     folder_ = openRoot(root_);
     journal_ = openJournal(root_, folder_.get(), O_RDWR | O_APPEND);
@@ -219,7 +219,8 @@ OutputFolder::OutputFolder(fs::path root, bool force, bool withFrames) : root_(s
     if (::ftruncate(journal_.get(), 0) != 0 ||
         ::write(journal_.get(), header.data(), header.size()) != static_cast<ssize_t>(header.size()))
         throw std::runtime_error((root_ / kJournalName).string() + ": cannot be written: " + osReason());
-    if (withFrames && ::mkdirat(folder_.get(), "frames", 0777) != 0 && errno != EEXIST)
+    createdFrames_ = withFrames && ::mkdirat(folder_.get(), "frames", 0777) == 0;
+    if (withFrames && !createdFrames_ && errno != EEXIST)
         throw std::runtime_error((root_ / "frames").string() + ": cannot be created: " + osReason());
     guard_ = std::make_unique<GuardedFolder>(root_, folder_.get(), journal_.get(), root_ / kJournalName);
 }
@@ -235,6 +236,35 @@ void OutputFolder::appendReport(const std::string& jsonLine) { appendReports({js
 void OutputFolder::appendReports(const std::vector<std::string>& jsonLines) {
     for (const std::string& line : jsonLines) report_ += line + "\n";
     writeFileAtomically(root_ / "report.jsonl", report_);
+}
+
+void OutputFolder::recordScene(const std::string& fingerprint) {
+    try {
+        appendSceneToJournal(journal_.get(), fingerprint);
+    } catch (const std::system_error& error) {
+        throw std::runtime_error((root_ / kJournalName).string() + ": " + error.what());
+    }
+}
+
+void OutputFolder::discard() {
+    guard_.reset();  // no more writes are recorded
+    std::string text;
+    try {
+        text = readWholeFile(journal_.get());
+    } catch (const std::system_error& error) {
+        throw std::runtime_error((root_ / kJournalName).string() + ": " + error.what());
+    }
+    removeEarlierRun(root_, folder_.get(), earlierRunRemovals(folder_.get(), text));
+    if (createdFrames_) ::unlinkat(folder_.get(), "frames", AT_REMOVEDIR);  // only while empty
+    // The journal goes only while it is still the file this run holds.
+    struct stat held {}, named {};
+    if (::fstat(journal_.get(), &held) == 0 &&
+        ::fstatat(folder_.get(), kJournalName, &named, AT_SYMLINK_NOFOLLOW) == 0 && held.st_dev == named.st_dev &&
+        held.st_ino == named.st_ino)
+        ::unlinkat(folder_.get(), kJournalName, 0);
+    journal_ = Descriptor();
+    folder_ = Descriptor();
+    if (createdRoot_) ::rmdir(root_.c_str());  // only while empty: anything another program saved there stays
 }
 
 void OutputFolder::shareWith(int processes) {

@@ -67,6 +67,16 @@ public:
     // The same for several lines at once, in order (one rewrite).
     void appendReports(const std::vector<std::string>& jsonLines);
 
+    // Records the fingerprint of the scene the run renders in the journal
+    // (RunJournal.h's scene line). std::runtime_error when it cannot.
+    void recordScene(const std::string& fingerprint);
+
+    // Removes everything this run wrote (what its journal lists, as --force
+    // would), its journal, and the folder itself where the run created it
+    // and it is left empty: for a run stopped by an input it found bad only
+    // after its first frame was written. Nothing else is touched.
+    void discard();
+
     // Makes the journals of the other processes of a run that write into
     // this folder (MPI ranks 1 … processes − 1), before they start:
     // OutputFolderShare opens each.
@@ -76,6 +86,8 @@ public:
 
 private:
     std::filesystem::path root_;
+    bool createdRoot_ = false;     // the folder did not exist before this run
+    bool createdFrames_ = false;   // nor its frames/
     Descriptor folder_, journal_;  // the journal holds the lock
     std::unique_ptr<GuardedFolder> guard_;
     std::string report_;

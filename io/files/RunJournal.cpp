@@ -21,6 +21,15 @@ constexpr std::array<std::pair<JournalEntry::Kind, std::string_view>, 4> kKindNa
     {JournalEntry::Kind::Share, "share"},
 }};
 
+constexpr std::string_view kSceneKind = "scene\t";
+
+// One line in one write(2).
+void writeLine(int journal, const std::string& line) {
+    const ssize_t written = ::write(journal, line.data(), line.size());
+    if (written != static_cast<ssize_t>(line.size()))  // a short write: the disk is full
+        throw std::system_error(written < 0 ? errno : ENOSPC, std::generic_category(), "cannot record it");
+}
+
 template <typename Number>
 bool parseNumber(const std::string& text, Number& value) {
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -80,9 +89,21 @@ void appendToJournal(int journal, const JournalEntry& entry) {
     if (entry.kind != JournalEntry::Kind::Intent)
         line += "\t" + std::to_string(entry.identity.device) + "\t" + std::to_string(entry.identity.inode);
     line += "\t" + path + "\n";
-    const ssize_t written = ::write(journal, line.data(), line.size());
-    if (written != static_cast<ssize_t>(line.size()))  // a short write: the disk is full
-        throw std::system_error(written < 0 ? errno : ENOSPC, std::generic_category(), "cannot record it");
+    writeLine(journal, line);
+}
+
+void appendSceneToJournal(int journal, const std::string& fingerprint) {
+    if (fingerprint.empty() || fingerprint.find_first_of("\t\n") != std::string::npos)
+        throw std::system_error(EINVAL, std::generic_category(), "a scene fingerprint must be one word");
+    writeLine(journal, std::string(kSceneKind) + fingerprint + "\n");
+}
+
+std::optional<std::string> journalScene(const std::string& text) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (line.compare(0, kSceneKind.size(), kSceneKind) == 0 && line.size() > kSceneKind.size())
+            return line.substr(kSceneKind.size());
+    return std::nullopt;
 }
 
 std::string readWholeFile(int fd) {

@@ -14,10 +14,13 @@
 //   file    2049  1834  frames/frame_00003.png          about to take this name
 //   folder  2049  1790  frames                          a folder written into
 //   share   2049  1801  .eikon-run.rank1                another process's journal
+//   scene   9e107d9d372bb6826bd81d3542a419d6            the scene it rendered
 //
 // Fields are separated by tabs; paths are relative to the folder. A share
 // is the journal of another process of the run (an MPI rank) writing into
-// the same folder: entries only, no header.
+// the same folder: entries only, no header. The scene line holds the
+// fingerprint of the scene the run rendered (io/scene/SceneFingerprint.h),
+// which `eikon paraview` checks its scene against.
 #pragma once
 
 #include "io/files/NoFollow.h"
@@ -49,6 +52,11 @@ std::vector<JournalEntry> journalEntries(const std::string& text);
 
 // One line, in one write(2). Throws std::system_error.
 void appendToJournal(int journal, const JournalEntry& entry);
+// The scene line, in one write(2). Throws std::system_error.
+void appendSceneToJournal(int journal, const std::string& fingerprint);
+// The fingerprint the scene line of `text` holds; nullopt where it has none
+// (a run of an older eikon, or one killed before it recorded it).
+std::optional<std::string> journalScene(const std::string& text);
 // The whole of an open file. Throws std::system_error.
 std::string readWholeFile(int fd);
 

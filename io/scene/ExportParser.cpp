@@ -152,6 +152,19 @@ glm::dmat4 zUpToYUp() {
     return m;
 }
 
+// Blender's grid names: its data cache (fluid_data_####.vdb) holds density,
+// temperature (heat), flame and velocity; its noise cache
+// (fluid_noise_####.vdb, what Blender renders when Noise is on, as Quick
+// Smoke sets it) holds density_noise (and flame_noise for a fire) — its
+// heat and velocity stay in the data cache, at the base resolution.
+void useBlenderGridNames(const std::filesystem::path& path, VolumeDesc& volume) {
+    const bool noise = path.filename().string().rfind("fluid_noise_", 0) == 0;
+    volume.densityGrid = noise ? "density_noise" : "density";
+    volume.temperatureGrid = noise ? "" : "temperature";
+    volume.flameGrid = noise ? "" : "flame";
+    volume.velocityGrid = noise ? "" : "velocity";
+}
+
 // A grid name: any non-empty string (spaces allowed), "" to skip the grid.
 std::string readGridName(const JsonReader& node) { return node.string(); }
 
@@ -282,14 +295,19 @@ VolumeDesc readVolume(const JsonReader& node, const std::string& sceneFolder) {
     bool zUp = preset == "blender";
     glm::dmat4 transform(1.0);
     if (preset == "blender") {
-        volume.flameGrid = "flame";
-        volume.velocityGrid = "velocity";
+        useBlenderGridNames(path, volume);
         if (fields.optional("transform"))
             fields.member("transform").fail("no `transform` with preset \"blender\" (blender_domain places the cache)",
                                             "a transform");
         const JsonReader domain = fields.member("blender_domain");
-        const auto keys = domain.object({"location", "rotation_deg", "dimensions"});
-        const glm::dvec3 location = keys.member("location").vec3(kCoordinateRange);
+        // The cache's box goes centred on `center`, the domain's bounding-box
+        // centre in Blender's world, or on `location`, the object's origin,
+        // which is that centre only while the origin was not moved.
+        const auto keys = domain.object({"location", "center", "rotation_deg", "dimensions"});
+        if (keys.optional("location") && keys.optional("center"))
+            keys.member("center").fail("either `center` or `location` (the origin, where it is the box's centre)",
+                                       "both");
+        const glm::dvec3 location = keys.member(keys.optional("center") ? "center" : "location").vec3(kCoordinateRange);
         const glm::dvec3 rotation = keys.optional("rotation_deg") ? keys.member("rotation_deg").vec3(kTurnRange)
                                                                   : glm::dvec3(0.0);
         volume.blenderDomainDimensions = keys.member("dimensions").vec3(kLengthRange);

@@ -10,6 +10,7 @@
 #include "io/scene/DuplicateKeyCheck.h"
 #include "io/scene/JsonErrorPosition.h"
 #include "io/scene/ExportParser.h"
+#include "io/scene/GridFit.h"
 #include "io/scene/JsonReader.h"
 #include "io/scene/MeshObjectParser.h"
 #include "io/scene/PaintParser.h"
@@ -103,7 +104,7 @@ int readOddWindow(const JsonReader& node) {
 GridDesc readGrid(const JsonReader& node) {
     GridDesc grid;
     const auto fields =
-        node.object({"resolution", "bounds", "smoothing_sigma_voxels", "smoothing_window_voxels", "supersampling"});
+        node.object({"resolution", "bounds", "fit", "smoothing_sigma_voxels", "smoothing_window_voxels", "supersampling"});
     if (auto resolution = fields.optional("resolution")) {
         grid.resolution = resolution->ivec3(1, static_cast<int>(kMaxGridCells));
         const glm::ivec3 n = grid.resolution;
@@ -120,6 +121,7 @@ GridDesc readGrid(const JsonReader& node) {
         grid.boundsMax = corners.member("max").vec3(kCoordinateRange);
         requireNonEmpty(corners.member("min"), grid.boundsMin, corners.member("max"), grid.boundsMax);
     }
+    grid.fitVolume = readGridFit(fields);
     if (auto sigma = fields.optional("smoothing_sigma_voxels")) grid.smoothingSigmaVoxels = sigma->number(kNonNegative);
     if (auto window = fields.optional("smoothing_window_voxels")) grid.smoothingWindowVoxels = readOddWindow(*window);
     if (auto samples = fields.optional("supersampling")) {
@@ -654,6 +656,7 @@ Scene parseScene(const nlohmann::json& root, const std::string& sourceName) {
                 .fail("false with tracer.estimator \"wavefront\" (a glowing volume is no wavefront source; "
                       "\"photons\" traces it)", "true");
     }
+    if (scene.grid.fitVolume) fitGridToVolume(fields.member("grid").member("fit"), scene);
     const bool volumeLights = scene.volume && scene.volume->emissionLights;
     if (scene.lights.empty() && !volumeLights)
         fields.member("lights").fail("an array of at least one light (or a volume with emission_lights)");

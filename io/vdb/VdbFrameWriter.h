@@ -4,7 +4,8 @@
 // render cell (i, j, k): the transform scales by the voxel size and
 // translates to the centre of cell (0, 0, 0), OpenVDB's cell-centred
 // convention. Each grid's background is the array's value outside the grid
-// (NamedArray::meaning: n_ref for index, the ambient temperature, else 0);
+// (NamedArray::meaning: the ambient n and δn for index and delta_index,
+// the ambient temperature, else 0);
 // values within 1e-6 of the array's largest distance from it stay inactive
 // background, so empty regions stay sparse (tools::copyFromDense), and a grid
 // that is background everywhere is not written at all. Density-like scalars

@@ -127,6 +127,31 @@ VdbVolumeFile::GridFrame VdbVolumeFile::gridFrame(const std::string& name) const
     return frame;
 }
 
+std::optional<std::vector<glm::dvec3>> VdbVolumeFile::activeBoxCorners(const std::string& name) const {
+    const std::vector<std::string> names = gridNames();
+    if (std::find(names.begin(), names.end(), name) == names.end()) throw noGridNamed(path_, name, names);
+    openvdb::GridBase::Ptr grid;
+    try {
+        grid = grids_->file->readGridMetadata(name);
+    } catch (const std::exception& error) {
+        throw InputError(path_.string() + ": grid \"" + name + "\"", "readable metadata",
+                         std::string("OpenVDB: ") + error.what());
+    }
+    const auto low = grid->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
+    const auto high = grid->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
+    if (!low || !high) return std::nullopt;
+    const openvdb::Vec3i lo = low->value(), hi = high->value();
+    if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]) return std::nullopt;  // OpenVDB's empty box
+    std::vector<glm::dvec3> corners;
+    for (int corner = 0; corner < 8; ++corner) {
+        const openvdb::Vec3d index(corner & 1 ? hi[0] + 0.5 : lo[0] - 0.5, corner & 2 ? hi[1] + 0.5 : lo[1] - 0.5,
+                                   corner & 4 ? hi[2] + 0.5 : lo[2] - 0.5);
+        const openvdb::Vec3d world = grid->transform().indexToWorld(index);
+        corners.emplace_back(world[0], world[1], world[2]);
+    }
+    return corners;
+}
+
 std::vector<float> VdbVolumeFile::sample(const std::string& name, int components, const GridSpec& spec,
                                          const glm::dvec3& offset) const {
     return sample(name, components, spec, glm::translate(glm::dmat4(1.0), offset));

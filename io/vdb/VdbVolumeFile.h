@@ -74,6 +74,12 @@ public:
         std::optional<glm::ivec3> baseResolution;
     };
     GridFrame gridFrame(const std::string& name) const;
+    // The eight corners, in the file's world, of the box of grid `name`'s
+    // active voxels (whole voxels: index box ± ½), from the statistics
+    // OpenVDB writes beside each grid (file_bbox_min, file_bbox_max):
+    // nullopt where the file lacks them or the grid has no active voxel.
+    // InputError as sample's for a missing grid.
+    std::optional<std::vector<glm::dvec3>> activeBoxCorners(const std::string& name) const;
     // 3 when the file's grid `name` is a vec3s grid, else 1 (sample then
     // says what it found, or that there is no such grid).
     int componentsOf(const std::string& name) const;

@@ -139,6 +139,9 @@ SetActiveView(view)
 
 constexpr const char* kEpilogue = R"(
 GetAnimationScene().UpdateAnimationUsingDataTimeSteps()
+# paraview.simple resets the camera to the data on a script's first Render()
+# (pvbatch, pvpython): render once, then set the scene's camera.
+Render(view)
 view.CameraPosition = camera_position
 view.CameraFocalPoint = camera_target
 view.CameraViewUp = camera_up

@@ -28,6 +28,10 @@ double OpticalModel::index(double temperature, double concentration) const {
     return mixedIndex(indexA_, indexB_, concentration, mixing_);
 }
 
+double ambientDeltaIndex(const SimDesc& desc, double referenceIndex) {
+    return OpticalModel(desc).index(desc.ambientTemperature, 0.0) - referenceIndex;
+}
+
 bool OpticalModel::absorbs() const { return positive(dyeExtinction_); }
 bool OpticalModel::scatters() const { return positive(dyeScattering_); }
 

@@ -36,6 +36,10 @@ private:
     Rgb dyeExtinction_, dyeScattering_;
 };
 
+// δn = n − n_ref of the ambient fluid (ambient temperature, concentration 0):
+// what render cells outside the solver's box hold.
+double ambientDeltaIndex(const SimDesc& desc, double referenceIndex);
+
 // Writes δn (and κ, σs where `fields` has them) of every render cell straight
 // into `fields`' memory, with n_ref = fields.referenceIndex. Versions and
 // validation are the caller's.

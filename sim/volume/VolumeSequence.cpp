@@ -2,13 +2,12 @@
 
 #include "io/vdb/VdbVolumeFile.h"
 #include "io/vdb/VolumeFramePath.h"
+#include "io/vdb/VolumePlacement.h"
 #include "io/vtk/VtkVolumeSource.h"
 
 #include "bridge/core/Error.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
-#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -16,37 +15,6 @@
 namespace eikon::sim {
 
 namespace {
-
-// The first grid the scene reads from the file.
-std::string firstGrid(const VolumeDesc& desc) {
-    for (const std::string* name : {&desc.densityGrid, &desc.temperatureGrid, &desc.flameGrid, &desc.velocityGrid,
-                                    &desc.indexGrid, &desc.deltaIndexGrid, &desc.extinctionGrid, &desc.scatteringGrid,
-                                    &desc.anisotropyGrid, &desc.emissionGrid})
-        if (!name->empty()) return *name;
-    return {};
-}
-
-// A Blender (Mantaflow) cache's index frame in its domain's, centred: voxel
-// (i,j,k) at (i,j,k)·dx in the file is the cell covering
-// [i, i+1]·D/res from the domain's corner (VolumeDesc::blenderDomainDimensions).
-glm::dmat4 blenderCellFrame(const io::VdbVolumeFile& file, const std::string& grid, const glm::dvec3& dimensions) {
-    const io::VdbVolumeFile::GridFrame frame = file.gridFrame(grid);
-    if (!frame.baseResolution || glm::any(glm::lessThan(*frame.baseResolution, glm::ivec3(1))))
-        throw InputError(file.path().string() + ": grid \"" + grid + "\"",
-                         "Mantaflow's file_base_resolution metadata (volume.preset \"blender\" reads a Blender cache)",
-                         frame.baseResolution ? "a resolution below 1" : "none");
-    const double dx = frame.voxelSize.x;
-    const glm::dvec3 cell = dimensions / glm::dvec3(*frame.baseResolution);
-    return glm::translate(glm::dmat4(1.0), -0.5 * dimensions) * glm::scale(glm::dmat4(1.0), cell / dx) *
-           glm::translate(glm::dmat4(1.0), glm::dvec3(0.5 * dx));
-}
-
-// The file's world in the scene's.
-glm::dmat4 placementOf(const VolumeDesc& desc, const io::VdbVolumeFile& file) {
-    return desc.blenderDomainDimensions
-               ? desc.placement * blenderCellFrame(file, firstGrid(desc), *desc.blenderDomainDimensions)
-               : desc.placement;
-}
 
 constexpr int kRgb = 0;  // κ, σs, ε: RGB from a vec3s grid, grey from a float grid
 
@@ -162,7 +130,7 @@ void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int f
     for (int frame = 0; frame < frames; ++frame)
         readNamedByScene(scenePath, [&] {
             const io::VdbVolumeFile file(volumeFramePath(desc, desc.frameStart + frame));
-            const glm::dmat4 placement = placementOf(desc, file);
+            const glm::dmat4 placement = io::volumePlacement(desc, file);
             for (const GridSlot& slot : kGridSlots) {
                 const std::string& grid = desc.*slot.name;
                 if (!grid.empty()) file.check(grid, componentsOf(slot, grid, file), renderGrid, placement);
@@ -211,7 +179,7 @@ void VolumeSequence::load(int frame) {
     std::vector<float> velocity;
     readNamedByScene(scenePath_, [&] {
         const io::VdbVolumeFile file(path);
-        const glm::dmat4 placement = placementOf(desc_, file);
+        const glm::dmat4 placement = io::volumePlacement(desc_, file);
         for (const GridSlot& slot : kGridSlots) {
             const std::string& grid = desc_.*slot.name;
             if (grid.empty()) continue;

@@ -80,6 +80,9 @@ TEST_F(ParaViewState, RunWritesValidPythonThatOpensOnlyWhatExists) {
     EXPECT_NE(text.find("camera_position = [0, 1, 2.5]"), std::string::npos);
     EXPECT_NE(text.find("camera_target = [0, 0.40000000000000002, 0]"), std::string::npos);
     EXPECT_NE(text.find("slice_normal = [0, 0, 1]"), std::string::npos);  // the camera looks along −z mostly
+    // paraview.simple resets the camera on a script's first Render(): one
+    // comes before the camera is set (pvbatch checks it, below, where it can).
+    EXPECT_LT(text.find("Render(view)"), text.find("view.CameraPosition = camera_position"));
     const std::string parse = "python3 -c \"import ast, sys; ast.parse(open(sys.argv[1]).read())\" " + script.string();
     EXPECT_EQ(std::system(parse.c_str()), 0) << text;
 }
@@ -142,6 +145,35 @@ TEST_F(ParaViewState, TheParaViewCommandRewritesTheState) {
     EXPECT_EQ(refused.exitCode, 2) << refused.output;
     EXPECT_NE(refused.output.find("no vtk/ folder"), std::string::npos) << refused.output;
     EXPECT_TRUE(fs::is_empty(dir_ / "empty"));
+}
+
+// Where pvbatch is available: after the state has run, ParaView's view has
+// the scene's camera — not the one paraview.simple's first Render() resets
+// to the data, which replaced it before.
+TEST_F(ParaViewState, PvbatchKeepsTheScenesCamera) {
+    const char* pvbatch = std::getenv("EIKON_PVBATCH");
+    if (!pvbatch) GTEST_SKIP() << "EIKON_PVBATCH does not name ParaView's pvbatch (docs/paraview.md)";
+    const fs::path script = runScene();
+    std::ofstream(dir_ / "camera.py") << "import runpy, sys\n"
+                                         "state = runpy.run_path(sys.argv[1])\n"
+                                         "view = state['view']\n"
+                                         "print('camera', *view.CameraPosition, *view.CameraFocalPoint, "
+                                         "view.CameraViewAngle)\n";
+    const std::string command = std::string(std::getenv("DISPLAY") ? "" : "xvfb-run -a ") + pvbatch + " " +
+                                (dir_ / "camera.py").string() + " " + script.string() + " > " +
+                                (dir_ / "pv.log").string() + " 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir_ / "pv.log");
+    const std::string log = readText(dir_ / "pv.log");
+    std::istringstream line(log.substr(log.rfind("camera ") + 7));
+    double position[3], target[3], fov = 0.0;
+    line >> position[0] >> position[1] >> position[2] >> target[0] >> target[1] >> target[2] >> fov;
+    ASSERT_FALSE(line.fail()) << log;
+    const double expectedPosition[3] = {0, 1, 2.5}, expectedTarget[3] = {0, 0.4, 0};  // kScene's camera
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_NEAR(position[axis], expectedPosition[axis], 1e-9) << log;
+        EXPECT_NEAR(target[axis], expectedTarget[axis], 1e-9) << log;
+    }
+    EXPECT_NEAR(fov, 45.0, 1e-9);
 }
 
 // ParaView itself renders the state: the picture is not the background alone.

@@ -2,11 +2,13 @@
 #include "io/files/AtomicFile.h"
 #include "io/image/ImageIo.h"
 #include "io/files/OutputFolder.h"
+#include "io/files/RunJournal.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -97,6 +99,54 @@ TEST_F(OutputFolderTest, FilesSavedDuringARunAreNotTheRuns) {
     EXPECT_FALSE(fs::exists(root_ / "vtk" / "fields_00000.vti"));
     EXPECT_EQ(readAll(root_ / "vtk" / "state.pvsm"), "the user's ParaView state");
     EXPECT_EQ(readAll(root_ / "notes.txt"), "the user's notes");
+}
+
+// A run that stops on a later frame's input discards what it wrote: its
+// files, folders and journal go, a file a user saved there during the run
+// stays, and so does the folder holding it; a folder the run made and that
+// is left empty goes too.
+TEST_F(OutputFolderTest, DiscardRemovesExactlyWhatTheRunWrote) {
+    {
+        OutputFolder run(root_, false);
+        writeFileAtomically(run.framePath(0), "frame 0");
+        fs::create_directories(root_ / "vtk");
+        writeFileAtomically(root_ / "vtk" / "fields_00000.vti", "export 0");
+        std::ofstream(root_ / "notes.txt") << "the user's notes";
+        run.appendReport("{\"frame\":0}");
+        run.discard();
+    }
+    EXPECT_EQ(readAll(root_ / "notes.txt"), "the user's notes");
+    for (const char* gone : {"frames", "vtk", "report.jsonl", ".eikon-run"}) EXPECT_FALSE(fs::exists(root_ / gone)) << gone;
+    fs::remove(root_ / "notes.txt");
+    {
+        OutputFolder run(root_, false);
+        writeFileAtomically(run.framePath(0), "frame 0");
+        run.discard();
+    }
+    EXPECT_TRUE(fs::is_directory(root_)) << "the folder was there before the run";
+    EXPECT_TRUE(fs::is_empty(root_));
+    fs::remove(root_);
+    {
+        OutputFolder run(root_, false);
+        writeFileAtomically(run.framePath(0), "frame 0");
+        run.discard();
+    }
+    EXPECT_FALSE(fs::exists(root_)) << "the run made the folder";
+}
+
+// The journal records the fingerprint of the run's scene beside its files,
+// which --force still reads as entries alone.
+TEST_F(OutputFolderTest, TheJournalHoldsTheScenesFingerprint) {
+    {
+        OutputFolder run(root_, false);
+        run.recordScene("9e107d9d372bb6826bd81d3542a419d6");
+        writeFileAtomically(run.framePath(0), "frame 0");
+    }
+    const std::string journal = readAll(root_ / OutputFolder::kJournalName);
+    EXPECT_EQ(journalScene(journal), std::optional<std::string>("9e107d9d372bb6826bd81d3542a419d6"));
+    EXPECT_EQ(journalScene(journalHeader(1)), std::nullopt);
+    { OutputFolder second(root_, true); }
+    EXPECT_FALSE(fs::exists(root_ / "frames" / "frame_00000.png"));
 }
 
 // A run killed with -9 (no handler runs) leaves the temporary it was

@@ -167,5 +167,183 @@ TEST(VolumePlacement, ABlenderCacheLandsWhereItsDomainWas) {
     fs::remove_all(folder);
 }
 
+// An adaptive domain's cache: Blender bakes only the part of the domain that
+// holds smoke, a grid of fewer cells per axis at an offset the file does not
+// hold (here 8 × 6 × 9 cells of the 1.6 × 1.2 × 2.0 m domain's 13 × 10 × 16),
+// which the preset used to stretch over the whole domain, silently. Now the
+// file's resolution is checked against the dimensions at the file's voxel
+// and the cache is refused, naming both; so are dimensions of another domain.
+TEST(VolumePlacement, ACacheThatIsNotItsDomainsWholeGridIsRefused) {
+    const fs::path folder = fs::path(::testing::TempDir()) / "eikon_blender_adaptive";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    openvdb::initialize();
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->setTransform(openvdb::math::Transform::createLinearTransform(2.0 / 16));
+    density->insertMeta("file_base_resolution", openvdb::Vec3IMetadata(openvdb::Vec3i(8, 6, 9)));
+    density->tree().setValue(openvdb::Coord(1, 1, 1), 1.0f);
+    openvdb::io::File((folder / "fluid_data_0001.vdb").string()).write({density});
+    const auto sceneWith = [](const std::string& dimensions) {
+        return nlohmann::json::parse(R"({
+          "grid": {"resolution": [8, 8, 8], "bounds": {"min": [0.5, 2.5, -2.5], "max": [1.5, 3.5, -1.5]}},
+          "lights": [{"type": "point", "position": [0, 5, 0], "power": 1}],
+          "volume": {"path": "fluid_data_####.vdb", "preset": "blender", "grids": {"temperature": "", "flame": "",
+                     "velocity": ""}, "blender_domain": {"location": [1, 2, 3], "dimensions": )" +
+                                     dimensions + "}}}");
+    };
+    try {
+        SceneFields refused(parseScene(sceneWith("[1.6, 1.2, 2.0]"), (folder / "scene.json").string()));
+        FAIL() << "an adaptive domain's cache was stretched over the whole domain";
+    } catch (const InputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find("fluid_data_0001.vdb: grid \"density\": expected file_base_resolution = "
+                               "volume.blender_domain.dimensions / the file's voxel of 0.125 m, each rounded "
+                               "(12.8 × 9.6 × 16), found 8 × 6 × 9: "),
+                  std::string::npos)
+            << message;
+        EXPECT_NE(message.find("adaptive domain"), std::string::npos) << message;
+    }
+    // The dimensions that make 8 × 6 × 9 cells of 0.125 m (1.0 × 0.75 × 1.125 m, within rounding) are taken.
+    EXPECT_NO_THROW(SceneFields(parseScene(sceneWith("[1.0, 0.75, 1.125]"), (folder / "scene.json").string())));
+    fs::remove_all(folder);
+}
+
+// Blender's noise cache (fluid_noise_####.vdb, what Quick Smoke renders):
+// its density is the grid density_noise, and it holds no heat, flame or
+// velocity. The preset used to look for density, temperature, flame and
+// velocity there and refuse the file until four grid names were given; now
+// it reads density_noise by the file's name, placed as the data cache is.
+TEST(VolumePlacement, BlendersNoiseCacheIsReadByItsGridNames) {
+    const fs::path folder = fs::path(::testing::TempDir()) / "eikon_blender_noise";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    openvdb::initialize();
+    const glm::ivec3 resolution(8, 8, 8);  // a 1 m cube at resolution_max 4 with noise upres 2
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density_noise");
+    density->setTransform(openvdb::math::Transform::createLinearTransform(1.0 / 8));
+    density->insertMeta("file_base_resolution",
+                        openvdb::Vec3IMetadata(openvdb::Vec3i(resolution.x, resolution.y, resolution.z)));
+    auto accessor = density->getAccessor();
+    for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 8; ++i) accessor.setValue(openvdb::Coord(i, j, k), float(i + 2 * j + 4 * k));
+    openvdb::io::File((folder / "fluid_noise_0001.vdb").string()).write({density});
+    const nlohmann::json root = nlohmann::json::parse(R"({
+      "grid": {"resolution": [4, 4, 4], "bounds": {"min": [-0.25, 0.25, -0.25], "max": [0.25, 0.75, 0.25]}},
+      "lights": [{"type": "point", "position": [0, 5, 0], "power": 1}],
+      "volume": {"path": "fluid_noise_####.vdb", "preset": "blender",
+                 "blender_domain": {"location": [0, 0, 0.5], "dimensions": [1, 1, 1]}}})");
+    const SceneFields fields(parseScene(root, (folder / "scene.json").string()));
+    const auto arrays = fields.exportArrays();
+    ASSERT_EQ(arrays.size(), 1u) << "density alone: no temperature, flame or velocity";
+    ASSERT_EQ(arrays[0].name, "density");
+    const GridSpec& grid = fields.fields().grid;
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i) {
+                const glm::dvec3 x = grid.cellCentre(i, j, k);
+                const glm::dvec3 blender(x.x, -x.z, x.y);  // eikon's (x, y, z) is Blender's (x, −z, y)
+                const glm::dvec3 u = (blender - glm::dvec3(0, 0, 0.5) + 0.5) * 8.0 - 0.5;  // the cache's cell coordinate
+                EXPECT_NEAR(arrays[0].values[grid.linearIndex(i, j, k)], u.x + 2.0 * u.y + 4.0 * u.z, 1e-4)
+                    << i << ", " << j << ", " << k;
+            }
+    fs::remove_all(folder);
+}
+
+// A domain whose origin was moved off its box's centre: its Location is the
+// origin, and the preset put the cache's box centred there, silently off by
+// the origin's move (0.8 m in the round trip that found it). `center`, the
+// box's centre in Blender's world, places it: a cache given `center` lands
+// exactly as one whose origin is at that centre, and `location` beside
+// `center` is refused.
+TEST(VolumePlacement, ABlenderDomainWithAMovedOriginIsPlacedByItsCentre) {
+    const fs::path folder = fs::path(::testing::TempDir()) / "eikon_blender_origin";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    openvdb::initialize();
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->setTransform(openvdb::math::Transform::createLinearTransform(1.0 / 8));
+    density->insertMeta("file_base_resolution", openvdb::Vec3IMetadata(openvdb::Vec3i(8, 8, 8)));
+    auto accessor = density->getAccessor();
+    for (int k = 0; k < 8; ++k)
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 8; ++i) accessor.setValue(openvdb::Coord(i, j, k), float(i + 2 * j + 4 * k));
+    openvdb::io::File((folder / "fluid_data_0001.vdb").string()).write({density});
+    // The origin at (0, 0, 0), the box's centre 0.8 m above it, turned 90° about z.
+    const auto sceneWith = [](const std::string& placement) {
+        return nlohmann::json::parse(R"({
+          "grid": {"resolution": [4, 4, 4], "bounds": {"min": [-0.25, 0.55, -0.25], "max": [0.25, 1.05, 0.25]}},
+          "lights": [{"type": "point", "position": [0, 5, 0], "power": 1}],
+          "volume": {"path": "fluid_data_####.vdb", "preset": "blender", "grids": {"temperature": "", "flame": "",
+                     "velocity": ""}, "blender_domain": {)" + placement +
+                                     R"(, "rotation_deg": [0, 0, 90], "dimensions": [1, 1, 1]}}})");
+    };
+    const SceneFields fields(parseScene(sceneWith(R"("center": [0, 0, 0.8])"), (folder / "scene.json").string()));
+    const auto values = fields.exportArrays()[0].values;
+    const GridSpec& grid = fields.fields().grid;
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i) {
+                const glm::dvec3 x = grid.cellCentre(i, j, k);
+                const glm::dvec3 blender(x.x, -x.z, x.y);
+                const glm::dvec3 q = blender - glm::dvec3(0, 0, 0.8);    // from the box's centre
+                const glm::dvec3 local(q.y, -q.x, q.z);                   // turned back by −90° about z
+                const glm::dvec3 u = (local + 0.5) * 8.0 - 0.5;
+                EXPECT_NEAR(values[grid.linearIndex(i, j, k)], u.x + 2.0 * u.y + 4.0 * u.z, 1e-4) << i << j << k;
+            }
+    try {
+        SceneFields refused(
+            parseScene(sceneWith(R"("center": [0, 0, 0.8], "location": [0, 0, 0])"), (folder / "scene.json").string()));
+        FAIL() << "center and location together";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("volume.blender_domain.center: expected either `center` or `location`"),
+                  std::string::npos)
+            << error.what();
+    }
+    fs::remove_all(folder);
+}
+
+// grid.fit "volume": the grid's bounds become the box of the volume's
+// active voxels as the placement turns them (whole voxels −4 … 4 of
+// 0.125 m: ±0.5625 m), here scaled 2× along x, turned 90° about z and
+// moved by (1, 2, 3): x ±0.5625, y ±1.125 about (1, 2, 3), worked out by hand.
+TEST(VolumePlacement, GridFitVolumeSizesTheGridToTheTurnedVolume) {
+    const fs::path folder = fs::path(::testing::TempDir()) / "eikon_grid_fit";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    test::writeVdbFile(folder / "cache.vdb", {{"density", 1, [](double, double, double, int) { return 1.0f; }}}, 0.125,
+                       -0.5, 0.5);
+    const auto sceneWith = [](const std::string& grid, const std::string& volume) {
+        return nlohmann::json::parse(R"({"grid": )" + grid + R"(,
+          "lights": [{"type": "point", "position": [0, 5, 0], "power": 1}])" + volume + "}");
+    };
+    const std::string volume = R"(, "volume": {"path": "cache.vdb", "grids": {"temperature": ""},
+        "transform": {"translate": [1, 2, 3], "rotate_deg": [0, 0, 90], "scale": [2, 1, 1]}})";
+    const std::string scenePath = (folder / "scene.json").string();
+    const Scene scene = parseScene(sceneWith(R"({"resolution": [8, 16, 8], "fit": "volume"})", volume), scenePath);
+    const glm::dvec3 expectedMin(0.4375, 0.875, 2.4375), expectedMax(1.5625, 3.125, 3.5625);
+    for (int axis = 0; axis < 3; ++axis) {
+        EXPECT_NEAR(scene.grid.boundsMin[axis], expectedMin[axis], 1e-12) << axis;
+        EXPECT_NEAR(scene.grid.boundsMax[axis], expectedMax[axis], 1e-12) << axis;
+    }
+    const auto refusal = [&](const std::string& grid, const std::string& withVolume) {
+        try {
+            parseScene(sceneWith(grid, withVolume), scenePath);
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("nothing refused");
+    };
+    EXPECT_NE(refusal(R"({"fit": "volume", "bounds": {"min": [0, 0, 0], "max": [1, 1, 1]}})", volume)
+                  .find("grid.bounds: expected no bounds beside fit \"volume\""),
+              std::string::npos);
+    EXPECT_NE(refusal(R"({"fit": "volume"})", "").find("grid.fit: expected a `volume` section to fit the grid to"),
+              std::string::npos);
+    fs::remove_all(folder);
+}
+
 }  // namespace
 }  // namespace eikon::sim
