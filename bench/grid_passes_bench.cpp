@@ -5,7 +5,11 @@
 // the reference labels), each timed to completion with glFinish — the
 // native stages' reads of their input textures and uploads of their
 // outputs included — and the native kernels alone (smoothing, gradient,
-// pyramid, labels). Counter: ns_per_cell (wall time per cell of the grid).
+// pyramid, labels). Counters per cell of the grid: ns_per_cell (wall time)
+// and cpu_ns_per_cell (the process's CPU time, every thread — llvmpipe's
+// and TBB's — included: the work done, which a shared machine's load does
+// not change).
+#include "bench/ProcessCpuTime.h"
 #include "bridge/grid/FieldSet.h"
 #include "gl/GlContext.h"
 #include "render/stages/FieldTextures.h"
@@ -59,16 +63,21 @@ render::StageDevice deviceOf(const benchmark::State& state) {
 
 template <typename Work>
 void timeEach(benchmark::State& state, std::size_t cells, Work&& work) {
-    double seconds = 0.0;
+    work();  // once untimed: the first run allocates and touches its arrays
+    glFinish();
+    double seconds = 0.0, cpuMs = 0.0;
     for (auto _ : state) {
+        const double cpuStart = bench::processCpuMs();
         const auto start = std::chrono::steady_clock::now();
         work();
         glFinish();
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         state.SetIterationTime(elapsed);
         seconds += elapsed;
+        cpuMs += bench::processCpuMs() - cpuStart;
     }
     state.counters["ns_per_cell"] = 1e9 * seconds / double(state.iterations()) / double(cells);
+    state.counters["cpu_ns_per_cell"] = 1e6 * cpuMs / double(state.iterations()) / double(cells);
 }
 
 void BM_PrepareStage(benchmark::State& state) {
