@@ -107,9 +107,9 @@ void BM_NativeKernels(benchmark::State& state) {
     const std::vector<float> weights = render::gaussianHalfKernel(1.5);
     std::vector<float> index = fields.deltaIndex, scratch;
     std::vector<glm::vec4> gradient, pyramid, labels;
-    std::vector<glm::vec3> kappa(fields.grid.cellCount());
+    std::vector<glm::vec4> kappa(fields.grid.cellCount());
     for (std::size_t cell = 0; cell < kappa.size(); ++cell)
-        kappa[cell] = {fields.extinction[3 * cell], fields.extinction[3 * cell + 1], fields.extinction[3 * cell + 2]};
+        kappa[cell] = {fields.extinction[3 * cell], fields.extinction[3 * cell + 1], fields.extinction[3 * cell + 2], 0.0f};
     const shader::OctreeLabelRule rule{0.002f, 0.002f, 1.0f, 0.06f, 0.004f, 0.014f, 0.01f};
     const int kernel = static_cast<int>(state.range(1));
     if (kernel == 3) render::octreePyramidNative({index.data(), kappa.data(), nullptr}, r, pyramid);

@@ -21,11 +21,11 @@ struct OctreeRangeKernel {
         const std::size_t at = render::cellOffset(cell, cells_);
         float kappa = 0.0f;
         if (inputs_.extinction) {
-            const vec3 kappa3 = inputs_.extinction[at];
+            const vec4 kappa3 = inputs_.extinction[at];
             kappa = max(kappa3.r, max(kappa3.g, kappa3.b));
         }
         if (inputs_.emission) {
-            const vec3 glow = inputs_.emission[at];
+            const vec4 glow = inputs_.emission[at];
             if (max(glow.r, max(glow.g, glow.b)) > 0.0f) kappa = max(kappa, 1e-30f);
         }
         return kappa;

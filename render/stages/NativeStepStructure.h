@@ -16,8 +16,8 @@ namespace eikon::render {
 // Level-0 inputs, one entry a cell (x fastest); null where the field is absent.
 struct OctreeRangeInputs {
     const float* smoothedIndex = nullptr;
-    const glm::vec3* extinction = nullptr;  // κ per channel
-    const glm::vec3* emission = nullptr;    // ε per channel
+    const glm::vec4* extinction = nullptr;  // κ per channel (rgb; the textures' RGBA texels)
+    const glm::vec4* emission = nullptr;    // ε per channel (rgb)
 };
 
 // Every level of the min/max pyramid into `pyramid`, a texture of

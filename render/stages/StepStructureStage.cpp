@@ -89,12 +89,13 @@ void StepStructureStage::runNative(const gl::Texture3D& smoothedIndex, const Fie
     OctreeRangeInputs inputs{hostIndex_.data()};
     if (hasExtinction_) {
         hostExtinction_.resize(cells);
-        downloadTexels(fields.extinction(), GL_RGB, hostExtinction_.data(), cells * sizeof(glm::vec3));
+        // As the texels are stored (RGBA32F): a copy, where RGB would be converted texel by texel.
+        downloadTexels(fields.extinction(), GL_RGBA, hostExtinction_.data(), cells * sizeof(glm::vec4));
         inputs.extinction = hostExtinction_.data();
     }
     if (hasEmission_) {
         hostEmission_.resize(cells);
-        downloadTexels(fields.emission(), GL_RGB, hostEmission_.data(), cells * sizeof(glm::vec3));
+        downloadTexels(fields.emission(), GL_RGBA, hostEmission_.data(), cells * sizeof(glm::vec4));
         inputs.emission = hostEmission_.data();
     }
     octreePyramidNative(inputs, grid_.resolution, hostPyramid_);

@@ -74,9 +74,8 @@ private:
     gl::Program minmaxProgram_;  // compute shaders only
     gl::Program labelProgram_;   // compute shaders only
     gl::Texture3D pyramid_;  // every level, placed by common/octree_levels.glsl; compute shaders only
-    std::vector<float> hostIndex_;                          // native only
-    std::vector<glm::vec3> hostExtinction_, hostEmission_;  // native only
-    std::vector<glm::vec4> hostPyramid_, hostLabels_;       // native only
+    std::vector<float> hostIndex_;                                               // native only
+    std::vector<glm::vec4> hostExtinction_, hostEmission_, hostPyramid_, hostLabels_;  // native only
     gl::Texture3D step_;
     gl::Texture3D reference_;  // with enableReference
     double referenceMinStep_ = 0.0;
