@@ -127,6 +127,7 @@ eikon_test(test_render LABELS integration LIBS eikon_io eikon_render eikon_sim S
   tests/integration/test_gpu_contract.cpp
   tests/integration/test_memory_estimate.cpp
   tests/integration/test_step_structure.cpp
+  tests/integration/test_grid_pass_devices.cpp
   tests/integration/test_mirage.cpp
   tests/integration/test_wavefront_cost.cpp
   tests/integration/test_shared_light_pass.cpp

@@ -1,7 +1,6 @@
-// One axis of the separable Gaussian that smooths δn before its gradient is
-// taken ([Sun08] §4.1: σ = window/6, 9³ by default), so ∇n is
-// finite and rays bend smoothly across interfaces. Weights come from the C++
-// side, normalised to sum to one; samples past the grid take the edge value.
+// One axis of the separable Gaussian that smooths δn (common/index_smoothing.glsl)
+// over the grid. Weights come from the C++ side (render/stages/GaussianKernel.h),
+// normalised to sum to one.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 
 layout(binding = kIndexTexture) uniform sampler3D source_texture;  // r: δn
@@ -12,15 +11,14 @@ uniform int radius;
 uniform ivec3 axis;
 uniform float weights[MAX_RADIUS + 1];  // weights[|offset|]
 
+float smoothing_source(ivec3 cell) { return texelFetch(source_texture, cell, 0).r; }
+float smoothing_weight(int offset) { return weights[offset]; }
+
+#include "common/index_smoothing.glsl"
+
 void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID);
     ivec3 size = textureSize(source_texture, 0);
     if (any(greaterThanEqual(cell, size))) return;
-    float sum = weights[0] * texelFetch(source_texture, cell, 0).r;
-    for (int offset = 1; offset <= radius; ++offset) {
-        ivec3 before = clamp(cell - offset * axis, ivec3(0), size - 1);
-        ivec3 after = clamp(cell + offset * axis, ivec3(0), size - 1);
-        sum += weights[offset] * (texelFetch(source_texture, before, 0).r + texelFetch(source_texture, after, 0).r);
-    }
-    imageStore(target_image, cell, vec4(sum));
+    imageStore(target_image, cell, vec4(smoothed_along_axis(cell, size, axis, radius)));
 }

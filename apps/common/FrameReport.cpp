@@ -166,7 +166,10 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
         stages.push_back({{"name", "write_fields"}, {"ran", true}, {"ms", produced.writeFieldsMs}});
     }
     for (const auto& stage : result.stages) {
-        stages.push_back({{"name", stage.name}, {"ran", stage.ran}, {"ms", stage.milliseconds}});
+        stages.push_back({{"name", stage.name},
+                          {"ran", stage.ran},
+                          {"ms", stage.milliseconds},
+                          {"device", render::stageDeviceName(stage.device)}});
         if (!stage.skippedBecause.empty()) stages.back()["reason"] = stage.skippedBecause;
     }
     nlohmann::json report{{"frame", frame},

@@ -1,7 +1,9 @@
-// Where a simulation runs: the CPU (TBB) or the GPU (OpenGL compute passes,
-// sim/gpu). `auto` takes the GPU where the renderer's OpenGL context is a
-// hardware GPU and the CPU under a software rasterizer, where the CPU code
-// measured faster (docs/benchmarks-gpu-solver.md).
+// Where a simulation (sim.device) or the renderer's grid passes
+// (render.device) run: the CPU (TBB) or the GPU (OpenGL compute passes,
+// sim/gpu, render/stages). `auto` takes the GPU where the renderer's OpenGL
+// context is a hardware GPU and the CPU under a software rasterizer, where
+// the CPU code measured faster (docs/benchmarks-gpu-solver.md,
+// docs/benchmarks-cpu.md).
 #pragma once
 
 namespace eikon {

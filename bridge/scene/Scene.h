@@ -195,6 +195,9 @@ struct RenderDesc {
     // (none), or draw the surfaces and drop the media, saying so once.
     enum class MethodFallback { None, SurfacesOnly } methodFallback = MethodFallback::None;
     int causticMapTexels = 256;  // image space: texels per edge of each light's caustic map (photons: its square)
+    // Where the grid passes (prepare, step structure) run: compute shaders or
+    // native loops over the same kernels (render/stages/StageDevice.h).
+    ComputeDevice device = ComputeDevice::Auto;
 };
 
 // How photons are marched ([Sun08] §4.2–4.4 and §5.3).

@@ -322,7 +322,7 @@ RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     RenderDesc render;
     const auto fields = node.object({"photons", "width", "height", "seed", "exposure_ev", "step_voxels", "background",
                                      "environment", "write_hdr", "surface_depth", "samples_per_pixel", "error_estimate",
-                                     "warn_error", "method", "method_fallback", "caustic_map_texels"});
+                                     "warn_error", "method", "method_fallback", "caustic_map_texels", "device"});
     if (auto photons = fields.optional("photons")) render.photons = photons->integer(1, kMaxPhotons);
     if (auto width = fields.optional("width")) render.width = static_cast<int>(width->integer(1, kMaxImageEdge));
     if (auto height = fields.optional("height")) render.height = static_cast<int>(height->integer(1, kMaxImageEdge));
@@ -346,6 +346,7 @@ RenderDesc readRender(const JsonReader& node, const std::string& sceneFolder) {
     }
     if (auto estimate = fields.optional("error_estimate")) render.errorEstimate = estimate->boolean();
     if (auto warn = fields.optional("warn_error")) render.warnError = warn->number(kPositive);
+    if (auto device = fields.optional("device")) render.device = readComputeDevice(*device);
     readRenderMethod(fields, render);
     return render;
 }

@@ -15,7 +15,7 @@ namespace {
 // Runs `work` if `needed`, timing it to completion on the GPU.
 template <typename Work>
 StageReport runStage(const char* name, bool needed, Work&& work) {
-    StageReport report{name, needed, 0.0, {}};
+    StageReport report{name, needed, 0.0, {}, StageDevice::Gpu};
     if (!needed) return report;
     const auto start = std::chrono::steady_clock::now();
     work();
@@ -32,6 +32,11 @@ StageReport runOrFill(const char* name, bool needed, const char* closedForm, Wor
     StageReport report = runStage(name, needed, std::forward<Fill>(fill));
     if (report.ran) report.skippedBecause = closedForm;
     report.ran = false;
+    return report;
+}
+
+StageReport onDevice(StageDevice device, StageReport report) {
+    report.device = device;
     return report;
 }
 
@@ -70,7 +75,8 @@ void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, cons
             imageSpaceView_ = std::make_unique<ImageSpaceView>(scene_, receivers_, *raster_, options.recordViewExits);
         return;  // none of the eikonal stages
     }
-    prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_);
+    gridDevice_ = gridPassDevice(scene.render.device);
+    prepare_ = std::make_unique<PrepareStage>(scene.grid, fields_, gridDevice_);
     // Photons light receivers and in-scattering; a scene with neither has no
     // photon stage unless the caller asks for the photons' tallies.
     const bool photonsWanted = tracesLight(scene, fields_.hasScattering()) || options.tracePhotons;
@@ -78,7 +84,7 @@ void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, cons
     const bool drawsView = options.drawsImage && !scene.diagnostic;
     if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree && (photonsWanted || drawsView))
         stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
-                                                              fields_.hasEmission());
+                                                              fields_.hasEmission(), gridDevice_);
     if (photonsWanted)
         photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
     // The lattice diffuses what the photons scattered, on the share that holds the whole pass.
@@ -108,7 +114,7 @@ void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, cons
             stepStructure_->enableReference(referenceStep);
         } else {
             referenceSteps_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
-                                                              fields_.hasEmission());
+                                                                   fields_.hasEmission(), gridDevice_);
             referenceSteps_->enableReference(referenceStep);
         }
         errorEstimate_ = std::make_unique<ErrorEstimateStage>(scene_, fields_, receivers_, stepStructure_ != nullptr);
@@ -233,20 +239,22 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     const bool emptyOfExtinction =  // host κ is there where the medium is uniform
         uniformMedium_ && (fields.extinction.floats == 0 ||
                            std::max({fields.extinction.host[0], fields.extinction.host[1], fields.extinction.host[2]}) <= 0.0f);
-    result.stages.push_back(runOrFill("prepare", indexChanged, uniformIndex_ ? kUniformIndexReason : nullptr,
-                                      [&] { prepare_->run(fields_); },
-                                      [&] { prepare_->fillUniform(fields_, deltaIndex); }));
+    result.stages.push_back(onDevice(gridDevice_, runOrFill("prepare", indexChanged, uniformIndex_ ? kUniformIndexReason : nullptr,
+                                                            [&] { prepare_->run(fields_); },
+                                                            [&] { prepare_->fillUniform(fields_, deltaIndex); })));
     // Smoothing a uniform δn leaves it as it is.
     const gl::Texture3D& smoothedIndex = uniformIndex_ ? fields_.index() : prepare_->smoothedIndex(fields_);
     const char* uniformSteps = uniformMedium_ ? kUniformMediumReason : nullptr;
     if (stepStructure_)
-        result.stages.push_back(runOrFill("step_structure", indexChanged || extinctionChanged, uniformSteps,
-                                          [&] { stepStructure_->run(smoothedIndex, fields_); },
-                                          [&] { stepStructure_->fillUniform(emptyOfExtinction); }));
+        result.stages.push_back(onDevice(gridDevice_, runOrFill("step_structure", indexChanged || extinctionChanged,
+                                                                uniformSteps,
+                                                                [&] { stepStructure_->run(smoothedIndex, fields_); },
+                                                                [&] { stepStructure_->fillUniform(emptyOfExtinction); })));
     if (referenceSteps_)
-        result.stages.push_back(runOrFill("reference_steps", indexChanged || extinctionChanged, uniformSteps,
-                                          [&] { referenceSteps_->run(smoothedIndex, fields_); },
-                                          [&] { referenceSteps_->fillUniform(emptyOfExtinction); }));
+        result.stages.push_back(onDevice(gridDevice_, runOrFill("reference_steps", indexChanged || extinctionChanged,
+                                                                uniformSteps,
+                                                                [&] { referenceSteps_->run(smoothedIndex, fields_); },
+                                                                [&] { referenceSteps_->fillUniform(emptyOfExtinction); })));
     if (photons_)
         result.stages.push_back(runStage("photons", photonsNeeded, [&] {
             last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);

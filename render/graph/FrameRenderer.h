@@ -42,7 +42,9 @@ struct StageReport {
     // Why a stage whose inputs changed did not run (render/graph/UniformMedium.h);
     // empty where it ran or nothing it reads changed. `milliseconds` is then
     // the time of what was written in its place.
-    std::string skippedBecause;
+    std::string skippedBecause;    // Compute shaders, or native loops over the same kernels (the grid
+    // passes under render.device, render/stages/StageDevice.h).
+    StageDevice device = StageDevice::Gpu;
 };
 
 // Of an image-space frame (render.method "image_space").
@@ -157,6 +159,7 @@ private:
     Scene scene_;
     FieldTextures fields_;
     ReceiverMaps receivers_;
+    StageDevice gridDevice_ = StageDevice::Gpu;  // of prepare and the step structures
     std::unique_ptr<PrepareStage> prepare_;
     std::unique_ptr<StepStructureStage> stepStructure_;  // octree step policy only
     std::unique_ptr<PhotonStage> photons_;

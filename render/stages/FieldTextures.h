@@ -52,6 +52,7 @@ public:
     const gl::Buffer& gridBlock() const { return gridBlock_; }
     const gl::Texture3D& index() const { return index_; }
     const gl::Texture3D& extinction() const { return extinction_; }
+    const gl::Texture3D& emission() const { return emission_; }
     gl::Texture3D& gradient() { return gradient_; }
     bool hasExtinction() const { return static_cast<bool>(extinction_.id()); }
     bool hasScattering() const { return static_cast<bool>(scattering_.id()); }

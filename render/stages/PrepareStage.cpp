@@ -4,17 +4,19 @@
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
 #include "render/stages/GaussianKernel.h"
+#include "render/stages/NativePrepare.h"
 
 namespace eikon::render {
 
-PrepareStage::PrepareStage(const GridDesc& grid, const FieldTextures& fields)
-    : kernel_(gaussianHalfKernel(grid.smoothingSigmaVoxels, grid.smoothingWindowVoxels)),
-      gradientProgram_(gl::compileComputeProgram("prepare_gradient.comp")) {
+PrepareStage::PrepareStage(const GridDesc& grid, const FieldTextures& fields, StageDevice device)
+    : device_(device), kernel_(gaussianHalfKernel(grid.smoothingSigmaVoxels, grid.smoothingWindowVoxels)) {
+    if (device_ == StageDevice::Gpu) gradientProgram_ = gl::compileComputeProgram("prepare_gradient.comp");
     if (kernel_.size() > 1) {
-        smoothProgram_ = gl::compileComputeProgram("smooth_index.comp");
+        if (device_ == StageDevice::Gpu) smoothProgram_ = gl::compileComputeProgram("smooth_index.comp");
         const glm::ivec3 r = fields.grid().resolution;
-        for (auto& texture : scratch_)
-            texture = gl::Texture3D(GL_R32F, r.x, r.y, r.z, gl::gridResource("the index smoothing's scratch", r.x, r.y, r.z));
+        // The native loops keep their scratch in host memory: they need only the result's texture.
+        for (int i = device_ == StageDevice::Cpu ? 1 : 0; i < 2; ++i)
+            scratch_[i] = gl::Texture3D(GL_R32F, r.x, r.y, r.z, gl::gridResource("the index smoothing's scratch", r.x, r.y, r.z));
     }
 }
 
@@ -23,6 +25,27 @@ const gl::Texture3D& PrepareStage::smoothedIndex(const FieldTextures& fields) co
 }
 
 void PrepareStage::run(FieldTextures& fields) {
+    if (device_ == StageDevice::Cpu)
+        runNative(fields);
+    else
+        runCompute(fields);
+}
+
+void PrepareStage::runNative(FieldTextures& fields) {
+    const glm::ivec3 r = fields.grid().resolution;
+    hostIndex_.resize(static_cast<std::size_t>(fields.grid().cellCount()));
+    glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // after any shader's writes to δn
+    downloadTexels(fields.index(), GL_RED, hostIndex_.data(), hostIndex_.size() * sizeof(float));
+    if (kernel_.size() > 1) {
+        smoothIndexNative(hostIndex_, r, kernel_, hostScratch_);
+        scratch_[1].upload(GL_RED, GL_FLOAT, hostIndex_.data());  // where smoothedIndex() looks
+    }
+    indexGradientNative(hostIndex_, r, glm::vec3(fields.grid().voxelSize()), hostGradient_);
+    fields.gradient().upload(GL_RGBA, GL_FLOAT, hostGradient_.data());
+    gl::checkpoint("prepare stage (native)");
+}
+
+void PrepareStage::runCompute(FieldTextures& fields) {
     const glm::ivec3 r = fields.grid().resolution;
     if (kernel_.size() > 1) {
         // x: raw → scratch 0, y: scratch 0 → scratch 1, z: scratch 1 → scratch 0; the swap below

@@ -1,8 +1,12 @@
-// The step-size structure of [Sun08] (§4.2, §5.3) on the GPU: a
-// min/max pyramid of δn (shaders/octree_minmax.comp), then per voxel the
-// level of the largest octree node around it whose index varies by less than
-// ε (no step cap) or ε′ (step capped), and whose extinction varies by less
-// than kOpticalDepthTolerance across it, in shaders/octree_label.comp.
+// The step-size structure of [Sun08] (§4.2, §5.3): a min/max pyramid of δn
+// (common/octree_ranges.glsl), then per voxel the level of the largest
+// octree node around it whose index varies by less than ε (no step cap) or
+// ε′ (step capped), and whose extinction varies by less than
+// kOpticalDepthTolerance across it (common/octree_labels.glsl); as compute
+// shaders (octree_minmax.comp, octree_label.comp) or as native loops over
+// the same kernels (NativeStepStructure.h), which read the smoothed δn, κ and
+// ε from their textures, keep the pyramid in host memory and write the
+// labels to the textures the compute shaders write.
 // Rebuilt whenever the index or extinction changes (emission shares κ's
 // version; an emitting voxel is never an empty node).
 //
@@ -17,6 +21,12 @@
 #include "bridge/scene/Scene.h"
 #include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
+#include "render/stages/StageDevice.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <vector>
 
 namespace eikon::render {
 
@@ -29,7 +39,9 @@ glm::ivec3 stepPyramidSize(const glm::ivec3& cells);
 
 class StepStructureStage {
 public:
-    StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction, bool hasEmission);
+    StepStructureStage(const GridSpec& grid, const TracerDesc& tracer, bool hasExtinction, bool hasEmission,
+                       StageDevice device = StageDevice::Gpu);
+    StageDevice device() const { return device_; }
 
     void run(const gl::Texture3D& smoothedIndex, const FieldTextures& fields);
     // In place of run() where δn and κ each hold one value in every cell and
@@ -49,14 +61,21 @@ public:
     const gl::Texture3D& referenceStepTexture() const { return reference_; }
 
 private:
-    void label(const gl::Texture3D& target, double epsilon, double epsilonPrime, double minStep);
+    void runCompute(const gl::Texture3D& smoothedIndex, const FieldTextures& fields);
+    void runNative(const gl::Texture3D& smoothedIndex, const FieldTextures& fields);
+    // Labels `target` from the pyramid (on the stage's device).
+    void label(gl::Texture3D& target, double epsilon, double epsilonPrime, double minStep);
 
     GridSpec grid_;
     TracerDesc tracer_;
+    bool hasExtinction_, hasEmission_;
+    StageDevice device_;
     int levels_ = 1;
-    gl::Program minmaxProgram_;
-    gl::Program labelProgram_;
-    gl::Texture3D pyramid_;  // every level, placed by common/octree_levels.glsl
+    gl::Program minmaxProgram_;  // compute shaders only
+    gl::Program labelProgram_;   // compute shaders only
+    gl::Texture3D pyramid_;  // every level, placed by common/octree_levels.glsl; compute shaders only
+    std::vector<float> hostIndex_;                                               // native only
+    std::vector<glm::vec4> hostExtinction_, hostEmission_, hostPyramid_, hostLabels_;  // native only
     gl::Texture3D step_;
     gl::Texture3D reference_;  // with enableReference
     double referenceMinStep_ = 0.0;

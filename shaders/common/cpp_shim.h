@@ -1,9 +1,11 @@
 // C++ side of the GLSL/C++ shim (GLSL side: shaders/common/glsl_prelude.glsl).
 // Including a shared .glsl file after this header compiles the very code the
 // GPU runs into namespace eikon::shader, so C++ tests can check it. This
-// header includes every shared file but integrators.glsl, which needs its
-// includer's field_at (tests/unit/test_integrators.cpp); the other files of
-// shaders/common declare GPU blocks and are GLSL only.
+// header includes every shared file but those that need their includer's
+// accessors: integrators.glsl (field_at, tests/unit/test_integrators.cpp) and
+// the grid passes' kernels (index_smoothing, index_gradient, octree_ranges,
+// octree_labels: render/stages/NativePrepare.cpp, NativeStepStructure.cpp);
+// the other files of shaders/common declare GPU blocks and are GLSL only.
 #pragma once
 
 #include "bridge/layout/GpuLayouts.h"
@@ -49,5 +51,8 @@ namespace {
 #include "shaders/common/lattice_phase.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
+
+// Types, with external linkage: C++ code outside this header names them.
+#include "shaders/common/octree_label_rule.glsl"
 
 }  // namespace eikon::shader

@@ -150,6 +150,18 @@ TEST(SceneParser, NewKeysTakeDefaults) {
     }
 }
 
+// render.device: where the grid passes run (render/stages/StageDevice.h).
+TEST(SceneParser, RenderDeviceNamesWhereTheGridPassesRun) {
+    json scene = validScene();
+    EXPECT_EQ(parseScene(scene, "test.json").render.device, ComputeDevice::Auto);
+    scene["render"]["device"] = "cpu";
+    EXPECT_EQ(parseScene(scene, "test.json").render.device, ComputeDevice::Cpu);
+    scene["render"]["device"] = "gpu";
+    EXPECT_EQ(parseScene(scene, "test.json").render.device, ComputeDevice::Gpu);
+    scene["render"]["device"] = "native";
+    expectErrorAt(scene, "render.device", "one of");
+}
+
 TEST(SceneParser, MultipleScatteringKeys) {
     json scene = validScene();
     scene["tracer"] = json::parse(R"({"multiple_scattering": "lbm", "lbm_directions": 14, "lbm_tolerance": 1e-5,
