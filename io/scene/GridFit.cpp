@@ -18,6 +18,8 @@ bool readGridFit(const JsonObjectReader& grid) {
 
 void fitGridToVolume(const JsonReader& fit, Scene& scene) {
     if (!scene.volume) fit.fail("a `volume` section to fit the grid to", "\"volume\" without one");
+    if (scene.volume->format != VolumeDesc::Format::OpenVdb)
+        fit.fail("an OpenVDB volume (its active voxels' box is what the grid fits)", "VTK data (give grid.bounds)");
     std::optional<io::WorldBox> box;
     try {
         box = io::activeVolumeBox(*scene.volume,

@@ -107,6 +107,10 @@ std::optional<WorldBox> activeVolumeBox(const VolumeDesc& desc, const VdbVolumeF
 }
 
 std::string describeVolumeOutsideGrid(const VolumeDesc& desc, const GridSpec& renderGrid) {
+    // VTK data are probed at the grid's cells, and cells they do not cover
+    // keep the ambient medium (io/vtk/VtkVolumeSource): only an OpenVDB
+    // volume's box is compared here.
+    if (desc.format != VolumeDesc::Format::OpenVdb) return {};
     const VdbVolumeFile file(volumeFramePath(desc, desc.frameStart));
     const std::optional<WorldBox> box = activeVolumeBox(desc, file);
     if (!box) return {};

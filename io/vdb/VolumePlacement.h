@@ -32,7 +32,7 @@ std::optional<WorldBox> activeVolumeBox(const VolumeDesc& desc, const VdbVolumeF
 // A warning, with the figures, where the active voxels of the file of
 // rendered frame 0 reach more than half a render cell past `renderGrid`
 // (what lies outside is cut off); empty where they fit or no grid says
-// where they are. InputError as volumePlacement's.
+// where they are, or the volume is VTK data. InputError as volumePlacement's.
 std::string describeVolumeOutsideGrid(const VolumeDesc& desc, const GridSpec& renderGrid);
 
 }  // namespace eikon::io
