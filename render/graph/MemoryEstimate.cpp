@@ -51,7 +51,9 @@ Bytes stepPyramidBytes(const glm::ivec3& resolution) {
 // smoothing's two R32F scratch textures (PrepareStage), the octree's RGBA32F
 // step sizes and pyramid, and with the error estimate its reference step
 // sizes (StepStructureStage; with uniform steps an octree of its own for
-// them, FrameRenderer); a medium that attenuates or scatters fills every
+// them, FrameRenderer) — counted as GL memory, where the compute shaders hold
+// them; the native grid passes (render.device, StageDevice.h) hold the
+// scratch and the pyramid on the host, the same bytes; a medium that attenuates or scatters fills every
 // cell with RGB on the host and RGBA32F on the GPU; the lattice holds its
 // links' densities twice per channel and an RGB fluence (LatticeScattering),
 // in an anisotropic medium also its source's share per link.
