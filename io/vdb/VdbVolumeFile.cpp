@@ -60,6 +60,19 @@ InputError noGridNamed(const fs::path& path, const std::string& name, const std:
     return InputError(path.string(), "a grid named \"" + name + "\"", "the grids " + quotedNames(names));
 }
 
+// The metadata of the grid `name` among `names` (its transform, its file's
+// bounding box and resolution), without its voxels.
+openvdb::GridBase::Ptr gridMetadata(openvdb::io::File& file, const fs::path& path, const std::string& name,
+                                    const std::vector<std::string>& names) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) throw noGridNamed(path, name, names);
+    try {
+        return file.readGridMetadata(name);
+    } catch (const std::exception& error) {
+        throw InputError(path.string() + ": grid \"" + name + "\"", "readable metadata",
+                         std::string("OpenVDB: ") + error.what());
+    }
+}
+
 // Samples `grid` trilinearly at each render cell centre (x fastest),
 // through one accessor per z slice (accessors are not thread-safe).
 template <class GridT, class Sampler, class Store>
@@ -109,16 +122,7 @@ int VdbVolumeFile::componentsOf(const std::string& name) const {
 }
 
 VdbVolumeFile::GridFrame VdbVolumeFile::gridFrame(const std::string& name) const {
-    const std::vector<std::string> names = gridNames();
-    if (std::find(names.begin(), names.end(), name) == names.end())
-        throw noGridNamed(path_, name, names);
-    openvdb::GridBase::Ptr grid;
-    try {
-        grid = grids_->file->readGridMetadata(name);
-    } catch (const std::exception& error) {
-        throw InputError(path_.string() + ": grid \"" + name + "\"", "readable metadata",
-                         std::string("OpenVDB: ") + error.what());
-    }
+    const openvdb::GridBase::Ptr grid = gridMetadata(*grids_->file, path_, name, gridNames());
     GridFrame frame;
     const openvdb::Vec3d voxel = grid->voxelSize();
     frame.voxelSize = glm::dvec3(voxel[0], voxel[1], voxel[2]);
@@ -128,15 +132,7 @@ VdbVolumeFile::GridFrame VdbVolumeFile::gridFrame(const std::string& name) const
 }
 
 std::optional<std::vector<glm::dvec3>> VdbVolumeFile::activeBoxCorners(const std::string& name) const {
-    const std::vector<std::string> names = gridNames();
-    if (std::find(names.begin(), names.end(), name) == names.end()) throw noGridNamed(path_, name, names);
-    openvdb::GridBase::Ptr grid;
-    try {
-        grid = grids_->file->readGridMetadata(name);
-    } catch (const std::exception& error) {
-        throw InputError(path_.string() + ": grid \"" + name + "\"", "readable metadata",
-                         std::string("OpenVDB: ") + error.what());
-    }
+    const openvdb::GridBase::Ptr grid = gridMetadata(*grids_->file, path_, name, gridNames());
     const auto low = grid->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
     const auto high = grid->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
     if (!low || !high) return std::nullopt;

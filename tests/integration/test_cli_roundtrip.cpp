@@ -34,15 +34,7 @@ namespace fs = std::filesystem;
 using eikon::test::Outcome;
 using eikon::test::runEikon;
 
-constexpr const char* kScene = R"({
-  "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
-  "medium": {"index": 1.0},
-  "objects": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.2, "index": 1.5}],
-  "lights": [{"type": "point", "position": [0, 1.5, 0], "power": [10, 10, 10]}],
-  "receivers": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 1, 0], "size": 1.0, "resolution": 32}],
-  "camera": {"position": [0, 1, 2], "target": [0, 0.3, 0], "up": [0, 1, 0], "fov_deg": 45},
-  "render": {"photons": 4096, "width": 32, "height": 24, "seed": 3}
-})";
+constexpr const char* kScene = eikon::test::kSmallSphereScene;
 
 std::string readText(const fs::path& path) {
     std::ifstream file(path, std::ios::binary);
