@@ -74,6 +74,8 @@ struct ByteArray {
     std::vector<std::uint8_t> values;
 };
 
+// Renderers in one process share one OpenGL context: use them from one
+// thread only.
 class Renderer {
 public:
     // The scene from a file, or from JSON text whose relative paths start at
