@@ -45,6 +45,19 @@ std::string text(const fs::path& path) {
     return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
 }
 
+// A BOS scene over the Gaussian bump (bump.vdb) seen by a perspective
+// camera: `sections` adds its render, diagnostic and export sections.
+std::string bosScene(const std::string& sections) {
+    return R"({
+  "grid": {"resolution": [40, 40, 40], "bounds": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
+           "smoothing_sigma_voxels": 0},
+  "volume": {"path": "bump.vdb", "grids": {"density": "", "temperature": "", "delta_index": "dn"},
+             "offset": [0.0125, 0.0125, 0.0125]},
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
+  "camera": {"position": [0, 0, 2], "target": [0, 0, 0], "fov_deg": 25},
+)" + sections + "\n}";
+}
+
 // Frame 0's diagnostic export, read by VTK's own reader.
 vtkSmartPointer<vtkImageData> readDiagnosticExport(const fs::path& out) {
     vtkNew<vtkXMLImageDataReader> reader;
@@ -204,17 +217,10 @@ TEST_F(DiagnosticCli, ShadowgraphExportsTheScreensRelativeIrradiance) {
 // reference without it, frame by frame, and the displacement in pixels
 // (2 components, unit px) in the export.
 TEST_F(DiagnosticCli, BosWritesTheReferencePictureAndTheDisplacement) {
-    std::ofstream(dir_ / "scene.json") << R"({
-  "grid": {"resolution": [40, 40, 40], "bounds": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
-           "smoothing_sigma_voxels": 0},
-  "volume": {"path": "bump.vdb", "grids": {"density": "", "temperature": "", "delta_index": "dn"},
-             "offset": [0.0125, 0.0125, 0.0125]},
-  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
-  "camera": {"position": [0, 0, 2], "target": [0, 0, 0], "fov_deg": 25},
+    std::ofstream(dir_ / "scene.json") << bosScene(R"(
   "render": {"width": 40, "height": 30},
   "diagnostic": {"type": "bos", "background_distance": 1.5, "seed": 3},
-  "export": {"vtk": {"fields": ["delta_index"]}}
-})";
+  "export": {"vtk": {"fields": ["delta_index"]}})");
     const auto outcome = run("", 2);
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
     const fs::path out = dir_ / "out";
@@ -243,16 +249,9 @@ TEST_F(DiagnosticCli, BosWritesTheReferencePictureAndTheDisplacement) {
 // picture's own pixel count; a file that is no image, or none, is refused
 // with exit code 2 naming the key and the file, before anything is written.
 TEST_F(DiagnosticCli, BosReadsItsBackgroundFromAnImageFile) {
-    std::ofstream(dir_ / "scene.json") << R"({
-  "grid": {"resolution": [40, 40, 40], "bounds": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]},
-           "smoothing_sigma_voxels": 0},
-  "volume": {"path": "bump.vdb", "grids": {"density": "", "temperature": "", "delta_index": "dn"},
-             "offset": [0.0125, 0.0125, 0.0125]},
-  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
-  "camera": {"position": [0, 0, 2], "target": [0, 0, 0], "fov_deg": 25},
+    std::ofstream(dir_ / "scene.json") << bosScene(R"(
   "render": {"width": 40, "height": 30, "samples_per_pixel": 1},
-  "diagnostic": {"type": "bos", "background_distance": 1.5, "pattern": "pattern.png"}
-})";
+  "diagnostic": {"type": "bos", "background_distance": 1.5, "pattern": "pattern.png"})");
     // Stripes four pixels wide, sRGB 40 and 220, and a white top row.
     std::vector<std::uint8_t> pattern(40 * 30 * 4, 255);
     for (int j = 1; j < 30; ++j)
