@@ -73,6 +73,14 @@ void checkFinite(const Field& field, const GridSpec& grid, std::size_t count) {
                formatPosition(grid.cellCentre(i, j, k)) + " m");
 }
 
+// A temperature's unit, as volume.fields.temperature_unit names it.
+VolumeDesc::TemperatureUnit temperatureUnit(const std::string& unit) {
+    if (unit == "kelvin") return VolumeDesc::TemperatureUnit::Kelvin;
+    if (unit == "celsius") return VolumeDesc::TemperatureUnit::Celsius;
+    if (unit == "kelvin_above_ambient") return VolumeDesc::TemperatureUnit::KelvinAboveAmbient;
+    refuse("temperature", "the unit \"kelvin\", \"celsius\" or \"kelvin_above_ambient\"", "\"" + unit + "\"");
+}
+
 }  // namespace
 
 FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
@@ -86,7 +94,13 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
         if (slot == std::end(kSlots)) refuse(field.name, "one of " + knownNames(), "an unknown name");
         if (std::find(intake.names.begin(), intake.names.end(), field.name) != intake.names.end())
             refuse(field.name, "each field named once", "it twice");
-        if (!field.values) refuse(field.name, "values", "a null pointer");
+        if (field.buffer && field.name != "delta_index")
+            refuse(field.name, "values in host memory (a GL buffer is taken for delta_index only: the others are "
+                               "mapped on the host)",
+                   "GL buffer " + std::to_string(field.buffer));
+        if (field.buffer && field.values)
+            refuse(field.name, "values or a GL buffer, not both", "both");
+        if (!field.values && !field.buffer) refuse(field.name, "values", "a null pointer");
         if (field.shape != std::array<std::size_t, 3>{nz, ny, nx})
             refuse(field.name, "shape (nz, ny, nx) = " + triple(nz, ny, nx) + ", the scene's grid",
                    triple(field.shape[0], field.shape[1], field.shape[2]));
@@ -97,7 +111,10 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
             refuse(field.name, "the scene's grid box " + box({grid.boundsMin.x, grid.boundsMin.y, grid.boundsMin.z},
                                                               {grid.boundsMax.x, grid.boundsMax.y, grid.boundsMax.z}),
                    box(field.boundsMin, field.boundsMax));
-        checkFinite(field, grid, cells * static_cast<std::size_t>(field.channels));
+        if (!field.unit.empty() && field.name != "temperature")
+            refuse(field.name, "no unit (a temperature's only: its unit is declared)", "\"" + field.unit + "\"");
+        if (!field.unit.empty()) intake.temperatureUnit = temperatureUnit(field.unit);
+        if (field.values) checkFinite(field, grid, cells * static_cast<std::size_t>(field.channels));
         intake.names.push_back(field.name);
     }
     if (std::find(intake.names.begin(), intake.names.end(), "index") != intake.names.end() &&
@@ -107,6 +124,10 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
     for (const Field& field : fields) {
         const FieldSlot& slot = *std::find_if(std::begin(kSlots), std::end(kSlots),
                                               [&](const FieldSlot& s) { return field.name == s.name; });
+        if (field.buffer) {  // read on the GPU, by the renderer
+            intake.deltaIndexBuffer = field.buffer;
+            continue;
+        }
         std::span<const float> values(field.values, cells * static_cast<std::size_t>(field.channels));
         if (slot.rgb && field.channels == 1) {  // grey: the same value in each channel, as a grey grid of a file
             std::vector<float>& channels = intake.expanded.emplace_back(3 * cells);

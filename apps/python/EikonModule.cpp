@@ -70,8 +70,10 @@ eikon::Renderer makeRenderer(const py::object& scene, const std::string& folder)
                        std::string(py::str(py::type::of(scene))));
 }
 
-// set_fields(name=array, …, bounds=((x, y, z), (x, y, z))): `bounds`, in
-// m, is where the arrays lie (the scene's grid box when left out).
+// set_fields(name=array, …, bounds=((x, y, z), (x, y, z)),
+// temperature_unit="kelvin"): `bounds`, in m, is where the arrays lie (the
+// scene's grid box when left out); `temperature_unit` what the temperature
+// holds (eikon::Field::unit: "kelvin", "celsius", "kelvin_above_ambient").
 void setFields(eikon::Renderer& renderer, const py::kwargs& arrays) {
     eikon::Grid grid = renderer.grid();
     if (arrays.contains("bounds")) {
@@ -79,10 +81,21 @@ void setFields(eikon::Renderer& renderer, const py::kwargs& arrays) {
         grid.boundsMin = box.first;
         grid.boundsMax = box.second;
     }
+    std::string unit;
+    if (arrays.contains("temperature_unit")) {
+        if (!py::isinstance<py::str>(arrays["temperature_unit"]))
+            refuse("temperature", "temperature_unit a str (\"kelvin\", \"celsius\" or \"kelvin_above_ambient\")",
+                   std::string(py::str(py::type::of(arrays["temperature_unit"]))));
+        if (!arrays.contains("temperature"))
+            refuse("temperature", "a temperature array beside temperature_unit", "none");
+        unit = arrays["temperature_unit"].cast<std::string>();
+    }
     std::vector<eikon::Field> fields;
     for (const auto& [key, array] : arrays) {
         const std::string name = py::str(key);
-        if (name != "bounds") fields.push_back(fieldOf(name, array, grid));
+        if (name == "bounds" || name == "temperature_unit") continue;
+        fields.push_back(fieldOf(name, array, grid));
+        if (name == "temperature") fields.back().unit = unit;
     }
     renderer.setFields(fields);
 }
@@ -109,7 +122,8 @@ PYBIND11_MODULE(eikon, m) {
              "The next frame's fields as keyword arrays (delta_index, index, temperature, density, flame, "
              "extinction, scattering, anisotropy, emission), C-contiguous float32 of shape (nz, ny, nx) or "
              "(nz, ny, nx, 3), read in place; bounds=((x, y, z), (x, y, z)) in m where they lie (default: the "
-             "scene's grid box).")
+             "scene's grid box); temperature_unit=\"kelvin\", \"celsius\" or \"kelvin_above_ambient\" what the "
+             "temperature holds (default: as the scene's volume reads it, kelvin above ambient).")
         .def("render", &eikon::Renderer::render, py::call_guard<py::gil_scoped_release>(),
              "Renders the current fields.")
         .def(

@@ -123,5 +123,63 @@ class Module(unittest.TestCase):
         self.assertIn("render.width", str(caught.exception))
 
 
+def write_legacy_vtk(path, name, values):
+    """A legacy binary VTK image of cell data `values` (nz, ny, nx) whose
+    cells are the scene's render cells: read back value for value."""
+    nz, ny, nx = values.shape
+    h = 0.5 / 32
+    with open(path, "wb") as f:
+        f.write((f"# vtk DataFile Version 3.0\nheated core\nBINARY\nDATASET STRUCTURED_POINTS\n"
+                 f"DIMENSIONS {nx + 1} {ny + 1} {nz + 1}\nORIGIN 0 0 0\nSPACING {h!r} {h!r} {h!r}\n"
+                 f"CELL_DATA {values.size}\nSCALARS {name} float 1\nLOOKUP_TABLE default\n").encode())
+        f.write(values.astype(">f4").tobytes())
+        f.write(b"\n")
+
+
+class Temperature(unittest.TestCase):
+    """A temperature with its unit declared renders as the same temperature
+    in a VTK file declared the same way (volume.fields.temperature_unit)."""
+
+    def test_kelvin_and_celsius_render_as_the_file_declared_so(self):
+        hot = 400 * bump(0.06)
+        for unit, values in (("kelvin", 293.15 + hot), ("celsius", 20.0 + hot)):
+            values = values.astype(np.float32)
+            with tempfile.TemporaryDirectory() as folder:
+                write_legacy_vtk(os.path.join(folder, "hot.vtk"), "T", values)
+                scene = dict(SCENE, volume={"path": "hot.vtk",
+                                            "fields": {"temperature": "T", "temperature_unit": unit}})
+                from_file = eikon.Renderer(scene, folder)
+                from_file.render()
+            handed = eikon.Renderer(SCENE)
+            handed.set_fields(temperature=values, temperature_unit=unit)
+            handed.render()
+            self.assertTrue(np.array_equal(handed.image(), from_file.image()), unit)
+            self.assertTrue(np.array_equal(handed.radiance(), from_file.radiance()), unit)
+            self.assertTrue(np.array_equal(handed.receiver(0), from_file.receiver(0)), unit)
+            self.assertEqual(handed.report()["photons"], from_file.report()["photons"], unit)
+            self.assertEqual(handed.report()["caller_fields"]["host_bytes_copied"], 0)
+            # The same values read above ambient give another frame: the unit matters.
+            misread = eikon.Renderer(SCENE)
+            misread.set_fields(temperature=values, temperature_unit="kelvin_above_ambient")
+            misread.render()
+            self.assertFalse(np.array_equal(misread.radiance(), from_file.radiance()), unit)
+
+    def test_an_absolute_temperature_without_a_unit_says_how_to_declare_it(self):
+        renderer = eikon.Renderer(SCENE)
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(temperature=(293.15 + 400 * bump(0.06)).astype(np.float32))
+        for word in ("\"temperature\"", "above ambient", "temperature_unit=", "\"kelvin\""):
+            self.assertIn(word, str(caught.exception))
+
+    def test_a_unit_without_a_temperature_or_not_a_str(self):
+        renderer = eikon.Renderer(SCENE)
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(density=bump(0.06), temperature_unit="kelvin")
+        self.assertIn("beside temperature_unit", str(caught.exception))
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(temperature=bump(0.06), temperature_unit=273)
+        self.assertIn("a str", str(caught.exception))
+
+
 if __name__ == "__main__":
     unittest.main()
