@@ -249,12 +249,13 @@ void Renderer::render() {
         const double renderMs = app::renderMilliseconds(*impl.last);
         const app::LoopTiming timing{app::millisecondsSince(start), renderMs, 0.0};
         ++impl.frame;
-        nlohmann::json report = nlohmann::json::parse(
-            app::frameReportJson(impl.frame, impl.source->current(), false, *impl.last, timing, false));
-        report["caller_fields"] = {{"names", impl.given},
-                                   {"host_bytes_copied", impl.copiedBytes},
-                                   {"set_fields_ms", impl.takeMs}};
-        impl.report = report.dump();
+        // eikon run's report line with the caller's fields as its last key,
+        // spliced in rather than parsed and written again.
+        impl.report = app::frameReportJson(impl.frame, impl.source->current(), false, *impl.last, timing, false);
+        const nlohmann::json caller{
+            {"names", impl.given}, {"host_bytes_copied", impl.copiedBytes}, {"set_fields_ms", impl.takeMs}};
+        impl.report.pop_back();  // its closing brace
+        impl.report += ",\"caller_fields\":" + caller.dump() + "}";
         impl.copiedBytes = 0;
         impl.takeMs = 0.0;
         impl.given.clear();
