@@ -315,3 +315,7 @@ add_test(NAME Python.LoopMemory COMMAND ${Python3_EXECUTABLE} -m unittest -v tes
          WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}/tests/python)
 set_tests_properties(Python.LoopMemory PROPERTIES LABELS integration
                      ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/python")
+# eikon.View, the live viewer fed from Python, in a window under Xvfb.
+add_test(NAME Python.View COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24" ${Python3_EXECUTABLE} -m unittest -v test_view
+         WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}/tests/python)
+set_tests_properties(Python.View PROPERTIES LABELS integration ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/python")

@@ -157,6 +157,23 @@ PYBIND11_MODULE(eikon, m) {
             "The fluence (nz, ny, nx, 3) float32 in W/m^2.")
         .def("report", &report, "The last frame's report (a dict, as a line of eikon run's report.jsonl).");
 
+    py::class_<eikon::View>(m, "View")
+        .def(py::init<std::string, int, int>(), py::arg("title") = "eikon", py::arg("width") = 0,
+             py::arg("height") = 0,
+             "The live viewer: a window (an X display) showing each frame handed to show(), scaled to fit; "
+             "width × height pixels, 0: the first frame's size.")
+        .def("show", &eikon::View::show, py::arg("renderer"),
+             "Shows the renderer's last frame and handles the window's events; False once the window is closed "
+             "(a loop's condition: while view.show(r): ...).")
+        .def_property_readonly("is_open", &eikon::View::isOpen)
+        .def(
+            "window_image",
+            [](const eikon::View& v) {
+                eikon::ByteArray a = v.windowImage();
+                return toNumpy(std::move(a.values), a.shape);
+            },
+            "What the window shows: (height, width, 3) uint8 sRGB, row 0 at the top.");
+
     m.def(
         "render_image",
         [](const py::object& scene, const py::kwargs& arrays) {

@@ -156,4 +156,30 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+// The live viewer fed by the caller's loop: a window (GLFW, on an X
+// display) showing each frame it is handed, scaled to fit and centred, as
+// eikon-view shows its frames. Used from the renderers' thread.
+class View {
+public:
+    // `width` × `height` pixels, 0: the first frame's size. The window opens
+    // at the first show().
+    explicit View(std::string title = "eikon", int width = 0, int height = 0);
+    ~View();
+    View(View&&) noexcept;
+    View& operator=(View&&) noexcept;
+
+    // Shows the renderer's last frame (Error before its first, or where no
+    // window can be opened: no display) and handles the window's events;
+    // false, showing nothing, once the user has closed the window.
+    bool show(const Renderer& renderer);
+    bool isOpen() const;
+    // What the window shows, (height, width, 3) sRGB 8-bit, row 0 at the top
+    // (Error before the first show()).
+    ByteArray windowImage() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
 }  // namespace eikon
