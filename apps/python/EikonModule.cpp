@@ -35,8 +35,22 @@ std::string shapeText(const py::array& array) {
     return text + (array.ndim() == 1 ? ",)" : ")");
 }
 
-// A NumPy array as an eikon::Field over `grid`'s box, read in place.
+// eikon.GLBuffer(name): an OpenGL buffer object made in the renderer's
+// context, handed for a field in place of an array (the GPU path,
+// eikon::Field::buffer).
+struct GlBuffer {
+    unsigned name = 0;
+};
+
+// A NumPy array as an eikon::Field over `grid`'s box, read in place, or a
+// GL buffer's name with the grid's shape.
 eikon::Field fieldOf(const std::string& name, const py::handle& object, const eikon::Grid& grid) {
+    if (py::isinstance<GlBuffer>(object)) {
+        const std::array<std::size_t, 3> shape{static_cast<std::size_t>(grid.cells[2]),
+                                               static_cast<std::size_t>(grid.cells[1]),
+                                               static_cast<std::size_t>(grid.cells[0])};
+        return {name, nullptr, shape, 1, grid.boundsMin, grid.boundsMax, {}, object.cast<GlBuffer>().name};
+    }
     if (!py::isinstance<py::array>(object)) refuse(name, "a NumPy array", std::string(py::str(py::type::of(object))));
     const auto array = py::reinterpret_borrow<py::array>(object);
     if (!array.dtype().is(py::dtype::of<float>()))
@@ -106,6 +120,11 @@ PYBIND11_MODULE(eikon, m) {
     m.doc() = "eikon: light through graded-index media, rendered from your own solver's fields (docs/library.md)";
     py::register_exception<eikon::Error>(m, "Error", PyExc_ValueError);
 
+    py::class_<GlBuffer>(m, "GLBuffer", "An OpenGL buffer object's name in the renderer's context, handed for "
+                                        "delta_index in place of an array (the GPU path: copied on the GPU).")
+        .def(py::init([](unsigned name) { return GlBuffer{name}; }), py::arg("name"))
+        .def_readonly("name", &GlBuffer::name);
+
     py::class_<eikon::Renderer>(m, "Renderer")
         .def(py::init(&makeRenderer), py::arg("scene"), py::arg("folder") = ".",
              "A renderer of a scene: a file's path, or a dict as the JSON of a scene file (its relative paths "
@@ -118,10 +137,13 @@ PYBIND11_MODULE(eikon, m) {
                                 py::arg("bounds_min") = g.boundsMin, py::arg("bounds_max") = g.boundsMax);
             },
             "The render grid: shape (nz, ny, nx) of a field, and its box in m.")
+        .def("make_context_current", &eikon::Renderer::makeContextCurrent,
+             "Makes the renderer's OpenGL context current on this thread: buffers made now live in it "
+             "(eikon.GLBuffer).")
         .def("set_fields", &setFields,
              "The next frame's fields as keyword arrays (delta_index, index, temperature, density, flame, "
              "extinction, scattering, anisotropy, emission), C-contiguous float32 of shape (nz, ny, nx) or "
-             "(nz, ny, nx, 3), read in place; bounds=((x, y, z), (x, y, z)) in m where they lie (default: the "
+             "(nz, ny, nx, 3), read in place (delta_index also an eikon.GLBuffer); bounds=((x, y, z), (x, y, z)) in m where they lie (default: the "
              "scene's grid box); temperature_unit=\"kelvin\", \"celsius\" or \"kelvin_above_ambient\" what the "
              "temperature holds (default: as the scene's volume reads it, kelvin above ambient).")
         .def("render", &eikon::Renderer::render, py::call_guard<py::gil_scoped_release>(),

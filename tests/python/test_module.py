@@ -4,6 +4,7 @@ an eikon.Error with eikon's words, after which the renderer renders its
 earlier fields unchanged. Run by ctest (Python.Module) with PYTHONPATH at
 the build folder's python/."""
 
+import ctypes
 import json
 import os
 import tempfile
@@ -179,6 +180,44 @@ class Temperature(unittest.TestCase):
         with self.assertRaises(eikon.Error) as caught:
             renderer.set_fields(temperature=bump(0.06), temperature_unit=273)
         self.assertIn("a str", str(caught.exception))
+
+
+class GpuPath(unittest.TestCase):
+    """δn handed as an OpenGL buffer made in the renderer's context
+    (eikon.GLBuffer) renders as the same array from host memory, bit for bit,
+    and crosses no byte to the host. The buffer is made through libOpenGL
+    (ctypes), as a solver on the GPU would have it."""
+
+    def test_a_gl_buffer_renders_as_the_array(self):
+        gl = ctypes.CDLL("libOpenGL.so.0")
+        values = 0.01 * bump(0.08)
+        host, device = eikon.Renderer(SCENE), eikon.Renderer(SCENE)
+        device.make_context_current()
+        buffer = ctypes.c_uint(0)
+        gl.glCreateBuffers(1, ctypes.byref(buffer))
+        gl.glNamedBufferData(buffer, ctypes.c_ssize_t(values.nbytes), values.ctypes.data_as(ctypes.c_void_p),
+                             0x88E8)  # GL_DYNAMIC_DRAW
+        for step in range(2):  # the second: a solver's next step, written in place
+            if step == 1:
+                values = 0.02 * bump(0.08)
+                device.make_context_current()
+                gl.glNamedBufferSubData(buffer, ctypes.c_ssize_t(0), ctypes.c_ssize_t(values.nbytes),
+                                        values.ctypes.data_as(ctypes.c_void_p))
+            host.set_fields(delta_index=values)
+            host.render()
+            device.set_fields(delta_index=eikon.GLBuffer(buffer.value))
+            device.render()
+            self.assertTrue(np.array_equal(device.image(), host.image()))
+            self.assertTrue(np.array_equal(device.radiance(), host.radiance()))
+            self.assertTrue(np.array_equal(device.receiver(0), host.receiver(0)))
+        self.assertEqual(device.report()["host_bytes_copied"], 0)
+        self.assertEqual(host.report()["host_bytes_copied"], values.nbytes)
+        self.assertGreater(device.receiver(0)[..., 0].max() / device.receiver(0)[..., 0].min(), 1.2, "a caustic")
+        with self.assertRaises(eikon.Error) as caught:
+            device.set_fields(temperature=eikon.GLBuffer(buffer.value))
+        self.assertIn("delta_index only", str(caught.exception))
+        device.make_context_current()
+        gl.glDeleteBuffers(1, ctypes.byref(buffer))
 
 
 if __name__ == "__main__":
