@@ -292,10 +292,14 @@ target_compile_definitions(test_viewer_window PRIVATE
 add_dependencies(test_viewer_window eikon eikon-view)
 
 # The library through its public header alone (include/eikon/eikon.h):
-# fields handed in against the same fields read from an OpenVDB file, and
+# fields handed in against the same fields read from an OpenVDB file (a
+# temperature in each declared unit too), δn in a GL buffer against the same
+# from host memory (the GPU path; the test makes the buffer with epoxy), and
 # each refusal.
-eikon_test(test_library LABELS integration LIBS eikon_library eikon_vdb_test_files nlohmann_json::nlohmann_json
-  SOURCES tests/integration/test_library.cpp)
+eikon_test(test_library LABELS integration
+  LIBS eikon_library eikon_vdb_test_files nlohmann_json::nlohmann_json PkgConfig::EPOXY
+  SOURCES tests/integration/test_library.cpp tests/integration/test_library_temperature.cpp
+          tests/integration/test_library_gpu.cpp)
 # The installed package builds and runs examples/cpp outside the source tree.
 add_test(NAME Library.InstalledPackageBuildsTheExample
          COMMAND ${CMAKE_COMMAND} -DBUILD=${CMAKE_BINARY_DIR} -DSOURCE=${CMAKE_SOURCE_DIR}
@@ -306,3 +310,12 @@ add_test(NAME Python.Module COMMAND ${Python3_EXECUTABLE} -m unittest -v test_mo
          WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}/tests/python)
 set_tests_properties(Python.Module PROPERTIES LABELS integration
                      ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/python")
+# A solver's 100-step loop: resident memory flat, the field not copied.
+add_test(NAME Python.LoopMemory COMMAND ${Python3_EXECUTABLE} -m unittest -v test_loop_memory
+         WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}/tests/python)
+set_tests_properties(Python.LoopMemory PROPERTIES LABELS integration
+                     ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/python")
+# eikon.View, the live viewer fed from Python, in a window under Xvfb.
+add_test(NAME Python.View COMMAND ${XVFB_RUN} -a -s "-screen 0 640x480x24" ${Python3_EXECUTABLE} -m unittest -v test_view
+         WORKING_DIRECTORY ${CMAKE_SOURCE_DIR}/tests/python)
+set_tests_properties(Python.View PROPERTIES LABELS integration ENVIRONMENT "PYTHONPATH=${CMAKE_BINARY_DIR}/python")

@@ -337,9 +337,12 @@ void SceneFields::refreshFromSimulation() {
     validateFields(fields_, sceneFieldOrigin(scene_, volume_ ? volume_->currentFile() : ""));
 }
 
-void SceneFields::writeCallerFields(const VolumeSamples& samples, const std::string& origin) {
-    EIKON_CHECK_MSG(!fluid_, "a scene with a fluid solver makes its own fields");
+VolumeDesc SceneFields::callerOptics(std::optional<VolumeDesc::TemperatureUnit> temperatureUnit) const {
     VolumeDesc optics = scene_.volume ? *scene_.volume : VolumeDesc{};
+    if (temperatureUnit) {  // declared, as by volume.fields.temperature_unit
+        optics.temperatureUnit = *temperatureUnit;
+        optics.implicitTemperatureUnit = false;
+    }
     // A refusal names the caller's fields by the names they were handed as.
     optics.indexGrid = "index";
     optics.deltaIndexGrid = "delta_index";
@@ -347,6 +350,13 @@ void SceneFields::writeCallerFields(const VolumeSamples& samples, const std::str
     optics.scatteringGrid = "scattering";
     optics.anisotropyGrid = "anisotropy";
     optics.emissionGrid = "emission";
+    return optics;
+}
+
+void SceneFields::writeCallerFields(const VolumeSamples& samples, const std::string& origin,
+                                    std::optional<VolumeDesc::TemperatureUnit> temperatureUnit) {
+    EIKON_CHECK_MSG(!fluid_, "a scene with a fluid solver makes its own fields");
+    const VolumeDesc optics = callerOptics(temperatureUnit);
     writeVolumeOptics(optics, scene_.medium, samples, {scene_.sourcePath, origin}, fields_);
     paintObjects(scene_, fields_, coverageGrids());
     paintStrokes(scene_, fields_);

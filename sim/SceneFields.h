@@ -59,8 +59,13 @@ public:
     // writeVolumeOptics'), which leaves fields() as it was — but for one by
     // validateFields after the objects are composited, which leaves the
     // refused fields: render them not. Not for a scene with a fluid solver,
-    // whose fields are its own.
-    void writeCallerFields(const VolumeSamples& samples, const std::string& origin);
+    // whose fields are its own. `temperatureUnit`: what samples.temperature
+    // holds, declared by the caller (as volume.fields.temperature_unit);
+    // none: as the scene's volume reads its temperature.
+    void writeCallerFields(const VolumeSamples& samples, const std::string& origin,
+                           std::optional<VolumeDesc::TemperatureUnit> temperatureUnit);
+    // The `volume` optics the caller's fields are mapped by (writeCallerFields).
+    VolumeDesc callerOptics(std::optional<VolumeDesc::TemperatureUnit> temperatureUnit) const;
 
     // The live loop's two halves of advanceFrame for a scene with a fluid
     // solver, whose fields go straight into GPU memory

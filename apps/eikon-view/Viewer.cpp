@@ -2,7 +2,7 @@
 
 #include "apps/eikon-view/CameraControls.h"
 #include "apps/eikon-view/ControlPanel.h"
-#include "apps/eikon-view/ImagePresenter.h"
+#include "apps/common/ImagePresenter.h"
 #include "apps/eikon-view/SimulationPacer.h"
 #include "apps/eikon-view/ViewPreview.h"
 #include "apps/eikon-view/ViewerSession.h"

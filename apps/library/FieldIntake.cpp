@@ -3,7 +3,9 @@
 #include "bridge/core/NumberFormat.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <span>
 
 namespace eikon::library {
@@ -58,10 +60,21 @@ bool sameBox(const Field& field, const GridSpec& grid) {
     return true;
 }
 
+// Whether a block of values holds a NaN or an infinity: an IEEE 754 float
+// is neither where its exponent bits are not all ones. Branch-free, so that
+// the compiler vectorizes it; the search for the cell runs only on a find.
+bool anyNotFinite(const float* values, std::size_t count) {
+    constexpr std::uint32_t kExponent = 0x7f800000u;
+    std::uint32_t found = 0;
+    for (std::size_t i = 0; i < count; ++i)
+        found |= static_cast<std::uint32_t>((std::bit_cast<std::uint32_t>(values[i]) & kExponent) == kExponent);
+    return found != 0;
+}
+
 void checkFinite(const Field& field, const GridSpec& grid, std::size_t count) {
+    if (!anyNotFinite(field.values, count)) return;
     const float* end = field.values + count;
     const float* bad = std::find_if(field.values, end, [](float v) { return !std::isfinite(v); });
-    if (bad == end) return;
     const auto at = static_cast<std::size_t>(bad - field.values);
     const std::size_t cell = at / static_cast<std::size_t>(field.channels);
     const auto nx = static_cast<std::size_t>(grid.resolution.x), ny = static_cast<std::size_t>(grid.resolution.y);
@@ -71,6 +84,14 @@ void checkFinite(const Field& field, const GridSpec& grid, std::size_t count) {
            std::string(std::isnan(*bad) ? "NaN" : "an infinity") + " at cell (i, j, k) = " +
                triple(static_cast<std::size_t>(i), static_cast<std::size_t>(j), static_cast<std::size_t>(k)) + ", " +
                formatPosition(grid.cellCentre(i, j, k)) + " m");
+}
+
+// A temperature's unit, as volume.fields.temperature_unit names it.
+VolumeDesc::TemperatureUnit temperatureUnit(const std::string& unit) {
+    if (unit == "kelvin") return VolumeDesc::TemperatureUnit::Kelvin;
+    if (unit == "celsius") return VolumeDesc::TemperatureUnit::Celsius;
+    if (unit == "kelvin_above_ambient") return VolumeDesc::TemperatureUnit::KelvinAboveAmbient;
+    refuse("temperature", "the unit \"kelvin\", \"celsius\" or \"kelvin_above_ambient\"", "\"" + unit + "\"");
 }
 
 }  // namespace
@@ -86,7 +107,13 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
         if (slot == std::end(kSlots)) refuse(field.name, "one of " + knownNames(), "an unknown name");
         if (std::find(intake.names.begin(), intake.names.end(), field.name) != intake.names.end())
             refuse(field.name, "each field named once", "it twice");
-        if (!field.values) refuse(field.name, "values", "a null pointer");
+        if (field.buffer && field.name != "delta_index")
+            refuse(field.name, "values in host memory (a GL buffer is taken for delta_index only: the others are "
+                               "mapped on the host)",
+                   "GL buffer " + std::to_string(field.buffer));
+        if (field.buffer && field.values)
+            refuse(field.name, "values or a GL buffer, not both", "both");
+        if (!field.values && !field.buffer) refuse(field.name, "values", "a null pointer");
         if (field.shape != std::array<std::size_t, 3>{nz, ny, nx})
             refuse(field.name, "shape (nz, ny, nx) = " + triple(nz, ny, nx) + ", the scene's grid",
                    triple(field.shape[0], field.shape[1], field.shape[2]));
@@ -97,7 +124,10 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
             refuse(field.name, "the scene's grid box " + box({grid.boundsMin.x, grid.boundsMin.y, grid.boundsMin.z},
                                                               {grid.boundsMax.x, grid.boundsMax.y, grid.boundsMax.z}),
                    box(field.boundsMin, field.boundsMax));
-        checkFinite(field, grid, cells * static_cast<std::size_t>(field.channels));
+        if (!field.unit.empty() && field.name != "temperature")
+            refuse(field.name, "no unit (a temperature's only: its unit is declared)", "\"" + field.unit + "\"");
+        if (!field.unit.empty()) intake.temperatureUnit = temperatureUnit(field.unit);
+        if (field.values) checkFinite(field, grid, cells * static_cast<std::size_t>(field.channels));
         intake.names.push_back(field.name);
     }
     if (std::find(intake.names.begin(), intake.names.end(), "index") != intake.names.end() &&
@@ -107,6 +137,10 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
     for (const Field& field : fields) {
         const FieldSlot& slot = *std::find_if(std::begin(kSlots), std::end(kSlots),
                                               [&](const FieldSlot& s) { return field.name == s.name; });
+        if (field.buffer) {  // read on the GPU, by the renderer
+            intake.deltaIndexBuffer = field.buffer;
+            continue;
+        }
         std::span<const float> values(field.values, cells * static_cast<std::size_t>(field.channels));
         if (slot.rgb && field.channels == 1) {  // grey: the same value in each channel, as a grey grid of a file
             std::vector<float>& channels = intake.expanded.emplace_back(3 * cells);

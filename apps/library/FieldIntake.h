@@ -10,6 +10,7 @@
 #include "sim/optics/VolumeOptics.h"
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,10 +23,16 @@ struct FieldIntake {
     std::deque<std::vector<float>> expanded;
     std::uint64_t copiedBytes = 0;
     std::vector<std::string> names;  // the fields taken, in the caller's order
+    // The temperature's declared unit (Field::unit); none: as the scene's volume reads it.
+    std::optional<VolumeDesc::TemperatureUnit> temperatureUnit;
+    // delta_index handed as a GL buffer (Field::buffer), 0 for none: not among `samples`.
+    unsigned deltaIndexBuffer = 0;
 };
 
 // Checks every field before any is taken: a known name given once, values,
-// shape (nz, ny, nx) and channels, the grid box, finite values. Throws
+// shape (nz, ny, nx) and channels, the grid box, finite values, a unit
+// (a temperature's only: kelvin, celsius, kelvin_above_ambient), a GL
+// buffer (delta_index's only; its size is the renderer's to check). Throws
 // eikon::Error naming the field, what was expected and what was found.
 FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid);
 

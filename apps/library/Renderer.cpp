@@ -9,10 +9,12 @@
 #include "apps/common/FrameSource.h"
 #include "apps/library/FieldIntake.h"
 #include "bridge/core/Error.h"
+#include "bridge/core/NumberFormat.h"
 #include "gl/GlContext.h"
 #include "gl/GpuMemory.h"
 #include "io/scene/SceneParser.h"
 #include "render/graph/MemoryEstimate.h"
+#include "render/stages/FieldTextures.h"
 #include "sim/SceneFields.h"
 
 #include <nlohmann/json.hpp>
@@ -61,6 +63,44 @@ std::shared_ptr<gl::GlContext> sharedContext() {
     return context;
 }
 
+// The caller's temperature against the unit it is read in (`optics`: the
+// scene's volume keys with the declared unit), as the scene parser and the
+// optics check a volume file's: a scale only above ambient, and no absolute
+// temperature read as above ambient by default.
+void checkTemperatureUnit(const VolumeDesc& optics, const library::FieldIntake& intake) {
+    const std::string field = "eikon::Renderer::setFields: field \"temperature\": expected ";
+    if (intake.temperatureUnit && optics.temperatureUnit != VolumeDesc::TemperatureUnit::KelvinAboveAmbient &&
+        optics.temperatureScale != 1.0)
+        throw Error(field + "no volume.temperature_scale with an absolute unit (it scales a temperature above "
+                            "ambient), found the scene's temperature_scale " + formatRounded(optics.temperatureScale));
+    if (const std::optional<float> smallest = sim::absoluteLookingTemperature(optics, intake.samples))
+        throw Error(field + "a temperature above ambient (read so without a declared unit), within " +
+                    formatRounded(sim::kAbsoluteTemperatureLooking) +
+                    " K of 0 somewhere; for an absolute temperature declare its unit \"kelvin\" or \"celsius\" "
+                    "(eikon::Field::unit; temperature_unit= in Python), found every nonzero value at least " +
+                    formatRounded(*smallest) + " (an absolute temperature?)");
+}
+
+// A caller's GL buffer for delta_index (Field::buffer), with the context
+// current: a buffer object of that context, large enough, in a scene that
+// composites nothing over the fields on the host.
+void checkDeltaIndexBuffer(const Scene& scene, unsigned buffer) {
+    const std::string field = "eikon::Renderer::setFields: field \"delta_index\": expected ";
+    if (!scene.objects.empty() || !scene.paint.empty())
+        throw Error(field + "values in host memory in a scene with objects or paint (composited over the fields on "
+                            "the host), found GL buffer " + std::to_string(buffer));
+    if (!glIsBuffer(buffer))
+        throw Error(field + "the name of a buffer object made in the renderer's context (makeContextCurrent, then "
+                            "glCreateBuffers), found the name " + std::to_string(buffer) + " naming none");
+    GLint64 bytes = 0;
+    glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
+    const std::uint64_t needed = scene.grid.spec().cellCount() * sizeof(float);
+    if (static_cast<std::uint64_t>(bytes) < needed)
+        throw Error(field + "a GL buffer of at least " + std::to_string(needed) +
+                    " bytes (nz·ny·nx floats), found buffer " + std::to_string(buffer) + " of " +
+                    std::to_string(bytes) + " bytes");
+}
+
 FloatArray rgbOf(const std::vector<float>& rgba, std::size_t height, std::size_t width, const std::string& unit) {
     FloatArray array{{height, width, 3}, std::vector<float>(height * width * 3), unit};
     for (std::size_t p = 0; p < height * width; ++p)
@@ -91,6 +131,11 @@ struct Renderer::Impl {
     std::uint64_t copiedBytes = 0;  // of the caller's fields for the frame to render
     double takeMs = 0.0;            // checking and mapping them
     std::vector<std::string> given;  // their names
+    // The GPU path: delta_index from the caller's GL buffer (0: none), and
+    // the version its texture takes it as — a range of its own, so that
+    // each setFields naming it uploads it anew (render/stages/FieldTextures.h).
+    unsigned deltaIndexBuffer = 0;
+    std::uint64_t bufferVersion = std::uint64_t{1} << 63;
 
     explicit Impl(Scene parsed) : scene(std::move(parsed)) {
         if (scene.sim)
@@ -134,6 +179,8 @@ Renderer Renderer::fromJson(const std::string& json, const std::string& folder) 
     });
 }
 
+void Renderer::makeContextCurrent() const { impl_->context->makeCurrent(); }
+
 Grid Renderer::grid() const {
     const GridSpec spec = impl_->scene.grid.spec();
     return {{spec.resolution.x, spec.resolution.y, spec.resolution.z},
@@ -145,6 +192,11 @@ void Renderer::setFields(const std::vector<Field>& fields) {
     Impl& impl = *impl_;
     const auto start = std::chrono::steady_clock::now();
     library::FieldIntake intake = library::takeFields(fields, impl.scene.grid.spec());
+    checkTemperatureUnit(impl.fields->callerOptics(intake.temperatureUnit), intake);
+    if (intake.deltaIndexBuffer) {
+        impl.context->makeCurrent();
+        checkDeltaIndexBuffer(impl.scene, intake.deltaIndexBuffer);
+    }
     const FieldSet& current = impl.fields->fields();
     const auto versions = [&] {
         return std::tuple{current.indexVersion, current.extinctionVersion, current.scatteringVersion};
@@ -152,7 +204,10 @@ void Renderer::setFields(const std::vector<Field>& fields) {
     const auto before = versions();
     try {
         refusalsAsErrors(
-            [&] { impl.fields->writeCallerFields(intake.samples, "the fields handed to eikon::Renderer::setFields"); });
+            [&] {
+                impl.fields->writeCallerFields(intake.samples, "the fields handed to eikon::Renderer::setFields",
+                                               intake.temperatureUnit);
+            });
     } catch (const Error&) {
         // A refusal after the mapping (of the objects composited over it)
         // leaves the refused fields, which no frame renders.
@@ -162,6 +217,8 @@ void Renderer::setFields(const std::vector<Field>& fields) {
     impl.fieldsRendered = true;
     impl.copiedBytes = intake.copiedBytes;
     impl.given = intake.names;
+    impl.deltaIndexBuffer = intake.deltaIndexBuffer;
+    if (impl.deltaIndexBuffer) ++impl.bufferVersion;
     impl.takeMs = app::millisecondsSince(start);
 }
 
@@ -181,16 +238,24 @@ void Renderer::render() {
             impl.sourceLayout = layout;
         }
         const auto start = std::chrono::steady_clock::now();
-        impl.last = impl.source->render();
+        if (impl.deltaIndexBuffer) {  // the host fields but δn, which the texture copies on the GPU
+            render::FieldUpload upload = render::hostUpload(impl.fields->fields());
+            upload.deltaIndex = {nullptr, impl.deltaIndexBuffer, impl.scene.grid.spec().cellCount()};
+            upload.indexVersion = impl.bufferVersion;
+            impl.last = impl.source->renderer().render(upload);
+        } else {
+            impl.last = impl.source->render();
+        }
         const double renderMs = app::renderMilliseconds(*impl.last);
         const app::LoopTiming timing{app::millisecondsSince(start), renderMs, 0.0};
         ++impl.frame;
-        nlohmann::json report = nlohmann::json::parse(
-            app::frameReportJson(impl.frame, impl.source->current(), false, *impl.last, timing, false));
-        report["caller_fields"] = {{"names", impl.given},
-                                   {"host_bytes_copied", impl.copiedBytes},
-                                   {"set_fields_ms", impl.takeMs}};
-        impl.report = report.dump();
+        // eikon run's report line with the caller's fields as its last key,
+        // spliced in rather than parsed and written again.
+        impl.report = app::frameReportJson(impl.frame, impl.source->current(), false, *impl.last, timing, false);
+        const nlohmann::json caller{
+            {"names", impl.given}, {"host_bytes_copied", impl.copiedBytes}, {"set_fields_ms", impl.takeMs}};
+        impl.report.pop_back();  // its closing brace
+        impl.report += ",\"caller_fields\":" + caller.dump() + "}";
         impl.copiedBytes = 0;
         impl.takeMs = 0.0;
         impl.given.clear();

@@ -35,8 +35,22 @@ std::string shapeText(const py::array& array) {
     return text + (array.ndim() == 1 ? ",)" : ")");
 }
 
-// A NumPy array as an eikon::Field over `grid`'s box, read in place.
+// eikon.GLBuffer(name): an OpenGL buffer object made in the renderer's
+// context, handed for a field in place of an array (the GPU path,
+// eikon::Field::buffer).
+struct GlBuffer {
+    unsigned name = 0;
+};
+
+// A NumPy array as an eikon::Field over `grid`'s box, read in place, or a
+// GL buffer's name with the grid's shape.
 eikon::Field fieldOf(const std::string& name, const py::handle& object, const eikon::Grid& grid) {
+    if (py::isinstance<GlBuffer>(object)) {
+        const std::array<std::size_t, 3> shape{static_cast<std::size_t>(grid.cells[2]),
+                                               static_cast<std::size_t>(grid.cells[1]),
+                                               static_cast<std::size_t>(grid.cells[0])};
+        return {name, nullptr, shape, 1, grid.boundsMin, grid.boundsMax, {}, object.cast<GlBuffer>().name};
+    }
     if (!py::isinstance<py::array>(object)) refuse(name, "a NumPy array", std::string(py::str(py::type::of(object))));
     const auto array = py::reinterpret_borrow<py::array>(object);
     if (!array.dtype().is(py::dtype::of<float>()))
@@ -70,8 +84,10 @@ eikon::Renderer makeRenderer(const py::object& scene, const std::string& folder)
                        std::string(py::str(py::type::of(scene))));
 }
 
-// set_fields(name=array, …, bounds=((x, y, z), (x, y, z))): `bounds`, in
-// m, is where the arrays lie (the scene's grid box when left out).
+// set_fields(name=array, …, bounds=((x, y, z), (x, y, z)),
+// temperature_unit="kelvin"): `bounds`, in m, is where the arrays lie (the
+// scene's grid box when left out); `temperature_unit` what the temperature
+// holds (eikon::Field::unit: "kelvin", "celsius", "kelvin_above_ambient").
 void setFields(eikon::Renderer& renderer, const py::kwargs& arrays) {
     eikon::Grid grid = renderer.grid();
     if (arrays.contains("bounds")) {
@@ -79,10 +95,21 @@ void setFields(eikon::Renderer& renderer, const py::kwargs& arrays) {
         grid.boundsMin = box.first;
         grid.boundsMax = box.second;
     }
+    std::string unit;
+    if (arrays.contains("temperature_unit")) {
+        if (!py::isinstance<py::str>(arrays["temperature_unit"]))
+            refuse("temperature", "temperature_unit a str (\"kelvin\", \"celsius\" or \"kelvin_above_ambient\")",
+                   std::string(py::str(py::type::of(arrays["temperature_unit"]))));
+        if (!arrays.contains("temperature"))
+            refuse("temperature", "a temperature array beside temperature_unit", "none");
+        unit = arrays["temperature_unit"].cast<std::string>();
+    }
     std::vector<eikon::Field> fields;
     for (const auto& [key, array] : arrays) {
         const std::string name = py::str(key);
-        if (name != "bounds") fields.push_back(fieldOf(name, array, grid));
+        if (name == "bounds" || name == "temperature_unit") continue;
+        fields.push_back(fieldOf(name, array, grid));
+        if (name == "temperature") fields.back().unit = unit;
     }
     renderer.setFields(fields);
 }
@@ -92,6 +119,11 @@ void setFields(eikon::Renderer& renderer, const py::kwargs& arrays) {
 PYBIND11_MODULE(eikon, m) {
     m.doc() = "eikon: light through graded-index media, rendered from your own solver's fields (docs/library.md)";
     py::register_exception<eikon::Error>(m, "Error", PyExc_ValueError);
+
+    py::class_<GlBuffer>(m, "GLBuffer", "An OpenGL buffer object's name in the renderer's context, handed for "
+                                        "delta_index in place of an array (the GPU path: copied on the GPU).")
+        .def(py::init([](unsigned name) { return GlBuffer{name}; }), py::arg("name"))
+        .def_readonly("name", &GlBuffer::name);
 
     py::class_<eikon::Renderer>(m, "Renderer")
         .def(py::init(&makeRenderer), py::arg("scene"), py::arg("folder") = ".",
@@ -105,11 +137,15 @@ PYBIND11_MODULE(eikon, m) {
                                 py::arg("bounds_min") = g.boundsMin, py::arg("bounds_max") = g.boundsMax);
             },
             "The render grid: shape (nz, ny, nx) of a field, and its box in m.")
+        .def("make_context_current", &eikon::Renderer::makeContextCurrent,
+             "Makes the renderer's OpenGL context current on this thread: buffers made now live in it "
+             "(eikon.GLBuffer).")
         .def("set_fields", &setFields,
              "The next frame's fields as keyword arrays (delta_index, index, temperature, density, flame, "
              "extinction, scattering, anisotropy, emission), C-contiguous float32 of shape (nz, ny, nx) or "
-             "(nz, ny, nx, 3), read in place; bounds=((x, y, z), (x, y, z)) in m where they lie (default: the "
-             "scene's grid box).")
+             "(nz, ny, nx, 3), read in place (delta_index also an eikon.GLBuffer); bounds=((x, y, z), (x, y, z)) in m where they lie (default: the "
+             "scene's grid box); temperature_unit=\"kelvin\", \"celsius\" or \"kelvin_above_ambient\" what the "
+             "temperature holds (default: as the scene's volume reads it, kelvin above ambient).")
         .def("render", &eikon::Renderer::render, py::call_guard<py::gil_scoped_release>(),
              "Renders the current fields.")
         .def(
@@ -142,6 +178,23 @@ PYBIND11_MODULE(eikon, m) {
             },
             "The fluence (nz, ny, nx, 3) float32 in W/m^2.")
         .def("report", &report, "The last frame's report (a dict, as a line of eikon run's report.jsonl).");
+
+    py::class_<eikon::View>(m, "View")
+        .def(py::init<std::string, int, int>(), py::arg("title") = "eikon", py::arg("width") = 0,
+             py::arg("height") = 0,
+             "The live viewer: a window (an X display) showing each frame handed to show(), scaled to fit; "
+             "width × height pixels, 0: the first frame's size.")
+        .def("show", &eikon::View::show, py::arg("renderer"),
+             "Shows the renderer's last frame and handles the window's events; False once the window is closed "
+             "(a loop's condition: while view.show(r): ...).")
+        .def_property_readonly("is_open", &eikon::View::isOpen)
+        .def(
+            "window_image",
+            [](const eikon::View& v) {
+                eikon::ByteArray a = v.windowImage();
+                return toNumpy(std::move(a.values), a.shape);
+            },
+            "What the window shows: (height, width, 3) uint8 sRGB, row 0 at the top.");
 
     m.def(
         "render_image",

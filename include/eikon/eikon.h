@@ -18,6 +18,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eikon {
@@ -45,8 +46,7 @@ struct Grid {
 //   name          unit     channels  meaning
 //   delta_index   1        1         n − n_ref (replaces the medium's index)
 //   index         1        1         n (not with delta_index)
-//   temperature   K        1         T − volume.ambient_temperature, scaled by
-//                                    volume.temperature_scale: δn by Gladstone–Dale
+//   temperature   K, °C    1         in `unit` (below): δn by Gladstone–Dale
 //   density       1        1         κ, σs by volume.density_extinction, _scattering
 //   flame         1        1         as the volume's flame grid
 //   extinction    1/m      1 or 3    κ added to the medium's
@@ -54,13 +54,39 @@ struct Grid {
 //   anisotropy    1        1         Henyey–Greenstein g
 //   emission      W/(m³·sr) 1 or 3   ε
 // boundsMin and boundsMax place the field; they must be the scene's grid's.
+// `unit` declares what a temperature holds, as a volume file's
+// `volume.fields.temperature_unit` does (docs/scene-format.md): "kelvin"
+// (T), "celsius" (T − 273.15 K) or "kelvin_above_ambient" (T −
+// volume.ambient_temperature, scaled by volume.temperature_scale); left
+// empty, as the scene's `volume` reads its temperature (kelvin above
+// ambient by default, where a field whose nonzero values all lie 150 K or
+// more above 0 is refused as an absolute temperature). Empty for every
+// other field.
+// `buffer` is the GPU path: the name of an OpenGL buffer object made in the
+// renderer's context (Renderer::makeContextCurrent) whose first
+// nz·ny·nx·channels floats are the values, in place of `values` (null
+// then). The renderer copies it into its texture on the GPU: no byte of it
+// crosses to the host (the report's host_bytes_copied). For delta_index
+// only (the other fields are mapped on the host), in a scene without
+// objects or paint (composited over the fields on the host); its values are
+// not checked, as they are never read on the host. Write the buffer, then
+// name it in setFields for each frame.
 struct Field {
+    Field() = default;
+    Field(std::string name_, const float* values_, std::array<std::size_t, 3> shape_, int channels_,
+          std::array<double, 3> boundsMin_, std::array<double, 3> boundsMax_, std::string unit_ = {},
+          unsigned buffer_ = 0)
+        : name(std::move(name_)), values(values_), shape(shape_), channels(channels_), boundsMin(boundsMin_),
+          boundsMax(boundsMax_), unit(std::move(unit_)), buffer(buffer_) {}
+
     std::string name;
     const float* values = nullptr;
     std::array<std::size_t, 3> shape{};  // (nz, ny, nx)
     int channels = 1;
     std::array<double, 3> boundsMin{};
     std::array<double, 3> boundsMax{};
+    std::string unit;
+    unsigned buffer = 0;
 };
 
 // An array handed back: C order, x (or the image column) fastest, with its unit.
@@ -68,6 +94,7 @@ struct FloatArray {
     std::vector<std::size_t> shape;
     std::vector<float> values;
     std::string unit;
+    unsigned buffer = 0;
 };
 struct ByteArray {
     std::vector<std::size_t> shape;
@@ -90,12 +117,19 @@ public:
 
     Grid grid() const;
 
+    // Makes the renderer's OpenGL 4.5 context current on the calling thread,
+    // so that the caller's GL calls (glCreateBuffers, a compute shader of its
+    // solver, CUDA–OpenGL interop) go to the context whose buffers a field
+    // may name (Field::buffer).
+    void makeContextCurrent() const;
+
     // The fields of the next frame, each named once; fields not named are
     // those the scene gives without them (the medium's, or the scene's
     // volume file's until the first call). Error naming the field for an
     // unknown name, a wrong shape or channel count, a grid that is not the
     // scene's, a value that is not finite or out of range (n ≤ 0, κ < 0,
-    // σs > κ, |g| ≥ 1, ε < 0, T ≤ 0 K): nothing is changed.
+    // σs > κ, |g| ≥ 1, ε < 0, T ≤ 0 K), an unknown unit or one on a field
+    // other than temperature: nothing is changed.
     void setFields(const std::vector<Field>& fields);
     // Renders the current fields: the stages whose inputs changed run.
     void render();
@@ -119,6 +153,32 @@ public:
 private:
     struct Impl;
     explicit Renderer(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+// The live viewer fed by the caller's loop: a window (GLFW, on an X
+// display) showing each frame it is handed, scaled to fit and centred, as
+// eikon-view shows its frames. Used from the renderers' thread.
+class View {
+public:
+    // `width` × `height` pixels, 0: the first frame's size. The window opens
+    // at the first show().
+    explicit View(std::string title = "eikon", int width = 0, int height = 0);
+    ~View();
+    View(View&&) noexcept;
+    View& operator=(View&&) noexcept;
+
+    // Shows the renderer's last frame (Error before its first, or where no
+    // window can be opened: no display) and handles the window's events;
+    // false, showing nothing, once the user has closed the window.
+    bool show(const Renderer& renderer);
+    bool isOpen() const;
+    // What the window shows, (height, width, 3) sRGB 8-bit, row 0 at the top
+    // (Error before the first show()).
+    ByteArray windowImage() const;
+
+private:
+    struct Impl;
     std::unique_ptr<Impl> impl_;
 };
 

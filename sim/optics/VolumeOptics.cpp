@@ -17,25 +17,19 @@ bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0
 
 constexpr double kZeroCelsius = 273.15;  // K
 
-// A temperature grid read as kelvin above ambient by default whose nonzero
-// samples all lie at least kAbsoluteTemperatureLooking K above: an absolute
-// temperature, which the default would count the ambient into twice.
+// A volume file's temperature grid that looks absolute under the default
+// unit (absoluteLookingTemperature): refused, naming the file's keys.
 void refuseAbsoluteLookingTemperature(const VolumeDesc& volume, const VolumeSamples& samples,
                                       const VolumeOrigin& origin) {
-    if (!volume.implicitTemperatureUnit || volume.temperatureUnit != VolumeDesc::TemperatureUnit::KelvinAboveAmbient ||
-        samples.temperature.empty())
-        return;
-    float smallest = std::numeric_limits<float>::infinity();
-    for (const float t : samples.temperature)
-        if (t != 0.0f) smallest = std::min(smallest, t);
-    if (!(smallest >= kAbsoluteTemperatureLooking) || !std::isfinite(smallest)) return;
+    const std::optional<float> smallest = absoluteLookingTemperature(volume, samples);
+    if (!smallest) return;
     throw InputError(origin.scene + ": volume.grids.temperature (grid \"" + volume.temperatureGrid + "\" in " +
                          origin.file + ")",
                      "a temperature above ambient (the default for Blender's and Houdini's caches), within " +
                          formatRounded(kAbsoluteTemperatureLooking) +
                          " K of 0 somewhere; for an absolute temperature declare volume.fields with "
                          "temperature_unit \"kelvin\" or \"celsius\"",
-                     "every nonzero sample at least " + formatRounded(smallest) + " (an absolute temperature?)");
+                     "every nonzero sample at least " + formatRounded(*smallest) + " (an absolute temperature?)");
 }
 
 // Built on first use (4097 Planck integrals), by scenes that glow only.
@@ -45,6 +39,20 @@ const BlackbodyTable& planckTable() {
 }
 
 }  // namespace
+
+std::optional<float> absoluteLookingTemperature(const VolumeDesc& volume, const VolumeSamples& samples) {
+    if (!volume.implicitTemperatureUnit || volume.temperatureUnit != VolumeDesc::TemperatureUnit::KelvinAboveAmbient ||
+        samples.temperature.empty())
+        return std::nullopt;
+    // Most grids read so hold small values: the first below the bound ends the scan.
+    float smallest = std::numeric_limits<float>::infinity();
+    for (const float t : samples.temperature) {
+        if (t != 0.0f && t < kAbsoluteTemperatureLooking) return std::nullopt;
+        if (t != 0.0f) smallest = std::min(smallest, t);
+    }
+    if (!std::isfinite(smallest)) return std::nullopt;
+    return smallest;
+}
 
 double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples, std::size_t cell) {
     if (!samples.covers(cell)) return volume.ambientTemperature;

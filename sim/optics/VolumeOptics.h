@@ -28,6 +28,7 @@
 #include "bridge/scene/Scene.h"
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -90,6 +91,11 @@ struct VolumeOrigin {
 // temperatures: its smallest nonzero sample at least
 // kAbsoluteTemperatureLooking K.
 inline constexpr double kAbsoluteTemperatureLooking = 150.0;  // K
+
+// The smallest nonzero temperature sample where the samples are read as
+// kelvin above ambient by default and all their nonzero values are at least
+// kAbsoluteTemperatureLooking (an absolute temperature, refused); none otherwise.
+std::optional<float> absoluteLookingTemperature(const VolumeDesc& volume, const VolumeSamples& samples);
 
 void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const VolumeSamples& samples,
                        const VolumeOrigin& origin, FieldSet& fields);

@@ -4,6 +4,7 @@ an eikon.Error with eikon's words, after which the renderer renders its
 earlier fields unchanged. Run by ctest (Python.Module) with PYTHONPATH at
 the build folder's python/."""
 
+import ctypes
 import json
 import os
 import tempfile
@@ -121,6 +122,102 @@ class Module(unittest.TestCase):
         with self.assertRaises(eikon.Error) as caught:
             eikon.Renderer(scene)
         self.assertIn("render.width", str(caught.exception))
+
+
+def write_legacy_vtk(path, name, values):
+    """A legacy binary VTK image of cell data `values` (nz, ny, nx) whose
+    cells are the scene's render cells: read back value for value."""
+    nz, ny, nx = values.shape
+    h = 0.5 / 32
+    with open(path, "wb") as f:
+        f.write((f"# vtk DataFile Version 3.0\nheated core\nBINARY\nDATASET STRUCTURED_POINTS\n"
+                 f"DIMENSIONS {nx + 1} {ny + 1} {nz + 1}\nORIGIN 0 0 0\nSPACING {h!r} {h!r} {h!r}\n"
+                 f"CELL_DATA {values.size}\nSCALARS {name} float 1\nLOOKUP_TABLE default\n").encode())
+        f.write(values.astype(">f4").tobytes())
+        f.write(b"\n")
+
+
+class Temperature(unittest.TestCase):
+    """A temperature with its unit declared renders as the same temperature
+    in a VTK file declared the same way (volume.fields.temperature_unit)."""
+
+    def test_kelvin_and_celsius_render_as_the_file_declared_so(self):
+        hot = 400 * bump(0.06)
+        for unit, values in (("kelvin", 293.15 + hot), ("celsius", 20.0 + hot)):
+            values = values.astype(np.float32)
+            with tempfile.TemporaryDirectory() as folder:
+                write_legacy_vtk(os.path.join(folder, "hot.vtk"), "T", values)
+                scene = dict(SCENE, volume={"path": "hot.vtk",
+                                            "fields": {"temperature": "T", "temperature_unit": unit}})
+                from_file = eikon.Renderer(scene, folder)
+                from_file.render()
+            handed = eikon.Renderer(SCENE)
+            handed.set_fields(temperature=values, temperature_unit=unit)
+            handed.render()
+            self.assertTrue(np.array_equal(handed.image(), from_file.image()), unit)
+            self.assertTrue(np.array_equal(handed.radiance(), from_file.radiance()), unit)
+            self.assertTrue(np.array_equal(handed.receiver(0), from_file.receiver(0)), unit)
+            self.assertEqual(handed.report()["photons"], from_file.report()["photons"], unit)
+            self.assertEqual(handed.report()["caller_fields"]["host_bytes_copied"], 0)
+            # The same values read above ambient give another frame: the unit matters.
+            misread = eikon.Renderer(SCENE)
+            misread.set_fields(temperature=values, temperature_unit="kelvin_above_ambient")
+            misread.render()
+            self.assertFalse(np.array_equal(misread.radiance(), from_file.radiance()), unit)
+
+    def test_an_absolute_temperature_without_a_unit_says_how_to_declare_it(self):
+        renderer = eikon.Renderer(SCENE)
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(temperature=(293.15 + 400 * bump(0.06)).astype(np.float32))
+        for word in ("\"temperature\"", "above ambient", "temperature_unit=", "\"kelvin\""):
+            self.assertIn(word, str(caught.exception))
+
+    def test_a_unit_without_a_temperature_or_not_a_str(self):
+        renderer = eikon.Renderer(SCENE)
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(density=bump(0.06), temperature_unit="kelvin")
+        self.assertIn("beside temperature_unit", str(caught.exception))
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(temperature=bump(0.06), temperature_unit=273)
+        self.assertIn("a str", str(caught.exception))
+
+
+class GpuPath(unittest.TestCase):
+    """δn handed as an OpenGL buffer made in the renderer's context
+    (eikon.GLBuffer) renders as the same array from host memory, bit for bit,
+    and crosses no byte to the host. The buffer is made through libOpenGL
+    (ctypes), as a solver on the GPU would have it."""
+
+    def test_a_gl_buffer_renders_as_the_array(self):
+        gl = ctypes.CDLL("libOpenGL.so.0")
+        values = 0.01 * bump(0.08)
+        host, device = eikon.Renderer(SCENE), eikon.Renderer(SCENE)
+        device.make_context_current()
+        buffer = ctypes.c_uint(0)
+        gl.glCreateBuffers(1, ctypes.byref(buffer))
+        gl.glNamedBufferData(buffer, ctypes.c_ssize_t(values.nbytes), values.ctypes.data_as(ctypes.c_void_p),
+                             0x88E8)  # GL_DYNAMIC_DRAW
+        for step in range(2):  # the second: a solver's next step, written in place
+            if step == 1:
+                values = 0.02 * bump(0.08)
+                device.make_context_current()
+                gl.glNamedBufferSubData(buffer, ctypes.c_ssize_t(0), ctypes.c_ssize_t(values.nbytes),
+                                        values.ctypes.data_as(ctypes.c_void_p))
+            host.set_fields(delta_index=values)
+            host.render()
+            device.set_fields(delta_index=eikon.GLBuffer(buffer.value))
+            device.render()
+            self.assertTrue(np.array_equal(device.image(), host.image()))
+            self.assertTrue(np.array_equal(device.radiance(), host.radiance()))
+            self.assertTrue(np.array_equal(device.receiver(0), host.receiver(0)))
+        self.assertEqual(device.report()["host_bytes_copied"], 0)
+        self.assertEqual(host.report()["host_bytes_copied"], values.nbytes)
+        self.assertGreater(device.receiver(0)[..., 0].max() / device.receiver(0)[..., 0].min(), 1.2, "a caustic")
+        with self.assertRaises(eikon.Error) as caught:
+            device.set_fields(temperature=eikon.GLBuffer(buffer.value))
+        self.assertIn("delta_index only", str(caught.exception))
+        device.make_context_current()
+        gl.glDeleteBuffers(1, ctypes.byref(buffer))
 
 
 if __name__ == "__main__":

@@ -1,4 +1,4 @@
-#include "apps/eikon-view/ImagePresenter.h"
+#include "apps/common/ImagePresenter.h"
 
 #include <algorithm>
 

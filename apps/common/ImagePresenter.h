@@ -1,4 +1,4 @@
-// Shows a rendered frame in the window: the 8-bit image goes into a texture
+// Shows a rendered frame in a window (eikon-view's, eikon::View's): the 8-bit image goes into a texture
 // that is blitted, scaled to fit and centred, onto the default framebuffer.
 #pragma once
 
