@@ -347,6 +347,7 @@ void SceneFields::writeCallerFields(const VolumeSamples& samples, const std::str
     optics.scatteringGrid = "scattering";
     optics.anisotropyGrid = "anisotropy";
     optics.emissionGrid = "emission";
+    optics.massFractions.clear();  // a caller hands no gas density, so no mixture
     writeVolumeOptics(optics, scene_.medium, samples, {scene_.sourcePath, origin}, fields_);
     paintObjects(scene_, fields_, coverageGrids());
     paintStrokes(scene_, fields_);
