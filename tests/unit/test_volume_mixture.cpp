@@ -3,13 +3,15 @@
 // the gases' refractivities at 0 °C and 1 atm and their molar masses
 // (bridge/scene/GasSpecies.h), K the volume's gas (air's by default). A
 // .vti of CO2 and hydrogen mixing into air, on the render cells' centres,
-// must give that closed form in every cell; mass fractions out of [0, 1],
+// must give that closed form in every cell, and an OpenVDB file's grids
+// the same; mass fractions out of [0, 1],
 // a mixture without a density and an unknown gas are refused by name.
 #include "bridge/core/Error.h"
 #include "bridge/scene/GasSpecies.h"
 #include "io/scene/SceneParser.h"
 #include "sim/SceneFields.h"
 #include "sim/optics/AirOptics.h"
+#include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
 #include <vtkFloatArray.h>
@@ -127,6 +129,36 @@ TEST_F(VolumeMixture, IndexIsTheDensityTimesTheMassWeightedConstants) {
     EXPECT_GT(signal, 8e-5);
     EXPECT_LT(error / signal, 1e-5);  // float32 δn against a double closed form
     std::printf("[ measured ] mixture: largest |δn error| / largest change from the mixture = %.3g\n", error / signal);
+}
+
+// The same declaration reads an OpenVDB file's grids: density and hydrogen
+// linear in x and y, which the grid's trilinear sampling keeps exact.
+TEST_F(VolumeMixture, AnOpenVdbFileTakesTheSameDeclaration) {
+    const auto rho = [](double x) { return 1.2 + 2.0 * x; };
+    const auto hydrogen = [](double y) { return 0.05 + 0.25 * y; };
+    test::writeVdbFile(folder_ / "mixture.vdb",
+                       {{"rho", 1, [&](double x, double, double, int) { return static_cast<float>(rho(x)); }},
+                        {"Y_H2", 1, [&](double, double y, double, int) { return static_cast<float>(hydrogen(y)); }}},
+                       0.01, -0.1, 0.1);
+    nlohmann::json root = nlohmann::json::parse(R"({"grid": {"resolution": [16, 16, 16],
+        "bounds": {"min": [-0.08, -0.08, -0.08], "max": [0.08, 0.08, 0.08]}},
+        "medium": {"index": 1.000273},
+        "lights": [{"type": "point", "position": [0, 1, 0], "power": 1}],
+        "volume": {"path": "mixture.vdb", "fields": {"density": "rho", "mass_fractions": {"H2": "Y_H2"}}}})");
+    SceneFields fields(parseScene(root, (folder_ / "scene.json").string()));
+    const FieldSet& set = fields.fields();
+    const GladstoneDale air;
+    const double medium = 1.000273 - set.referenceIndex, ambient = air.refractivityAt(293.15, 101325.0);
+    double error = 0.0;
+    for (int k = 0; k < kN; ++k)
+        for (int j = 0; j < kN; ++j)
+            for (int i = 0; i < kN; ++i) {
+                const glm::dvec3 x = set.grid.cellCentre(i, j, k);
+                const double y = hydrogen(x.y);
+                const double expected = medium + rho(x.x) * (y * kHydrogen + (1.0 - y) * air.airConstant()) - ambient;
+                error = std::max(error, std::abs(set.deltaIndex[set.grid.linearIndex(i, j, k)] - expected));
+            }
+    EXPECT_LT(error, 1e-9);  // of a δn change up to 1e-4 (float32 samples and δn)
 }
 
 // The table's air is the volume's default gas, so a mixture that is all
