@@ -5,7 +5,13 @@
 //                  K, appended raw, VTK's default zlib compression) onto a
 //                  64³ render grid whose cell centres are its points;
 //   OpenFoamTiny   tests/data/openfoam_tiny (12 hexahedra, T and p) onto a
-//                  6×4×4 grid: the fixed cost of vtkOpenFOAMReader's step.
+//                  6×4×4 grid: the fixed cost of vtkOpenFOAMReader's step;
+//   OpenFoamPlumeCoarse  tests/data/openfoam_plume_coarse (4 000 cells of a
+//                  plume OpenFOAM computed, T and p gzipped) onto the 80×40×80
+//                  grid of scenes/openfoam_plume.json;
+//   OpenFoamPlume  that scene's case (32 000 cells), where
+//                  examples/openfoam/heated_plume.sh wrote it to
+//                  out/openfoam_plume under the source folder; skipped if not.
 // Each iteration reads the file anew (from the page cache). Not run by ctest.
 #include "io/vtk/VtkVolumeSource.h"
 
@@ -67,6 +73,27 @@ void BM_OpenFoamTiny(benchmark::State& state) {
         benchmark::DoNotOptimize(VtkVolumeSource(foam).resample(1, {{"T", "T"}, {"p", "p"}}, grid, glm::dmat4(1.0)));
 }
 BENCHMARK(BM_OpenFoamTiny)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One step (the last) of an OpenFOAM case onto scenes/openfoam_plume.json's grid.
+void resampleFoamStep(benchmark::State& state, const fs::path& foam) {
+    if (!fs::exists(foam)) {
+        state.SkipWithError(("no " + foam.string() + ": run examples/openfoam/heated_plume.sh first").c_str());
+        return;
+    }
+    const GridSpec grid{glm::ivec3(80, 40, 80), glm::dvec3(0.0), glm::dvec3(1.0, 0.5, 1.0)};
+    for (auto _ : state) {
+        const VtkVolumeSource source(foam);
+        benchmark::DoNotOptimize(source.resample(source.stepCount() - 1, {{"T", "T"}, {"p", "p"}}, grid, glm::dmat4(1.0)));
+    }
+}
+void BM_OpenFoamPlumeCoarse(benchmark::State& state) {
+    resampleFoamStep(state, fs::path(EIKON_SOURCE_DIR) / "tests/data/openfoam_plume_coarse/case.foam");
+}
+BENCHMARK(BM_OpenFoamPlumeCoarse)->Unit(benchmark::kMillisecond)->UseRealTime();
+void BM_OpenFoamPlume(benchmark::State& state) {
+    resampleFoamStep(state, fs::path(EIKON_SOURCE_DIR) / "out/openfoam_plume/case.foam");
+}
+BENCHMARK(BM_OpenFoamPlume)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

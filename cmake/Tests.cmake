@@ -72,10 +72,13 @@ eikon_test(test_reference LABELS "unit;sanitize" LIBS eikon_reference SOURCES
   tests/unit/test_reference_tracer.cpp
   tests/unit/test_sphere_caustic_reference.cpp
   tests/unit/test_slab_transport.cpp)
-# VTK and OpenFOAM input for `volume`: plumes written with VTK's writers, a hand-written OpenFOAM case.
+# VTK and OpenFOAM input for `volume`: plumes written with VTK's writers, a hand-written OpenFOAM case,
+# a plume OpenFOAM computed (tests/data/openfoam_plume_coarse), a gas mixture by its mass fractions.
 eikon_test(test_vtk_volume LABELS unit LIBS eikon_io eikon_sim eikon_vdb_test_files VTK::CommonCore VTK::CommonDataModel
   VTK::IOXML VTK::IOGeometry VTK::FiltersCore SOURCES
-  tests/unit/test_vtk_volume.cpp)
+  tests/unit/test_vtk_volume.cpp
+  tests/unit/test_openfoam_plume.cpp
+  tests/unit/test_volume_mixture.cpp)
 eikon_test(test_sim LABELS unit LIBS eikon_io eikon_sim eikon_vdb_test_files SOURCES
   tests/unit/test_analytic_voxelizer.cpp
   tests/unit/test_volume_sequence.cpp

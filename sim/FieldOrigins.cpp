@@ -38,6 +38,7 @@ std::vector<std::string> keysOf(const Scene& scene, std::string_view field, cons
             addVolumeGrid(volume->indexGrid, "index", keys);
             addVolumeGrid(volume->deltaIndexGrid, "delta_index", keys);
             if (!volume->gasDensityGrid.empty()) keys.insert(keys.end(), {"volume.fields.density", "volume.gladstone_dale"});
+            if (!volume->massFractions.empty()) keys.push_back("volume.fields.mass_fractions");
             if (!volume->pressureGrid.empty()) keys.push_back("volume.fields.pressure");
             keys.insert(keys.end(), {"volume.refractivity", "volume.pressure", "volume.reference_temperature"});
         }

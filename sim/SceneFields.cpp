@@ -350,6 +350,7 @@ VolumeDesc SceneFields::callerOptics(std::optional<VolumeDesc::TemperatureUnit> 
     optics.scatteringGrid = "scattering";
     optics.anisotropyGrid = "anisotropy";
     optics.emissionGrid = "emission";
+    optics.massFractions.clear();  // a caller hands no gas density, so no mixture
     return optics;
 }
 

@@ -12,6 +12,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace eikon {
 
@@ -48,6 +49,15 @@ struct VolumeDesc {
     // the temperature, the ideal-gas density), per cell.
     std::string gasDensityGrid;
     std::string pressureGrid;
+    // volume.fields.mass_fractions: the gas is a mixture, each named gas
+    // (bridge/scene/GasSpecies.h) of the mass fraction in its array, the
+    // rest (1 − ΣY) the gas of gladstoneDale; with gasDensityGrid only.
+    struct MassFraction {
+        std::string species;    // "CO2", …
+        std::string grid;       // the array (or grid) of its mass fraction Y
+        double gladstoneDale;   // the species' K, m³/kg
+    };
+    std::vector<MassFraction> massFractions;
 
     // The file's world into the scene's, affine: translate(offset) · up axis
     // (Z-up files turned to eikon's Y-up) · transform (translate · rotate ·

@@ -1,12 +1,37 @@
 #include "io/scene/VolumeFieldsParser.h"
 
+#include "bridge/scene/GasSpecies.h"
+
 #include <utility>
 
 namespace eikon {
 
+namespace {
+
+// `fields.mass_fractions`: {GAS: ARRAY, …}, the gases of bridge/scene/GasSpecies.h.
+void readMassFractions(const JsonReader& node, VolumeDesc& volume) {
+    // The keys are GasSpecies' names; one missing here fails every read below.
+    const auto keys = node.object({"air", "N2", "O2", "Ar", "CO2", "H2O", "H2", "He", "CH4", "CO"});
+    if (volume.gasDensityGrid.empty())
+        node.fail("no mass_fractions without a density array (n − 1 = ρ·Σ Y_i·K_i needs the mixture's "
+                  "density: fields.density)",
+                  "mass_fractions");
+    for (const GasSpecies& gas : gasSpecies()) {
+        const auto array = keys.optional(std::string(gas.name));
+        if (!array) continue;
+        const std::string name = array->string();
+        if (name.empty()) array->fail("the name of the gas's mass fraction array (leave the gas out to read none)", "\"\"");
+        volume.massFractions.push_back({std::string(gas.name), name, gas.gladstoneDale()});
+    }
+    if (volume.massFractions.empty())
+        node.fail("at least one gas's mass fraction array (air, N2, O2, Ar, CO2, H2O, H2, He, CH4, CO)", "none");
+}
+
+}  // namespace
+
 void readVolumeFields(const JsonReader& node, VolumeDesc& volume) {
     const auto keys = node.object({"temperature", "temperature_unit", "density", "pressure", "index", "delta_index",
-                                   "extinction", "scattering"});
+                                   "extinction", "scattering", "mass_fractions"});
     for (std::string* grid : {&volume.densityGrid, &volume.temperatureGrid, &volume.flameGrid, &volume.velocityGrid})
         grid->clear();
     for (const auto& [key, name] :
@@ -32,6 +57,7 @@ void readVolumeFields(const JsonReader& node, VolumeDesc& volume) {
                                      "no fields.temperature");
     if (!volume.pressureGrid.empty() && !volume.gasDensityGrid.empty())
         keys.member("pressure").fail("a pressure or a density, not both (each sets the gas's index)", "both");
+    if (auto mixture = keys.optional("mass_fractions")) readMassFractions(*mixture, volume);
     if (!volume.indexGrid.empty() && !volume.deltaIndexGrid.empty())
         keys.member("delta_index").fail("an index or a delta_index array, not both (both would set the index)", "both");
     if (volume.temperatureGrid.empty() && volume.gasDensityGrid.empty() && volume.pressureGrid.empty() &&

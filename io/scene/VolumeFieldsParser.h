@@ -10,7 +10,8 @@
 namespace eikon {
 
 // `fields`: the file's array (or grid) names for temperature (with its
-// temperature_unit), density (a gas density, kg/m³), pressure (Pa),
+// temperature_unit), density (a gas density, kg/m³; with mass_fractions, a
+// mixture's, each gas's Gladstone–Dale constant from bridge/scene/GasSpecies.h), pressure (Pa),
 // index, delta_index, extinction and scattering. Replaces the grid names a
 // preset or the defaults set: only the declared arrays are read.
 void readVolumeFields(const JsonReader& node, VolumeDesc& volume);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace eikon::sim {
 
@@ -16,6 +17,9 @@ namespace {
 bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
 
 constexpr double kZeroCelsius = 273.15;  // K
+// How far a solver's mass fraction may stray outside [0, 1], and their sum
+// past 1, by its own rounding and transport error.
+constexpr double kMassFractionSlack = 1e-3;
 
 // A volume file's temperature grid that looks absolute under the default
 // unit (absoluteLookingTemperature): refused, naming the file's keys.
@@ -73,6 +77,8 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
                        const VolumeOrigin& origin, FieldSet& fields) {
     refuseAbsoluteLookingTemperature(volume, samples, origin);
     const std::size_t cells = fields.grid.cellCount();
+    if (samples.massFractions.size() != volume.massFractions.size() * cells)
+        throw std::invalid_argument("writeVolumeOptics: a mass fraction grid for each of volume.massFractions");
     const GladstoneDale air{volume.refractivity, volume.referenceTemperature, 101325.0};
     const double gladstoneDale = volume.gladstoneDale.value_or(air.airConstant());
     const double ambient = air.refractivityAt(volume.ambientTemperature, volume.pressure);
@@ -98,7 +104,8 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     const std::string indexKeys =
         std::string(!samples.index.empty() ? "volume.grids.index" : !samples.deltaIndex.empty() ? "volume.grids.delta_index"
                                                                                                   : "medium.index") +
-        (!samples.gasDensity.empty() ? ", volume.fields.density, volume.gladstone_dale"
+        (!samples.gasDensity.empty() ? std::string(", volume.fields.density, volume.gladstone_dale") +
+                                           (volume.massFractions.empty() ? "" : ", volume.fields.mass_fractions")
                                      : !samples.pressure.empty() ? ", volume.fields.pressure" : "") +
         ", volume.refractivity, volume.pressure, volume.reference_temperature";
     const std::string extinctionKeys = std::string(samples.extinction.empty() ? "" : "volume.grids.extinction, ") +
@@ -119,6 +126,27 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
     };
     const auto finiteFloat = [](double value) {  // the fields hold float32
         return std::abs(value) <= static_cast<double>(std::numeric_limits<float>::max());
+    };
+
+    // Gladstone–Dale's K of the gas in cell c: the volume's, or the mixture's
+    // Σ Y_i·K_i + (1 − Σ Y_i)·K, the rest of the mass the volume's gas.
+    const auto mixtureConstant = [&](std::size_t c) {
+        double constant = gladstoneDale, total = 0.0;
+        for (std::size_t g = 0; g < volume.massFractions.size(); ++g) {
+            const VolumeDesc::MassFraction& gas = volume.massFractions[g];
+            const double y = samples.massFractions[g * cells + c];
+            if (!(y >= -kMassFractionSlack && y <= 1.0 + kMassFractionSlack))
+                refuse(c, "volume.fields.mass_fractions." + gas.species, "array \"" + gas.grid + "\"",
+                       "a mass fraction in [0, 1] (to " + formatRounded(kMassFractionSlack) + ")", y);
+            constant += y * (gas.gladstoneDale - gladstoneDale);
+            total += y;
+        }
+        if (total > 1.0 + kMassFractionSlack)
+            refuse(c, "volume.fields.mass_fractions", "the mass fractions' sum",
+                   "mass fractions that sum to at most 1 (to " + formatRounded(kMassFractionSlack) +
+                       "; the rest of the mass is the gas of volume.gladstone_dale)",
+                   total);
+        return constant;
     };
 
     std::vector<float> deltaIndex(cells);
@@ -152,7 +180,7 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
             if (!(samples.gasDensity[c] >= 0.0f))
                 refuse(c, "volume.fields.density", "array \"" + volume.gasDensityGrid + "\"",
                        "a gas density >= 0 kg/m³", samples.gasDensity[c], " kg/m³");
-            gas = gladstoneDale * samples.gasDensity[c];
+            gas = mixtureConstant(c) * samples.gasDensity[c];
         } else if (inData) {
             const double p = samples.pressure.empty() ? volume.pressure : samples.pressure[c];
             if (!(p > 0.0))

@@ -8,7 +8,8 @@
 //   plus the flame term),
 //   δn = (n_medium − n_ref) + [n_gas − n_air(T_ambient)]
 //   with n_gas − 1 = K·ρ for a gas density grid (Gladstone–Dale, K in
-//   m³/kg), else n_air(T) at the cell's pressure (a pressure grid, or
+//   m³/kg; a mixture of mass fractions Y_i: ρ·[Σ Y_i·K_i + (1 − Σ Y_i)·K],
+//   bridge/scene/GasSpecies.h), else n_air(T) at the cell's pressure (a pressure grid, or
 //   volume.pressure) by Gladstone–Dale (AirOptics.h): the volume perturbs
 //   the medium by the index change its gas causes, so cold, empty regions
 //   keep the medium's index. Cells the file's data do not cover (VTK data
@@ -54,6 +55,9 @@ struct VolumeSamples {
     // 1 where the file's data cover the cell; empty: every cell (OpenVDB
     // grids read their background outside their active voxels).
     std::span<const std::uint8_t> covered;
+    // The mass fraction of each of VolumeDesc::massFractions' gases, one
+    // grid after another (gas g's cell c at g·cells + c); empty: none.
+    std::span<const float> massFractions;
 
     bool covers(std::size_t cell) const { return covered.empty() || covered[cell] != 0; }
 };
@@ -64,10 +68,11 @@ struct VolumeGrids {
     std::vector<float> density, temperature, flame, index, deltaIndex, extinction, scattering, anisotropy, emission,
         gasDensity, pressure;
     std::vector<std::uint8_t> covered;
+    std::vector<float> massFractions;
 
     VolumeSamples view() const {
-        return {density, temperature, flame,    index,    deltaIndex, extinction,
-                scattering, anisotropy, emission, gasDensity, pressure, covered};
+        return {density,    temperature, flame,      index,    deltaIndex, extinction,   scattering,
+                anisotropy, emission,    gasDensity, pressure, covered,    massFractions};
     }
 };
 

@@ -68,9 +68,12 @@ std::vector<const GridSlot*> vtkSlots(const VolumeDesc& desc) {
         if (!(desc.*slot.name).empty()) slots.push_back(&slot);
     return slots;
 }
+// The slots' arrays, then each mixture gas's mass fraction.
 std::vector<io::VtkArrayRequest> vtkRequests(const VolumeDesc& desc, const std::vector<const GridSlot*>& slots) {
     std::vector<io::VtkArrayRequest> requests;
     for (const GridSlot* slot : slots) requests.push_back({desc.*slot->name, std::string("volume.fields.") + slot->key});
+    for (const VolumeDesc::MassFraction& gas : desc.massFractions)
+        requests.push_back({gas.grid, "volume.fields.mass_fractions." + gas.species});
     return requests;
 }
 
@@ -88,6 +91,13 @@ VolumeGrids sampleVtkStep(const VolumeDesc& desc, const io::VtkVolumeSource& sou
             throw InputError(source.stepName(step) + ": array \"" + requests[r].name + "\" (" + requests[r].key + ")",
                              "a scalar array (1 component)", "3 components");
         samples.*slots[r]->samples = rgb && array.components == 1 ? greyToRgb(array.values) : std::move(array.values);
+    }
+    for (std::size_t r = slots.size(); r < requests.size(); ++r) {
+        const io::VtkResampled::Array& array = resampled.arrays[r];
+        if (array.components != 1)
+            throw InputError(source.stepName(step) + ": array \"" + requests[r].name + "\" (" + requests[r].key + ")",
+                             "a scalar array (1 component)", std::to_string(array.components) + " components");
+        samples.massFractions.insert(samples.massFractions.end(), array.values.begin(), array.values.end());
     }
     samples.covered = std::move(resampled.covered);
     return samples;
@@ -135,6 +145,7 @@ void checkVolumeFrames(const VolumeDesc& desc, const GridSpec& renderGrid, int f
                 const std::string& grid = desc.*slot.name;
                 if (!grid.empty()) file.check(grid, componentsOf(slot, grid, file), renderGrid, placement);
             }
+            for (const VolumeDesc::MassFraction& gas : desc.massFractions) file.check(gas.grid, 1, renderGrid, placement);
             if (!desc.velocityGrid.empty()) file.check(desc.velocityGrid, 3, renderGrid, placement);
         });
 }
@@ -186,6 +197,10 @@ void VolumeSequence::load(int frame) {
             const int components = componentsOf(slot, grid, file);
             std::vector<float> values = file.sample(grid, components, grid_, placement);
             samples.*slot.samples = slot.components == kRgb && components == 1 ? greyToRgb(values) : std::move(values);
+        }
+        for (const VolumeDesc::MassFraction& gas : desc_.massFractions) {
+            const std::vector<float> values = file.sample(gas.grid, 1, grid_, placement);
+            samples.massFractions.insert(samples.massFractions.end(), values.begin(), values.end());
         }
         if (desc_.velocityGrid.empty()) return;
         velocity = file.sample(desc_.velocityGrid, 3, grid_, placement);
