@@ -75,7 +75,8 @@ eikon_test(test_reference LABELS "unit;sanitize" LIBS eikon_reference SOURCES
 # VTK and OpenFOAM input for `volume`: plumes written with VTK's writers, a hand-written OpenFOAM case.
 eikon_test(test_vtk_volume LABELS unit LIBS eikon_io eikon_sim eikon_vdb_test_files VTK::CommonCore VTK::CommonDataModel
   VTK::IOXML VTK::IOGeometry VTK::FiltersCore SOURCES
-  tests/unit/test_vtk_volume.cpp)
+  tests/unit/test_vtk_volume.cpp
+  tests/unit/test_volume_follower.cpp)
 eikon_test(test_sim LABELS unit LIBS eikon_io eikon_sim eikon_vdb_test_files SOURCES
   tests/unit/test_analytic_voxelizer.cpp
   tests/unit/test_volume_sequence.cpp
