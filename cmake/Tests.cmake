@@ -229,6 +229,7 @@ eikon_test(test_stability LABELS "integration;sanitize" LIBS eikon_io eikon_rend
 eikon_test(test_cli LABELS integration LIBS eikon_io eikon_vdb_test_files VTK::CommonCore VTK::CommonDataModel VTK::IOXML SOURCES
   tests/integration/test_cli.cpp
   tests/integration/test_cli_live.cpp
+  tests/integration/test_cli_follow.cpp
   tests/integration/test_cli_fluid.cpp
   tests/integration/test_cli_limits.cpp
   tests/integration/test_cli_output_folder.cpp
