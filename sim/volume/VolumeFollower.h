@@ -8,7 +8,8 @@
 // stepFiles — the data set's file, or the OpenFOAM time directory's field
 // files of the declared arrays) is there with the same size and
 // modification time as at the previous look, and the step then reads and
-// resamples without a refusal. A step whose read fails is tried again when
+// resamples without a refusal (the Read given: VolumeSequence's also maps
+// the samples to optics, whose refusals count too). A step whose read fails is tried again when
 // its files change (a writer that paused longer than two looks); it is
 // skipped as damaged, with the reader's reason, once a later step reads
 // whole (the writer has moved on) or when following ends. A step not yet

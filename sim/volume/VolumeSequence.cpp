@@ -149,8 +149,16 @@ VolumeSequence::VolumeSequence(const VolumeDesc& desc, const Material& medium, c
         return;
     }
     EIKON_CHECK_MSG(vtk_ != nullptr, "following a volume that is not VTK data");
-    follower_ = std::make_unique<VolumeFollower>(*vtk_, vtkRequests(desc_, vtkSlots(desc_)),
-                                                 [this](int step) { return sampleVtkStep(desc_, *vtk_, step, grid_); });
+    follower_ = std::make_unique<VolumeFollower>(*vtk_, vtkRequests(desc_, vtkSlots(desc_)), [this](int step) {
+        VolumeGrids samples = sampleVtkStep(desc_, *vtk_, step, grid_);
+        // Values the optics refuse (a temperature of 0 K or less, …) make the
+        // step damaged too, rather than ending a followed run.
+        FieldSet scratch;
+        scratch.grid = grid_;
+        scratch.referenceIndex = medium_.index;
+        writeVolumeOptics(desc_, medium_, samples.view(), {scenePath_, vtk_->stepName(step)}, scratch);
+        return samples;
+    });
     if (!followNext(true)) {
         std::string skipped;
         for (const SkippedStep& step : finishFollowing()) skipped += "; skipped " + step.step + ": " + step.reason;

@@ -5,9 +5,12 @@
 #include "sim/volume/VolumeFollower.h"
 
 #include "bridge/core/Error.h"
+#include "io/scene/SceneParser.h"
 #include "io/vtk/VtkVolumeSource.h"
+#include "sim/SceneFields.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -187,6 +190,34 @@ TEST_F(Follower, AnOpenFoamTimeDirectoryIsReadOnceItsFieldsAreAllThere) {
     EXPECT_EQ(later.name, foam.string() + " at time 0.5");
     EXPECT_TRUE(later.skipped.empty());
     EXPECT_TRUE(follower.finish().empty());
+}
+
+// Through the scene: a step whose values the volume's optics refuse (an
+// absolute temperature below 0 K) is skipped like a damaged file, naming the
+// key, and the run goes on to the next step.
+TEST_F(Follower, AStepWhoseValuesTheOpticsRefuseIsSkippedLikeADamagedOne) {
+    writeBytes(step(0), imageBytes(300.0));
+    writeBytes(step(1), imageBytes(-5.0));
+    writeBytes(step(2), imageBytes(320.0));
+    listSteps(3);
+    nlohmann::json root = nlohmann::json::parse(
+        R"({"grid": {"resolution": [3, 3, 3], "bounds": {"min": [-0.15, -0.15, -0.15], "max": [0.15, 0.15, 0.15]}},
+            "lights": [{"type": "point", "position": [0, 1, 0], "power": 1}],
+            "volume": {"path": "run.vti.series", "fields": {"temperature": "T", "temperature_unit": "kelvin"}}})");
+    eikon::Scene scene = eikon::parseScene(root, (folder_ / "scene.json").string());
+    scene.volume->follow = eikon::VolumeDesc::Follow{0.001, 60.0, ""};  // the timeout a safety net only
+    eikon::sim::SceneFields fields(scene);  // waits for step 0
+    eikon::sim::VolumeSequence& volume = *fields.followedVolume();
+    EXPECT_EQ(volume.currentFile(), step(0).string());
+    const float first = fields.fields().deltaIndex.at(13);
+    ASSERT_TRUE(volume.followNext(true));
+    fields.advanceFrame();
+    EXPECT_EQ(volume.currentFile(), step(2).string());
+    EXPECT_LT(fields.fields().deltaIndex.at(13), first);  // hotter: a lower index
+    ASSERT_EQ(volume.skippedBefore().size(), 1u);
+    EXPECT_EQ(volume.skippedBefore()[0].step, step(1).string());
+    EXPECT_NE(volume.skippedBefore()[0].reason.find("volume.fields.temperature"), std::string::npos)
+        << volume.skippedBefore()[0].reason;
 }
 
 }  // namespace
