@@ -78,7 +78,8 @@ eikon_test(test_vtk_volume LABELS unit LIBS eikon_io eikon_sim eikon_vdb_test_fi
   VTK::IOXML VTK::IOGeometry VTK::FiltersCore SOURCES
   tests/unit/test_vtk_volume.cpp
   tests/unit/test_openfoam_plume.cpp
-  tests/unit/test_volume_mixture.cpp)
+  tests/unit/test_volume_mixture.cpp
+  tests/unit/test_volume_follower.cpp)
 eikon_test(test_sim LABELS unit LIBS eikon_io eikon_sim eikon_vdb_test_files SOURCES
   tests/unit/test_analytic_voxelizer.cpp
   tests/unit/test_volume_sequence.cpp
@@ -231,6 +232,7 @@ eikon_test(test_stability LABELS "integration;sanitize" LIBS eikon_io eikon_rend
 eikon_test(test_cli LABELS integration LIBS eikon_io eikon_vdb_test_files VTK::CommonCore VTK::CommonDataModel VTK::IOXML SOURCES
   tests/integration/test_cli.cpp
   tests/integration/test_cli_live.cpp
+  tests/integration/test_cli_follow.cpp
   tests/integration/test_cli_fluid.cpp
   tests/integration/test_cli_limits.cpp
   tests/integration/test_cli_output_folder.cpp

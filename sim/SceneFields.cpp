@@ -189,7 +189,7 @@ bool SceneFields::changesOverTime() const {
 }
 
 bool SceneFields::framesAreIndependent() const {
-    if (fluid_) return false;
+    if (fluid_ || (volume_ && volume_->following())) return false;
     for (const auto& mesh : meshes_)
         if (mesh->shape.changesOverTime()) return false;
     return true;

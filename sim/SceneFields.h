@@ -41,6 +41,9 @@ public:
     // refreshes fields() (only the cells moving objects touched, without a
     // fluid solver); a static scene stays as it is.
     void advanceFrame();
+    // The volume, when it follows a simulation as it writes (VolumeDesc::follow): its
+    // next step is awaited there before advanceFrame; null otherwise.
+    VolumeSequence* followedVolume() { return volume_ && volume_->following() ? volume_.get() : nullptr; }
     // Whether frame k's fields can be made without frames 0 … k−1: no fluid
     // solver and no moving mesh or water object (a static scene, or a volume
     // sequence with still objects over it).

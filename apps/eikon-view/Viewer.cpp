@@ -1,5 +1,6 @@
 #include "apps/eikon-view/Viewer.h"
 
+#include "apps/common/FollowedVolume.h"
 #include "apps/eikon-view/CameraControls.h"
 #include "apps/eikon-view/ControlPanel.h"
 #include "apps/common/ImagePresenter.h"
@@ -42,11 +43,18 @@ std::filesystem::file_time_type modificationTime(const std::string& path) {
     return error ? std::filesystem::file_time_type{} : time;
 }
 
+// The scene file with --set applied and, with --follow, its volume followed.
+Scene loadScene(const ViewerOptions& options) {
+    Scene scene = loadSceneFile(options.scenePath, options.overrides);
+    if (options.follow) app::followVolume(scene, {options.followPollMs / 1000.0, options.followTimeoutS, ""});
+    return scene;
+}
+
 class Viewer {
 public:
     explicit Viewer(const ViewerOptions& options)
         : options_(options),
-          scene_(loadSceneFile(options.scenePath, options.overrides)),
+          scene_(loadScene(options)),
           window_(gl::createWindowContext(options.width, options.height, "eikon-view — " + options.scenePath)),
           panel_(scene_),
           preview_(PreviewSettings{options.previewViewMs}),
@@ -83,7 +91,9 @@ public:
             const int stride = preview_.strideFor(cameraMoved, now);
             const bool cameraMoving = preview_.cameraMoving(now);  // or came to rest within the refine delay
             const bool running = session_->simulated() && !paused_;
-            const bool advance = (running && pacer_.advances(cameraMoving)) || (session_->simulated() && stepOnce_);
+            bool advance = (running && pacer_.advances(cameraMoving)) || (session_->simulated() && stepOnce_);
+            // A followed simulation moves on only when its next step is complete.
+            if (advance && session_->following()) advance = session_->nextStepReady();
             stepOnce_ = false;
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
@@ -105,6 +115,7 @@ public:
                 largestStride_ = std::max(largestStride_, last_.pixelStride);
                 advancedFrames_ += advance ? 1 : 0;
             }
+            if (advance && session_->following()) noteSkippedSteps();
             adaptPhotons(cameraMoving);
             if (!last_.image.rgba.empty()) image_ = last_.image;
             int width = 0, height = 0;
@@ -283,11 +294,22 @@ private:
         if (time == sceneTime_) return;
         sceneTime_ = time;
         try {
-            const Scene reloaded = loadSceneFile(options_.scenePath, options_.overrides);
+            const Scene reloaded = loadScene(options_);
             rebuild(reloaded, "reloaded " + options_.scenePath);
         } catch (const InputError& error) {
             status_.message = std::string("reload failed, keeping the last scene: ") + error.what();
         }
+    }
+
+    // The panel's message names the damaged steps a followed simulation's
+    // new step was found past.
+    void noteSkippedSteps() {
+        const std::vector<sim::SkippedStep> skipped = session_->skippedBefore();
+        if (skipped.empty()) return;
+        status_.message = "skipped " + std::to_string(skipped.size()) + " damaged step(s) before " +
+                          session_->followedStep() + ": " + skipped.front().reason;
+        for (const sim::SkippedStep& step : skipped)
+            std::fprintf(stderr, "eikon-view: warning: skipped step %s: %s\n", step.step.c_str(), step.reason.c_str());
     }
 
     void saveImage(const std::filesystem::path& path) {

@@ -35,6 +35,12 @@ struct ViewerOptions {
     // advanced a moving scene and the longest are printed at the end, which
     // waits for the full image (the preview refined).
     std::string animate;
+    // Follow the scene's volume as a simulation writes it (--follow): each
+    // new step is shown once complete; the first is awaited for
+    // followTimeoutS at most, later ones for as long as the window is open.
+    bool follow = false;
+    double followPollMs = 250.0;
+    double followTimeoutS = 60.0;
 };
 
 // Returns the process exit code. Throws InputError for a bad scene.

@@ -29,12 +29,27 @@ ViewerSession::ViewerSession(const Scene& scene, bool hardwareGpu)
     : scene_(scene),
       fields_(placedFields(scene, hardwareGpu)),
       source_(std::make_unique<app::FrameSource>(scene_, *fields_, render::RendererOptions{.photons = {}, .progressiveView = true},
-                                                 false, app::ExportNeeds())) {
+                                                 false, app::ExportNeeds())),
+      followed_(fields_->followedVolume()) {
     if (scene.render.method == RenderDesc::Method::Eikonal && imageSpaceOmissions(scene).empty()) {
         imageSpaceScene_ = scene;
         imageSpaceScene_->render.method = RenderDesc::Method::ImageSpace;
         imageSpaceScene_->render.causticMapTexels = kPreviewCausticMapTexels;
     }
+}
+
+bool ViewerSession::nextStepReady() {
+    if (!followed_) return false;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - lastLook_).count() < scene_.volume->follow->pollSeconds) return false;
+    lastLook_ = now;
+    return followed_->followNext(false);
+}
+
+std::string ViewerSession::followedStep() const { return followed_ ? followed_->currentFile() : ""; }
+
+std::vector<sim::SkippedStep> ViewerSession::skippedBefore() const {
+    return followed_ ? followed_->skippedBefore() : std::vector<sim::SkippedStep>{};
 }
 
 render::FrameResult ViewerSession::renderImageSpacePreview(bool advance, int scale) {

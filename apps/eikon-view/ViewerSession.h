@@ -13,9 +13,12 @@
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
 
+#include <chrono>
 #include <map>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace eikon::view {
 
@@ -32,6 +35,15 @@ public:
     std::string solverDevice() const { return fields_->fluidDevice(); }
     std::string waterDevice() const { return fields_->waterDevice(); }
 
+    // Following a simulation (`--follow`): whether its next step is complete
+    // and read, looked for at most once per follow.pollSeconds, without
+    // waiting (sim/volume/VolumeFollower.h); the frame that advances shows it.
+    bool following() const { return followed_ != nullptr; }
+    bool nextStepReady();
+    // The step the current frame shows, and the damaged steps skipped before it.
+    std::string followedStep() const;
+    std::vector<sim::SkippedStep> skippedBefore() const;
+
     // Renders the current frame; with `advance`, a simulated scene moves on
     // one frame (simulated during the render when `pipelined`).
     render::FrameResult renderFrame(bool advance, bool pipelined);
@@ -46,6 +58,8 @@ private:
     Scene scene_;
     std::unique_ptr<sim::SceneFields> fields_;
     std::unique_ptr<app::FrameSource> source_;
+    sim::VolumeSequence* followed_ = nullptr;
+    std::chrono::steady_clock::time_point lastLook_{};
     std::optional<Scene> imageSpaceScene_;  // the scene as its image-space preview draws it
     std::map<int, std::unique_ptr<render::FrameRenderer>> imageSpace_;  // by scale, made when first drawn
 };

@@ -34,5 +34,16 @@ int main(int argc, char** argv) {
                    "(0: the scene advances every frame); photon tracing then keeps to it where it is shorter than "
                    "--target-ms")
         ->check(CLI::Range(0.0, 10000.0));
+    CLI::Option* follow = app.add_flag("--follow", options.follow,
+                                       "Follow the scene's volume (a .pvd or .series time series, an OpenFOAM "
+                                       "case) as a simulation writes it: show each new step once it is complete");
+    app.add_option("--follow-poll-ms", options.followPollMs,
+                   "With --follow: milliseconds between looks at the series")
+        ->check(CLI::Range(1.0, 600000.0))
+        ->needs(follow);
+    app.add_option("--follow-timeout", options.followTimeoutS,
+                   "With --follow: seconds to wait for the first complete step")
+        ->check(CLI::Range(0.001, 1e7))
+        ->needs(follow);
     return eikon::app::parseAndRun(app, argc, argv, "eikon-view", [&] { return eikon::view::runViewer(options); });
 }

@@ -7,6 +7,7 @@
 #include "apps/eikon/FrameOutputs.h"
 #include "apps/eikon/FrameShareLoop.h"
 #include "apps/eikon/FluidWarning.h"
+#include "apps/eikon/FollowReport.h"
 #include "apps/eikon/PowerWarning.h"
 #include "apps/eikon/Ranks.h"
 #include "bridge/grid/FieldViews.h"
@@ -46,9 +47,11 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
     ErrorWarning errorWarning(scene.render.warnError);
     LatticeWarning latticeWarning;
     FluidWarning fluidWarning;
+    sim::VolumeSequence* followed = fields.followedVolume();
+    int rendered = 0;
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
-        const bool more = frame + 1 < frames;
+        bool more = frame + 1 < frames;
         if (more) source.beginNext();
         const render::FrameResult result = source.render();
         LoopTiming timing{0.0, renderMilliseconds(result), 0.0};
@@ -64,14 +67,28 @@ void renderFrames(const Scene& scene, sim::SceneFields& fields, int frames, cons
             latticeWarning.check(frame, result);
             fluidWarning.check(frame, current);
             if (!outputs) outputs.emplace(scene, openOutput());
-            outputs->write(frame, result,
-                           frameReportJson(frame, current, simulated, result, timing,
-                                           pipelined && source.throughRing(), options.distribution, ranks.size()),
-                           source.renderer(),
+            std::string line = frameReportJson(frame, current, simulated, result, timing,
+                                               pipelined && source.throughRing(), options.distribution, ranks.size());
+            if (followed) {
+                warnSkipped(followed->skippedBefore());
+                line = withFollowedStep(line, followed->currentFile(), followed->skippedBefore());
+            }
+            outputs->write(frame, result, line, source.renderer(),
                            {current.time, source.currentViews(), current.exportArrays, current.meshes});
         }
+        ++rendered;
+        // A followed volume's next step, once this frame's outputs are written: a
+        // frame appears as soon as its step is complete.
+        if (more && followed) more = followed->followNext(true);
         if (more) source.publishNext();  // frame k's fields stay current until its outputs are written
         progress.advance();
+        if (!more) break;
+    }
+    if (followed && outputs) {
+        const std::vector<sim::SkippedStep> left = followed->finishFollowing();
+        warnSkipped(left);
+        const std::string why = followed->followEnd();
+        outputs->appendReportLine(followEndLine(why.empty() ? "frames" : why, rendered, left));
     }
 }
 

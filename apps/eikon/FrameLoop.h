@@ -31,6 +31,9 @@ using OpenOutput = std::function<io::OutputFolder&()>;
 
 // Renders `frames` frames, advancing the simulation (if any) between them;
 // frames the scene's `export` section selects also go to DIR/vtk/ and DIR/vdb/.
+// A followed volume (SceneFields::followedVolume) is awaited after each
+// frame's outputs, and the run ends early when following ends; its report
+// names each frame's step and the steps skipped (FollowReport.h).
 void runFrames(const Scene& scene, sim::SceneFields& fields, int frames, const OpenOutput& openOutput,
                ProgressBar& progress, const LoopOptions& options = {});
 

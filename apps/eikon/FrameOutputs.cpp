@@ -32,6 +32,11 @@ void FrameOutputs::write(int frame, const render::FrameResult& result, const std
     else output_->appendReport(reportLine);  // last: a frame's line means all its files are in place
 }
 
+void FrameOutputs::appendReportLine(const std::string& line) {
+    EIKON_CHECK_MSG(!shared_ && output_, "a report line outside the frames of a whole run");
+    output_->appendReport(line);
+}
+
 void FrameOutputs::finishSharedRun(const std::map<int, HeldFrame>& frames) {
     EIKON_CHECK_MSG(shared_ && output_, "finishSharedRun on rank 0 of a shared run");
     std::map<int, double> times;

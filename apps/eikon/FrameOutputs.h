@@ -36,6 +36,9 @@ public:
     void write(int frame, const render::FrameResult& result, const std::string& reportLine,
                const render::FrameRenderer& renderer, const ExportInputs& exported);
 
+    // A line of report.jsonl that is not a frame's (a followed run's end, FollowReport.h).
+    void appendReportLine(const std::string& line);
+
     // A share's frames written so far, by number.
     const std::map<int, HeldFrame>& held() const { return held_; }
     // Rank 0, once every rank's frames exist: their report lines and the

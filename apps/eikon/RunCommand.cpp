@@ -1,5 +1,6 @@
 #include "apps/eikon/RunCommand.h"
 
+#include "apps/common/FollowedVolume.h"
 #include "apps/eikon/FrameLoop.h"
 #include "apps/eikon/Ranks.h"
 #include "apps/eikon/RunAgreement.h"
@@ -18,6 +19,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -27,7 +29,9 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
     CLI::App* run = app.add_subcommand("run", "Render a scene headless: DIR/frames/frame_NNNNN.png and DIR/report.jsonl");
     run->add_option("scene", options.scenePath, "Scene file (JSON, see docs/scene-format.md)")->required();
     run->add_option("--out", options.outDir, "Output folder (default: out/<scene name>)");
-    run->add_option("--frames", options.frames, "Number of frames to render")->check(CLI::Range(1, 1000000));
+    run->add_option("--frames", options.frames, "Number of frames to render (with --follow: at most)")
+        ->check(CLI::Range(1, 1000000))
+        ->each([&options](const std::string&) { options.framesGiven = true; });
     run->add_option("--set", options.overrides, "Override a scene value, e.g. --set render.photons=100000")
         ->type_name("KEY.PATH=VALUE");
     run->add_flag("--quiet", options.quiet, "No progress bar");
@@ -42,6 +46,22 @@ void addRunCommand(CLI::App& app, RunOptions& options) {
                     "frames r, r+K, ... of a scene whose frames are independent (no fluid solver, no moving "
                     "objects); auto: frames where they are independent and there are several, else photons")
         ->check(CLI::IsMember({"auto", "photons", "frames"}));
+    CLI::Option* follow = run->add_flag("--follow", options.follow,
+                  "Follow the scene's volume (a .pvd or .series time series, an OpenFOAM case) as a simulation "
+                  "writes it: render each new step once it is complete, skip a damaged one with a warning");
+    run->add_option("--follow-poll-ms", options.followPollMs,
+                    "With --follow: milliseconds between looks at the series (a step is complete once its files "
+                    "are unchanged between two looks and it reads)")
+        ->check(CLI::Range(1.0, 600000.0))
+        ->needs(follow);
+    run->add_option("--follow-timeout", options.followTimeoutS,
+                    "With --follow: seconds without a new complete step after which following ends")
+        ->check(CLI::Range(0.001, 1e7))
+        ->needs(follow);
+    run->add_option("--follow-stop", options.followStop,
+                    "With --follow: following ends once this file exists and the steps listed are read")
+        ->type_name("FILE")
+        ->needs(follow);
     run->add_flag("--vtk", options.vtk,
                   "Export the fields as DIR/vtk/fields_NNNNN.vti with a .pvd and .series for ParaView: turns "
                   "export.vtk on, with the settings the scene and --set give it (every frame and field by default)");
@@ -87,11 +107,19 @@ int runCommand(const RunOptions& options) {
     // Everything the user supplied is checked before anything is written,
     // by every rank alike, and the ranks agree on it (Ranks::checkInputsTogether).
     Ranks::Agreement agreement;
+    const int frames = options.follow && !options.framesGiven ? std::numeric_limits<int>::max() : options.frames;
     ranks.checkInputsTogether([&] {
         const nlohmann::json document = loadSceneDocument(options.scenePath, overridesOf(options));
         scene = parseScene(document, options.scenePath);
         fingerprint = sceneFingerprint(document);
-        if (scene.volume) sim::checkVolumeFrames(*scene.volume, scene.grid.spec(), options.frames, scene.sourcePath);
+        if (options.follow) {
+            if (ranks.distributed())
+                throw InputError(scene.sourcePath + ": --follow", "one process (steps come one at a time)",
+                                 std::to_string(ranks.size()) + " MPI ranks");
+            followVolume(scene, {options.followPollMs / 1000.0, options.followTimeoutS, options.followStop});
+        } else if (scene.volume) {
+            sim::checkVolumeFrames(*scene.volume, scene.grid.spec(), options.frames, scene.sourcePath);
+        }
         render::requireMemoryFits(scene);  // before the fields, the GL context or anything the scene sizes
         fields = std::make_unique<sim::SceneFields>(scene);
         if (scene.volume && ranks.first()) {  // once its first file has loaded: it is readable
@@ -112,7 +140,8 @@ int runCommand(const RunOptions& options) {
     }, agreement);
     const int ownFrames =
         distribution == Distribution::Frames ? (options.frames + ranks.size() - 1) / ranks.size() : options.frames;
-    ProgressBar progress(ownFrames, options.quiet || !ranks.first());
+    // Following, the frames are not known ahead: no progress bar.
+    ProgressBar progress(ownFrames, options.quiet || !ranks.first() || options.follow);
     // A solver on the GPU queues its passes on the renderer's context: there is
     // no host work to overlap with the render on a thread of its own.
     const bool pipelined = fields->fluidDevice() != "gpu" &&
@@ -124,7 +153,7 @@ int runCommand(const RunOptions& options) {
     };
     try {
         try {
-            runFrames(scene, *fields, options.frames, openOutput, progress, {pipelined, distribution, outDir});
+            runFrames(scene, *fields, frames, openOutput, progress, {pipelined, distribution, outDir});
         } catch (const gl::GpuMemoryError& error) {  // a size the scene asked for, too large for this machine
             throw InputError(scene.sourcePath + ": " + error.what());
         }

@@ -113,6 +113,17 @@ struct VolumeDesc {
     // The emission also lights the scene: photons leave the glowing cells
     // (render/stages/VolumeGlow.h, a volume emitter).
     bool emissionLights = false;
+
+    // Not a scene key: set by `eikon run --follow` and `eikon-view --follow`
+    // (docs/scene-format.md, following a running case). A VTK time series or
+    // OpenFOAM case is watched as a simulation writes it, and each new step
+    // is rendered once it is complete (sim/volume/VolumeFollower.h).
+    struct Follow {
+        double pollSeconds = 0.25;    // between looks at the series or case, > 0
+        double timeoutSeconds = 60.0; // following ends after this long without a new step, > 0
+        std::string stopFile;         // following ends once this file exists (empty: none)
+    };
+    std::optional<Follow> follow;
 };
 
 }  // namespace eikon

@@ -13,14 +13,17 @@
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkInformation.h>
+#include <vtkLogger.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkOpenFOAMReader.h>
+#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProbeFilter.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLDataElement.h>
@@ -98,6 +101,33 @@ private:
     std::string first_;
     unsigned long onAlgorithm_ = 0;
     unsigned long onPipeline_ = 0;
+};
+
+// Following a simulation, a read of a step its writer has not finished may
+// fail (VolumeFollower.h) and is tried again: VTK's own report of it — from
+// readers' inner XML parsers, which no observer sees — is kept off stderr
+// while it reads; the refusal still names the step.
+class QuietVtk {
+public:
+    explicit QuietVtk(bool quiet) : quiet_(quiet) {
+        if (!quiet_) return;
+        verbosity_ = vtkLogger::GetCurrentVerbosityCutoff();
+        displayMode_ = vtkOutputWindow::GetInstance()->GetDisplayMode();
+        vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+        vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+    }
+    ~QuietVtk() {
+        if (!quiet_) return;
+        vtkOutputWindow::GetInstance()->SetDisplayMode(displayMode_);
+        vtkLogger::SetStderrVerbosity(verbosity_);
+    }
+    QuietVtk(const QuietVtk&) = delete;
+    QuietVtk& operator=(const QuietVtk&) = delete;
+
+private:
+    bool quiet_;
+    vtkLogger::Verbosity verbosity_ = vtkLogger::VERBOSITY_WARNING;
+    int displayMode_ = vtkOutputWindow::DEFAULT;
 };
 
 // One .vti/.vtu/.vts/.vtr or legacy .vtk file's data set.
@@ -246,11 +276,17 @@ bool isVtkVolumePath(const fs::path& path) {
     return kind != Kind::Unknown;
 }
 
+bool isVtkTimeSeriesPath(const fs::path& path) {
+    const Kind kind = kindOf(path);
+    return kind == Kind::Collection || kind == Kind::FileSeries || kind == Kind::OpenFoam;
+}
+
 struct VtkVolumeSource::Steps {
     Kind kind = Kind::Unknown;
     std::vector<fs::path> files;  // a data set file per step (an OpenFOAM case: none)
     vtkSmartPointer<vtkOpenFOAMReader> foam;
     std::vector<double> times;    // an OpenFOAM case's time directories
+    std::vector<std::string> timeNames;  // … and their folders' names
     fs::path foamCase;
 
     // Step `step`'s data set; `name` is stepName's.
@@ -260,7 +296,8 @@ struct VtkVolumeSource::Steps {
     }
 };
 
-VtkVolumeSource::VtkVolumeSource(const fs::path& path) : path_(path), steps_(std::make_unique<Steps>()) {
+VtkVolumeSource::VtkVolumeSource(const fs::path& path, bool following)
+    : path_(path), following_(following), steps_(std::make_unique<Steps>()) {
     Steps& steps = *steps_;
     steps.kind = kindOf(path);
     switch (steps.kind) {
@@ -277,14 +314,7 @@ VtkVolumeSource::VtkVolumeSource(const fs::path& path) : path_(path), steps_(std
         break;
     case Kind::Collection:
     case Kind::FileSeries:
-        if (!fs::is_regular_file(path)) throw InputError(path.string(), "an existing time series file", "no such file");
-        steps.files = steps.kind == Kind::Collection ? collectionFiles(path) : seriesFiles(path);
-        if (steps.files.empty()) throw InputError(path.string(), "a time series of at least one file", "none listed");
-        for (const fs::path& file : steps.files) {
-            if (kindOf(file) == Kind::PolyData) refuseSurface(file);
-            if (!fs::is_regular_file(file))
-                throw InputError(path.string(), "every file the series lists", "\"" + file.string() + "\" missing");
-        }
+        listSteps();
         break;
     case Kind::OpenFoam: {
         const fs::path file = fs::is_directory(path) ? path / "system" / "controlDict" : path;
@@ -296,17 +326,72 @@ VtkVolumeSource::VtkVolumeSource(const fs::path& path) : path_(path), steps_(std
         steps.foam->SetFileName(file.c_str());
         steps.foam->SetCreateCellToPoint(0);  // cell data as the solver wrote it, constant per cell
         steps.foam->SetUse64BitFloats(true);  // binary fields as OpenFOAM's default (double) build writes them
-        const VtkErrors errors(*steps.foam);
-        steps.foam->UpdateInformation();
-        vtkDoubleArray* times = steps.foam->GetTimeValues();
-        if (times)
-            for (vtkIdType t = 0; t < times->GetNumberOfTuples(); ++t) steps.times.push_back(times->GetValue(t));
-        if (errors.any() || steps.times.empty())
-            throw InputError(path.string(), "an OpenFOAM case with at least one time directory that VTK's reader reads",
-                             errors.any() ? errors.message() : "no time directories");
+        listSteps();
         break;
     }
     }
+}
+
+// The series' files or the case's time directories; following, what cannot
+// be listed yet keeps the last list.
+void VtkVolumeSource::listSteps() {
+    Steps& steps = *steps_;
+    if (steps.foam) {
+        const QuietVtk quiet(following_);
+        const VtkErrors errors(*steps.foam);
+        steps.foam->SetRefresh();  // scan the time directories again
+        steps.foam->UpdateInformation();
+        std::vector<double> times;
+        std::vector<std::string> names;
+        vtkDoubleArray* values = steps.foam->GetTimeValues();
+        vtkStringArray* folders = steps.foam->GetTimeNames();
+        if (values && folders && folders->GetNumberOfValues() == values->GetNumberOfTuples())
+            for (vtkIdType t = 0; t < values->GetNumberOfTuples(); ++t) {
+                times.push_back(values->GetValue(t));
+                names.push_back(folders->GetValue(t));
+            }
+        if (!following_ && (errors.any() || times.empty()))
+            throw InputError(path_.string(), "an OpenFOAM case with at least one time directory that VTK's reader reads",
+                             errors.any() ? errors.message() : "no time directories");
+        if (errors.any()) return;
+        steps.times = std::move(times);
+        steps.timeNames = std::move(names);
+        return;
+    }
+    if (steps.kind != Kind::Collection && steps.kind != Kind::FileSeries) return;
+    std::vector<fs::path> files;
+    try {
+        if (!fs::is_regular_file(path_)) throw InputError(path_.string(), "an existing time series file", "no such file");
+        files = steps.kind == Kind::Collection ? collectionFiles(path_) : seriesFiles(path_);
+    } catch (const InputError&) {
+        if (following_) return;  // not written yet, or being rewritten
+        throw;
+    }
+    if (files.empty() && !following_)
+        throw InputError(path_.string(), "a time series of at least one file", "none listed");
+    for (const fs::path& file : files) {
+        if (kindOf(file) == Kind::PolyData) refuseSurface(file);
+        if (!following_ && !fs::is_regular_file(file))
+            throw InputError(path_.string(), "every file the series lists", "\"" + file.string() + "\" missing");
+    }
+    steps.files = std::move(files);
+}
+
+void VtkVolumeSource::refresh() {
+    EIKON_CHECK_MSG(following_, "refresh on a VTK source not opened to follow");
+    listSteps();
+}
+
+std::vector<fs::path> VtkVolumeSource::stepFiles(int step, const std::vector<VtkArrayRequest>& requests) const {
+    const auto s = static_cast<std::size_t>(step);
+    if (!steps_->foam) return {steps_->files.at(s)};
+    const fs::path folder = steps_->foamCase / steps_->timeNames.at(s);
+    std::vector<fs::path> files;
+    for (const VtkArrayRequest& request : requests) {
+        const fs::path compressed = folder / (request.name + ".gz");
+        files.push_back(fs::exists(compressed) ? compressed : folder / request.name);
+    }
+    return files;
 }
 
 VtkVolumeSource::~VtkVolumeSource() = default;
@@ -324,12 +409,14 @@ std::string VtkVolumeSource::stepName(int step) const {
 }
 
 void VtkVolumeSource::check(int step, const std::vector<VtkArrayRequest>& requests) const {
+    const QuietVtk quiet(following_);
     requestedArrays(*steps_->read(step, stepName(step)), requests, stepName(step));
 }
 
 VtkResampled VtkVolumeSource::resample(int step, const std::vector<VtkArrayRequest>& requests, const GridSpec& grid,
                                        const glm::dmat4& placement) const {
     const std::string name = stepName(step);
+    const QuietVtk quiet(following_);
     const vtkSmartPointer<vtkDataSet> source = requestedArrays(*steps_->read(step, name), requests, name);
 
     // Each render cell centre in the file's world.

@@ -33,6 +33,9 @@ namespace eikon::io {
 // data that VtkVolumeSource refuses by name: by extension, or a folder (an
 // OpenFOAM case).
 bool isVtkVolumePath(const std::filesystem::path& path);
+// True for VTK data that a simulation adds steps to as it runs: a .pvd or
+// .series time series, or an OpenFOAM case.
+bool isVtkTimeSeriesPath(const std::filesystem::path& path);
 
 // One array to resample: its name in the file and the scene key that names
 // it (for a refusal).
@@ -58,12 +61,27 @@ public:
     // data set yet. InputError naming the path for polygonal data, an
     // unknown extension, a missing file or folder, an unreadable index, a
     // series file that is missing, or an OpenFOAM case without time steps.
-    explicit VtkVolumeSource(const std::filesystem::path& path);
+    //
+    // `following` (a run that follows a simulation as it writes, sim/volume/
+    // VolumeFollower.h): a series index that is missing or does not parse yet,
+    // a listed file not yet there and an OpenFOAM case without time
+    // directories are no error — the steps are what refresh() finds.
+    explicit VtkVolumeSource(const std::filesystem::path& path, bool following = false);
     ~VtkVolumeSource();
     VtkVolumeSource(VtkVolumeSource&&) noexcept;
     VtkVolumeSource& operator=(VtkVolumeSource&&) noexcept;
 
     int stepCount() const;
+    // Lists the steps again, as a simulation adds them: the series index read
+    // anew, or the OpenFOAM case's time directories scanned anew. An index
+    // that does not parse (being rewritten) keeps the last list. Only for a
+    // source opened `following`.
+    void refresh();
+    // The files step `step` is read from, whose sizes tell whether a writer
+    // is still at work: the data set's file; for an OpenFOAM time, the
+    // requested arrays' field files in its directory (NAME or NAME.gz,
+    // whichever exists; NAME where neither does).
+    std::vector<std::filesystem::path> stepFiles(int step, const std::vector<VtkArrayRequest>& requests) const;
     // What step `step` is read from, for messages: a file, or the case and its time.
     std::string stepName(int step) const;
 
@@ -81,7 +99,9 @@ public:
 
 private:
     struct Steps;
+    void listSteps();
     std::filesystem::path path_;
+    bool following_ = false;
     std::unique_ptr<Steps> steps_;
 };
 

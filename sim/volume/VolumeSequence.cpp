@@ -154,20 +154,71 @@ VolumeSequence::VolumeSequence(const VolumeDesc& desc, const Material& medium, c
                                const std::string& scenePath)
     : desc_(desc), medium_(medium), grid_(renderGrid), scenePath_(scenePath) {
     if (desc_.format == VolumeDesc::Format::Vtk)
-        readNamedByScene(scenePath_, [&] { vtk_ = std::make_unique<io::VtkVolumeSource>(desc_.path); });
-    load(0);
+        readNamedByScene(scenePath_, [&] { vtk_ = std::make_unique<io::VtkVolumeSource>(desc_.path, desc_.follow.has_value()); });
+    if (!desc_.follow) {
+        load(0);
+        return;
+    }
+    EIKON_CHECK_MSG(vtk_ != nullptr, "following a volume that is not VTK data");
+    follower_ = std::make_unique<VolumeFollower>(*vtk_, vtkRequests(desc_, vtkSlots(desc_)), [this](int step) {
+        VolumeGrids samples = sampleVtkStep(desc_, *vtk_, step, grid_);
+        // Values the optics refuse (a temperature of 0 K or less, …) make the
+        // step damaged too, rather than ending a followed run.
+        FieldSet scratch;
+        scratch.grid = grid_;
+        scratch.referenceIndex = medium_.index;
+        writeVolumeOptics(desc_, medium_, samples.view(), {scenePath_, vtk_->stepName(step)}, scratch);
+        return samples;
+    });
+    if (!followNext(true)) {
+        std::string skipped;
+        for (const SkippedStep& step : finishFollowing()) skipped += "; skipped " + step.step + ": " + step.reason;
+        throw InputError(scenePath_ + ": volume.path (followed)",
+                         "a complete step of \"" + desc_.path + "\" before following ended",
+                         "none before the " + followEnd() + skipped);
+    }
+    advanceFrame();
+    frame_ = 0;  // the first step taken is frame 0
+}
+
+bool VolumeSequence::followNext(bool wait) {
+    EIKON_CHECK_MSG(follower_ != nullptr, "followNext without following");
+    if (!wait) return follower_->poll();
+    followOutcome_ = follower_->wait(*desc_.follow);
+    return *followOutcome_ == VolumeFollower::Outcome::Ready;
+}
+
+std::string VolumeSequence::followEnd() const {
+    if (!followOutcome_ || *followOutcome_ == VolumeFollower::Outcome::Ready) return "";
+    return *followOutcome_ == VolumeFollower::Outcome::Stopped ? "stop file" : "timeout";
+}
+
+std::vector<SkippedStep> VolumeSequence::finishFollowing() {
+    EIKON_CHECK_MSG(follower_ != nullptr, "finishFollowing without following");
+    return follower_->finish();
 }
 
 VolumeSequence::~VolumeSequence() = default;
 
-bool VolumeSequence::isSequence() const { return desc_.sequence || (vtk_ && vtk_->stepCount() > 1); }
+bool VolumeSequence::isSequence() const {
+    return desc_.sequence || follower_ || (vtk_ && vtk_->stepCount() > 1);
+}
 
 void VolumeSequence::advanceFrame() {
+    if (follower_) {
+        VolumeFollower::Step step = follower_->take();
+        samples_ = std::move(step.samples);
+        file_ = step.name;
+        skippedBefore_ = std::move(step.skipped);
+        ++frame_;
+        return;
+    }
     if (isSequence()) load(frame_ + 1);
     else ++frame_;
 }
 
 void VolumeSequence::seekFrame(int frame) {
+    EIKON_CHECK_MSG(!follower_, "seekFrame on a followed volume: its steps come as a simulation writes them");
     if (isSequence()) load(frame);
     else frame_ = frame;
 }

@@ -4,14 +4,18 @@
 // OpenFOAM case of which rendered frame f shows step f. Each frame's grids
 // are sampled onto the render grid (io/vdb, sparse until sampled; VTK's
 // probe filter) and mapped to δn, κ, σs, g by sim/optics/VolumeOptics.h.
+// Following (VolumeDesc::follow), frame f shows the f-th step that completed
+// while a simulation writes the series (sim/volume/VolumeFollower.h).
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
 #include "bridge/grid/NamedArrays.h"
 #include "bridge/scene/Scene.h"
 #include "sim/optics/VolumeOptics.h"
+#include "sim/volume/VolumeFollower.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +42,8 @@ public:
     // Loads the file for rendered frame 0. InputError naming the scene file
     // and volume.path, then the OpenVDB file (and grid, byte) and what was
     // expected and found, for a missing file or grid or a bad file.
+    // Following, waits for the first complete step (VolumeFollower::wait);
+    // InputError when following ends before one, with the steps skipped.
     VolumeSequence(const VolumeDesc& desc, const Material& medium, const GridSpec& renderGrid,
                    const std::string& scenePath);
     ~VolumeSequence();
@@ -51,7 +57,21 @@ public:
     const std::string& currentFile() const { return file_; }
 
     // Loads the next file of the sequence (a single file stays loaded).
+    // Following: takes the step followNext found ready.
     void advanceFrame();
+
+    // Whether the volume follows a simulation as it writes.
+    bool following() const { return follower_ != nullptr; }
+    // Following: whether the next step is ready for advanceFrame. `wait`:
+    // looks until it is or following ends (VolumeFollower::wait, the outcome
+    // kept for followEnd()); otherwise one look.
+    bool followNext(bool wait);
+    // The damaged steps skipped before the current one.
+    const std::vector<SkippedStep>& skippedBefore() const { return skippedBefore_; }
+    // When following ends: why ("stop file", "timeout", or "" when the
+    // frames asked for were rendered) and the steps left unread, skipped.
+    std::string followEnd() const;
+    std::vector<SkippedStep> finishFollowing();
     // Loads the file of rendered frame `frame` directly (frames of a volume
     // do not depend on each other).
     void seekFrame(int frame);
@@ -74,6 +94,9 @@ private:
     int frame_ = 0;
     std::string file_;
     std::unique_ptr<io::VtkVolumeSource> vtk_;  // VTK data; OpenVDB files are opened per frame
+    std::unique_ptr<VolumeFollower> follower_;  // following a simulation as it writes
+    std::vector<SkippedStep> skippedBefore_;
+    std::optional<VolumeFollower::Outcome> followOutcome_;
     VolumeGrids samples_;
     std::vector<float> velocity_;
 };

@@ -171,6 +171,84 @@ TEST_F(ViewerWindow, OrbitingHoldsAMovingSceneBetweenItsFrames) {
     }
 }
 
+// A hot column (T in kelvin, 200 K over ambient on its axis at x = `axis`)
+// over [-0.5, 0.5] × [0, 1] × [-0.5, 0.5], as ASCII image data.
+void writeColumn(const fs::path& path, double axis) {
+    std::FILE* file = std::fopen(path.c_str(), "w");
+    std::fputs("<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+               "<ImageData WholeExtent=\"0 16 0 16 0 16\" Origin=\"-0.5 0 -0.5\" Spacing=\"0.0625 0.0625 0.0625\">\n"
+               "<Piece Extent=\"0 16 0 16 0 16\"><PointData Scalars=\"T\">\n"
+               "<DataArray type=\"Float64\" Name=\"T\" format=\"ascii\">\n",
+               file);
+    for (int k = 0; k <= 16; ++k)
+        for (int j = 0; j <= 16; ++j)
+            for (int i = 0; i <= 16; ++i) {
+                const double x = -0.5 + i / 16.0 - axis, z = -0.5 + k / 16.0;
+                std::fprintf(file, "%.6f\n", 293.15 + 200.0 * std::exp(-(x * x + z * z) / 0.01));
+            }
+    std::fputs("</DataArray></PointData></Piece></ImageData></VTKFile>\n", file);
+    std::fclose(file);
+}
+
+// Following a series (`--follow`) whose middle step is damaged, the viewer
+// moves on to each complete step and ends showing the last, pixel for pixel
+// as `eikon run` renders that step alone, and warns of the step it skipped.
+// A schlieren picture (no photons, whose count the viewer would adapt while
+// the scene moves) at 25 rays a pixel, which the viewer refines to at rest.
+TEST_F(ViewerWindow, FollowingASeriesEndsOnItsLastCompleteStep) {
+    writeColumn(dir_ / "step_0.vti", -0.2);
+    std::FILE* damaged = std::fopen((dir_ / "step_1.vti").c_str(), "w");
+    std::fputs("<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\"", damaged);  // cut short
+    std::fclose(damaged);
+    writeColumn(dir_ / "step_2.vti", 0.2);
+    std::FILE* series = std::fopen((dir_ / "run.vti.series").c_str(), "w");
+    std::fputs(R"({"files": [{"name": "step_0.vti", "time": 0}, {"name": "step_1.vti", "time": 1},
+                  {"name": "step_2.vti", "time": 2}]})", series);
+    std::fclose(series);
+    const auto sceneFor = [&](const std::string& name, const std::string& path) {
+        const fs::path scene = dir_ / name;
+        std::FILE* file = std::fopen(scene.c_str(), "w");
+        std::fprintf(file, R"({
+  "grid": {"resolution": [16, 16, 16], "bounds": {"min": [-0.5, 0, -0.5], "max": [0.5, 1, 0.5]}},
+  "medium": {"index": 1.000273},
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1]}],
+  "camera": {"position": [0, 0.5, 2], "target": [0, 0.5, 0], "up": [0, 1, 0], "projection": "orthographic", "width_m": 1},
+  "render": {"width": 96, "height": 96, "samples_per_pixel": 25, "write_hdr": false},
+  "diagnostic": {"type": "schlieren", "focal_length": 2.0, "source_height": 0.001, "cutoff": "knife_edge", "knife_angle_deg": 90},
+  "volume": {"path": "%s", "fields": {"temperature": "T", "temperature_unit": "kelvin"}}
+})",
+                     path.c_str());
+        std::fclose(file);
+        return scene.string();
+    };
+    const fs::path frame = dir_ / "frame.png", log = dir_ / "viewer.log";
+    ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
+                      sceneFor("follow.json", "run.vti.series") +
+                      " --follow --follow-poll-ms 1 --frames 12 --width 320 --height 240 --screenshot " +
+                      frame.string(),
+                  log.string()),
+              0);
+    for (const char* step : {"step_0", "step_2"}) {
+        const fs::path headless = dir_ / step;
+        ASSERT_EQ(run(std::string(EIKON_EXECUTABLE) + " run " + sceneFor(std::string(step) + ".json", std::string(step) + ".vti") +
+                      " --quiet --out " + headless.string()),
+                  0);
+    }
+    const auto viewed = eikon::io::readImage(frame);
+    const auto first = eikon::io::readImage(dir_ / "step_0" / "frames" / "frame_00000.png");
+    const auto last = eikon::io::readImage(dir_ / "step_2" / "frames" / "frame_00000.png");
+    ASSERT_EQ(viewed.width, last.width);
+    ASSERT_EQ(viewed.height, last.height);
+    EXPECT_NE(first.rgba, last.rgba);  // the steps look different
+    EXPECT_EQ(viewed.rgba, last.rgba);
+    std::FILE* file = std::fopen(log.c_str(), "r");
+    ASSERT_NE(file, nullptr);
+    std::string output;
+    for (char line[1024]; std::fgets(line, sizeof line, file);) output += line;
+    std::fclose(file);
+    EXPECT_NE(output.find("warning: skipped step " + (dir_ / "step_1.vti").string()), std::string::npos) << output;
+}
+
 TEST_F(ViewerWindow, BadSceneIsExitCodeTwoWithoutAWindow) {
     const fs::path scene = dir_ / "bad.json";
     std::FILE* file = std::fopen(scene.c_str(), "w");
