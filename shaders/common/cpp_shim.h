@@ -15,6 +15,7 @@
 #include <cmath>
 
 #define INOUT(T) T&
+#define OUT(T) T&
 #define precise
 
 namespace eikon::shader {
@@ -25,6 +26,15 @@ using uint = glm::uint;
 using layout::kSharpBox;
 using layout::kSharpTriangles;
 using layout::kSharpSphere;
+using layout::kEmitted;
+using layout::kAbsorbed;
+using layout::kEscaped;
+using layout::kReceived;
+using layout::kCutOff;
+using layout::kBlocked;
+using layout::kReflected;
+using layout::kRouletteGain;
+using layout::kTallyCount;
 
 // GLSL built-ins GLM spells differently.
 inline uint floatBitsToUint(float value) { return glm::floatBitsToUint(value); }
@@ -49,6 +59,7 @@ namespace {
 #include "shaders/common/footprint_coverage.glsl"
 #include "shaders/common/lattice_directions.glsl"
 #include "shaders/common/lattice_phase.glsl"
+#include "shaders/common/invariant_units.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 
