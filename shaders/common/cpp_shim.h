@@ -4,8 +4,10 @@
 // header includes every shared file but those that need their includer's
 // accessors: integrators.glsl (field_at, tests/unit/test_integrators.cpp) and
 // the grid passes' kernels (index_smoothing, index_gradient, octree_ranges,
-// octree_labels: render/stages/NativePrepare.cpp, NativeStepStructure.cpp);
-// the other files of shaders/common declare GPU blocks and are GLSL only.
+// octree_labels: render/stages/NativePrepare.cpp, NativeStepStructure.cpp)
+// and the photon tracer's (photon_tracer and the files it calls:
+// render/stages/NativePhotonTrace.cpp); the other files of shaders/common
+// declare GPU blocks and are GLSL only.
 #pragma once
 
 #include "bridge/layout/GpuLayouts.h"
