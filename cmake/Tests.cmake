@@ -136,6 +136,10 @@ eikon_test(test_render LABELS integration LIBS eikon_io eikon_render eikon_sim S
   tests/integration/test_wavefront_cost.cpp
   tests/integration/test_shared_light_pass.cpp
   tests/integration/test_error_estimate.cpp)
+# The photon pass's native tracer against its compute shader (render.device).
+eikon_test(test_photon_devices LABELS integration LIBS eikon_io eikon_render eikon_sim SOURCES
+  tests/integration/GlTestContext.cpp
+  tests/integration/test_photon_devices.cpp)
 # How far light reaches and how much leaves a light: scaled scenes, spot-light power.
 eikon_test(test_light_reach LABELS integration LIBS eikon_io eikon_render eikon_sim SOURCES
   tests/integration/GlTestContext.cpp

@@ -171,6 +171,7 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
                           {"ms", stage.milliseconds},
                           {"device", render::stageDeviceName(stage.device)}});
         if (!stage.skippedBecause.empty()) stages.back()["reason"] = stage.skippedBecause;
+        if (!stage.deviceReason.empty()) stages.back()["device_reason"] = stage.deviceReason;
     }
     nlohmann::json report{{"frame", frame},
                           {"time_s", produced.time},

@@ -15,7 +15,7 @@ namespace {
 // Runs `work` if `needed`, timing it to completion on the GPU.
 template <typename Work>
 StageReport runStage(const char* name, bool needed, Work&& work) {
-    StageReport report{name, needed, 0.0, {}, StageDevice::Gpu};
+    StageReport report{name, needed, 0.0, {}, StageDevice::Gpu, {}};
     if (!needed) return report;
     const auto start = std::chrono::steady_clock::now();
     work();
@@ -85,8 +85,11 @@ void FrameRenderer::buildStages(const FieldUpload& fields, FieldRing* ring, cons
     if (scene.tracer.stepPolicy == TracerDesc::StepPolicy::Octree && (photonsWanted || drawsView))
         stepStructure_ = std::make_unique<StepStructureStage>(fields.grid, scene.tracer, fields_.hasExtinction(),
                                                               fields_.hasEmission(), gridDevice_);
-    if (photonsWanted)
-        photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, options.photons);
+    if (photonsWanted) {
+        PhotonProgramOptions photonOptions = options.photons;
+        photonOptions.device = gridDevice_;
+        photons_ = std::make_unique<PhotonStage>(scene_, fields_, receivers_, photonOptions);
+    }
     // The lattice diffuses what the photons scattered, on the share that holds the whole pass.
     const bool holdsWholePass = !options.exchange || options.exchange->receivesTotals();
     if (photons_ && feedsLattice(scene, fields_) && holdsWholePass)
@@ -255,10 +258,12 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
                                                                 uniformSteps,
                                                                 [&] { referenceSteps_->run(smoothedIndex, fields_); },
                                                                 [&] { referenceSteps_->fillUniform(emptyOfExtinction); })));
-    if (photons_)
-        result.stages.push_back(runStage("photons", photonsNeeded, [&] {
+    if (photons_) {
+        result.stages.push_back(onDevice(photons_->device(), runStage("photons", photonsNeeded, [&] {
             last_.photons = photons_->run(fields_, stepTexture(), photonSettings_);
-        }));
+        })));
+        result.stages.back().deviceReason = photons_->deviceReason();
+    }
     if (lattice_)
         result.stages.push_back(runStage("multiple_scattering", photonsNeeded, [&] {
             last_.lattice = lattice_->run(fields_, photons_->scatteredPower(),

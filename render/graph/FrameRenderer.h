@@ -45,6 +45,9 @@ struct StageReport {
     std::string skippedBecause;    // Compute shaders, or native loops over the same kernels (the grid
     // passes under render.device, render/stages/StageDevice.h).
     StageDevice device = StageDevice::Gpu;
+    // Why a stage that render.device sent to the CPU ran as a compute shader
+    // (the photons: nativePhotonRefusal); empty otherwise.
+    std::string deviceReason;
 };
 
 // Of an image-space frame (render.method "image_space").

@@ -54,6 +54,7 @@ public:
     const gl::Texture3D& extinction() const { return extinction_; }
     const gl::Texture3D& emission() const { return emission_; }
     gl::Texture3D& gradient() { return gradient_; }
+    const gl::Texture3D& gradient() const { return gradient_; }
     bool hasExtinction() const { return static_cast<bool>(extinction_.id()); }
     bool hasScattering() const { return static_cast<bool>(scattering_.id()); }
     bool hasAnisotropy() const { return static_cast<bool>(anisotropy_.id()); }

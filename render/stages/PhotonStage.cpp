@@ -5,6 +5,7 @@
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
 #include "render/stages/PhotonEmission.h"
+#include "render/stages/StageDevice.h"
 
 #include "bridge/core/Error.h"
 
@@ -128,6 +129,27 @@ bool feedsLattice(const Scene& scene, const FieldTextures& fields) {
     return scene.tracer.multipleScattering == TracerDesc::MultipleScattering::Lbm && fields.hasScattering();
 }
 
+std::string nativePhotonRefusal(const Scene& scene, const FieldTextures& fields, const PhotonProgramOptions& options) {
+    const TracerDesc& tracer = scene.tracer;
+    if (tracer.estimator == TracerDesc::Estimator::Wavefront) return "the wavefront estimator has no native pass";
+    if (tracer.integrator != TracerDesc::Integrator::Leapfrog) return "the native pass integrates by leapfrog only";
+    if (tracer.stepPolicy != TracerDesc::StepPolicy::Octree) return "the native pass takes octree steps only";
+    if (tracer.renormalize) return "the native pass does not renormalise";
+    if (tracer.dispersive()) return "the native pass is not dispersive";
+    if (std::any_of(scene.receivers.begin(), scene.receivers.end(), [](const ReceiverDesc& r) { return r.bounce; }))
+        return "the native pass has no bouncing receivers";
+    if (tracer.storeFluence || fields.hasScattering()) return "the native pass keeps no fluence";
+    if (fields.hasExtinction()) return "the native pass has no extinction";
+    if (glowLights(scene)) return "the native pass has no glowing volume";
+    for (const layout::GpuSharpSurface& surface : buildSharpSurfaces(scene))
+        if (static_cast<int>(surface.shapeA.w + 0.5f) == layout::kSharpTriangles)
+            return "the native pass has no mesh or water surfaces";
+    if (options.bareMarch || options.recordPathVertices > 0 || options.recordEnds)
+        return "the native pass records no paths or ends";
+    if (options.loopBudget) return "the native pass has no loop budget";
+    return {};
+}
+
 unsigned defaultMaxSteps(const GridSpec& grid, double stepLength) {
     const glm::dvec3 extent = grid.extent();
     return static_cast<unsigned>(std::min(4.0 * (extent.x + extent.y + extent.z) / stepLength, 2147483647.0));
@@ -170,8 +192,10 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
                         {"EIKON_RECORD_STRIDE", std::to_string(options.recordPathVertices > 0 ? std::max(1, options.recordStride) : 1)},
                         {"EIKON_RECORD_ENDS", options.recordEnds ? "1" : "0"},
                         {"EIKON_VOLUME_GLOW", glowLights(scene) ? "1" : "0"}});
-        program_ = gl::compileComputeProgram("photon_trace.comp", defines);
-        resumable_ = loopBudget > 0;
+        if (options.device == StageDevice::Cpu) deviceReason_ = nativePhotonRefusal(scene, fields, options);
+        native_ = options.device == StageDevice::Cpu && deviceReason_.empty();
+        if (!native_) program_ = gl::compileComputeProgram("photon_trace.comp", defines);
+        resumable_ = loopBudget > 0 && !native_;
     }
     if (resumable_) {
         const gl::GpuResource resource{"render.photons", "the photons suspended at the driver's loop cap"};
@@ -232,6 +256,7 @@ void PhotonStage::setEmitters(const Scene& scene) {
     emitterCount_ = static_cast<unsigned>(emitters.size());
     emissionFaces_.clear();
     for (const auto& emitter : emitters) emissionFaces_.push_back(emissionFaces(emitter));
+    emitterData_ = emitters;
     emitters_ = emitters.empty() ? gl::Buffer()
                                  : gl::Buffer(emitters.size() * sizeof(layout::GpuEmitter), emitters.data());
 }
@@ -272,6 +297,7 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
     }
     if (!surfaces_.empty()) surfaces_.bind();
     PhotonStats stats;
+    if (native_) gatherNativeInputs(fields, stepTexture, settings);
     resumed_ = 0;
     resumeDispatches_ = 0;
     if (wavefront_) {
@@ -387,9 +413,45 @@ void PhotonStage::smoothFluence(const FieldTextures& fields, const gl::Buffer& r
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
+void PhotonStage::gatherNativeInputs(const FieldTextures& fields, const gl::Texture3D* stepTexture,
+                                     const PhotonSettings& settings) {
+    EIKON_CHECK_MSG(stepTexture, "the native photon pass's step structure");
+    const std::size_t cells = fields.grid().cellCount();
+    hostGradient_.resize(cells);
+    hostSteps_.resize(cells);
+    downloadTexels(fields.gradient(), GL_RGBA, hostGradient_.data(), cells * sizeof(glm::vec4));
+    downloadTexels(*stepTexture, GL_RGBA, hostSteps_.data(), cells * sizeof(glm::vec4));
+    NativePhotonInputs& in = nativeInputs_;
+    fields.gridBlock().download(&in.grid, sizeof in.grid);
+    in.gradient = hostGradient_.data();
+    in.steps = hostSteps_.data();
+    in.receivers.clear();
+    for (unsigned r = 0; r < receivers_.count(); ++r) in.receivers.push_back(receivers_.receiver(r));
+    in.emitters = emitterData_;
+    in.surfaces = surfaces_.surfaces();
+    in.dispersion = glm::vec3(static_cast<float>(dispersion_.r), static_cast<float>(dispersion_.g),
+                              static_cast<float>(dispersion_.b));
+    in.stepLength = static_cast<float>(settings.stepLength);
+    in.maxSteps = settings.maxSteps;
+    in.seed = settings.seed;
+    in.powerCutoff = static_cast<float>(settings.powerCutoff);
+    in.powerUnit = powerUnit_;
+    nativeTallies_ = NativePhotonTallies{};
+    nativeTallies_.receiver.assign(3 * static_cast<std::size_t>(receivers_.texelCount()), 0);
+}
+
 void PhotonStage::tracePhotons(const PhotonSettings& settings, std::size_t first, std::size_t stride,
                                std::size_t count, bool checkerboard) {
     if (emitterCount_ == 0) return;  // no light this frame: lights of no power, a volume that does not glow yet
+    if (native_) {
+        // The tallies so far replace the buffers' (cleared by run): the halves
+        // of a halved pass read them between their traces.
+        tracePhotonsNative(nativeInputs_, first, stride, count, checkerboard, nativeTallies_);
+        receivers_.uploadTallies(nativeTallies_.receiver);
+        const layout::GpuPhotonStats gpu = nativeTallies_.stats();
+        stats_.upload(&gpu, sizeof gpu);
+        return;
+    }
     program_.use();
     glUniform1ui(program_.uniform("checkerboard"), checkerboard ? 1u : 0u);
     if (!surfaces_.empty()) glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());

@@ -10,8 +10,10 @@
 #include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/LightPassShare.h"
+#include "render/stages/NativePhotonTrace.h"
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SharpSurfaceBuffer.h"
+#include "render/stages/StageDevice.h"
 #include "render/stages/VolumeGlow.h"
 #include "render/stages/WavefrontStage.h"
 
@@ -21,6 +23,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace eikon::render {
@@ -64,6 +67,10 @@ struct PhotonProgramOptions {
     // driver's (gl::currentLoopBudget). Tests shrink it to suspend photons
     // often; it may not exceed the driver's where the driver has one.
     std::optional<unsigned> loopBudget{};
+    // Where the photons are traced (render.device, resolved): Cpu runs the
+    // shader's tracer natively (NativePhotonTrace.h) where the scene needs
+    // no option it lacks (nativePhotonRefusal), else the compute shader.
+    StageDevice device = StageDevice::Gpu;
 };
 
 // Where the emitted power went, in W per channel, and the step figures.
@@ -122,6 +129,11 @@ public:
     // stepTexture: the octree step structure, when the scene's tracer uses it.
     PhotonStats run(const FieldTextures& fields, const gl::Texture3D* stepTexture, const PhotonSettings& settings);
 
+    // Where the photons are traced, and, where the CPU was asked for and the
+    // compute shader runs, why.
+    StageDevice device() const { return native_ ? StageDevice::Cpu : StageDevice::Gpu; }
+    const std::string& deviceReason() const { return deviceReason_; }
+
     bool storesFluence() const { return storeFluence_ > 0; }
     // Smoothed fluence φ (W/m², RGB per cell) and power-weighted mean
     // direction (xyz per cell); empty unless storesFluence().
@@ -164,6 +176,9 @@ private:
     // Dispatches the photons the last dispatch suspended, and again, until
     // none is suspended; counts them into resumed_.
     void resumeSuspended(std::size_t batch);
+    // The native pass's inputs for this run: the field and step textures'
+    // texels on the host.
+    void gatherNativeInputs(const FieldTextures& fields, const gl::Texture3D* stepTexture, const PhotonSettings& settings);
 
     ReceiverMaps& receivers_;
     SharpSurfaceBuffer surfaces_;
@@ -181,6 +196,7 @@ private:
     unsigned emitterCount_ = 0;
     std::unique_ptr<VolumeGlow> glow_;  // with emission lights
     std::vector<unsigned> emissionFaces_;  // per emitter, for the wavefront
+    std::vector<layout::GpuEmitter> emitterData_;  // what emitters_ holds
     long long photons_ = 0;      // the count the emitters were built for
     glm::vec3 powerUnit_{0.0f};  // W per fixed-point tally unit, per channel
     gl::Buffer rawFluence_, rawDirection_, fluence_, direction_;
@@ -196,7 +212,16 @@ private:
     gl::Buffer suspendedCount_;        // layout::GpuSuspendedCount
     std::uint64_t resumed_ = 0;        // this trace's resumed photons
     int resumeDispatches_ = 0;         // and the dispatches that resumed them
+    bool native_ = false;              // the tracer runs natively (NativePhotonTrace.h)
+    std::string deviceReason_;         // why not, where render.device asked for it
+    NativePhotonInputs nativeInputs_;
+    std::vector<glm::vec4> hostGradient_, hostSteps_;
+    NativePhotonTallies nativeTallies_;  // this run's, so far
 };
+
+// Why the native photon pass cannot trace `scene` with `options` (the
+// program options it is not compiled with); empty where it can.
+std::string nativePhotonRefusal(const Scene& scene, const FieldTextures& fields, const PhotonProgramOptions& options);
 
 // Whether the scene diffuses what its photons scatter on a lattice
 // (tracer.multiple_scattering "lbm" where some voxel scatters): the light

@@ -29,6 +29,7 @@ public:
 
     unsigned count() const { return static_cast<unsigned>(surfaces_.size()); }
     bool empty() const { return surfaces_.empty(); }
+    const std::vector<layout::GpuSharpSurface>& surfaces() const { return surfaces_; }
     void bind() const;
 
 private:

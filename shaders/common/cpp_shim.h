@@ -4,8 +4,10 @@
 // header includes every shared file but those that need their includer's
 // accessors: integrators.glsl (field_at, tests/unit/test_integrators.cpp) and
 // the grid passes' kernels (index_smoothing, index_gradient, octree_ranges,
-// octree_labels: render/stages/NativePrepare.cpp, NativeStepStructure.cpp);
-// the other files of shaders/common declare GPU blocks and are GLSL only.
+// octree_labels: render/stages/NativePrepare.cpp, NativeStepStructure.cpp)
+// and the photon tracer's (photon_tracer and the files it calls:
+// render/stages/NativePhotonTrace.cpp); the other files of shaders/common
+// declare GPU blocks and are GLSL only.
 #pragma once
 
 #include "bridge/layout/GpuLayouts.h"
@@ -15,6 +17,7 @@
 #include <cmath>
 
 #define INOUT(T) T&
+#define OUT(T) T&
 #define precise
 
 namespace eikon::shader {
@@ -25,6 +28,15 @@ using uint = glm::uint;
 using layout::kSharpBox;
 using layout::kSharpTriangles;
 using layout::kSharpSphere;
+using layout::kEmitted;
+using layout::kAbsorbed;
+using layout::kEscaped;
+using layout::kReceived;
+using layout::kCutOff;
+using layout::kBlocked;
+using layout::kReflected;
+using layout::kRouletteGain;
+using layout::kTallyCount;
 
 // GLSL built-ins GLM spells differently.
 inline uint floatBitsToUint(float value) { return glm::floatBitsToUint(value); }
@@ -49,6 +61,7 @@ namespace {
 #include "shaders/common/footprint_coverage.glsl"
 #include "shaders/common/lattice_directions.glsl"
 #include "shaders/common/lattice_phase.glsl"
+#include "shaders/common/invariant_units.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 

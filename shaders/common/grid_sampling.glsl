@@ -1,6 +1,8 @@
 // The field grid as shaders see it: the GridBlock uniform (C++ mirror:
 // layout::GpuGrid) and the field textures, sampled trilinearly between cell
-// centres with clamp-to-edge. GLSL only. A program sets EIKON_HAS_EXTINCTION,
+// centres with clamp-to-edge. GLSL only; the box's geometry is shared
+// (common/grid_box.glsl), and render/stages/NativeTextures.h samples the
+// textures' host copies for the native light pass. A program sets EIKON_HAS_EXTINCTION,
 // EIKON_HAS_SCATTERING and EIKON_HAS_EMISSION to 1 only when the scene has
 // such fields.
 #ifndef EIKON_HAS_EXTINCTION
@@ -31,36 +33,7 @@ layout(binding = kScatteringTexture) uniform sampler3D scattering_texture;  // �
 layout(binding = kEmissionTexture) uniform sampler3D emission_texture;  // ε rgb in W/(m³·sr)
 #endif
 
-const float EIKON_INFINITY = 1e30f;
-
-float reference_index() { return grid.bounds_min.w; }
-
-vec3 grid_uvw(vec3 x) {
-    return (x - grid.bounds_min.xyz) / (grid.bounds_max.xyz - grid.bounds_min.xyz);
-}
-
-bool grid_contains(vec3 x) {
-    return all(greaterThanEqual(x, grid.bounds_min.xyz)) && all(lessThanEqual(x, grid.bounds_max.xyz));
-}
-
-ivec3 grid_cell(vec3 x) {
-    return clamp(ivec3(floor((x - grid.bounds_min.xyz) / grid.voxel_size.xyz)), ivec3(0), grid.resolution.xyz - 1);
-}
-
-int grid_linear_index(ivec3 cell) {
-    return cell.x + grid.resolution.x * (cell.y + grid.resolution.y * cell.z);
-}
-
-// Parameters (t_enter, t_exit) of the straight ray x + t·d inside the grid
-// box (slab method); t_enter > t_exit when it misses.
-vec2 grid_ray_interval(vec3 x, vec3 d) {
-    vec3 inverse = 1.0f / d;
-    vec3 t0 = (grid.bounds_min.xyz - x) * inverse;
-    vec3 t1 = (grid.bounds_max.xyz - x) * inverse;
-    vec3 near = min(t0, t1);
-    vec3 far = max(t0, t1);
-    return vec2(max(max(near.x, near.y), near.z), min(min(far.x, far.y), far.z));
-}
+#include "common/grid_box.glsl"
 
 // (∇n, δn) at x.
 vec4 sample_gradient_and_delta(vec3 x) {

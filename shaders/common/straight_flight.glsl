@@ -1,7 +1,7 @@
 // Outside the field grid the medium is uniform (n = n_ref, no extinction),
 // so photons and camera rays fly straight until they meet a receiver, enter
-// the grid, or leave for good. GLSL only; needs grid_sampling.glsl and
-// receiver_blocks.glsl.
+// the grid, or leave for good. Shared by GLSL and C++; needs
+// common/grid_box.glsl and common/receiver_hits.glsl.
 struct StraightFlight {
     ReceiverHit hit;   // the receiver met first (hit.receiver < 0: none)
     bool enters_grid;  // no receiver first, and the grid lies ahead
