@@ -17,6 +17,12 @@
 // air (displaced by at least 1 px against the same view with no medium, in
 // this frame or the one before); and the RMS displacement against no medium
 // (the background's mean distortion).
+//
+// A scene with a BOS diagnostic (a camera looking through the air at a
+// background image, docs/scene-format.md) is measured on its background
+// instead: the point a pixel sees there is the pixel less the exact
+// apparent displacement the diagnostic measured (the mean of its rays),
+// and the pixels counted are those whose rays cross the grid.
 #include "apps/common/FrameSource.h"
 #include "gl/GlContext.h"
 #include "io/scene/SceneParser.h"
@@ -28,6 +34,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -104,35 +111,55 @@ int main(int argc, char** argv) {
             const bool more = frame + 1 < frames;
             if (more) source.beginNext();
             source.render();
-            const std::vector<glm::vec4> exits = source.renderer().viewStage().downloadExits();
-            std::vector<std::optional<glm::dvec2>> seen(exits.size());
+            // Per pixel, where the background it sees through the medium lies
+            // in the image, and where it would without the medium.
+            const std::size_t pixels = static_cast<std::size_t>(camera.width) * camera.height;
+            std::vector<std::optional<glm::dvec2>> seen(pixels), unbent(pixels);
+            if (const render::DiagnosticStage* bos = source.renderer().diagnosticStage()) {
+                if (!bos->hasReference()) throw std::runtime_error("a diagnostic scene is measured only with \"bos\"");
+                const render::DiagnosticMeasurements measured = bos->downloadMeasurements();
+                const std::vector<glm::vec4> rays = bos->downloadRays();
+                for (std::size_t i = 0; i < pixels; ++i) {
+                    if (rays[i].w != 1.0f) continue;
+                    const glm::dvec2 centre(static_cast<double>(i % camera.width) + 0.5,
+                                            static_cast<double>(i / camera.width) + 0.5);
+                    const glm::dvec2 d(measured.displacement[2 * i], measured.displacement[2 * i + 1]);
+                    seen[i] = centre - glm::dvec2(d.x, -d.y);  // d on the image's right and up axes
+                    unbent[i] = centre;
+                }
+            } else {
+                const std::vector<glm::vec4> exits = source.renderer().viewStage().downloadExits();
+                for (int py = 0; py < camera.height; ++py)
+                    for (int px = 0; px < camera.width; ++px) {
+                        const std::size_t i = static_cast<std::size_t>(py) * camera.width + px;
+                        const glm::dvec3 straight = camera.direction(px, py);
+                        const auto exit = boxExit(camera.position, straight, low, high);
+                        if (!exit || exits[i].w != 1.0f) continue;
+                        seen[i] = hitPixel(*exit, glm::normalize(glm::dvec3(exits[i])));
+                        if (seen[i]) unbent[i] = hitPixel(*exit, straight);
+                    }
+            }
             double shimmer = 0.0, distortion = 0.0, hotShimmer = 0.0;
             long long counted = 0, distorted = 0, hotCounted = 0;
-            std::vector<char> hot(exits.size(), 0);
-            for (int py = 0; py < camera.height; ++py)
-                for (int px = 0; px < camera.width; ++px) {
-                    const std::size_t i = static_cast<std::size_t>(py) * camera.width + px;
-                    const glm::dvec3 straight = camera.direction(px, py);
-                    const auto exit = boxExit(camera.position, straight, low, high);
-                    if (!exit || exits[i].w != 1.0f) continue;
-                    seen[i] = hitPixel(*exit, glm::normalize(glm::dvec3(exits[i])));
-                    if (!seen[i]) continue;
-                    if (const auto still = hitPixel(*exit, straight)) {
-                        const glm::dvec2 shift = *seen[i] - *still;
-                        distortion += glm::dot(shift, shift);
-                        ++distorted;
-                        hot[i] = glm::dot(shift, shift) >= 1.0;
-                    }
-                    if (!before.empty() && before[i]) {
-                        const glm::dvec2 shift = *seen[i] - *before[i];
-                        shimmer += glm::dot(shift, shift);
-                        ++counted;
-                        if (hot[i] || hotBefore[i]) {
-                            hotShimmer += glm::dot(shift, shift);
-                            ++hotCounted;
-                        }
+            std::vector<char> hot(pixels, 0);
+            for (std::size_t i = 0; i < pixels; ++i) {
+                if (!seen[i]) continue;
+                if (const auto& still = unbent[i]) {
+                    const glm::dvec2 shift = *seen[i] - *still;
+                    distortion += glm::dot(shift, shift);
+                    ++distorted;
+                    hot[i] = glm::dot(shift, shift) >= 1.0;
+                }
+                if (!before.empty() && before[i]) {
+                    const glm::dvec2 shift = *seen[i] - *before[i];
+                    shimmer += glm::dot(shift, shift);
+                    ++counted;
+                    if (hot[i] || hotBefore[i]) {
+                        hotShimmer += glm::dot(shift, shift);
+                        ++hotCounted;
                     }
                 }
+            }
             std::printf("frame %d: RMS displacement since the frame before %.3f px over %lld pixels, %.3f px over the "
                         "%lld seen through hot air; against no medium %.3f px\n",
                         frame, counted ? std::sqrt(shimmer / counted) : 0.0, counted,

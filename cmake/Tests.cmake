@@ -101,6 +101,7 @@ eikon_test(test_fluid LABELS unit LIBS eikon_sim SOURCES
   tests/unit/test_fluid_pressure.cpp
   tests/unit/test_fluid_advection.cpp
   tests/unit/test_fluid_simulation.cpp
+  tests/unit/test_fluid_vorticity.cpp
   tests/unit/test_fluid_frame_report.cpp
   tests/unit/test_optics.cpp
   tests/unit/test_solver_export.cpp)

@@ -188,6 +188,7 @@
     X(kSolverCoarse, 18)     /* buffer Coarse { float values[]; }: multigrid, the coarser level's vector */    \
     X(kSolverFine, 19)       /* buffer Fine { float values[]; }: multigrid, the finer level's vector */        \
     X(kSolverSourceCells, 20) /* buffer Held { uvec2 held[]; }: (sample, float bits) of each sample a source holds */ \
+    X(kSolverVorticity, 16)   /* buffer Vorticity { vec4 omega[]; }: per cell, (ω, |ω|); shares 16 with kSolverBackward */ \
     X(kOpticsTemperature, 21) /* buffer OpticsTemperature { float theta[]; }: T − T_amb on the solver grid, read */ \
     X(kOpticsConcentration, 22) /* buffer OpticsConcentration { float concentration[]; }: on the solver grid */ \
     X(kOpticsDye, 23)         /* buffer OpticsDye { float dye[]; }: on the solver grid */                         \

@@ -285,6 +285,7 @@ struct SimDesc {
     double concentrationDiffusivity = 1.6e-5; // m²/s, >= 0
     double dyeDiffusivity = 0.0;              // m²/s, >= 0
     double pressureTolerance = 1e-6;          // relative max-norm residual of the pressure solve, in (0, 1)
+    double vorticityConfinement = 0.0;        // ε of [Fedkiw01] eq. 11, >= 0; 0: off (sim/fluid/VorticityConfinement.h)
     std::array<Boundary, 6> boundaries{};     // x min, x max, y min, y max, z min, z max
     std::vector<Obstacle> obstacles;
     std::vector<Source> sources;

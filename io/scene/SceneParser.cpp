@@ -521,7 +521,7 @@ SimDesc readSim(const JsonReader& node) {
                                      "gravity",
                                      "thermal_expansion", "concentration_expansion", "viscosity",
                                      "thermal_diffusivity", "concentration_diffusivity", "dye_diffusivity",
-                                     "pressure_tolerance", "boundaries", "obstacles", "sources",
+                                     "pressure_tolerance", "vorticity_confinement", "boundaries", "obstacles", "sources",
                                      "ambient_temperature", "ambient_pressure", "optics"});
     if (auto fluid = fields.optional("fluid"); fluid && fluid->oneOf({"air", "liquid"}) == "liquid") {
         sim.fluid = SimDesc::Fluid::Liquid;  // water at 20 °C, sucrose syrup as liquid B
@@ -561,6 +561,7 @@ SimDesc readSim(const JsonReader& node) {
     if (auto v = fields.optional("concentration_diffusivity")) sim.concentrationDiffusivity = v->number(kNonNegative);
     if (auto v = fields.optional("dye_diffusivity")) sim.dyeDiffusivity = v->number(kNonNegative);
     if (auto v = fields.optional("pressure_tolerance")) sim.pressureTolerance = v->number(NumberRange::open(0.0, 1.0));
+    if (auto v = fields.optional("vorticity_confinement")) sim.vorticityConfinement = v->number(kNonNegative);
     if (auto boundaries = fields.optional("boundaries")) readSimBoundaries(*boundaries, sim);
     sim.obstacles = readList<SimDesc::Obstacle>(fields, "obstacles", readSimObstacle);
     sim.sources = readList<SimDesc::Source>(fields, "sources", readSimSource);

@@ -18,7 +18,8 @@ struct SolverPhase {
 };
 inline constexpr SolverPhase kSubstepStart{"at the start of a substep", "sim"};  // values handed in from outside
 inline constexpr SolverPhase kAfterSources{
-    "after sources", "sim.sources, sim.thermal_expansion, sim.concentration_expansion, sim.gravity"};
+    "after sources",
+    "sim.sources, sim.thermal_expansion, sim.concentration_expansion, sim.gravity, sim.vorticity_confinement"};
 inline constexpr SolverPhase kAfterAdvection{"after advection", "sim.cfl, sim.substeps"};
 inline constexpr SolverPhase kAfterDiffusion{
     "after diffusion", "sim.viscosity, sim.thermal_diffusivity, sim.concentration_diffusivity, sim.dye_diffusivity"};

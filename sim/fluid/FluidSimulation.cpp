@@ -6,6 +6,7 @@
 #include "sim/fluid/MassCorrection.h"
 #include "sim/fluid/ParallelOps.h"
 #include "sim/fluid/SolverLimits.h"
+#include "sim/fluid/VorticityConfinement.h"
 
 #include <algorithm>
 #include <chrono>
@@ -177,6 +178,7 @@ void FluidSimulation::substepOnCpu(double dt) {
         PhaseClock clock(timing(kSources));
         addToSources(sources_.applyScalars(state_));
         addBuoyancy(state_, domain_, desc_, dt);
+        addVorticityConfinement(state_, domain_, desc_.vorticityConfinement, dt);
         sources_.applyVelocity(state_);
         enforceVelocityBoundaries(state_.flow, domain_);
         checkFinite(kAfterSources, kScalars | kVelocity);

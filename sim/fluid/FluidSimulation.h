@@ -1,7 +1,8 @@
 // The built-in fluid and mixing solver, as the frame loop sees it.
 //
 // One substep ([Stam99] §2; [Bridson15] ch. 2–6):
-//   sources   hot plates, jet scalars, Boussinesq buoyancy, jet velocities
+//   sources   hot plates, jet scalars, Boussinesq buoyancy, vorticity
+//             confinement (VorticityConfinement.h), jet velocities
 //             (fixed scalars are set again after advection, jet velocities before projection)
 //   advection MacCormack with the extrema limiter (Advection.h), velocity and
 //             scalars; in a closed domain scalar totals are restored (MassCorrection.h)

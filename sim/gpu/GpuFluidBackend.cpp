@@ -4,7 +4,10 @@
 #include "gl/ShaderLibrary.h"
 #include "sim/fluid/DiffusionRoles.h"
 #include "sim/fluid/SolverLimits.h"
+#include "sim/fluid/VorticityConfinement.h"
 #include "sim/gpu/GpuDomain.h"
+
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <utility>
@@ -49,6 +52,11 @@ GpuFluidBackend::GpuFluidBackend(const FluidSimulation& simulation)
       pressureSolver_(domain_, h_),
       buoyancy_(gl::compileComputeProgram("sim/buoyancy.comp")),
       boundaries_(gl::compileComputeProgram("sim/velocity_boundaries.comp")) {
+    if (desc_.vorticityConfinement > 0.0) {
+        vorticity_ = gl::Buffer(temperature_.count() * sizeof(glm::vec4), solverResource("vorticity", domain_.cells));
+        vorticityPass_ = gl::compileComputeProgram("sim/vorticity.comp");
+        confinementPass_ = gl::compileComputeProgram("sim/vorticity_confinement.comp");
+    }
     const DiffusionRoles roles = diffusionRoles(domain_, simulation.sources(), simulation.state().flow);
     temperatureDiffusion_ = GpuDiffusion(domain_.cells, roles.temperature);
     concentrationDiffusion_ = GpuDiffusion(domain_.cells, roles.scalars);
@@ -140,6 +148,37 @@ void GpuFluidBackend::addBuoyancy(double dt) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
+void GpuFluidBackend::addVorticityConfinement(double dt) {
+    if (desc_.vorticityConfinement == 0.0) return;
+    const glm::vec3 h(h_);
+    vorticityPass_.use();
+    velocity_[0].bind(layout::kSolverVelocityX);
+    velocity_[1].bind(layout::kSolverVelocityY);
+    velocity_[2].bind(layout::kSolverVelocityZ);
+    vorticity_.bindStorage(layout::kSolverVorticity);
+    glUniform3i(vorticityPass_.uniform("cells"), domain_.cells.x, domain_.cells.y, domain_.cells.z);
+    glUniform3f(vorticityPass_.uniform("h"), h.x, h.y, h.z);
+    vorticityPass_.dispatchOverCells(domain_.cells);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    confinementPass_.use();
+    solid_.bindStorage(layout::kSolverCells);
+    vorticity_.bindStorage(layout::kSolverVorticity);
+    glUniform3i(confinementPass_.uniform("cells"), domain_.cells.x, domain_.cells.y, domain_.cells.z);
+    glUniform1ui(confinementPass_.uniform("open_faces"), openFaces_);
+    glUniform3f(confinementPass_.uniform("h"), h.x, h.y, h.z);
+    glUniform1f(confinementPass_.uniform("scale"),
+                static_cast<float>(desc_.vorticityConfinement * confinementLength(h_)));
+    glUniform1f(confinementPass_.uniform("dt"), static_cast<float>(dt));
+    glUniform1f(confinementPass_.uniform("min_gradient"), static_cast<float>(kMinVorticityGradient));
+    for (int axis = 0; axis < 3; ++axis) {
+        velocity_[axis].bind(layout::kSolverTarget);
+        glUniform1i(confinementPass_.uniform("axis"), axis);
+        confinementPass_.dispatchOverCells(velocity_[axis].size());
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
 void GpuFluidBackend::checkScalars(const SolverPhase& when) {
     finite_.check(temperature_, "temperature", "cell", when);
     finite_.check(concentration_, "concentration", "cell", when);
@@ -160,6 +199,7 @@ void GpuFluidBackend::substep(double dt, std::vector<PhaseTiming>& timings) {
 
     sources_.applyScalars(temperature_, concentration_, dye_);
     addBuoyancy(dt);
+    addVorticityConfinement(dt);
     sources_.applyVelocity(velocity_);
     enforceVelocityBoundaries();
     checkScalars(kAfterSources);

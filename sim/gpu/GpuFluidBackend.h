@@ -1,6 +1,7 @@
 // The fluid solver's substep as OpenGL 4.5 compute passes: the phases,
 // stopping rules and checks of FluidSimulation.h on GPU buffers — sources
-// and buoyancy (GpuSources, buoyancy.comp), MacCormack advection with the
+// and buoyancy (GpuSources, buoyancy.comp), vorticity confinement
+// (vorticity.comp, vorticity_confinement.comp), MacCormack advection with the
 // closed box's totals restored (GpuAdvection, GpuMassCorrection), implicit
 // diffusion (GpuDiffusion) and the multigrid-preconditioned pressure
 // projection (GpuPressureSolver). Fields are float32 (the temperature as
@@ -47,6 +48,7 @@ public:
 
 private:
     void addBuoyancy(double dt);
+    void addVorticityConfinement(double dt);
     void enforceVelocityBoundaries();
     void checkScalars(const SolverPhase& when);
     void checkVelocity(const SolverPhase& when);
@@ -68,7 +70,8 @@ private:
     GpuPressureSolver pressureSolver_;
     GpuReduction reduction_;  // the CFL number's largest face speeds
     GpuFiniteCheck finite_;
-    gl::Program buoyancy_, boundaries_;
+    gl::Buffer vorticity_;  // vec4 (ω, |ω|) per cell; empty without confinement
+    gl::Program buoyancy_, boundaries_, vorticityPass_, confinementPass_;
     std::array<GLuint, 5> timestamps_{};  // GL timer queries at the phase boundaries
     std::uint64_t busBytes_ = 0;
 };

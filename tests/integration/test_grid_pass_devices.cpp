@@ -186,11 +186,21 @@ TEST_F(GridPassDevices, HeatShimmersFieldGivesTheSameGradientAndLabels) {
     expectSameOnBothDevices(scene.grid, fields.fields(), "heat_shimmer");
 }
 
-// The frame a renderer draws on each device: heat_shimmer's picture at a
-// quarter of its size, the same to the bounds above carried through the
-// camera rays — measured here as the largest difference of linear radiance.
+// The frame a renderer draws on each device: heat_shimmer's field as the
+// plain view sees it (the scene's BOS camera replaced by a view down the
+// grill onto a checkerboard floor 1 m below, 8° below the horizon) at
+// 160×120, the same to the bounds above carried through the camera rays —
+// measured here as the largest difference of linear radiance.
 TEST_F(GridPassDevices, HeatShimmersFrameIsTheSameOnBothDevices) {
     Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/heat_shimmer.json");
+    scene.diagnostic.reset();
+    scene.camera.position = glm::dvec3(0.0, 0.57, 3.0);
+    scene.camera.target = glm::dvec3(0.0, 0.02, -0.8);
+    scene.render.environment.kind = EnvironmentDesc::Kind::Sky;
+    scene.render.environment.groundHeight = -1.0;
+    scene.render.environment.checkerSize = 0.03;
+    scene.render.samplesPerPixel = 1;
+    scene.render.writeHdr = true;  // the linear image compared below
     scene.render.width = 160;
     scene.render.height = 120;
     scene.render.errorEstimate = false;

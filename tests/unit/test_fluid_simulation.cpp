@@ -72,9 +72,9 @@ TEST(FluidSimulation, NonFiniteValuesAreCaughtWithFieldAndCell) {
         desc.thermalExpansion = 1e300;  // buoyancy overflows at the one hot cell
         FluidSimulation sim(desc, kRenderGrid);
         sim.state().temperature(1, 2, 3) += 1e10;
-        EXPECT_EQ(messageOf(sim), "sim.sources, sim.thermal_expansion, sim.concentration_expansion, sim.gravity (the solver's "
-                                  "velocity_y at face (1, 2, 3) of sim.resolution, after sources): expected a finite value, "
-                                  "found inf");
+        EXPECT_EQ(messageOf(sim), "sim.sources, sim.thermal_expansion, sim.concentration_expansion, sim.gravity, "
+                                  "sim.vorticity_confinement (the solver's velocity_y at face (1, 2, 3) of "
+                                  "sim.resolution, after sources): expected a finite value, found inf");
     }
 }
 

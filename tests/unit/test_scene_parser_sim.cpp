@@ -28,7 +28,7 @@ const char* const kValidSim = R"({
   "frame_time": 0.02, "substeps": 3, "max_substeps": 500, "cfl": 1.5, "gravity": [0, -9.8, 0],
   "thermal_expansion": 3e-4, "concentration_expansion": 0.2, "viscosity": 2e-6,
   "thermal_diffusivity": 1.5e-7, "concentration_diffusivity": 1e-9, "dye_diffusivity": 1e-8,
-  "pressure_tolerance": 1e-5, "device": "gpu",
+  "pressure_tolerance": 1e-5, "vorticity_confinement": 0.8, "device": "gpu",
   "boundaries": {"y_max": "open", "x_min": "closed"},
   "obstacles": [{"type": "box", "min": [-0.05, 0, -0.05], "max": [0.05, 0.1, 0.05]},
                 {"type": "sphere", "center": [0, 0.3, 0], "radius": 0.04}],
@@ -63,6 +63,7 @@ TEST(SceneParserSim, ParsesEverySimKey) {
     EXPECT_DOUBLE_EQ(sim.concentrationDiffusivity, 1e-9);
     EXPECT_DOUBLE_EQ(sim.dyeDiffusivity, 1e-8);
     EXPECT_DOUBLE_EQ(sim.pressureTolerance, 1e-5);
+    EXPECT_DOUBLE_EQ(sim.vorticityConfinement, 0.8);
     EXPECT_EQ(sim.boundaries[3], SimDesc::Boundary::Open);
     for (int face : {0, 1, 2, 4, 5}) EXPECT_EQ(sim.boundaries[face], SimDesc::Boundary::Closed) << face;
     ASSERT_EQ(sim.obstacles.size(), 2u);
@@ -101,6 +102,7 @@ TEST(SceneParserSim, AbsentSimAndFluidDefaults) {
     EXPECT_DOUBLE_EQ(air.viscosity, 1.5e-5);
     EXPECT_DOUBLE_EQ(air.concentrationExpansion, 0.0);
     EXPECT_DOUBLE_EQ(air.pressureTolerance, 1e-6);
+    EXPECT_DOUBLE_EQ(air.vorticityConfinement, 0.0);  // off
     EXPECT_EQ(air.maxSubsteps, 1000);
     // A minimum above the default limit raises the limit with it.
     EXPECT_EQ(parseScene(sceneWithSim(json::object({{"substeps", 5000}})), "test.json").sim->maxSubsteps, 5000);
@@ -132,6 +134,7 @@ TEST(SceneParserSim, BadValuesNameTheirJsonPath) {
         {"max_substeps", 0, "sim.max_substeps", "an integer in [1, 1000000]"},
         {"max_substeps", 1e7, "sim.max_substeps", "an integer in [1, 1000000]"},
         {"viscosity", -1e-6, "sim.viscosity", "a number >= 0"},
+        {"vorticity_confinement", -0.1, "sim.vorticity_confinement", "a number >= 0"},
         {"pressure_tolerance", 1, "sim.pressure_tolerance", "a number in (0, 1)"},
         {"boundaries", json::object({{"y_max", "leaky"}}), "sim.boundaries.y_max", "one of"},
         {"boundaries", json::object({{"top", "open"}}), "sim.boundaries.top", "one of the keys"},
