@@ -25,7 +25,5 @@ vec3 camera_ray_direction_at(vec2 point) {
                                      : normalize(camera.forward.xyz + camera_image_offset_at(point));
 }
 
-// The ray through a pixel's centre.
-vec3 camera_ray_origin(uvec2 pixel) { return camera_ray_origin_at(vec2(pixel) + 0.5f); }
-
+// The direction of the ray through a pixel's centre.
 vec3 camera_ray_direction(uvec2 pixel) { return camera_ray_direction_at(vec2(pixel) + 0.5f); }
