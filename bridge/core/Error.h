@@ -9,6 +9,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace eikon {
 
@@ -34,11 +35,42 @@ public:
 
 [[noreturn]] void failCheck(const char* file, int line, const char* condition, const std::string& detail);
 
+// A number or enumerator as EIKON_CHECK_EQ prints it.
+template <class T>
+std::string checkedValue(const T& value) {
+    if constexpr (std::is_enum_v<T>)
+        return std::to_string(static_cast<std::underlying_type_t<T>>(value));
+    else if constexpr (std::is_same_v<T, bool>)
+        return value ? "true" : "false";
+    else {
+        static_assert(std::is_arithmetic_v<T>, "EIKON_CHECK_EQ prints numbers and enumerators");
+        return std::to_string(value);
+    }
+}
+
+// EIKON_CHECK_EQ's failure: both sides, each as written and as valued.
+template <class A, class B>
+[[noreturn]] void failCheckEq(const char* file, int line, const char* a, const char* b, const A& aValue,
+                              const B& bValue) {
+    failCheck(file, line, (std::string(a) + " == " + b).c_str(),
+              std::string(a) + " is " + checkedValue(aValue) + ", " + b + " is " + checkedValue(bValue));
+}
+
 }  // namespace eikon
 
 #define EIKON_CHECK(condition)                                                   \
     do {                                                                         \
         if (!(condition)) ::eikon::failCheck(__FILE__, __LINE__, #condition, ""); \
+    } while (false)
+
+// EIKON_CHECK(a == b) that names both values when it fails; each side is
+// evaluated once.
+#define EIKON_CHECK_EQ(a, b)                                                            \
+    do {                                                                                \
+        const auto& eikonCheckA = (a);                                                  \
+        const auto& eikonCheckB = (b);                                                  \
+        if (!(eikonCheckA == eikonCheckB))                                              \
+            ::eikon::failCheckEq(__FILE__, __LINE__, #a, #b, eikonCheckA, eikonCheckB); \
     } while (false)
 
 #define EIKON_CHECK_MSG(condition, detail)                                             \
