@@ -2,7 +2,8 @@
 //
 // InputError is for anything a user supplied (scene file, CLI, mesh, image):
 // the message names where (file and JSON path or line), what was expected and
-// what was found, and the CLI turns it into exit code 2. CHECK is for
+// what was found, and the CLI turns it into exit code 2. NumericalBreakdown
+// is a computation that broke down on valid input (exit code 1). CHECK is for
 // invariants of our own code (after pbrt-v4 util/check.h, [Pharr23]): a
 // failure is a bug.
 #pragma once
@@ -25,6 +26,17 @@ public:
 
 private:
     std::string where_;
+};
+
+// A computation whose numbers left the range it works in (a solver's field
+// became NaN or infinite): a failure of the run, exit code 1, not an input
+// error, though its message names the keys that drive the computation, as
+// an InputError's does ("where: expected what, found what").
+class NumericalBreakdown : public std::runtime_error {
+public:
+    NumericalBreakdown(const std::string& where, const std::string& expected, const std::string& found)
+        : std::runtime_error(where + ": expected " + expected + ", found " + found) {}
+    explicit NumericalBreakdown(const std::string& message) : std::runtime_error(message) {}
 };
 
 // A broken invariant of eikon itself; never caused by user input.
