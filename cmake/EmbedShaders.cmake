@@ -1,7 +1,7 @@
 # Script mode: writes OUTPUT, a C++ file holding every shader of FILES (paths
 # relative to ROOT, separated by '|') as a string, keyed by its path below
-# shaders/, and the table of bridge/layout/GpuLayouts.h's shader constants
-# (gl/EmbeddedShaders.h).
+# shaders/, and the tables of bridge/layout/GpuLayouts.h's shader constants
+# and struct member lists (gl/EmbeddedShaders.h).
 string(REPLACE "|" ";" FILES "${FILES}")
 get_filename_component(output_dir ${OUTPUT} DIRECTORY)
 file(MAKE_DIRECTORY ${output_dir})
@@ -17,6 +17,18 @@ std::span<const ShaderConstant> layoutConstants() {
     static constexpr ShaderConstant constants[] = {EIKON_LAYOUT_SHADER_CONSTANTS(EIKON_EMBED_CONSTANT)};
 #undef EIKON_EMBED_CONSTANT
     return constants;
+}
+
+std::span<const ShaderStruct> layoutStructs() {
+    static const auto glslMembers = [](std::span<const layout::GlslMember> members) {
+        std::vector<ShaderMember> out;
+        for (const layout::GlslMember& member : members) out.push_back({member.typeName, member.name, member.count});
+        return out;
+    };
+#define EIKON_EMBED_STRUCT(name, list) ShaderStruct{#list, glslMembers(layout::name##Members)},
+    static const ShaderStruct structs[] = {EIKON_LAYOUT_STRUCTS(EIKON_EMBED_STRUCT)};
+#undef EIKON_EMBED_STRUCT
+    return structs;
 }
 
 const std::map<std::string, std::string_view>& embeddedShaders() {

@@ -34,12 +34,14 @@ eikon_test(test_plot LABELS unit LIBS eikon_plot eikon_io SOURCES tests/unit/tes
 eikon_test(test_io LABELS unit LIBS eikon_io SOURCES
   tests/unit/SceneParserTestSupport.cpp
   tests/unit/test_scene_parser.cpp
+  tests/unit/test_scene_parser_errors.cpp
   tests/unit/test_scene_file.cpp
   tests/unit/test_scene_parser_sim.cpp
   tests/unit/test_scene_parser_render_method.cpp
   tests/unit/test_scene_parser_diagnostic.cpp
   tests/unit/test_paint_parser.cpp
   tests/unit/test_grid_spec.cpp
+  tests/unit/test_check_eq.cpp
   tests/unit/test_output_folder.cpp
   tests/unit/test_atomic_file.cpp
   tests/unit/test_orbit.cpp

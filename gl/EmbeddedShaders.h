@@ -1,12 +1,14 @@
 // The GLSL sources of shaders/, compiled into the binary at build time
 // (cmake/EmbedShaders.cmake), keyed by their path below shaders/, and the
-// named constants of the GPU contract that every program declares.
+// named constants and struct bodies of the GPU contract that every program
+// declares.
 #pragma once
 
 #include <map>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace eikon::gl {
 
@@ -22,5 +24,24 @@ struct ShaderConstant {
 // generated file defines it: gl sees no bridge/layout
 // (cmake/CheckLayering.cmake), eikon_render as a whole does.
 std::span<const ShaderConstant> layoutConstants();
+
+// One member of a GPU struct as GLSL declares it: `type name;`, or
+// `type name[count];` where count > 0.
+struct ShaderMember {
+    std::string_view type;
+    std::string_view name;
+    std::size_t count;
+};
+
+// A GPU struct's member list, named as its X-macro in
+// bridge/layout/GpuLayouts.h (EIKON_LAYOUT_STRUCTS); the shader library
+// declares it as a GLSL macro of that name, which shaders write as the body
+// of the block or struct.
+struct ShaderStruct {
+    const char* name;
+    std::vector<ShaderMember> members;
+};
+
+std::span<const ShaderStruct> layoutStructs();
 
 }  // namespace eikon::gl

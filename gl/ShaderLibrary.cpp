@@ -65,10 +65,22 @@ private:
 
 // `const int kEmitters = 2;` and so on: GLSL 4.50 takes constant expressions
 // in layout(binding = ...), so shaders bind by the C++ enumerators' names.
+// Then each GPU struct's members as a macro of its list's name,
+// `#define EIKON_GPU_GRID vec4 bounds_min; ...`, after the constants its
+// array lengths may name.
 std::string layoutDeclarations() {
     std::string text = "// Binding points, units and tally indices (gl/ShaderLibrary.cpp).\n";
     for (const auto& [name, value] : layoutConstants())
         text += "const int " + std::string(name) + " = " + std::to_string(value) + ";\n";
+    for (const ShaderStruct& layoutStruct : layoutStructs()) {
+        text += "#define " + std::string(layoutStruct.name);
+        for (const ShaderMember& member : layoutStruct.members) {
+            text += " " + std::string(member.type) + " " + std::string(member.name);
+            if (member.count > 0) text += "[" + std::to_string(member.count) + "]";
+            text += ";";
+        }
+        text += "\n";
+    }
     return text;
 }
 

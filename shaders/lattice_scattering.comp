@@ -138,14 +138,7 @@ uniform int probe_stride;
 // bits): the scattering cells whose optical depth (the lattice's σt′) along the longest
 // voxel edge exceeds validated_depth (LatticeScattering.h, the validated
 // resolution), and the largest such depth of any scattering cell.
-layout(std430, binding = kLatticeSurvey) buffer LatticeSurvey {
-    uint channels_differ;
-    uint thick_voxels;
-    uint deepest_depth;
-    uint coarse_voxels;
-    uint coarsest_depth;
-    uint survey_unused;
-};
+layout(std430, binding = kLatticeSurvey) buffer LatticeSurvey { EIKON_GPU_LATTICE_SURVEY };
 uniform float min_retention;
 uniform float validated_depth;
 #else

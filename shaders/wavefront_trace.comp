@@ -51,29 +51,13 @@ layout(local_size_x = 64) in;
 #include "common/pass_loops.glsl"
 #include "common/fluence_deposits.glsl"
 
-struct Corner {
-    vec4 ends;      // xy: emission square; zw: receiver map coordinates
-    vec4 power;     // rgb: arriving power per unit power density; w: history bits
-    vec4 absorbed;  // rgb: absorbed; w: fate | (receiver + 1) << 4
-    vec4 source;    // rgb: power the ray starts this wavefront with (emitted, or reflected into the branch)
-    vec4 exit;      // xyz: the last point in the grid the ray reached; w: 1 if it reached the grid
-};
-struct Patch {
-    Corner corners[3];
-    uvec4 info;  // x: emitter, y: depth, z: face of the emission domain
-};
+// C++: layout::GpuWavefrontCorner and GpuWavefrontPatch.
+struct Corner { EIKON_GPU_WAVEFRONT_CORNER };
+struct Patch { EIKON_GPU_WAVEFRONT_PATCH };
 layout(std430, binding = kWavefrontPatches) readonly buffer Patches { Patch patches[]; };
 layout(std430, binding = kWavefrontChildren) buffer Children { Patch children[]; };
-// C++ mirror: layout::GpuWavefrontCounters.
-layout(std430, binding = kWavefrontCounters) buffer Counters {
-    uint child_count;
-    uint finished_patches;
-    uint split_patches;
-    uint limited_patches;
-    uint traced_rays;
-    uint tube_rays;
-    uint unused_counters[2];
-};
+// Members: layout::GpuWavefrontCounters.
+layout(std430, binding = kWavefrontCounters) buffer Counters { EIKON_GPU_WAVEFRONT_COUNTERS };
 layout(std430, binding = kReceiverTallies) buffer ReceiverTallies { uint receiver_tallies[]; };  // [2·(3·texel + channel) + word]
 
 uniform uint mode;            // 0 seed, 1 trace, 2 refine

@@ -56,14 +56,16 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Runs `work` of the fluid solver, whose refusals name key paths and its
-// own cells, not the file: they are told the scene file.
+// Runs `work` of the fluid solver, whose refusals and breakdowns name key
+// paths and its own cells, not the file: they are told the scene file.
 template <typename Work>
 void inSceneFile(const Scene& scene, Work&& work) {
     try {
         work();
     } catch (const InputError& error) {
         throw InputError(scene.sourcePath + ": " + error.what());
+    } catch (const NumericalBreakdown& error) {
+        throw NumericalBreakdown(scene.sourcePath + ": " + error.what());
     }
 }
 

@@ -45,7 +45,7 @@ ExportFrame diagnosticExportFrame(const render::DiagnosticMeasurements& measured
                   {"relative_irradiance", "1", 3, measured.irradiance}};
     for (const auto& array : arrays) {
         if (array.values.empty()) continue;
-        EIKON_CHECK(array.values.size() == static_cast<std::size_t>(array.components) * pixels);
+        EIKON_CHECK_EQ(array.values.size(), static_cast<std::size_t>(array.components) * pixels);
         frame.arrays.push_back(
             upright(array.name, array.unit, array.components, array.values, measured.width, measured.height));
     }

@@ -57,7 +57,8 @@ render::RendererOptions rendererOptionsFor(const Scene& scene) {
 }
 
 FrameExporter::FrameExporter(const Scene& scene, const std::filesystem::path& outputFolder, bool deferIndexes)
-    : exports_(scene.exports), camera_(scene.camera), paraview_(io::paraViewStateOf(scene)),
+    : exports_(scene.exports), camera_(scene.camera), receiverDescs_(scene.receivers),
+      paraview_(io::paraViewStateOf(scene)),
       deferIndexes_(deferIndexes),
       outsideDeltaIndex_(scene.sim ? sim::ambientDeltaIndex(*scene.sim, scene.medium.index) : 0.0) {
     if (exports_.vtk.enabled) {
@@ -111,13 +112,10 @@ void FrameExporter::write(int frame, const ExportInputs& inputs, const render::F
     if (vtk_ && exports_.vtk.exportsFrame(frame)) {
         vtk_->writeFrame(frame, time, io::selectCells(arrays, exports_.vtk, "export.vtk"));
         if (receivers_) {
-            std::vector<layout::GpuReceiver> geometry;
             std::vector<std::vector<float>> irradiance;
-            for (unsigned r = 0; r < renderer.receivers().count(); ++r) {
-                geometry.push_back(renderer.receivers().receiver(r));
+            for (unsigned r = 0; r < renderer.receivers().count(); ++r)
                 irradiance.push_back(renderer.receivers().download(r));
-            }
-            receivers_->writeFrame(frame, time, io::receiverQuads(geometry, irradiance));
+            receivers_->writeFrame(frame, time, io::receiverQuads(receiverDescs_, irradiance));
         }
         if (meshes_) meshes_->writeFrame(frame, time, meshPolyData(inputs.meshes));
         if (const render::PhotonStage* photons = renderer.photonStage(); paths_ && photons) {

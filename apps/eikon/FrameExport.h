@@ -64,6 +64,7 @@ private:
 
     ExportDesc exports_;
     CameraDesc camera_;
+    std::vector<ReceiverDesc> receiverDescs_;  // the quads the receivers' maps are exported on
     io::ParaViewState paraview_;
     bool paraviewWritten_ = false;  // every collection has its index from the first exported frame on
     bool deferIndexes_;

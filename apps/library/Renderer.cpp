@@ -35,6 +35,8 @@ auto refusalsAsErrors(Work&& work) -> decltype(work()) {
         return work();
     } catch (const InputError& error) {
         throw Error(error.what());
+    } catch (const NumericalBreakdown& error) {
+        throw Error(error.what());
     } catch (const gl::GpuMemoryError& error) {
         throw Error(error.what());
     }

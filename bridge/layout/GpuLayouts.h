@@ -1,9 +1,10 @@
-// C++ mirrors of every GPU buffer layout eikon uses. These structs are the
-// source of truth (after [Filament]'s UibStructs.h): the GLSL blocks in
-// shaders/ declare the same members in the same order, and the
-// static_asserts below pin sizes and offsets to the std140/std430 rules so a
-// reordering breaks the build, not the picture. Only vec4-sized members are
-// used, which packs identically under std140 and std430.
+// Every GPU buffer layout eikon uses, in one place (after [Filament]'s
+// UibStructs.h). Each struct is an X-macro member list that expands into the
+// C++ struct, a static_assert per member that it sits where the std140 or
+// std430 rules put its GLSL declaration (GlslPacking.h), and, in the
+// embedded shader set, the GLSL macro of the list's name that the shaders
+// write as the body of their block or struct: neither side is written
+// twice.
 //
 // The binding points, texture and image units and power-tally indices are
 // listed once each, below, as X-macro lists of (name, value). A list expands
@@ -13,13 +14,16 @@
 // layout(binding = kEmitters) and never a number.
 // tests/integration/test_gpu_contract.cpp reads every block, sampler and
 // image of every production program back from OpenGL and checks it against
-// these names and the structs' sizes.
+// these names, the structs' sizes and each member's offset and type.
 #pragma once
+
+#include "bridge/layout/GlslPacking.h"
 
 #include <glm/vec4.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 // (Comments inside the lists are /* */: a // comment would swallow the line
 // continuation.)
@@ -240,45 +244,48 @@ enum SolverBinding : unsigned { EIKON_LAYOUT_SOLVER_BINDINGS(EIKON_LAYOUT_ENUMER
 #undef EIKON_LAYOUT_ENUMERATOR
 static_assert(kTallyCount == kUnfollowed + 1, "kTallyCount counts the tallies");
 
+// The structs of the blocks. Each is a member list, X(C++ type, C++ name,
+// GLSL type, GLSL name, GLSL array length or 0), that EIKON_LAYOUT_STRUCT
+// (GlslPacking.h) makes into the C++ struct with its per-member checks and
+// the shader library into the GLSL macro of the list's name, which shaders
+// write as the body of their block or struct:
+//   layout(std140, binding = kGridBlock) uniform GridBlock { EIKON_GPU_GRID } grid;
+
 // uniform GridBlock (std140): the world box of the field grid.
-struct GpuGrid {
-    glm::vec4 boundsMin;   // xyz metres; w = n_ref
-    glm::vec4 boundsMax;   // xyz metres; w unused
-    glm::vec4 voxelSize;   // xyz metres; w = voxel volume in m³
-    glm::ivec4 resolution; // xyz cells; w unused
-};
-static_assert(sizeof(GpuGrid) == 64);
-static_assert(offsetof(GpuGrid, resolution) == 48);
+#define EIKON_GPU_GRID(X)                                                                        \
+    X(glm::vec4, boundsMin, vec4, bounds_min, 0)   /* xyz metres; w = n_ref */                   \
+    X(glm::vec4, boundsMax, vec4, bounds_max, 0)   /* xyz metres; w unused */                    \
+    X(glm::vec4, voxelSize, vec4, voxel_size, 0)   /* xyz metres; w = voxel volume in m³ */      \
+    X(glm::ivec4, resolution, ivec4, resolution, 0) /* xyz cells; w unused */
+EIKON_LAYOUT_STRUCT(GpuGrid, EIKON_GPU_GRID, kStd140)
 
-// One light's emission, prepared on the CPU so that the photons of all lights
-// carry exactly the power each light sends toward the traced region.
-struct GpuEmitter {
-    glm::vec4 origin;       // point, spot: position; directional: centre of the emitting disk. w: kind (0 cone, 1 disk, 2 glowing volume)
-    glm::vec4 axis;         // unit central direction. w: cone: versine 1 − cos of its half-angle (2: the sphere); disk: radius (m)
-    glm::vec4 tangent;      // unit, ⟂ axis
-    glm::vec4 bitangent;    // unit, ⟂ axis and tangent
-    glm::vec4 photonPower;  // rgb W carried by each photon where the spot profile is 1 (glowing volume: × its cell's colour); w unused
-    glm::vec4 spot;         // xyz: unit spot axis; w: versine 1 − cos of the spot's outer half-angle (−1: no profile)
-    glm::vec4 spotEdge;     // x: versine of the spot's inner half-angle (full intensity inside)
-    glm::uvec4 photons;     // x: first photon index, y: photon count, z: strata along u1, w: strata along u2
-};
-static_assert(sizeof(GpuEmitter) == 128);
-static_assert(offsetof(GpuEmitter, photons) == 112);
+// One light's emission (buffer Emitters { Emitter emitters[]; }), prepared on
+// the CPU so that the photons of all lights carry exactly the power each
+// light sends toward the traced region.
+#define EIKON_GPU_EMITTER(X)                                                                                          \
+    X(glm::vec4, origin, vec4, origin, 0)             /* point, spot: position; directional: centre of the emitting disk. w: kind (0 cone, 1 disk, 2 glowing volume) */ \
+    X(glm::vec4, axis, vec4, axis, 0)                 /* unit central direction. w: cone: versine 1 − cos of its half-angle (2: the sphere); disk: radius (m) */ \
+    X(glm::vec4, tangent, vec4, tangent, 0)           /* unit, ⟂ axis */                                                  \
+    X(glm::vec4, bitangent, vec4, bitangent, 0)       /* unit, ⟂ axis and tangent */                                      \
+    X(glm::vec4, photonPower, vec4, photon_power, 0)  /* rgb W carried by each photon where the spot profile is 1 (glowing volume: × its cell's colour); w unused */ \
+    X(glm::vec4, spot, vec4, spot, 0)                 /* xyz: unit spot axis; w: versine 1 − cos of the spot's outer half-angle (−1: no profile) */ \
+    X(glm::vec4, spotEdge, vec4, spot_edge, 0)        /* x: versine of the spot's inner half-angle (full intensity inside) */ \
+    X(glm::uvec4, photons, uvec4, photons, 0)         /* x: first photon index, y: photon count, z: strata along u1, w: strata along u2 */
+EIKON_LAYOUT_STRUCT(GpuEmitter, EIKON_GPU_EMITTER, kStd430)
 
-// An opaque diffuse square receiver and where its map lives in ReceiverMaps.
-struct GpuReceiver {
-    glm::vec4 origin;   // centre on the plane; w: edge size (m)
-    glm::vec4 normal;   // unit, lit side; w: texel area (m²)
-    glm::vec4 axisU;    // unit tangent; w unused
-    glm::vec4 axisV;    // unit tangent; w unused
-    glm::vec4 albedo;   // rgb in [0,1]; w unused
-    glm::uvec4 map;     // x: first texel in ReceiverMaps, y: texels per edge, z: 1 if photons bounce
-};
-static_assert(sizeof(GpuReceiver) == 96);
-static_assert(offsetof(GpuReceiver, map) == 80);
+// An opaque diffuse square receiver and where its map lives in ReceiverMaps
+// (uniform Receivers { Receiver receivers[kMaxReceivers]; }).
+#define EIKON_GPU_RECEIVER(X)                                                                            \
+    X(glm::vec4, origin, vec4, origin, 0)  /* centre on the plane; w: edge size (m) */                   \
+    X(glm::vec4, normal, vec4, normal, 0)  /* unit, lit side; w: texel area (m²) */                      \
+    X(glm::vec4, axisU, vec4, axis_u, 0)   /* unit tangent; w unused */                                  \
+    X(glm::vec4, axisV, vec4, axis_v, 0)   /* unit tangent; w unused */                                  \
+    X(glm::vec4, albedo, vec4, albedo, 0)  /* rgb in [0,1]; w unused */                                  \
+    X(glm::uvec4, map, uvec4, map, 0)      /* x: first texel in ReceiverMaps, y: texels per edge, z: 1 if photons bounce */
+EIKON_LAYOUT_STRUCT(GpuReceiver, EIKON_GPU_RECEIVER, kStd140)
 
-// Energy balance and error figures of one photon pass, accumulated with
-// atomics (the tallies: PowerTally above).
+// Energy balance and error figures of one photon pass (buffer PhotonStats),
+// accumulated with atomics (the tallies: PowerTally above).
 // Powers are tallied in 64-bit fixed point (two 32-bit words with carry) in
 // units of the largest per-photon power / 2^24 per channel: float atomics
 // adding a million equal values drift by a percent, these stay exact to the
@@ -287,132 +294,135 @@ constexpr double kPowerUnitsPerPhoton = 16777216.0;  // 2^24
 // The wavefront pass tallies in units of the brightest light's power / 2^50.
 constexpr double kPowerUnitsPerWavefront = 1125899906842624.0;  // 2^50
 
-struct GpuPhotonStats {
-    std::uint32_t power[kTallyCount][3][2];  // [tally][channel][low, high word]
-    glm::uvec4 photons;   // photon counts: x escaped, y received, z cut off, w blocked
-    glm::uvec4 steps;     // x: low 32 bits of the step count, y: high bits; z: max |v|−n invariant error (float bits)
-    glm::uvec4 deposits;  // x: low 32 bits of the voxel deposits, y: high bits
-    glm::uvec4 invariant; // x low, y high word: Σ over steps of the relative invariant error in 2^-32 units
-    glm::uvec4 surfaces;  // events at sharp surfaces: x reflected (Fresnel or total internal reflection), y transmitted
-};
-// GLSL declares every member as a scalar array (uint/float), so std430 packs
-// them with 4-byte alignment, as GLM's unaligned vectors do here.
-static_assert(alignof(glm::uvec4) == 4);
-static_assert(sizeof(GpuPhotonStats) == 296);
-static_assert(offsetof(GpuPhotonStats, photons) == 216);
-static_assert(offsetof(GpuPhotonStats, steps) == 232);
-static_assert(offsetof(GpuPhotonStats, deposits) == 248);
-static_assert(offsetof(GpuPhotonStats, invariant) == 264);
-static_assert(offsetof(GpuPhotonStats, surfaces) == 280);
+// GLSL declares every member as a scalar array, so std430 packs them with
+// 4-byte alignment, as GLM's unaligned vectors are here.
+#define EIKON_GPU_PHOTON_STATS(X)                                                                                            \
+    X(std::type_identity_t<std::uint32_t[kTallyCount][3][2]>, power, uint, power_tallies, 2 * 3 * kTallyCount) /* [tally][channel][low, high word] */ \
+    X(glm::uvec4, photons, uint, photon_tallies, 4)      /* photon counts: x escaped, y received, z cut off, w blocked */          \
+    X(glm::uvec4, steps, uint, step_tallies, 4)          /* x: low 32 bits of the step count, y: high bits; z: max |v|−n invariant error (float bits) */ \
+    X(glm::uvec4, deposits, uint, deposit_tallies, 4)    /* x: low 32 bits of the voxel deposits, y: high bits */                 \
+    X(glm::uvec4, invariant, uint, invariant_tallies, 4) /* x low, y high word: Σ over steps of the relative invariant error in 2^-32 units */ \
+    X(glm::uvec4, surfaces, uint, surface_tallies, 4)    /* events at sharp surfaces: x reflected (Fresnel or total internal reflection), y transmitted */
+EIKON_LAYOUT_STRUCT(GpuPhotonStats, EIKON_GPU_PHOTON_STATS, kStd430)
 
-// One ray of the wavefront pass (shaders/wavefront_trace.comp), traced from
-// its point of the light's emission square to where it ends.
-struct GpuWavefrontCorner {
-    glm::vec4 ends;      // xy: coordinates in its face of the emission domain, [0, 1]²; zw: receiver map coordinates
-                         // where received, or where it crossed the receiver's plane past the square
-    glm::vec4 power;     // rgb: power arriving, per unit of the light's power density there; w: history (uint bits)
-    glm::vec4 absorbed;  // rgb: power absorbed on the way, same unit; w: fate | (receiver + 1) << 4 (uint bits)
-    glm::vec4 source;    // rgb: power the ray starts its wavefront with: emitted, or reflected into its branch
-    glm::vec4 exit;      // xyz: the last point in the grid the ray reached; w: 1 if it reached the grid
-};
-static_assert(sizeof(GpuWavefrontCorner) == 80);
+// One ray of the wavefront pass (shaders/wavefront_trace.comp, its Corner),
+// traced from its point of the light's emission square to where it ends.
+#define EIKON_GPU_WAVEFRONT_CORNER(X)                                                                                 \
+    X(glm::vec4, ends, vec4, ends, 0)         /* xy: coordinates in its face of the emission domain, [0, 1]²; zw: receiver map coordinates where received, or where it crossed the receiver's plane past the square */ \
+    X(glm::vec4, power, vec4, power, 0)       /* rgb: power arriving, per unit of the light's power density there; w: history (uint bits) */ \
+    X(glm::vec4, absorbed, vec4, absorbed, 0) /* rgb: power absorbed on the way, same unit; w: fate | (receiver + 1) << 4 (uint bits) */ \
+    X(glm::vec4, source, vec4, source, 0)     /* rgb: power the ray starts its wavefront with: emitted, or reflected into its branch */ \
+    X(glm::vec4, exit, vec4, exit, 0)         /* xyz: the last point in the grid the ray reached; w: 1 if it reached the grid */
+EIKON_LAYOUT_STRUCT(GpuWavefrontCorner, EIKON_GPU_WAVEFRONT_CORNER, kStd430)
+namespace glsl {
+using Corner = GpuWavefrontCorner;
+}  // namespace glsl
 
-// A triangle of one face of a light's emission domain whose corners are traced rays.
-struct GpuWavefrontPatch {
-    GpuWavefrontCorner corners[3];
-    glm::uvec4 info;  // x: emitter, y: refinement depth, z: face of the emission domain; w unused
-};
-static_assert(sizeof(GpuWavefrontPatch) == 256);
-static_assert(offsetof(GpuWavefrontPatch, info) == 240);
+// A triangle of one face of a light's emission domain whose corners are
+// traced rays (buffers Patches and Children, of Patch).
+#define EIKON_GPU_WAVEFRONT_PATCH(X)                                                                 \
+    X(std::type_identity_t<GpuWavefrontCorner[3]>, corners, Corner, corners, 3)                      \
+    X(glm::uvec4, info, uvec4, info, 0) /* x: emitter, y: refinement depth, z: face of the emission domain; w unused */
+EIKON_LAYOUT_STRUCT(GpuWavefrontPatch, EIKON_GPU_WAVEFRONT_PATCH, kStd430)
 
-// The wavefront pass's counters (std430, scalar members as in GLSL).
-struct GpuWavefrontCounters {
-    std::uint32_t children;  // patches written to the next level (may pass its capacity: those are not written)
-    std::uint32_t finished;  // patches deposited
-    std::uint32_t splits;    // patches split in four
-    std::uint32_t atLimit;   // patches deposited that wanted to split: at the depth or count limit
-    std::uint32_t rays;      // corner rays traced
-    std::uint32_t tubes;     // tube axes traced (fluence in the grid)
-    std::uint32_t unused[2];
-};
-static_assert(sizeof(GpuWavefrontCounters) == 32);
+// The wavefront pass's counters (buffer Counters).
+#define EIKON_GPU_WAVEFRONT_COUNTERS(X)                                                                                   \
+    X(std::uint32_t, children, uint, child_count, 0)     /* patches written to the next level (may pass its capacity: those are not written) */ \
+    X(std::uint32_t, finished, uint, finished_patches, 0) /* patches deposited */                                           \
+    X(std::uint32_t, splits, uint, split_patches, 0)     /* patches split in four */                                        \
+    X(std::uint32_t, atLimit, uint, limited_patches, 0)  /* patches deposited that wanted to split: at the depth or count limit */ \
+    X(std::uint32_t, rays, uint, traced_rays, 0)         /* corner rays traced */                                           \
+    X(std::uint32_t, tubes, uint, tube_rays, 0)          /* tube axes traced (fluence in the grid) */                       \
+    X(std::type_identity_t<std::uint32_t[2]>, unused, uint, unused_counters, 2)
+EIKON_LAYOUT_STRUCT(GpuWavefrontCounters, EIKON_GPU_WAVEFRONT_COUNTERS, kStd430)
 
-// The lattice's survey pass (shaders/lattice_scattering.comp, pass 3).
-struct GpuLatticeSurvey {
-    std::uint32_t channelsDiffer;  // 1 where the channels' media or sources differ
-    std::uint32_t thickVoxels;     // cells beyond the depth limit (render/stages/LatticeScattering.h)
-    std::uint32_t deepestDepth;    // float bits: the largest optical depth across a voxel among them
-    std::uint32_t coarseVoxels;    // scattering cells coarser than the lattice's validated resolution
-    std::uint32_t coarsestDepth;   // float bits: the largest reduced optical depth along a voxel's longest edge
-    std::uint32_t unused;
-};
-static_assert(sizeof(GpuLatticeSurvey) == 24);
+// The lattice's survey pass (buffer LatticeSurvey; shaders/lattice_scattering.comp, pass 3).
+#define EIKON_GPU_LATTICE_SURVEY(X)                                                                                  \
+    X(std::uint32_t, channelsDiffer, uint, channels_differ, 0) /* 1 where the channels' media or sources differ */     \
+    X(std::uint32_t, thickVoxels, uint, thick_voxels, 0)       /* cells beyond the depth limit (render/stages/LatticeScattering.h) */ \
+    X(std::uint32_t, deepestDepth, uint, deepest_depth, 0)     /* float bits: the largest optical depth across a voxel among them */ \
+    X(std::uint32_t, coarseVoxels, uint, coarse_voxels, 0)     /* scattering cells coarser than the lattice's validated resolution */ \
+    X(std::uint32_t, coarsestDepth, uint, coarsest_depth, 0)   /* float bits: the largest reduced optical depth along a voxel's longest edge */ \
+    X(std::uint32_t, unused, uint, survey_unused, 0)
+EIKON_LAYOUT_STRUCT(GpuLatticeSurvey, EIKON_GPU_LATTICE_SURVEY, kStd430)
 
 // A photon suspended at the driver's loop cap, to be resumed by the next
-// dispatch (shaders/common/suspended_photons.glsl).
-struct GpuSuspendedPhoton {
-    glm::vec4 x;              // xyz: position; w: the roulette's cutoff
-    glm::vec4 xLost;          // xyz: Kahan compensation of x
-    glm::vec4 v;              // xyz: v, |v| = n
-    glm::vec4 power;          // rgb: power carried
-    glm::uvec4 counters;      // photon, receiver bounces, roulette draws, steps
-    glm::uvec4 surfaces;      // recorded vertices, sharp-surface events, inside mask, sharp δn offset (float bits)
-};
-static_assert(sizeof(GpuSuspendedPhoton) == 96);
+// dispatch (buffers SuspendedIn and SuspendedOut, of SuspendedPhoton;
+// shaders/common/suspended_photons.glsl).
+#define EIKON_GPU_SUSPENDED_PHOTON(X)                                                          \
+    X(glm::vec4, x, vec4, x, 0)                 /* xyz: position; w: the roulette's cutoff */  \
+    X(glm::vec4, xLost, vec4, x_lost, 0)        /* xyz: Kahan compensation of x */             \
+    X(glm::vec4, v, vec4, v, 0)                 /* xyz: v, |v| = n */                          \
+    X(glm::vec4, power, vec4, power, 0)         /* rgb: power carried */                       \
+    X(glm::uvec4, counters, uvec4, counters, 0) /* photon, receiver bounces, roulette draws, steps */ \
+    X(glm::uvec4, surfaces, uvec4, surfaces, 0) /* recorded vertices, sharp-surface events, inside mask, sharp δn offset (float bits) */
+EIKON_LAYOUT_STRUCT(GpuSuspendedPhoton, EIKON_GPU_SUSPENDED_PHOTON, kStd430)
 
-// How many photons a dispatch suspended (may pass the buffer's capacity:
-// those past it are cut off instead).
+// How many photons a dispatch suspended (buffer SuspendedCount; may pass
+// the buffer's capacity: those past it are cut off instead).
+#define EIKON_GPU_SUSPENDED_COUNT(X)             \
+    X(std::uint32_t, count, uint, suspended_count, 0) \
+    X(std::type_identity_t<std::uint32_t[3]>, unused, uint, suspended_unused, 3)
+EIKON_LAYOUT_STRUCT(GpuSuspendedCount, EIKON_GPU_SUSPENDED_COUNT, kStd430)
+
 // One emitting cell of a glowing volume (render/stages/VolumeGlow.h), in
-// cell order.
-struct GpuGlowCell {
-    glm::vec4 colour;  // rgb: ε per channel over the cell's Σε; w: the inclusive cumulative share of all cells' Σε
-    glm::uvec4 cell;   // x: linear cell index
-};
-static_assert(sizeof(GpuGlowCell) == 32);
+// cell order (buffer GlowCells { GlowCell glow_cells[]; }).
+#define EIKON_GPU_GLOW_CELL(X)                                                                                         \
+    X(glm::vec4, colour, vec4, colour, 0) /* rgb: ε per channel over the cell's Σε; w: the inclusive cumulative share of all cells' Σε */ \
+    X(glm::uvec4, cell, uvec4, cell, 0)   /* x: linear cell index */
+EIKON_LAYOUT_STRUCT(GpuGlowCell, EIKON_GPU_GLOW_CELL, kStd430)
 
-struct GpuSuspendedCount {
-    std::uint32_t count;
-    std::uint32_t unused[3];
-};
-static_assert(sizeof(GpuSuspendedCount) == 16);
+// A sharp surface (shaders/common/sharp_surface_list.glsl), in scene order: a
+// sphere, a box, or a mesh or water surface given by its triangles (uniform
+// SharpSurfaces { SharpSurface sharp_surfaces[kMaxSharpObjects]; }).
+#define EIKON_GPU_SHARP_SURFACE(X)                                                                          \
+    X(glm::vec4, shapeA, vec4, shape_a, 0) /* xyz: sphere centre or box min (m); w: kind (SharpSurfaceKind) */ \
+    X(glm::vec4, shapeB, vec4, shape_b, 0) /* x: sphere radius (m); or xyz box max (m); w: a mesh's root node (FieldSet::surfaceNodes) */ \
+    X(glm::vec4, optics, vec4, optics, 0)  /* x: n_object − n_ref; y: 1 if Fresnel reflection is on; zw unused */
+EIKON_LAYOUT_STRUCT(GpuSharpSurface, EIKON_GPU_SHARP_SURFACE, kStd140)
 
-// A sharp surface (shaders/common/sharp_surfaces.glsl), in scene order: a
-// sphere, a box, or a mesh or water surface given by its triangles.
-struct GpuSharpSurface {
-    glm::vec4 shapeA;  // xyz: sphere centre or box min (m); w: kind (SharpSurfaceKind)
-    glm::vec4 shapeB;  // x: sphere radius (m); or xyz box max (m); w: a mesh's root node (FieldSet::surfaceNodes)
-    glm::vec4 optics;  // x: n_object − n_ref; y: 1 if Fresnel reflection is on; zw unused
-};
-static_assert(sizeof(GpuSharpSurface) == 48);
-
-// A water body as image space walks its height field (uniform WaterBodies,
-// std140; shaders/common/water_height_fields.glsl).
-struct GpuWaterHeightField {
-    glm::vec4 low;    // xyz: the basin's minimum corner (m); w unused
-    glm::vec4 high;   // xyz: its maximum corner (m); w unused
-    glm::ivec4 grid;  // x, y: nodes along x and z; z: its first node's texel in WaterNodeGrids; w: its sharp surface
-};
-static_assert(sizeof(GpuWaterHeightField) == 48);
-
+// A water body as image space walks its height field (uniform WaterBodies
+// { WaterBody water_bodies[kMaxSharpObjects]; }; shaders/common/water_height_fields.glsl).
+#define EIKON_GPU_WATER_HEIGHT_FIELD(X)                                                                 \
+    X(glm::vec4, low, vec4, low, 0)     /* xyz: the basin's minimum corner (m); w unused */             \
+    X(glm::vec4, high, vec4, high, 0)   /* xyz: its maximum corner (m); w unused */                     \
+    X(glm::ivec4, grid, ivec4, grid, 0) /* x, y: nodes along x and z; z: its first node's texel in WaterNodeGrids; w: its sharp surface */
+EIKON_LAYOUT_STRUCT(GpuWaterHeightField, EIKON_GPU_WATER_HEIGHT_FIELD, kStd140)
 
 // uniform CameraBlock (std140): a pinhole or orthographic camera and the environment.
 enum EnvironmentKind : unsigned { kUniformEnvironment = 0, kSkyEnvironment = 1, kHdrEnvironment = 2 };
 
-struct GpuCamera {
-    glm::vec4 position;    // xyz metres; w = half the image's height: tan(vertical fov / 2) (perspective), metres (orthographic)
-    glm::vec4 forward;     // unit; w = width / height
-    glm::vec4 right;       // unit
-    glm::vec4 up;          // unit
-    glm::uvec4 image;      // x: width, y: height, z: EnvironmentKind, w: Projection
-    glm::vec4 radiance;    // uniform: rgb radiance W/(m²·sr); hdr: x intensity, y rotation about +y (rad)
-    glm::vec4 zenith;      // sky: rgb
-    glm::vec4 horizon;     // sky: rgb
-    glm::vec4 groundA;     // sky: rgb of one checker colour
-    glm::vec4 groundB;     // sky: rgb of the other
-    glm::vec4 ground;      // sky: x ground height (m), y checker size (m)
-};
-static_assert(sizeof(GpuCamera) == 176);
-static_assert(offsetof(GpuCamera, image) == 64);
-static_assert(offsetof(GpuCamera, ground) == 160);
+#define EIKON_GPU_CAMERA(X)                                                                                    \
+    X(glm::vec4, position, vec4, position, 0) /* xyz metres; w = half the image's height: tan(vertical fov / 2) (perspective), metres (orthographic) */ \
+    X(glm::vec4, forward, vec4, forward, 0)   /* unit; w = width / height */                                   \
+    X(glm::vec4, right, vec4, right, 0)       /* unit */                                                       \
+    X(glm::vec4, up, vec4, up, 0)             /* unit */                                                       \
+    X(glm::uvec4, image, uvec4, image, 0)     /* x: width, y: height, z: EnvironmentKind, w: Projection */     \
+    X(glm::vec4, radiance, vec4, radiance, 0) /* uniform: rgb radiance W/(m²·sr); hdr: x intensity, y rotation about +y (rad) */ \
+    X(glm::vec4, zenith, vec4, zenith, 0)     /* sky: rgb */                                                   \
+    X(glm::vec4, horizon, vec4, horizon, 0)   /* sky: rgb */                                                   \
+    X(glm::vec4, groundA, vec4, ground_a, 0)  /* sky: rgb of one checker colour */                             \
+    X(glm::vec4, groundB, vec4, ground_b, 0)  /* sky: rgb of the other */                                      \
+    X(glm::vec4, ground, vec4, ground, 0)     /* sky: x ground height (m), y checker size (m) */
+EIKON_LAYOUT_STRUCT(GpuCamera, EIKON_GPU_CAMERA, kStd140)
 
 }  // namespace eikon::layout
+
+// Every struct above, (C++ name, member list), nested structs before the
+// structs that hold them: the shader library declares each list's GLSL
+// macro ahead of every program.
+#define EIKON_LAYOUT_STRUCTS(S)                                  \
+    S(GpuGrid, EIKON_GPU_GRID)                                   \
+    S(GpuEmitter, EIKON_GPU_EMITTER)                             \
+    S(GpuReceiver, EIKON_GPU_RECEIVER)                           \
+    S(GpuPhotonStats, EIKON_GPU_PHOTON_STATS)                    \
+    S(GpuWavefrontCorner, EIKON_GPU_WAVEFRONT_CORNER)            \
+    S(GpuWavefrontPatch, EIKON_GPU_WAVEFRONT_PATCH)              \
+    S(GpuWavefrontCounters, EIKON_GPU_WAVEFRONT_COUNTERS)        \
+    S(GpuLatticeSurvey, EIKON_GPU_LATTICE_SURVEY)                \
+    S(GpuSuspendedPhoton, EIKON_GPU_SUSPENDED_PHOTON)            \
+    S(GpuSuspendedCount, EIKON_GPU_SUSPENDED_COUNT)              \
+    S(GpuGlowCell, EIKON_GPU_GLOW_CELL)                          \
+    S(GpuSharpSurface, EIKON_GPU_SHARP_SURFACE)                  \
+    S(GpuWaterHeightField, EIKON_GPU_WATER_HEIGHT_FIELD)         \
+    S(GpuCamera, EIKON_GPU_CAMERA)

@@ -82,7 +82,7 @@ std::vector<T> loadRgba(const std::filesystem::path& path, const std::string& by
 }  // namespace
 
 void writePng(const std::filesystem::path& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
-    EIKON_CHECK(rgba.size() == static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    EIKON_CHECK_EQ(rgba.size(), static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     std::string encoded;
     if (!stbi_write_png_to_func(appendToString, &encoded, width, height, 4, rgba.data(), width * 4))
         throw std::runtime_error(path.string() + ": PNG encoding failed");
@@ -90,7 +90,7 @@ void writePng(const std::filesystem::path& path, int width, int height, const st
 }
 
 void writeHdr(const std::filesystem::path& path, int width, int height, const std::vector<float>& rgba) {
-    EIKON_CHECK(rgba.size() == static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    EIKON_CHECK_EQ(rgba.size(), static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     std::string encoded;
     if (!stbi_write_hdr_to_func(appendToString, &encoded, width, height, 4, rgba.data()))
         throw std::runtime_error(path.string() + ": HDR encoding failed");

@@ -1,20 +1,22 @@
 #include "io/vtk/ExportGeometry.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/scene/ReceiverAxes.h"
 
 namespace eikon::io {
 
-PolyData receiverQuads(const std::vector<layout::GpuReceiver>& receivers,
+PolyData receiverQuads(const std::vector<ReceiverDesc>& receivers,
                        const std::vector<std::vector<float>>& irradiance) {
-    EIKON_CHECK(receivers.size() == irradiance.size());
+    EIKON_CHECK_EQ(receivers.size(), irradiance.size());
     PolyData data;
     NamedArray power{"irradiance", 3, {}, {"W/m^2", ArrayRole::Density}}, index{"receiver", 1, {}, {"1"}};
     for (std::size_t r = 0; r < receivers.size(); ++r) {
-        const layout::GpuReceiver& receiver = receivers[r];
-        const auto res = static_cast<std::uint32_t>(receiver.map.y);
-        EIKON_CHECK(irradiance[r].size() == 3u * res * res);
-        const glm::vec3 origin(receiver.origin), u(receiver.axisU), v(receiver.axisV);
-        const float size = receiver.origin.w;
+        const ReceiverDesc& receiver = receivers[r];
+        const auto res = static_cast<std::uint32_t>(receiver.resolution);
+        EIKON_CHECK_EQ(irradiance[r].size(), std::size_t{3} * res * res);
+        const ReceiverAxes axes = receiverAxes(receiver);
+        const glm::vec3 origin(receiver.point), u(axes.u), v(axes.v);
+        const auto size = static_cast<float>(receiver.size);
         const glm::vec3 corner = origin - 0.5f * size * (u + v);
         const auto first = static_cast<std::uint32_t>(data.points.size());
         for (std::uint32_t j = 0; j <= res; ++j)

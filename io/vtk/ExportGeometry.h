@@ -1,8 +1,8 @@
 // Receivers and photon paths as PolyData for ParaView.
 #pragma once
 
+#include "bridge/scene/Scene.h"
 #include "io/vtk/PolyDataWriter.h"
-#include "bridge/layout/GpuLayouts.h"
 
 #include <glm/vec4.hpp>
 
@@ -11,11 +11,12 @@
 namespace eikon::io {
 
 // Each receiver as its map's texels: a (res + 1)² lattice of points on the
-// plane, origin ± size/2 along axisU and axisV, and res² quads (texel (u, v)
-// spans [u, u+1]·size/res along axisU from the square's corner, likewise v).
+// plane, point ± size/2 along its axes u and v (bridge/scene/ReceiverAxes.h),
+// and res² quads (texel (i, j) spans [i, i+1]·size/res along u from the
+// square's corner, likewise j along v); in float, as the renderer places them.
 // Cell arrays: "irradiance" (RGB, W/m², `irradiance[r]` in the map's order:
 // rows along axisV, texels along axisU) and "receiver" (its index).
-PolyData receiverQuads(const std::vector<layout::GpuReceiver>& receivers,
+PolyData receiverQuads(const std::vector<ReceiverDesc>& receivers,
                        const std::vector<std::vector<float>>& irradiance);
 
 // Recorded photon paths (PhotonStage: `verticesPerPhoton` slots per photon,

@@ -81,7 +81,7 @@ void VtkSeriesWriter::writeImage(const fs::path& path, const GridSpec& grid, con
     image->SetOrigin(grid.boundsMin.x, grid.boundsMin.y, grid.boundsMin.z);
     const glm::dvec3 voxel = grid.voxelSize();
     image->SetSpacing(voxel.x, voxel.y, voxel.z);
-    EIKON_CHECK(static_cast<std::size_t>(image->GetNumberOfCells()) == grid.cellCount());
+    EIKON_CHECK_EQ(static_cast<std::size_t>(image->GetNumberOfCells()), grid.cellCount());
     std::vector<NamedArray> described;  // for the units field data
     for (const NamedArray* array : arrays) {
         image->GetCellData()->AddArray(makeFloatArray(array->name, array->components, array->values));

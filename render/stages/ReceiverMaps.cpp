@@ -1,12 +1,10 @@
 #include "render/stages/ReceiverMaps.h"
 
 #include "bridge/core/Error.h"
+#include "bridge/scene/ReceiverAxes.h"
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
 
-#include <glm/geometric.hpp>
-
-#include <cmath>
 #include <cstdint>
 
 namespace eikon::render {
@@ -15,10 +13,7 @@ std::vector<layout::GpuReceiver> buildReceivers(const std::vector<ReceiverDesc>&
     std::vector<layout::GpuReceiver> result;
     unsigned firstTexel = 0;
     for (const auto& desc : receivers) {
-        const glm::dvec3 normal = glm::normalize(desc.normal);
-        const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-        const glm::dvec3 axisU = glm::normalize(glm::cross(normal, helper));
-        const glm::dvec3 axisV = glm::cross(normal, axisU);
+        const auto [normal, axisU, axisV] = receiverAxes(desc);
         const double texelEdge = desc.size / desc.resolution;
         layout::GpuReceiver receiver{};
         receiver.origin = glm::vec4(glm::vec3(desc.point), static_cast<float>(desc.size));

@@ -1,21 +1,9 @@
-// The camera and the environment (C++ mirror: layout::GpuCamera, built by
+// The camera and the environment (members: layout::GpuCamera, built by
 // render/stages/ViewStage's cameraBlock), and the ray through a point of the
 // image or a pixel's centre (row 0 at the top): from the pinhole, or — orthographic — from the
 // pixel's point on the image plane through `position`, along `forward`.
 // GLSL only.
-layout(std140, binding = kCameraBlock) uniform CameraBlock {
-    vec4 position;    // w: half the image's height (tan(fov / 2), or metres when orthographic)
-    vec4 forward;     // w: aspect
-    vec4 right;
-    vec4 up;
-    uvec4 image;      // width, height, environment kind, projection
-    vec4 radiance;    // uniform: rgb; hdr: intensity, rotation
-    vec4 zenith;
-    vec4 horizon;
-    vec4 ground_a;
-    vec4 ground_b;
-    vec4 ground;      // height, checker size
-} camera;
+layout(std140, binding = kCameraBlock) uniform CameraBlock { EIKON_GPU_CAMERA } camera;
 
 bool camera_is_orthographic() { return camera.image.w == uint(kOrthographicProjection); }
 
@@ -37,7 +25,5 @@ vec3 camera_ray_direction_at(vec2 point) {
                                      : normalize(camera.forward.xyz + camera_image_offset_at(point));
 }
 
-// The ray through a pixel's centre.
-vec3 camera_ray_origin(uvec2 pixel) { return camera_ray_origin_at(vec2(pixel) + 0.5f); }
-
+// The direction of the ray through a pixel's centre.
 vec3 camera_ray_direction(uvec2 pixel) { return camera_ray_direction_at(vec2(pixel) + 0.5f); }

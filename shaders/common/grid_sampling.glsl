@@ -1,4 +1,4 @@
-// The field grid as shaders see it: the GridBlock uniform (C++ mirror:
+// The field grid as shaders see it: the GridBlock uniform (members:
 // layout::GpuGrid) and the field textures, sampled trilinearly between cell
 // centres with clamp-to-edge. GLSL only; the box's geometry is shared
 // (common/grid_box.glsl), and render/stages/NativeTextures.h samples the
@@ -15,12 +15,7 @@
 #define EIKON_HAS_EMISSION 0
 #endif
 
-layout(std140, binding = kGridBlock) uniform GridBlock {
-    vec4 bounds_min;   // w: n_ref
-    vec4 bounds_max;
-    vec4 voxel_size;   // w: voxel volume
-    ivec4 resolution;
-} grid;
+layout(std140, binding = kGridBlock) uniform GridBlock { EIKON_GPU_GRID } grid;
 
 layout(binding = kGradientTexture) uniform sampler3D gradient_texture;  // (∇n in 1/m, δn)
 #if EIKON_HAS_EXTINCTION

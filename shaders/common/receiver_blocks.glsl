@@ -1,17 +1,10 @@
-// Receivers as shaders see them (C++ mirror: layout::GpuReceiver; a uniform
+// Receivers as shaders see them (members: layout::GpuReceiver; a uniform
 // block, bridge/layout/GpuLayouts.h says why) and their irradiance maps,
 // read as a buffer texture of the ReceiverMaps buffer that
 // receiver_filter.comp writes (for the same reason: render/stages/ReceiverMaps.h).
 // GLSL only; the geometry lives in common/receiver.glsl, and where rays
 // cross the receivers, shared with C++, in common/receiver_hits.glsl.
-struct Receiver {
-    vec4 origin;   // w: edge size
-    vec4 normal;   // w: texel area
-    vec4 axis_u;
-    vec4 axis_v;
-    vec4 albedo;
-    uvec4 map;     // x: first texel, y: texels per edge, z: 1 if photons bounce
-};
+struct Receiver { EIKON_GPU_RECEIVER };
 
 layout(std140, binding = kReceivers) uniform Receivers { Receiver receivers[kMaxReceivers]; };
 layout(binding = kReceiverMapTexture) uniform samplerBuffer receiver_map_texels;  // RGB per texel, W/m²

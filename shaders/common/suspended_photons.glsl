@@ -9,19 +9,12 @@
 #if EIKON_LOOP_BUDGET > 0
 #define EIKON_RESUMABLE 1
 
-// C++ mirror: layout::GpuSuspendedPhoton.
-struct SuspendedPhoton {
-    vec4 x;          // xyz: position; w: the roulette's cutoff
-    vec4 x_lost;     // xyz: Kahan compensation of x
-    vec4 v;          // xyz: the ray's v (|v| = n)
-    vec4 power;      // rgb: power carried
-    uvec4 counters;  // photon, receiver bounces, roulette draws, steps
-    uvec4 surfaces;  // recorded vertices, sharp-surface events, inside mask, sharp δn offset (float bits)
-};
+// Members: layout::GpuSuspendedPhoton.
+struct SuspendedPhoton { EIKON_GPU_SUSPENDED_PHOTON };
 layout(std430, binding = kSuspendedIn) readonly buffer SuspendedIn { SuspendedPhoton suspended_in[]; };
 layout(std430, binding = kSuspendedOut) writeonly buffer SuspendedOut { SuspendedPhoton suspended_out[]; };
-// C++ mirror: layout::GpuSuspendedCount.
-layout(std430, binding = kSuspendedCount) buffer SuspendedCount { uint suspended_count; };
+// Members: layout::GpuSuspendedCount.
+layout(std430, binding = kSuspendedCount) buffer SuspendedCount { EIKON_GPU_SUSPENDED_COUNT };
 
 uniform uint resuming;              // 0: this dispatch emits photons; 1: it resumes suspended_in
 uniform uint suspended_capacity;    // entries suspended_out holds

@@ -2,10 +2,7 @@
 // emitting cells in cell order, each with its colour and the cumulative
 // share of the volume's power up to and including it. GLSL only; needs
 // grid_sampling.glsl, random.glsl, sampling.glsl and loop_budget.glsl.
-struct GlowCell {
-    vec4 colour;  // rgb: ε_c / Σε of the cell; w: inclusive cumulative share
-    uvec4 cell;   // x: linear cell index
-};
+struct GlowCell { EIKON_GPU_GLOW_CELL };
 layout(std430, binding = kGlowCells) readonly buffer GlowCells { GlowCell glow_cells[]; };
 
 // Random dimensions of a glow photon's cell and point (beyond any bounce,

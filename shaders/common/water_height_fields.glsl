@@ -12,11 +12,7 @@
 // walked, cell by cell (2D DDA, [Amanatides87]); below it a point is in
 // the water, above it outside. GLSL only.
 
-struct WaterBody {
-    vec4 low;     // the basin's minimum corner (its bottom's y); w unused
-    vec4 high;    // the basin's maximum corner; w unused
-    ivec4 grid;   // nodes along x and z, the first texel of its nodes (after its slab texel), its sharp surface
-};
+struct WaterBody { EIKON_GPU_WATER_HEIGHT_FIELD };
 layout(std140, binding = kWaterBodies) uniform WaterBodies { WaterBody water_bodies[kMaxSharpObjects]; };
 // Per body: a texel (lowest node y, highest node y, the steepest slope
 // |∇y| of a surface triangle, 0), then per node, x fastest, (corner normal, y).

@@ -34,7 +34,7 @@ void throwNotFinite(const std::string& name, const std::string& sample, glm::ive
     const std::string where = std::string(phase.keys) + " (the solver's " + name + " at " + sample + " (" +
                               std::to_string(index % nx) + ", " + std::to_string((index / nx) % ny) + ", " +
                               std::to_string(index / (nx * ny)) + ") of sim.resolution, " + phase.when + ")";
-    throw InputError(where, "a finite value", formatNumber(value));
+    throw NumericalBreakdown(where, "a finite value", formatNumber(value));
 }
 
 }  // namespace eikon::sim

@@ -25,7 +25,8 @@ inline constexpr SolverPhase kAfterDiffusion{
     "after diffusion", "sim.viscosity, sim.thermal_diffusivity, sim.concentration_diffusivity, sim.dye_diffusivity"};
 inline constexpr SolverPhase kAfterProjection{"after projection", "sim.pressure_tolerance"};
 
-// Throws InputError "<the phase's keys> (the solver's <name> at <sample>
+// Throws NumericalBreakdown (exit code 1: the input was valid, the
+// solver's numbers broke down on it) "<the phase's keys> (the solver's <name> at <sample>
 // (i, j, k) of sim.resolution, <when>): expected a finite value, found nan"
 // for the first non-finite value. SceneFields adds the scene file.
 // `sample` is "cell" for cell-centred fields and "face" for velocities.

@@ -78,7 +78,7 @@ void FluidSimulation::rebuildRoles() {
 }
 
 void FluidSimulation::addSolidMask(const std::vector<std::uint8_t>& solid) {
-    EIKON_CHECK(solid.size() == domain_.solid.size());
+    EIKON_CHECK_EQ(solid.size(), domain_.solid.size());
     EIKON_CHECK_MSG(!device_, "solids are added before a device takes the solver");
     for (std::size_t c = 0; c < solid.size(); ++c)
         if (solid[c]) domain_.solid[c] = 1;

@@ -1,7 +1,7 @@
 // The solver's NaN/Inf guard on the GPU (FiniteCheck.h): each check of a
 // substep marks the first non-finite sample of one field in a slot of its
 // own, on the GPU; finish() reads the slots back in one transfer and throws
-// the CPU backend's InputError (field, sample, phase, value) for the first
+// the CPU backend's NumericalBreakdown (field, sample, phase, value) for the first
 // check, in substep order, that found one.
 #pragma once
 

@@ -36,7 +36,7 @@ bool CellBlocks::overlaps(const CellBox& cells) const {
 }
 
 void CellBlocks::add(const CellBlocks& other) {
-    EIKON_CHECK(other.marked_.size() == marked_.size());
+    EIKON_CHECK_EQ(other.marked_.size(), marked_.size());
     for (std::size_t b = 0; b < marked_.size(); ++b) marked_[b] |= other.marked_[b];
 }
 

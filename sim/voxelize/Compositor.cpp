@@ -30,7 +30,7 @@ bool isAnalytic(const ObjectDesc& object) {
 
 void fillMedium(const Scene& scene, FieldSet& fields, const CellBox& region) {
     const std::size_t cells = fields.grid.cellCount();
-    EIKON_CHECK(fields.deltaIndex.size() == cells);
+    EIKON_CHECK_EQ(fields.deltaIndex.size(), cells);
     const Material& medium = scene.medium;
     if (positive(medium.extinction)) ensureSized(fields.extinction, 3 * cells, 0.0f);
     if (positive(medium.scattering)) ensureSized(fields.scattering, 3 * cells, 0.0f);

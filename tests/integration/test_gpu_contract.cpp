@@ -2,7 +2,9 @@
 // block, sampler and image of every production program (in the #define
 // variants that change which of them exist) sits at the binding point or
 // unit bridge/layout/GpuLayouts.h names for it, every block has the size of
-// its C++ mirror, and no two resources of one program share a binding. A
+// its C++ struct, every member of a block of a GPU struct sits at its C++
+// member's offset with the type its list gives, every member of the list
+// is there, and no two resources of one program share a binding. A
 // resource whose name the tables below do not know fails the test: a new
 // block, sampler or image needs its row here.
 #include "bridge/layout/GpuLayouts.h"
@@ -10,6 +12,7 @@
 #include "gl/GlContext.h"
 #include "gl/GlObjects.h"
 #include "gl/ShaderLibrary.h"
+#include "tests/integration/ContractMembers.h"
 #include "tests/integration/GlTestContext.h"
 
 #include <gtest/gtest.h>
@@ -80,6 +83,9 @@ const std::map<std::string, BlockRow>& storageBlocks() {
         {"Children", {layout::kWavefrontChildren, 0, sizeof(layout::GpuWavefrontPatch)}},
         {"Counters", {layout::kWavefrontCounters, sizeof(layout::GpuWavefrontCounters), 0}},
         {"GlowCells", {layout::kGlowCells, 0, sizeof(layout::GpuGlowCell)}},
+        {"SuspendedIn", {layout::kSuspendedIn, 0, sizeof(layout::GpuSuspendedPhoton)}},
+        {"SuspendedOut", {layout::kSuspendedOut, 0, sizeof(layout::GpuSuspendedPhoton)}},
+        {"SuspendedCount", {layout::kSuspendedCount, sizeof(layout::GpuSuspendedCount), 0}},
         {"LatticeIn", {layout::kLatticeIn, 0, sizeof(float)}},
         {"LatticeOut", {layout::kLatticeOut, 0, sizeof(float)}},
         {"LatticeProbes", {layout::kLatticeProbes, 0, sizeof(float)}},
@@ -157,6 +163,28 @@ const std::map<std::string, BlockRow>& storageBlocks() {
     return rows;
 }
 
+// The blocks that hold a GPU struct of bridge/layout/GpuLayouts.h.
+const std::map<std::string, test::StructuredBlock>& structuredBlocks() {
+    static const std::map<std::string, test::StructuredBlock> rows = {
+        {"GridBlock", {"GpuGrid", ""}},
+        {"CameraBlock", {"GpuCamera", ""}},
+        {"Receivers", {"GpuReceiver", "receivers"}},
+        {"SharpSurfaces", {"GpuSharpSurface", "sharp_surfaces"}},
+        {"WaterBodies", {"GpuWaterHeightField", "water_bodies"}},
+        {"Emitters", {"GpuEmitter", "emitters"}},
+        {"PhotonStats", {"GpuPhotonStats", ""}},
+        {"Patches", {"GpuWavefrontPatch", "patches"}},
+        {"Children", {"GpuWavefrontPatch", "children"}},
+        {"Counters", {"GpuWavefrontCounters", ""}},
+        {"LatticeSurvey", {"GpuLatticeSurvey", ""}},
+        {"GlowCells", {"GpuGlowCell", "glow_cells"}},
+        {"SuspendedIn", {"GpuSuspendedPhoton", "suspended_in"}},
+        {"SuspendedOut", {"GpuSuspendedPhoton", "suspended_out"}},
+        {"SuspendedCount", {"GpuSuspendedCount", ""}},
+    };
+    return rows;
+}
+
 // GLSL sampler name → texture unit.
 const std::map<std::string, unsigned>& samplers() {
     static const std::map<std::string, unsigned> rows = {
@@ -229,6 +257,7 @@ std::vector<Variant> productionVariants() {
           {"EIKON_VOLUME_GLOW", "1"},
           {"EIKON_RECORD_PATHS", "8"}}},
         {"photon_trace.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_BARE_MARCH", "1"}}},
+        {"photon_trace.comp", {{"EIKON_RECEIVERS", "1"}, {"EIKON_LOOP_BUDGET", "4096"}}},
         {"wavefront_trace.comp", {{"EIKON_RECEIVERS", "1"}}},
         {"wavefront_trace.comp",
          {{"EIKON_RECEIVERS", "4"},
@@ -424,6 +453,15 @@ std::size_t typeBytes(GLenum type) {
     }
 }
 
+// The GL type of a GLSL type name of bridge/layout/GpuLayouts.h's lists.
+GLenum glTypeOf(const std::string& glslType) {
+    static const std::map<std::string, GLenum> types = {
+        {"uint", GL_UNSIGNED_INT}, {"vec4", GL_FLOAT_VEC4}, {"ivec4", GL_INT_VEC4}, {"uvec4", GL_UNSIGNED_INT_VEC4}};
+    const auto type = types.find(glslType);
+    if (type == types.end()) throw std::runtime_error("GLSL type " + glslType + " is not known here");
+    return type->second;
+}
+
 // A block's layout from its members' offsets and strides: GL_BUFFER_DATA_SIZE
 // would do for most, but Mesa rounds it up to 16 bytes.
 BlockRow measuredLayout(GLuint program, GLenum blockInterface, GLuint block) {
@@ -479,6 +517,9 @@ public:
             EXPECT_EQ(measured.fixedBytes, expected.fixedBytes)
                 << label << ": " << kind << " " << name << " has " << measured.fixedBytes
                 << " bytes before any runtime-sized array, its C++ mirror " << expected.fixedBytes;
+            const auto structured = structuredBlocks().find(name);
+            if (structured != structuredBlocks().end())
+                members(program, label, interface, i, name, structured->second);
             if (expected.elementBytes == kFloatOrDouble) {
                 EXPECT_TRUE(measured.elementBytes == sizeof(float) || measured.elementBytes == sizeof(double))
                     << label << ": " << kind << " " << name << " has an element stride of " << measured.elementBytes
@@ -488,6 +529,49 @@ public:
                     << label << ": " << kind << " " << name << " has an element stride of " << measured.elementBytes
                     << " bytes, its C++ mirror " << expected.elementBytes;
             }
+        }
+    }
+
+    // Every member of a block of a GPU struct against the C++ struct and its
+    // list: offset, type, array length and stride; and every member of the
+    // list declared.
+    void members(const gl::Program& program, const std::string& label, GLenum interface, GLuint block,
+                 const std::string& blockName, const test::StructuredBlock& rows) {
+        const GLenum memberInterface = interface == GL_SHADER_STORAGE_BLOCK ? GL_BUFFER_VARIABLE : GL_UNIFORM;
+        std::set<std::string> seen;
+        for (const GLint index : activeVariables(program.id(), interface, block)) {
+            auto property = [&](GLenum name) {
+                return resourceProperty(program.id(), memberInterface, static_cast<GLuint>(index), name);
+            };
+            std::string path = resourceName(program.id(), memberInterface, static_cast<GLuint>(index));
+            if (path.rfind(blockName + ".", 0) == 0) path.erase(0, blockName.size() + 1);
+            const auto resolved = test::resolveMember(rows, path, seen);
+            if (!resolved) {
+                ADD_FAILURE() << label << ": " << blockName << " member " << path << " is in no list of "
+                              << rows.structName << " (bridge/layout/GpuLayouts.h)";
+                continue;
+            }
+            const test::ContractMember& expected = *resolved->member;
+            EXPECT_EQ(static_cast<std::size_t>(property(GL_OFFSET)), resolved->offset)
+                << label << ": " << blockName << " member " << path << " is at byte " << property(GL_OFFSET)
+                << ", its C++ member (" << rows.structName << ") at " << resolved->offset;
+            EXPECT_EQ(static_cast<GLenum>(property(GL_TYPE)), glTypeOf(expected.glslType))
+                << label << ": " << blockName << " member " << path << " is not a " << expected.glslType;
+            if (expected.count > 0 && test::nestedStructName(expected.glslType).empty()) {
+                EXPECT_EQ(static_cast<std::size_t>(property(GL_ARRAY_SIZE)), expected.count)
+                    << label << ": " << blockName << " member " << path << " has another array length";
+                EXPECT_EQ(static_cast<std::size_t>(property(GL_ARRAY_STRIDE)), expected.stride)
+                    << label << ": " << blockName << " member " << path << " has another array stride";
+            }
+        }
+        for (const auto& [structName, contract] : test::contractStructs()) {
+            const bool reached = std::any_of(seen.begin(), seen.end(), [&](const std::string& member) {
+                return member.rfind(structName + ".", 0) == 0;
+            });
+            if (!reached && structName != rows.structName) continue;
+            for (const auto& [member, row] : contract.members)
+                EXPECT_TRUE(seen.count(structName + "." + member))
+                    << label << ": " << blockName << " lacks " << structName << "'s member " << member;
         }
     }
 

@@ -151,7 +151,7 @@ TEST(GpuFluid, PhaseRecordsMatchTheCpuBackend) {
 std::string messageOf(FluidSimulation& sim) {
     try {
         sim.step(0.01);
-    } catch (const InputError& error) {
+    } catch (const NumericalBreakdown& error) {
         return error.what();
     }
     return "no error";
@@ -206,7 +206,7 @@ TEST(GpuFluid, PassesReachEntriesPastOneAxisOfWorkGroups) {
     try {
         check.finish();
         ADD_FAILURE() << "the NaN in the last sample was not found";
-    } catch (const InputError& error) {
+    } catch (const NumericalBreakdown& error) {
         EXPECT_EQ(std::string(error.what()),
                   "sim (the solver's dye at cell (4096, 4095, 0) of sim.resolution, after a test): expected a finite "
                   "value, found nan");

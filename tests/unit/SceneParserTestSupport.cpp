@@ -58,4 +58,17 @@ void expectErrorAt(const json& root, const std::string& path, const std::string&
     EXPECT_NE(message.find(detail), std::string::npos) << message;
 }
 
+// validScene() with every key added since the first format: a spot light as
+// lights[2], a smoothing window and a full tracer section.
+json sceneWithNewKeys() {
+    json scene = validScene();
+    scene["grid"]["smoothing_window_voxels"] = 5;
+    scene["lights"].push_back(json::parse(R"({"type": "spot", "position": [1, 2, 3], "direction": [0, 0, -2],
+        "power": [1, 2, 3], "cone_angle_deg": 45, "falloff_deg": 10})"));
+    scene["tracer"] = json::parse(R"({"integrator": "rk4", "step_policy": "uniform", "step_voxels": 0.25,
+        "max_step_voxels": 4, "epsilon": 0.001, "epsilon_prime": 0.01, "renormalize": true, "power_cutoff": 0.5,
+        "max_steps": 100000, "dispersion": [0.9, 1, 1.1], "store_fluence": true})");
+    return scene;
+}
+
 }  // namespace eikon::test

@@ -13,6 +13,9 @@ using nlohmann::json;
 extern const char* const kValidScene;
 
 json validScene();
+// validScene() with every key added since the first format: a spot light as
+// lights[2], a smoothing window and a full tracer section.
+json sceneWithNewKeys();
 // Writes `contents` to a file in the test temporary folder; returns its path.
 std::string writeTempFile(const std::string& name, const std::string& contents);
 // The message of the InputError that parsing `root` throws, or "" (and a test

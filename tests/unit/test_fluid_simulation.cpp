@@ -36,7 +36,7 @@ void writeFields(const FluidSimulation& sim, const SimDesc& desc, FieldSet& fiel
 std::string messageOf(FluidSimulation& sim) {
     try {
         sim.step(0.01);
-    } catch (const InputError& error) {
+    } catch (const NumericalBreakdown& error) {
         return error.what();
     }
     return "no error";

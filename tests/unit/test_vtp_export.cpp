@@ -88,22 +88,23 @@ TEST(VtpExport, MeshLinesAndArraysRoundTrip) {
 }
 
 TEST(VtpExport, ReceiversBecomeQuadsOfTheirMapTexels) {
-    layout::GpuReceiver floor{};
-    floor.origin = {0.0f, -0.5f, 0.0f, 2.0f};  // 2 m square
-    floor.normal = {0.0f, 1.0f, 0.0f, 0.0f};
-    floor.axisU = {1.0f, 0.0f, 0.0f, 0.0f};
-    floor.axisV = {0.0f, 0.0f, 1.0f, 0.0f};
-    floor.map = {0u, 2u, 0u, 0u};  // 2 × 2 texels
+    ReceiverDesc floor;
+    floor.point = {0.0, -0.5, 0.0};
+    floor.size = 2.0;  // 2 m square
+    floor.normal = {0.0, 1.0, 0.0};  // axes u = (0, 0, -1), v = (1, 0, 0) (ReceiverAxes.h)
+    floor.resolution = 2;  // 2 × 2 texels
     const std::vector<float> irradiance{1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4};
     const PolyData quads = receiverQuads({floor, floor}, {irradiance, irradiance});
     ASSERT_EQ(quads.points.size(), 18u);  // 3 × 3 lattice per receiver
     ASSERT_EQ(quads.polygons.size(), 8u);
-    EXPECT_EQ(quads.points[0], glm::vec3(-1.0f, -0.5f, -1.0f));
-    EXPECT_EQ(quads.points[8], glm::vec3(1.0f, -0.5f, 1.0f));
-    // Texel (u = 1, v = 0), the second value: x in [0, 1], z in [−1, 0].
+    // The corner is point − (u + v): (1, −0.5, 1); the far corner (−1, −0.5, −1).
+    EXPECT_EQ(quads.points[0], glm::vec3(1.0f, -0.5f, 1.0f));
+    EXPECT_EQ(quads.points[8], glm::vec3(-1.0f, -0.5f, -1.0f));
+    // Texel (i = 1, j = 0), the second value: one texel along u from the
+    // corner, x in [0, 1], z in [−1, 0].
     const auto& texel = quads.polygons[1];
-    EXPECT_EQ(quads.points[texel[0]], glm::vec3(0.0f, -0.5f, -1.0f));
-    EXPECT_EQ(quads.points[texel[2]], glm::vec3(1.0f, -0.5f, 0.0f));
+    EXPECT_EQ(quads.points[texel[0]], glm::vec3(1.0f, -0.5f, 0.0f));
+    EXPECT_EQ(quads.points[texel[2]], glm::vec3(0.0f, -0.5f, -1.0f));
     EXPECT_EQ(quads.cellArrays[0].values[3 * 1], 2.0f);
     EXPECT_EQ(quads.cellArrays[1].values[5], 1.0f);  // second receiver
     EXPECT_EQ(quads.polygons[4][0], 9u);
