@@ -30,6 +30,8 @@ public:
     // The program option every shader that reads the receivers takes
     // (shaders/common/receiver_blocks.glsl): their count, a constant there.
     gl::ShaderDefines::value_type countOption() const { return {"EIKON_RECEIVERS", std::to_string(count())}; }
+    // Texels of all receivers' maps together.
+    unsigned texelCount() const { return texelCount_; }
     // Dispatches `program` (used, local size 8×8) once per texel of all the
     // maps, numbered as common/caustic_deposits.glsl's
     // receiver_texel_of_invocation reads them; sets its uniform texel_count.
@@ -57,7 +59,7 @@ private:
     static constexpr int kAdaptiveKernel = -1;
     std::vector<int> kernelRadius_;
     std::map<int, gl::Program> filterPrograms_;  // by kernel radius
-    unsigned texelCount_ = 0;  // of all the maps together
+    unsigned texelCount_ = 0;
     gl::Buffer geometry_;
     gl::Buffer tallies_;
     gl::Buffer maps_;
