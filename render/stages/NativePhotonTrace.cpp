@@ -33,37 +33,15 @@ using render::HostTexture3D;
 // One photon of the pass: the shader's per-invocation state, its blocks and
 // uniforms under their GLSL names, and its tallies as the thread's sums.
 struct PhotonKernel {
-    // The GLSL blocks' structs (C++ mirrors: layout::GpuGrid, GpuReceiver,
-    // GpuEmitter, GpuSharpSurface; sizes checked below).
-    struct GridBlock {
-        vec4 bounds_min;
-        vec4 bounds_max;
-        vec4 voxel_size;
-        ivec4 resolution;
-    };
-    struct Receiver {
-        vec4 origin;
-        vec4 normal;
-        vec4 axis_u;
-        vec4 axis_v;
-        vec4 albedo;
-        uvec4 map;
-    };
-    struct Emitter {
-        vec4 origin;
-        vec4 axis;
-        vec4 tangent;
-        vec4 bitangent;
-        vec4 photon_power;
-        vec4 spot;
-        vec4 spot_edge;
-        uvec4 photons;
-    };
-    struct SharpSurface {
-        vec4 shape_a;
-        vec4 shape_b;
-        vec4 optics;
-    };
+    // The GLSL blocks' structs, under their GLSL names and types, expanded
+    // from the same member lists as layout::GpuGrid, GpuReceiver, GpuEmitter
+    // and GpuSharpSurface (bridge/layout/GpuLayouts.h; sizes checked below).
+#define EIKON_GLSL_MEMBER(cppType, cppName, glslType, glslName, arrayLength) glslType glslName;
+    struct GridBlock { EIKON_GPU_GRID(EIKON_GLSL_MEMBER) };
+    struct Receiver { EIKON_GPU_RECEIVER(EIKON_GLSL_MEMBER) };
+    struct Emitter { EIKON_GPU_EMITTER(EIKON_GLSL_MEMBER) };
+    struct SharpSurface { EIKON_GPU_SHARP_SURFACE(EIKON_GLSL_MEMBER) };
+#undef EIKON_GLSL_MEMBER
     // common/sharp_triangle_surfaces.glsl's, whose functions below are
     // never reached: the native pass takes spheres and boxes only.
     struct TriangleTrace {

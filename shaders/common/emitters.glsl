@@ -1,4 +1,4 @@
-// The lights' emitters as the light passes see them (C++ mirror:
+// The lights' emitters as the light passes see them (members:
 // layout::GpuEmitter, built by render/stages/PhotonEmission); the spot
 // profile is common/spot_profile.glsl, shared with C++. GLSL only.
 struct Emitter { EIKON_GPU_EMITTER };
