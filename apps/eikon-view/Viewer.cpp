@@ -80,6 +80,8 @@ public:
         const auto viewerStart = Clock::now();
         auto runStart = viewerStart;  // from the end of the first frame: steady state
         double scriptedSeconds = 0.0;
+        // The stage that draws the picture: the diagnostic's instrument, or the view.
+        const bool diagnostic = session_->scene().diagnostic.has_value();
         while (!window_->shouldClose()) {
             window_->pollEvents();
             const auto frameStart = Clock::now();
@@ -106,10 +108,15 @@ public:
             } else {
                 session_->renderer().setPixelStride(stride);
                 last_ = session_->renderFrame(advance, pipelined_);
-                preview_.measured(last_.pixelStride, stageMilliseconds(last_, "view"));
+                // A diagnostic previews with one ray a pixel, whatever the
+                // stride: only its full frame tells what a full frame costs.
+                if (!diagnostic) preview_.measured(last_.pixelStride, stageMilliseconds(last_, "view"));
+                else if (stride == 1) preview_.measured(1, stageMilliseconds(last_, "diagnostic"));
             }
-            const double viewMs = stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : "view");
-            if (viewMs > 0.0 && (last_.pixelStride > 1 || imageSpacePreview) && scripted()) {
+            const double viewMs =
+                stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : diagnostic ? "diagnostic" : "view");
+            const bool previewed = last_.pixelStride > 1 || imageSpacePreview || (diagnostic && stride > 1);
+            if (viewMs > 0.0 && previewed && scripted()) {
                 ++previewFrames_;
                 imageSpacePreviews_ += imageSpacePreview ? 1 : 0;
                 largestStride_ = std::max(largestStride_, last_.pixelStride);

@@ -287,7 +287,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
         last_.image = diagnostic_->run(fields_);
     }));
     if (diagnosticEstimate_)
-        result.stages.push_back(runStage("error_estimate", diagnosticNeeded,
+        result.stages.push_back(runStage("error_estimate", diagnosticNeeded && !diagnostic_->preview(),
                                          [&] { last_.errorEstimate = diagnosticEstimate_->run(fields_); }));
     // The estimate is of the full image, not of a preview.
     if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded && view_->pixelStride() == 1, [&] {

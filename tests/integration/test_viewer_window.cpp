@@ -146,6 +146,23 @@ TEST_F(ViewerWindow, OrbitingShowsThePreviewAndRestRefinesToTheHeadlessFrame) {
     }
 }
 
+// A diagnostic previews too: while the camera moves, the schlieren picture
+// is drawn with one ray a pixel instead of render.samples_per_pixel (the
+// viewer measures the diagnostic's stage, not the view it does not draw).
+TEST_F(ViewerWindow, OrbitingADiagnosticShowsItsOneRayPreview) {
+    const std::string scene = std::string(EIKON_SOURCE_DIR) +
+                              "/scenes/candle_schlieren.json --set render.width=90 --set render.height=180 "
+                              "--set grid.resolution=[24,60,24] --set sim.resolution=[20,50,20]";
+    const fs::path log = dir_ / "viewer.txt";
+    ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
+                      scene + " --frames 6 --animate orbit --preview-ms 0.1 --width 640 --height 480",
+                  log.string()),
+              0);
+    const PreviewCounts counts = previewCounts(log);
+    EXPECT_GE(counts.previews, 5);  // every orbiting frame after the first
+    EXPECT_EQ(counts.imageSpace, 0);
+}
+
 // While the camera moves (every moving frame a preview, as above), a
 // deforming scene is held on the frame that draws its last advance
 // (SimulationPacer): fewer frames advance it than are drawn; with no
