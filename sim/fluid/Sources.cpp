@@ -1,8 +1,7 @@
 #include "sim/fluid/Sources.h"
 
 #include "bridge/core/Error.h"
-
-#include <tbb/parallel_for.h>
+#include "sim/fluid/CellForceOnFaces.h"
 
 #include <algorithm>
 
@@ -28,21 +27,7 @@ void addBuoyancy(FluidState& state, const FluidDomain& domain, const SimDesc& de
     for (int axis = 0; axis < 3; ++axis) {
         const double g = desc.gravity[axis];
         if (g == 0.0) continue;
-        GridField& u = state.flow.velocity[axis];
-        tbb::parallel_for(0, u.size.z, [&](int k) {
-            for (int j = 0; j < u.size.y; ++j)
-                for (int i = 0; i < u.size.x; ++i) {
-                    if (domain.faceIsFixed(axis, i, j, k)) continue;
-                    glm::ivec3 upper(i, j, k);
-                    glm::ivec3 lower = upper;
-                    lower[axis] -= 1;
-                    // An open face sees its one inside cell.
-                    if (lower[axis] < 0) lower = upper;
-                    if (upper[axis] >= domain.cells[axis]) upper = lower;
-                    const double a = 0.5 * (acceleration(lower.x, lower.y, lower.z) + acceleration(upper.x, upper.y, upper.z));
-                    u(i, j, k) += dt * g * a;
-                }
-        });
+        addCellForceOnFaces(state.flow.velocity[axis], domain, axis, dt * g, acceleration);
     }
 }
 

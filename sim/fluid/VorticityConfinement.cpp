@@ -1,5 +1,7 @@
 #include "sim/fluid/VorticityConfinement.h"
 
+#include "sim/fluid/CellForceOnFaces.h"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -76,20 +78,9 @@ void addVorticityConfinement(FluidState& state, const FluidDomain& domain, doubl
     });
     // Each free face: Δt times the mean of its two cells' force along its axis.
     for (int axis = 0; axis < 3; ++axis) {
-        GridField& u = flow.velocity[axis];
         const GridField& f = force[axis];
-        tbb::parallel_for(0, u.size.z, [&](int k) {
-            for (int j = 0; j < u.size.y; ++j)
-                for (int i = 0; i < u.size.x; ++i) {
-                    if (domain.faceIsFixed(axis, i, j, k)) continue;
-                    glm::ivec3 upper(i, j, k);
-                    glm::ivec3 lower = upper;
-                    lower[axis] -= 1;
-                    if (lower[axis] < 0) lower = upper;  // an open face sees its one inside cell
-                    if (upper[axis] >= cells[axis]) upper = lower;
-                    u(i, j, k) += dt * 0.5 * (f(lower.x, lower.y, lower.z) + f(upper.x, upper.y, upper.z));
-                }
-        });
+        addCellForceOnFaces(flow.velocity[axis], domain, axis, dt,
+                            [&](int i, int j, int k) { return f(i, j, k); });
     }
 }
 
