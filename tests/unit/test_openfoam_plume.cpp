@@ -10,17 +10,11 @@
 #include "io/scene/SceneParser.h"
 #include "sim/SceneFields.h"
 #include "sim/optics/AirOptics.h"
+#include "tests/unit/OpenFoamProbe.h"
 
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
-#include <vtkDataSet.h>
-#include <vtkMultiBlockDataSet.h>
-#include <vtkNew.h>
-#include <vtkOpenFOAMReader.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkProbeFilter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,7 +28,6 @@ namespace fs = std::filesystem;
 TEST(OpenFoamPlume, ImportsAsGladstoneDaleOfItsTemperatureAndPressure) {
     const fs::path foam = fs::path(EIKON_SOURCE_DIR) / "tests/data/openfoam_plume_coarse/case.foam";
     // The room, 1 m × 0.5 m × 1 m, on 2.5 cm render cells; the mesh is graded.
-    const glm::ivec3 cells(40, 20, 40);
     nlohmann::json root = nlohmann::json::parse(R"({
         "grid": {"resolution": [40, 20, 40], "bounds": {"min": [0, 0, 0], "max": [1, 0.5, 1]}},
         "medium": {"index": 1.000273},
@@ -47,33 +40,16 @@ TEST(OpenFoamPlume, ImportsAsGladstoneDaleOfItsTemperatureAndPressure) {
     SceneFields fields(s);
     const GridSpec spec = s.grid.spec();
 
-    vtkNew<vtkOpenFOAMReader> reader;  // the independent sampling, as ParaView reads the case
-    reader->SetFileName(foam.c_str());
-    reader->SetCreateCellToPoint(0);
-    reader->SetUse64BitFloats(true);
-    reader->UpdateInformation();
-    vtkNew<vtkPoints> centres;
-    for (int k = 0; k < cells.z; ++k)
-        for (int j = 0; j < cells.y; ++j)
-            for (int i = 0; i < cells.x; ++i) {
-                const glm::dvec3 x = spec.cellCentre(i, j, k);
-                centres->InsertNextPoint(x.x, x.y, x.z);
-            }
-    vtkNew<vtkPolyData> probes;
-    probes->SetPoints(centres);
+    test::OpenFoamProbe probe(foam, spec);  // the independent sampling, as ParaView reads the case
 
     const GladstoneDale air;  // the volume's defaults
     const double ambient = air.refractivityAt(300.0, 1e5);
     for (int step = 0; step < 2; ++step) {
         SCOPED_TRACE("time " + std::to_string(step + 1) + " s");
         if (step > 0) fields.advanceFrame();
-        reader->UpdateTimeStep(step + 1.0);
-        vtkNew<vtkProbeFilter> probe;
-        probe->SetInputData(probes);
-        probe->SetSourceData(vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput())->GetBlock(0));
-        probe->Update();
-        vtkDataArray* t = probe->GetOutput()->GetPointData()->GetArray("T");
-        vtkDataArray* p = probe->GetOutput()->GetPointData()->GetArray("p");
+        const vtkSmartPointer<vtkDataSet> sampled = probe.at(step + 1.0);
+        vtkDataArray* t = sampled->GetPointData()->GetArray("T");
+        vtkDataArray* p = sampled->GetPointData()->GetArray("p");
         ASSERT_TRUE(t && p);
         const FieldSet& set = fields.fields();
         const double medium = s.medium.index - set.referenceIndex;

@@ -13,6 +13,7 @@
 #include "sim/optics/AirOptics.h"
 #include "sim/optics/OpticalMapping.h"
 #include "sim/volume/VolumeSequence.h"
+#include "tests/unit/OpenFoamProbe.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
@@ -22,13 +23,10 @@
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
-#include <vtkOpenFOAMReader.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkProbeFilter.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -353,33 +351,16 @@ TEST_F(VtkVolume, OpenFoamCaseGivesGladstoneDaleOfItsTemperatureAndPressure) {
     SceneFields fields(s);
     const GridSpec spec = s.grid.spec();
 
-    vtkNew<vtkOpenFOAMReader> reader;  // the independent sampling: VTK's reader and probe filter as ParaView uses them
-    reader->SetFileName(foam.c_str());
-    reader->SetCreateCellToPoint(0);
-    reader->SetUse64BitFloats(true);
-    reader->UpdateInformation();
-    vtkNew<vtkPoints> centres;
-    for (int k = 0; k < 4; ++k)
-        for (int j = 0; j < 4; ++j)
-            for (int i = 0; i < 6; ++i) {
-                const glm::dvec3 x = spec.cellCentre(i, j, k);
-                centres->InsertNextPoint(x.x, x.y, x.z);
-            }
-    vtkNew<vtkPolyData> probes;
-    probes->SetPoints(centres);
+    test::OpenFoamProbe probe(foam, spec);  // the independent sampling
 
     const GladstoneDale air;  // the volume's defaults
     const double ambient = air.refractivityAt(kAmbient, 101325.0);
     for (int step = 0; step < 2; ++step) {
         SCOPED_TRACE("step " + std::to_string(step));
         if (step > 0) fields.advanceFrame();
-        reader->UpdateTimeStep(0.5 * step);
-        vtkNew<vtkProbeFilter> probe;
-        probe->SetInputData(probes);
-        probe->SetSourceData(vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput())->GetBlock(0));
-        probe->Update();
-        vtkDataArray* t = probe->GetOutput()->GetPointData()->GetArray("T");
-        vtkDataArray* p = probe->GetOutput()->GetPointData()->GetArray("p");
+        const vtkSmartPointer<vtkDataSet> sampled = probe.at(0.5 * step);
+        vtkDataArray* t = sampled->GetPointData()->GetArray("T");
+        vtkDataArray* p = sampled->GetPointData()->GetArray("p");
         ASSERT_TRUE(t && p);
         const FieldSet& set = fields.fields();
         const double medium = s.medium.index - set.referenceIndex;
