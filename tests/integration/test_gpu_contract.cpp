@@ -14,6 +14,7 @@
 #include "gl/ShaderLibrary.h"
 #include "tests/integration/ContractMembers.h"
 #include "tests/integration/GlTestContext.h"
+#include "tests/integration/ProgramResources.h"
 
 #include <gtest/gtest.h>
 
@@ -32,6 +33,13 @@
 
 namespace eikon {
 namespace {
+
+using test::activeResources;
+using test::activeVariables;
+using test::glTypeOf;
+using test::resourceName;
+using test::resourceProperty;
+using test::typeBytes;
 
 // A block's layout: the bytes before its runtime-sized array (all of it when
 // it has none) and that array's element stride (0: none; kFloatOrDouble: a
@@ -410,56 +418,6 @@ std::vector<Variant> productionVariants() {
         {"sim/water_coverage.comp",
          {{"EIKON_HAS_EXTINCTION", "0"}, {"EIKON_HAS_SCATTERING", "0"}, {"EIKON_HAS_ANISOTROPY", "0"}}},
     };
-}
-
-std::string resourceName(GLuint program, GLenum interface, GLuint index) {
-    GLint length = 0;
-    const GLenum property = GL_NAME_LENGTH;
-    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &length);
-    std::string name(static_cast<std::size_t>(length), '\0');
-    glGetProgramResourceName(program, interface, index, length, nullptr, name.data());
-    name.resize(name.find('\0'));
-    return name;
-}
-
-GLint resourceProperty(GLuint program, GLenum interface, GLuint index, GLenum property) {
-    GLint value = 0;
-    glGetProgramResourceiv(program, interface, index, 1, &property, 1, nullptr, &value);
-    return value;
-}
-
-GLuint activeResources(GLuint program, GLenum interface) {
-    GLint count = 0;
-    glGetProgramInterfaceiv(program, interface, GL_ACTIVE_RESOURCES, &count);
-    return static_cast<GLuint>(count);
-}
-
-std::vector<GLint> activeVariables(GLuint program, GLenum interface, GLuint block) {
-    const GLint count = resourceProperty(program, interface, block, GL_NUM_ACTIVE_VARIABLES);
-    std::vector<GLint> members(static_cast<std::size_t>(count));
-    const GLenum property = GL_ACTIVE_VARIABLES;
-    glGetProgramResourceiv(program, interface, block, 1, &property, count, nullptr, members.data());
-    return members;
-}
-
-// Bytes of one value of a block member's basic type.
-std::size_t typeBytes(GLenum type) {
-    switch (type) {
-        case GL_FLOAT: case GL_INT: case GL_UNSIGNED_INT: return 4;
-        case GL_FLOAT_VEC2: case GL_INT_VEC2: case GL_UNSIGNED_INT_VEC2: return 8;
-        case GL_FLOAT_VEC3: case GL_INT_VEC3: case GL_UNSIGNED_INT_VEC3: return 12;
-        case GL_FLOAT_VEC4: case GL_INT_VEC4: case GL_UNSIGNED_INT_VEC4: return 16;
-        default: throw std::runtime_error("a block member has GL type " + std::to_string(type) + ", unknown here");
-    }
-}
-
-// The GL type of a GLSL type name of bridge/layout/GpuLayouts.h's lists.
-GLenum glTypeOf(const std::string& glslType) {
-    static const std::map<std::string, GLenum> types = {
-        {"uint", GL_UNSIGNED_INT}, {"vec4", GL_FLOAT_VEC4}, {"ivec4", GL_INT_VEC4}, {"uvec4", GL_UNSIGNED_INT_VEC4}};
-    const auto type = types.find(glslType);
-    if (type == types.end()) throw std::runtime_error("GLSL type " + glslType + " is not known here");
-    return type->second;
 }
 
 // A block's layout from its members' offsets and strides: GL_BUFFER_DATA_SIZE
