@@ -21,7 +21,7 @@ set(rules
   "sim|bridge/,sim/"
   "sim/field|bridge/"
   "sim/fluid|bridge/,sim/field/"
-  "sim/optics|bridge/,sim/field/"
+  "sim/optics|bridge/,sim/field/,shaders/common/"
   "sim/voxelize|bridge/,sim/optics/"
   "sim/deform|bridge/,io/mesh/"
   "sim/volume|bridge/,io/vdb/,io/vtk/,sim/optics/"

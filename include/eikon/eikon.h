@@ -65,12 +65,24 @@ struct Grid {
 // `buffer` is the GPU path: the name of an OpenGL buffer object made in the
 // renderer's context (Renderer::makeContextCurrent) whose first
 // nz·ny·nx·channels floats are the values, in place of `values` (null
-// then). The renderer copies it into its texture on the GPU: no byte of it
-// crosses to the host (the report's host_bytes_copied). For delta_index
-// only (the other fields are mapped on the host), in a scene without
-// objects or paint (composited over the fields on the host); its values are
-// not checked, as they are never read on the host. Write the buffer, then
-// name it in setFields for each frame.
+// then). No byte of it crosses to the host (the report's
+// host_bytes_copied): the fields of the index — delta_index, index,
+// temperature, with the same units and optics as host arrays — are mapped
+// to δn by a compute pass on the GPU (the host path's own Gladstone–Dale
+// text, so the frames are the same bit for bit), and extinction and
+// scattering (3 channels) are copied into their textures on the GPU. Every
+// check of a host array is made there too (finite values, T > 0 K, n > 0,
+// κ ≥ 0, σs ≤ κ, an undeclared absolute temperature), naming the cell.
+// The GPU path takes fields mapped together on one side: the index's all
+// in buffers or none; extinction and scattering in buffers only without a
+// density or flame, scattering only with extinction and without an
+// anisotropy, in a scene whose medium neither absorbs nor scatters and
+// whose volume.emission is not blackbody. Density, flame, anisotropy and
+// emission, and grey extinction and scattering, are mapped on the host and
+// refused as buffers; so is any buffer in a scene with objects or paint
+// (composited over the fields on the host). Write the buffers, then name
+// them in setFields for each frame: δn is mapped then, κ and σs are read at
+// render().
 struct Field {
     Field() = default;
     Field(std::string name_, const float* values_, std::array<std::size_t, 3> shape_, int channels_,
