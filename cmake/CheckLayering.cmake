@@ -39,7 +39,7 @@ set(rules
   "apps/eikon|bridge/,io/,sim/,render/,gl/,verify/,apps/common/"
   "apps/viewer|bridge/,render/,gl/"
   "apps/eikon-view|bridge/,io/,sim/,render/,gl/,apps/common/,apps/viewer/"
-  "apps/library|eikon/,bridge/,io/,sim/,render/,gl/,apps/common/"
+  "apps/library|eikon/,bridge/,io/,sim/,render/,gl/,apps/common/,apps/viewer/"
   "apps/python|eikon/"
   "include/eikon|"
 )

@@ -193,6 +193,7 @@ void Renderer::render() {
             impl.source =
                 std::make_unique<app::FrameSource>(impl.renderScene, *impl.fields, options, false, app::ExportNeeds());
             impl.sourceLayout = layout;
+            if (impl.pixelStride != 1) impl.source->renderer().setPixelStride(impl.pixelStride);
         }
         const auto start = std::chrono::steady_clock::now();
         const library::GpuFieldPass::Taken& onGpu = impl.onGpu;

@@ -1,4 +1,6 @@
-// eikon::Renderer's state (include/eikon/eikon.h).
+// eikon::Renderer's state (include/eikon/eikon.h), shared by the renderer
+// (Renderer.cpp) and the view that re-renders it as the user moves the
+// camera (View.cpp).
 #pragma once
 
 #include "eikon/eikon.h"
@@ -59,6 +61,29 @@ struct Renderer::Impl {
         if (context) context->makeCurrent();  // GL objects go with their context current
         source.reset();
         fields.reset();
+    }
+
+    // The view's changes (eikon::View), kept in renderScene so that a frame
+    // renderer made again keeps them: the camera, exposure and photon count,
+    // and the pixel stride of its preview (apps/viewer/ViewPreview.h). The
+    // frame renderer takes them with the renderers' context current (no
+    // window's may be: eikon::View releases its own first).
+    void setCamera(const CameraDesc& camera) {
+        renderScene.camera = camera;
+        if (source) context->makeCurrent(), source->renderer().setCamera(camera);
+    }
+    void setExposure(double exposureEv) {
+        renderScene.render.exposureEv = exposureEv;
+        if (source) context->makeCurrent(), source->renderer().setExposure(exposureEv);
+    }
+    void setPhotonCount(long long photons) {
+        renderScene.render.photons = photons;
+        if (source) context->makeCurrent(), source->renderer().setPhotonCount(photons);
+    }
+    int pixelStride = 1;
+    void setPixelStride(int stride) {
+        pixelStride = stride;
+        if (source) context->makeCurrent(), source->renderer().setPixelStride(stride);
     }
 
     const render::FrameResult& lastFrame() const {

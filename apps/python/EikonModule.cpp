@@ -188,11 +188,14 @@ PYBIND11_MODULE(eikon, m) {
     py::class_<eikon::View>(m, "View")
         .def(py::init<std::string, int, int>(), py::arg("title") = "eikon", py::arg("width") = 0,
              py::arg("height") = 0,
-             "The live viewer: a window (an X display) showing each frame handed to show(), scaled to fit; "
+             "The live viewer: a window (an X display) with eikon-view's camera gestures (left drag: orbit, "
+             "middle: pan, wheel: zoom), panel and preview, showing the renderer's frames scaled to fit; "
              "width × height pixels, 0: the first frame's size.")
-        .def("show", &eikon::View::show, py::arg("renderer"),
-             "Shows the renderer's last frame and handles the window's events; False once the window is closed "
-             "(a loop's condition: while view.show(r): ...).")
+        .def("show", &eikon::View::show, py::arg("renderer"), py::call_guard<py::gil_scoped_release>(),
+             "Handles the window's events, renders the renderer's current fields again where the camera moved "
+             "(a preview while it moves, the full frame once it rests) and shows its last frame; False once the "
+             "window is closed (a loop's condition: while view.show(r): ...). Call it between steps too, to keep "
+             "the window live.")
         .def_property_readonly("is_open", &eikon::View::isOpen)
         .def(
             "window_image",
@@ -200,7 +203,7 @@ PYBIND11_MODULE(eikon, m) {
                 eikon::ByteArray a = v.windowImage();
                 return toNumpy(std::move(a.values), a.shape);
             },
-            "What the window shows: (height, width, 3) uint8 sRGB, row 0 at the top.");
+            "The frame as the window shows it, under the panel: (height, width, 3) uint8 sRGB, row 0 at the top.");
 
     m.def(
         "render_image",

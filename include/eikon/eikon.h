@@ -163,14 +163,23 @@ public:
     std::string report() const;
 
 private:
+    friend class View;  // re-renders the current fields as the user moves the camera
     struct Impl;
     explicit Renderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
 
 // The live viewer fed by the caller's loop: a window (GLFW, on an X
-// display) showing each frame it is handed, scaled to fit and centred, as
-// eikon-view shows its frames. Used from the renderers' thread.
+// display) with eikon-view's camera gestures, panel and preview policy. It
+// shows the renderer's last frame, scaled to fit and centred; a left drag
+// orbits the camera, a middle drag pans, the wheel zooms, and the view then
+// renders the renderer's current fields again itself — one ray per k×k
+// pixels while the camera moves (k kept to a 40 ms view pass), the full
+// frame once it has rested a quarter second — so the camera moves even
+// while no new fields come. The panel shows the frame's stage timings and
+// error figures and sets the exposure, the photon count and the tracer's
+// settings ("apply settings"). The camera and the rest stay the renderer's
+// for the frames the caller renders next. Used from the renderers' thread.
 class View {
 public:
     // `width` × `height` pixels, 0: the first frame's size. The window opens
@@ -180,13 +189,17 @@ public:
     View(View&&) noexcept;
     View& operator=(View&&) noexcept;
 
-    // Shows the renderer's last frame (Error before its first, or where no
-    // window can be opened: no display) and handles the window's events;
-    // false, showing nothing, once the user has closed the window.
-    bool show(const Renderer& renderer);
+    // Handles the window's events (the gestures and the panel), renders the
+    // renderer's fields again where the camera moved or the preview refines,
+    // and shows its last frame (Error before its first, or where no window
+    // can be opened: no display). false, showing nothing, once the user has
+    // closed the window. A loop calls it each step, after render(), and may
+    // call it meanwhile to keep the window live:
+    //   while (view.show(renderer)) { solver.step(); renderer.setFields(...); renderer.render(); }
+    bool show(Renderer& renderer);
     bool isOpen() const;
-    // What the window shows, (height, width, 3) sRGB 8-bit, row 0 at the top
-    // (Error before the first show()).
+    // The frame as the window shows it, under the panel, (height, width, 3)
+    // sRGB 8-bit, row 0 at the top (Error before the first show()).
     ByteArray windowImage() const;
 
 private:

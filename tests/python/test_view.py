@@ -1,14 +1,20 @@
 """eikon.View, the live viewer fed from Python (apps/library/View.cpp), in a
 window under Xvfb: each frame a loop hands it is what the window shows —
-at the frame's size pixel for pixel, scaled to fit in a larger window. Run
-by ctest (Python.View) under xvfb-run."""
+at the frame's size pixel for pixel, scaled to fit in a larger window — and
+a mouse drag in it, made by the X server's test extension as a hand would,
+orbits the camera: the view renders the fields again from there, and the
+frames handed in afterwards are seen from there too. Run by ctest
+(Python.View) under xvfb-run."""
 
+import ctypes
+import time
 import unittest
 
 import numpy as np
 
 import eikon
 from test_loop_memory import SCENE, warm_bubble
+import test_module
 
 
 class View(unittest.TestCase):
@@ -41,6 +47,62 @@ class View(unittest.TestCase):
         self.assertLess(np.abs(scaled[1::2, 1::2] - frame).max(), 40, "the frame, magnified (linear filter)")
         self.assertLess(window[:, :20].max(), 30)
         self.assertLess(window[:, 76:].max(), 30)
+
+    def test_a_left_drag_orbits_the_camera_and_frames_handed_in_still_show(self):
+        x11, xtst = ctypes.CDLL("libX11.so.6"), ctypes.CDLL("libXtst.so.6")
+        x11.XOpenDisplay.restype = ctypes.c_void_p
+        x11.XFlush.argtypes = [ctypes.c_void_p]
+        xtst.XTestFakeMotionEvent.argtypes = [ctypes.c_void_p, ctypes.c_int, ctypes.c_int, ctypes.c_int, ctypes.c_ulong]
+        xtst.XTestFakeButtonEvent.argtypes = [ctypes.c_void_p, ctypes.c_uint, ctypes.c_int, ctypes.c_ulong]
+        display = x11.XOpenDisplay(None)
+        self.assertTrue(display, "an X display (xvfb-run)")
+
+        def pointer(x, y):
+            xtst.XTestFakeMotionEvent(display, -1, x, y, 0)
+            x11.XFlush(display)
+
+        def button(down):
+            xtst.XTestFakeButtonEvent(display, 1, down, 0)
+            x11.XFlush(display)
+
+        # A lens of δn over a lit floor, seen obliquely: an orbit moves the floor's edges and the caustic.
+        renderer, still = eikon.Renderer(test_module.SCENE), eikon.Renderer(test_module.SCENE)
+        for r in (renderer, still):
+            r.set_fields(delta_index=0.01 * test_module.bump(0.08))
+            r.render()
+        # The window at the screen's corner (no window manager places it),
+        # wider than the panel on its left: the drag is on the picture.
+        view = eikon.View("eikon gestures", 600, 400)
+        self.assertTrue(view.show(renderer))
+        before = renderer.image()
+        self.assertTrue(np.array_equal(before, still.image()))
+        pointer(560, 300)
+        view.show(renderer)
+        button(True)
+        view.show(renderer)
+        for i in range(1, 6):  # 60 pixels left: the camera turns 18° about its target
+            pointer(560 - 12 * i, 300)
+            time.sleep(0.02)
+            self.assertTrue(view.show(renderer))
+        button(False)
+        time.sleep(0.3)  # past the preview's rest delay: the full frame
+        view.show(renderer)
+        moved = renderer.image()
+        self.assertEqual(moved.shape, before.shape)
+        self.assertGreater(np.abs(moved.astype(int) - before.astype(int)).mean(), 2,
+                           "the view rendered the same fields from the orbited camera")
+        self.assertEqual(renderer.report()["caller_fields"]["names"], [], "re-rendered by the view: no new fields")
+
+        # A frame handed in after the drag: shown, and seen from the orbited camera.
+        for r in (renderer, still):
+            r.set_fields(delta_index=0.03 * test_module.bump(0.08))
+            r.render()
+        self.assertTrue(view.show(renderer))
+        self.assertFalse(np.array_equal(renderer.image(), moved), "the new frame is shown")
+        self.assertGreater(np.abs(renderer.image().astype(int) - still.image().astype(int)).mean(), 2,
+                           "seen from the orbited camera, not the scene's")
+        x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
+        x11.XCloseDisplay(display)
 
     def test_before_a_frame_show_is_refused(self):
         with self.assertRaises(eikon.Error):
