@@ -64,13 +64,17 @@ struct Renderer::Impl {
     }
 
     // The view's changes (eikon::View), kept in renderScene so that a frame
-    // renderer made again keeps them: the camera, exposure and photon count,
+    // renderer made again keeps them: the camera, the lights, exposure and photon count,
     // and the pixel stride of its preview (apps/viewer/ViewPreview.h). The
     // frame renderer takes them with the renderers' context current (no
     // window's may be: eikon::View releases its own first).
     void setCamera(const CameraDesc& camera) {
         renderScene.camera = camera;
         if (source) context->makeCurrent(), source->renderer().setCamera(camera);
+    }
+    void setLight(std::size_t index, const LightDesc& light) {
+        renderScene.lights[index] = light;
+        if (source) context->makeCurrent(), source->renderer().setLight(index, light);
     }
     void setExposure(double exposureEv) {
         renderScene.render.exposureEv = exposureEv;

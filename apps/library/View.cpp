@@ -3,8 +3,10 @@
 // with eikon-view's camera gestures, panel and preview policy
 // (apps/viewer/). It shows the renderer's frames through eikon-view's
 // presenter (apps/common/ImagePresenter.h); when the user moves the camera
-// it re-renders the renderer's current fields itself, as a preview of one
-// ray per k×k pixels while the camera moves and in full once it rests.
+// or the light it re-renders the renderer's current fields itself, as a
+// preview of one ray per k×k pixels while the camera moves and in full
+// once it rests. Unlike eikon-view it keeps the scene's photon count while
+// a light is dragged (each step retraces them all).
 // A thread has one current context across EGL and GLX (libglvnd refuses a
 // second): the view releases the renderers' EGL context before its
 // window's and its window's after, and each renderer makes its own current
@@ -138,16 +140,30 @@ struct View::Impl {
         return cameraOn(orbit, camera);
     }
 
+    // Right drag: the first light moves in its horizontal plane (a
+    // directional one turns), as in eikon-view. Where it moved, the light.
+    std::optional<LightDesc> movedLight(const Renderer::Impl& renderer) const {
+        const ImGuiIO& io = ImGui::GetIO();
+        if (io.WantCaptureMouse || renderer.renderScene.lights.empty() ||
+            !ImGui::IsMouseDragging(ImGuiMouseButton_Right) || (io.MouseDelta.x == 0.0f && io.MouseDelta.y == 0.0f))
+            return std::nullopt;
+        int framebufferWidth = 0, framebufferHeight = 0;
+        window->framebufferSize(framebufferWidth, framebufferHeight);
+        return view::lightDrag(renderer.renderScene.lights[0], renderer.renderScene.camera, io.MouseDelta.x,
+                               io.MouseDelta.y, framebufferHeight);
+    }
+
     // What the window's events changed, given to the renderer (the window's
     // context released: the renderer's own takes them), and its current
     // fields rendered again where the picture changed; the view pass's time
     // told to the preview policy.
     void renderAgain(Renderer& renderer, Renderer::Impl& state, const std::optional<CameraDesc>& camera,
-                     int stride) {
-        const bool again = camera || rerender || state.lastFrame().pixelStride != stride;
+                     const std::optional<LightDesc>& light, int stride) {
+        const bool again = camera || light || rerender || state.lastFrame().pixelStride != stride;
         if (!again && stride == state.pixelStride) return;
         leave();
         if (camera) state.setCamera(*camera);
+        if (light) state.setLight(0, *light);
         if (exposureEv != state.renderScene.render.exposureEv) state.setExposure(exposureEv);
         if (photons != state.renderScene.render.photons) state.setPhotonCount(photons);
         if (applyTracer) {
@@ -222,7 +238,7 @@ bool View::show(Renderer& renderer) {
     const std::optional<CameraDesc> camera = impl.movedCamera(state);
     const int stride =
         impl.preview.strideFor(camera.has_value(), std::chrono::duration<double>(now - impl.opened).count());
-    impl.renderAgain(renderer, state, camera, stride);
+    impl.renderAgain(renderer, state, camera, impl.movedLight(state), stride);
     impl.shown = state.lastFrame().image;
     impl.present();
     const double ms = std::chrono::duration<double, std::milli>(now - impl.lastShow).count();

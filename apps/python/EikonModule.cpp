@@ -188,8 +188,8 @@ PYBIND11_MODULE(eikon, m) {
     py::class_<eikon::View>(m, "View")
         .def(py::init<std::string, int, int>(), py::arg("title") = "eikon", py::arg("width") = 0,
              py::arg("height") = 0,
-             "The live viewer: a window (an X display) with eikon-view's camera gestures (left drag: orbit, "
-             "middle: pan, wheel: zoom), panel and preview, showing the renderer's frames scaled to fit; "
+             "The live viewer: a window (an X display) with eikon-view's gestures (left drag: orbit, "
+             "middle: pan, wheel: zoom, right: the first light), panel and preview, showing the renderer's frames scaled to fit; "
              "width × height pixels, 0: the first frame's size.")
         .def("show", &eikon::View::show, py::arg("renderer"), py::call_guard<py::gil_scoped_release>(),
              "Handles the window's events, renders the renderer's current fields again where the camera moved "

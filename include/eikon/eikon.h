@@ -172,8 +172,9 @@ private:
 // The live viewer fed by the caller's loop: a window (GLFW, on an X
 // display) with eikon-view's camera gestures, panel and preview policy. It
 // shows the renderer's last frame, scaled to fit and centred; a left drag
-// orbits the camera, a middle drag pans, the wheel zooms, and the view then
-// renders the renderer's current fields again itself — one ray per k×k
+// orbits the camera, a middle drag pans, the wheel zooms, a right drag
+// moves the first light, and the view then renders the renderer's current
+// fields again itself — one ray per k×k
 // pixels while the camera moves (k kept to a 40 ms view pass), the full
 // frame once it has rested a quarter second — so the camera moves even
 // while no new fields come. The panel shows the frame's stage timings and

@@ -3,7 +3,8 @@ window under Xvfb: each frame a loop hands it is what the window shows —
 at the frame's size pixel for pixel, scaled to fit in a larger window — and
 a mouse drag in it, made by the X server's test extension as a hand would,
 orbits the camera: the view renders the fields again from there, and the
-frames handed in afterwards are seen from there too. Run by ctest
+frames handed in afterwards are seen from there too; a right drag turns the
+light. Run by ctest
 (Python.View) under xvfb-run."""
 
 import ctypes
@@ -48,7 +49,7 @@ class View(unittest.TestCase):
         self.assertLess(window[:, :20].max(), 30)
         self.assertLess(window[:, 76:].max(), 30)
 
-    def test_a_left_drag_orbits_the_camera_and_frames_handed_in_still_show(self):
+    def test_drags_orbit_the_camera_and_turn_the_light_and_frames_handed_in_still_show(self):
         x11, xtst = ctypes.CDLL("libX11.so.6"), ctypes.CDLL("libXtst.so.6")
         x11.XOpenDisplay.restype = ctypes.c_void_p
         x11.XFlush.argtypes = [ctypes.c_void_p]
@@ -101,6 +102,20 @@ class View(unittest.TestCase):
         self.assertFalse(np.array_equal(renderer.image(), moved), "the new frame is shown")
         self.assertGreater(np.abs(renderer.image().astype(int) - still.image().astype(int)).mean(), 2,
                            "seen from the orbited camera, not the scene's")
+        # A right drag turns the (directional) light: the receiver's caustic moves.
+        lit = renderer.receiver(0)
+        pointer(560, 300)
+        view.show(renderer)
+        xtst.XTestFakeButtonEvent(display, 3, True, 0)
+        x11.XFlush(display)
+        view.show(renderer)
+        for i in range(1, 4):
+            pointer(560 - 15 * i, 300)
+            self.assertTrue(view.show(renderer))
+        xtst.XTestFakeButtonEvent(display, 3, False, 0)
+        x11.XFlush(display)
+        view.show(renderer)
+        self.assertGreater(np.abs(renderer.receiver(0) - lit).max(), 0.05, "the light turned")
         x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
         x11.XCloseDisplay(display)
 
