@@ -25,7 +25,7 @@ layout(std430, binding = kOpticsDeltaIndex) writeonly buffer CallerDeltaIndex { 
 layout(std430, binding = kOpticsExtinction) readonly buffer CallerExtinction { float extinction[]; };
 layout(std430, binding = kOpticsScattering) readonly buffer CallerScattering { float scattering[]; };
 // Per check the first cell that fails it (0xffffffff: none), in the order
-// of CallerCheck (apps/library/GpuFieldPass.h): [0] a temperature sample,
+// of CallerCheck (apps/library/GpuFieldPass.cpp): [0] a temperature sample,
 // [1] an index sample, [2] an extinction sample, [3] a scattering sample
 // not finite; [4] T ≤ 0 K; [5] n ≤ 0 in the index; [6] n_ref + δn ≤ 0 or
 // past float32; [7] κ < 0; [8] σs < 0; [9] σs > κ. Then [10] the smallest

@@ -34,7 +34,7 @@ struct FieldIntake {
 // Checks every field before any is taken: a known name given once, values,
 // shape (nz, ny, nx) and channels, the grid box, finite values, a unit
 // (a temperature's only: kelvin, celsius, kelvin_above_ambient), a GL
-// buffer for a field the GPU path takes (kGpuFields: their values and size
+// buffer for a field the GPU path takes (BufferField.h: its values and size
 // are the renderer's to check) with the fields it is mapped with on the GPU
 // too. Throws eikon::Error naming the field, what was expected and what was
 // found.
