@@ -4,7 +4,7 @@ at the frame's size pixel for pixel, scaled to fit in a larger window — and
 a mouse drag in it, made by the X server's test extension as a hand would,
 orbits the camera: the view renders the fields again from there, and the
 frames handed in afterwards are seen from there too; a right drag turns the
-light. Run by ctest
+light; and closing the window ends the loop (show() returns False). Run by ctest
 (Python.View) under xvfb-run."""
 
 import ctypes
@@ -118,6 +118,50 @@ class View(unittest.TestCase):
         self.assertGreater(np.abs(renderer.receiver(0) - lit).max(), 0.05, "the light turned")
         x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
         x11.XCloseDisplay(display)
+
+    def test_closing_the_window_is_reported_to_the_loop(self):
+        """The window manager's close (WM_DELETE_WINDOW, sent here as a window
+        manager sends it): show() returns False and is_open turns False."""
+        x11 = ctypes.CDLL("libX11.so.6")
+        x11.XOpenDisplay.restype = ctypes.c_void_p
+        x11.XInternAtom.restype = ctypes.c_ulong
+        x11.XInternAtom.argtypes = [ctypes.c_void_p, ctypes.c_char_p, ctypes.c_int]
+        x11.XDefaultRootWindow.restype = ctypes.c_ulong
+        x11.XDefaultRootWindow.argtypes = [ctypes.c_void_p]
+        x11.XQueryTree.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.POINTER(ctypes.c_ulong),
+                                   ctypes.POINTER(ctypes.c_ulong), ctypes.POINTER(ctypes.POINTER(ctypes.c_ulong)),
+                                   ctypes.POINTER(ctypes.c_uint)]
+        x11.XSendEvent.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_int, ctypes.c_long, ctypes.c_void_p]
+        x11.XFlush.argtypes = [ctypes.c_void_p]
+
+        class ClientMessage(ctypes.Structure):  # XClientMessageEvent, padded to an XEvent
+            _fields_ = [("type", ctypes.c_int), ("serial", ctypes.c_ulong), ("send_event", ctypes.c_int),
+                        ("display", ctypes.c_void_p), ("window", ctypes.c_ulong), ("message_type", ctypes.c_ulong),
+                        ("format", ctypes.c_int), ("data", ctypes.c_long * 5), ("pad", ctypes.c_long * 12)]
+
+        display = x11.XOpenDisplay(None)
+        renderer = eikon.Renderer(SCENE)
+        renderer.set_fields(temperature=warm_bubble(0))
+        renderer.render()
+        view = eikon.View("eikon close", 64, 64)
+        self.assertTrue(view.show(renderer))
+        root, parent = ctypes.c_ulong(), ctypes.c_ulong()
+        children, count = ctypes.POINTER(ctypes.c_ulong)(), ctypes.c_uint()
+        x11.XQueryTree(display, x11.XDefaultRootWindow(display), ctypes.byref(root), ctypes.byref(parent),
+                       ctypes.byref(children), ctypes.byref(count))
+        self.assertGreater(count.value, 0, "the view's window on the screen")
+        protocols = x11.XInternAtom(display, b"WM_PROTOCOLS", 0)
+        delete = x11.XInternAtom(display, b"WM_DELETE_WINDOW", 0)
+        for w in range(count.value):  # the windows at the top (no window manager reparents them)
+            event = ClientMessage(type=33, send_event=1, display=display, window=children[w],
+                                  message_type=protocols, format=32)
+            event.data[0] = delete
+            x11.XSendEvent(display, children[w], 0, 0, ctypes.byref(event))
+        x11.XFlush(display)
+        time.sleep(0.1)
+        self.assertFalse(view.show(renderer), "closed: the loop's condition ends it")
+        self.assertFalse(view.is_open)
+        self.assertFalse(view.show(renderer))
 
     def test_before_a_frame_show_is_refused(self):
         with self.assertRaises(eikon.Error):
