@@ -290,10 +290,10 @@ set_tests_properties(WindowContext.OpensWithOpenGl45AndRunsComputeShaders PROPER
 eikon_test(test_light_frames LABELS unit LIBS eikon_render SOURCES tests/unit/test_light_frames.cpp)
 eikon_test(test_camera_controls LABELS unit LIBS eikon_bridge SOURCES
   tests/unit/test_camera_controls.cpp
-  apps/eikon-view/CameraControls.cpp)
+  apps/viewer/CameraControls.cpp)
 eikon_test(test_view_preview LABELS unit LIBS eikon_bridge SOURCES
   tests/unit/test_view_preview.cpp
-  apps/eikon-view/ViewPreview.cpp)
+  apps/viewer/ViewPreview.cpp)
 eikon_test(test_simulation_pacer LABELS unit LIBS eikon_bridge SOURCES
   tests/unit/test_simulation_pacer.cpp
   apps/eikon-view/SimulationPacer.cpp)

@@ -86,6 +86,66 @@ void checkFinite(const Field& field, const GridSpec& grid, std::size_t count) {
                formatPosition(grid.cellCentre(i, j, k)) + " m");
 }
 
+template <std::size_t N>
+bool isOneOf(const std::string& name, const char* const (&names)[N]) {
+    return std::find_if(std::begin(names), std::end(names), [&](const char* n) { return name == n; }) !=
+           std::end(names);
+}
+
+std::string bufferFieldNames() {
+    std::string names;
+    for (const char* name : kIndexBufferFields) names += std::string(names.empty() ? "" : ", ") + name;
+    for (const char* name : kCoefficientBufferFields) names += std::string(", ") + name + " (RGB)";
+    return names;
+}
+
+// Fields mapped together are taken on one side: the index's inputs
+// (temperature, index, δn; a flame heats the gas) all in GL buffers or all
+// in host memory, and extinction and scattering in GL buffers only without
+// a density or flame (which add to them on the host), scattering with
+// extinction (σs ≤ κ is checked where both lie) and without an anisotropy
+// (g is weighted by σs).
+void refuseSplitMappings(const std::vector<Field>& fields) {
+    const Field* indexBuffer = nullptr;
+    const Field* indexHost = nullptr;
+    const Field* coefficientBuffer = nullptr;
+    const Field* addsToCoefficients = nullptr;  // a density or a flame
+    const Field* flame = nullptr;
+    const Field* scattering = nullptr;
+    const Field* anisotropy = nullptr;
+    bool extinctionBuffer = false;
+    for (const Field& field : fields) {
+        if (isOneOf(field.name, kIndexBufferFields)) (field.buffer ? indexBuffer : indexHost) = &field;
+        if (field.buffer && isOneOf(field.name, kCoefficientBufferFields)) coefficientBuffer = &field;
+        if (field.buffer && field.name == "extinction") extinctionBuffer = true;
+        if (field.name == "scattering") scattering = &field;
+        if (field.name == "anisotropy") anisotropy = &field;
+        if (field.name == "density" || field.name == "flame") addsToCoefficients = &field;
+        if (field.name == "flame") flame = &field;
+    }
+    if (indexBuffer && indexHost)
+        refuse(indexHost->name,
+               "a GL buffer as \"" + indexBuffer->name + "\" is (the index's fields are mapped together, on one side)",
+               "values in host memory");
+    if (indexBuffer && flame)
+        refuse(indexBuffer->name, "values in host memory beside a flame (which heats the gas, on the host)",
+               "GL buffer " + std::to_string(indexBuffer->buffer));
+    if (coefficientBuffer && addsToCoefficients)
+        refuse(coefficientBuffer->name,
+               "values in host memory beside \"" + addsToCoefficients->name +
+                   "\" (which adds to extinction and scattering on the host)",
+               "GL buffer " + std::to_string(coefficientBuffer->buffer));
+    if (scattering && scattering->buffer && !extinctionBuffer)
+        refuse("scattering", "an extinction GL buffer beside a scattering one (σs ≤ κ is checked where both lie)",
+               "none");
+    if (scattering && scattering->buffer && anisotropy)
+        refuse("scattering", "values in host memory beside an anisotropy (g is σs-weighted on the host)",
+               "GL buffer " + std::to_string(scattering->buffer));
+    if (scattering && !scattering->buffer && extinctionBuffer)
+        refuse("scattering", "a GL buffer beside an extinction GL buffer (σs ≤ κ is checked where both lie)",
+               "values in host memory");
+}
+
 // A temperature's unit, as volume.fields.temperature_unit names it.
 VolumeDesc::TemperatureUnit temperatureUnit(const std::string& unit) {
     if (unit == "kelvin") return VolumeDesc::TemperatureUnit::Kelvin;
@@ -107,10 +167,13 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
         if (slot == std::end(kSlots)) refuse(field.name, "one of " + knownNames(), "an unknown name");
         if (std::find(intake.names.begin(), intake.names.end(), field.name) != intake.names.end())
             refuse(field.name, "each field named once", "it twice");
-        if (field.buffer && field.name != "delta_index")
-            refuse(field.name, "values in host memory (a GL buffer is taken for delta_index only: the others are "
-                               "mapped on the host)",
+        if (field.buffer && !isOneOf(field.name, kIndexBufferFields) && !isOneOf(field.name, kCoefficientBufferFields))
+            refuse(field.name, "values in host memory (a GL buffer is taken for " + bufferFieldNames() +
+                                   "; the others are mapped with the scene's medium on the host)",
                    "GL buffer " + std::to_string(field.buffer));
+        if (field.buffer && slot->rgb && field.channels != 3)
+            refuse(field.name, "3 channels (RGB) in a GL buffer (a grey field is spread over three on the host)",
+                   std::to_string(field.channels));
         if (field.buffer && field.values)
             refuse(field.name, "values or a GL buffer, not both", "both");
         if (!field.values && !field.buffer) refuse(field.name, "values", "a null pointer");
@@ -133,12 +196,13 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
     if (std::find(intake.names.begin(), intake.names.end(), "index") != intake.names.end() &&
         std::find(intake.names.begin(), intake.names.end(), "delta_index") != intake.names.end())
         refuse("index", "index or delta_index, not both (each sets the index)", "both");
+    refuseSplitMappings(fields);
     // Every field passed: take them.
     for (const Field& field : fields) {
         const FieldSlot& slot = *std::find_if(std::begin(kSlots), std::end(kSlots),
                                               [&](const FieldSlot& s) { return field.name == s.name; });
         if (field.buffer) {  // read on the GPU, by the renderer
-            intake.deltaIndexBuffer = field.buffer;
+            intake.buffers.push_back({field.name, field.buffer, field.channels});
             continue;
         }
         std::span<const float> values(field.values, cells * static_cast<std::size_t>(field.channels));

@@ -6,6 +6,7 @@
 
 #include "eikon/eikon.h"
 
+#include "apps/library/BufferField.h"
 #include "bridge/grid/GridSpec.h"
 #include "sim/optics/VolumeOptics.h"
 
@@ -25,15 +26,18 @@ struct FieldIntake {
     std::vector<std::string> names;  // the fields taken, in the caller's order
     // The temperature's declared unit (Field::unit); none: as the scene's volume reads it.
     std::optional<VolumeDesc::TemperatureUnit> temperatureUnit;
-    // delta_index handed as a GL buffer (Field::buffer), 0 for none: not among `samples`.
-    unsigned deltaIndexBuffer = 0;
+    // The fields handed as GL buffers (Field::buffer), in the caller's
+    // order: not among `samples` (apps/library/GpuFieldPass.h takes them).
+    std::vector<BufferField> buffers;
 };
 
 // Checks every field before any is taken: a known name given once, values,
 // shape (nz, ny, nx) and channels, the grid box, finite values, a unit
 // (a temperature's only: kelvin, celsius, kelvin_above_ambient), a GL
-// buffer (delta_index's only; its size is the renderer's to check). Throws
-// eikon::Error naming the field, what was expected and what was found.
+// buffer for a field the GPU path takes (BufferField.h: its values and size
+// are the renderer's to check) with the fields it is mapped with on the GPU
+// too. Throws eikon::Error naming the field, what was expected and what was
+// found.
 FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid);
 
 }  // namespace eikon::library

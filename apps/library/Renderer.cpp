@@ -8,6 +8,7 @@
 #include "apps/common/FrameReport.h"
 #include "apps/common/FrameSource.h"
 #include "apps/library/FieldIntake.h"
+#include "apps/library/RendererImpl.h"
 #include "bridge/core/Error.h"
 #include "bridge/core/NumberFormat.h"
 #include "gl/GlContext.h"
@@ -42,9 +43,6 @@ auto refusalsAsErrors(Work&& work) -> decltype(work()) {
     }
 }
 
-// The optional fields a frame renderer's stages are made for (their
-// textures and programs): a frame that adds or drops one needs another.
-using FieldLayout = std::tuple<bool, bool, bool, bool>;
 FieldLayout layoutOf(const FieldSet& fields) {
     return {fields.hasExtinction(), fields.hasScattering(), fields.hasAnisotropy(), fields.hasEmission()};
 }
@@ -68,39 +66,24 @@ std::shared_ptr<gl::GlContext> sharedContext() {
 // The caller's temperature against the unit it is read in (`optics`: the
 // scene's volume keys with the declared unit), as the scene parser and the
 // optics check a volume file's: a scale only above ambient, and no absolute
-// temperature read as above ambient by default.
-void checkTemperatureUnit(const VolumeDesc& optics, const library::FieldIntake& intake) {
+// temperature read as above ambient by default (a GL buffer's smallest
+// nonzero sample where all are as large, from the GPU pass).
+void checkTemperatureUnit(const VolumeDesc& optics, const library::FieldIntake& intake,
+                          std::optional<float> smallestOnGpu) {
     const std::string field = "eikon::Renderer::setFields: field \"temperature\": expected ";
     if (intake.temperatureUnit && optics.temperatureUnit != VolumeDesc::TemperatureUnit::KelvinAboveAmbient &&
         optics.temperatureScale != 1.0)
         throw Error(field + "no volume.temperature_scale with an absolute unit (it scales a temperature above "
                             "ambient), found the scene's temperature_scale " + formatRounded(optics.temperatureScale));
-    if (const std::optional<float> smallest = sim::absoluteLookingTemperature(optics, intake.samples))
+    const bool readAboveAmbient =
+        optics.implicitTemperatureUnit && optics.temperatureUnit == VolumeDesc::TemperatureUnit::KelvinAboveAmbient;
+    if (const std::optional<float> smallest =
+            readAboveAmbient && smallestOnGpu ? smallestOnGpu : sim::absoluteLookingTemperature(optics, intake.samples))
         throw Error(field + "a temperature above ambient (read so without a declared unit), within " +
                     formatRounded(sim::kAbsoluteTemperatureLooking) +
                     " K of 0 somewhere; for an absolute temperature declare its unit \"kelvin\" or \"celsius\" "
                     "(eikon::Field::unit; temperature_unit= in Python), found every nonzero value at least " +
                     formatRounded(*smallest) + " (an absolute temperature?)");
-}
-
-// A caller's GL buffer for delta_index (Field::buffer), with the context
-// current: a buffer object of that context, large enough, in a scene that
-// composites nothing over the fields on the host.
-void checkDeltaIndexBuffer(const Scene& scene, unsigned buffer) {
-    const std::string field = "eikon::Renderer::setFields: field \"delta_index\": expected ";
-    if (!scene.objects.empty() || !scene.paint.empty())
-        throw Error(field + "values in host memory in a scene with objects or paint (composited over the fields on "
-                            "the host), found GL buffer " + std::to_string(buffer));
-    if (!glIsBuffer(buffer))
-        throw Error(field + "the name of a buffer object made in the renderer's context (makeContextCurrent, then "
-                            "glCreateBuffers), found the name " + std::to_string(buffer) + " naming none");
-    GLint64 bytes = 0;
-    glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &bytes);
-    const std::uint64_t needed = scene.grid.spec().cellCount() * sizeof(float);
-    if (static_cast<std::uint64_t>(bytes) < needed)
-        throw Error(field + "a GL buffer of at least " + std::to_string(needed) +
-                    " bytes (nz·ny·nx floats), found buffer " + std::to_string(buffer) + " of " +
-                    std::to_string(bytes) + " bytes");
 }
 
 FloatArray rgbOf(const std::vector<float>& rgba, std::size_t height, std::size_t width, const std::string& unit) {
@@ -112,58 +95,20 @@ FloatArray rgbOf(const std::vector<float>& rgba, std::size_t height, std::size_t
 
 }  // namespace
 
-struct Renderer::Impl {
-    // The context outlives everything that holds GL objects.
-    std::shared_ptr<gl::GlContext> context;
-    Scene scene;
-    // The scene as the frame renderer sees it: the caller's fields are an
-    // imported volume to it, which may fill the whole grid (the region
-    // photons are sent toward, render/stages/PhotonEmission.h), as a
-    // volume file's would.
-    Scene renderScene;
-    std::unique_ptr<sim::SceneFields> fields;
-    // Made at the first render, for the fields' layout then; made again
-    // where a frame changes it.
-    std::unique_ptr<app::FrameSource> source;
-    FieldLayout sourceLayout{};
-    bool fieldsRendered = true;  // false after a refusal that left refused fields (SceneFields::writeCallerFields)
-    std::optional<render::FrameResult> last;
-    std::string report;
-    int frame = -1;
-    std::uint64_t copiedBytes = 0;  // of the caller's fields for the frame to render
-    double takeMs = 0.0;            // checking and mapping them
-    std::vector<std::string> given;  // their names
-    // The GPU path: delta_index from the caller's GL buffer (0: none), and
-    // the version its texture takes it as — a range of its own, so that
-    // each setFields naming it uploads it anew (render/stages/FieldTextures.h).
-    unsigned deltaIndexBuffer = 0;
-    std::uint64_t bufferVersion = std::uint64_t{1} << 63;
-
-    explicit Impl(Scene parsed) : scene(std::move(parsed)) {
-        if (scene.sim)
-            throw InputError(scene.sourcePath + ": sim",
-                             "no `sim` section in a scene whose fields the library's caller hands in "
-                             "(the solver would make its own)",
-                             "a sim section");
-        if (scene.volume) sim::checkVolumeFrames(*scene.volume, scene.grid.spec(), 1, scene.sourcePath);
-        render::requireMemoryFits(scene);
-        fields = std::make_unique<sim::SceneFields>(scene);
-        renderScene = scene;
-        if (!renderScene.volume) renderScene.volume = VolumeDesc{};
-        context = sharedContext();
-        context->makeCurrent();
-    }
-    ~Impl() {
-        if (context) context->makeCurrent();  // GL objects go with their context current
-        source.reset();
-        fields.reset();
-    }
-
-    const render::FrameResult& lastFrame() const {
-        if (!last) throw Error("eikon::Renderer: no frame rendered yet (call render())");
-        return *last;
-    }
-};
+Renderer::Impl::Impl(Scene parsed) : scene(std::move(parsed)) {
+    if (scene.sim)
+        throw InputError(scene.sourcePath + ": sim",
+                         "no `sim` section in a scene whose fields the library's caller hands in "
+                         "(the solver would make its own)",
+                         "a sim section");
+    if (scene.volume) sim::checkVolumeFrames(*scene.volume, scene.grid.spec(), 1, scene.sourcePath);
+    render::requireMemoryFits(scene);
+    fields = std::make_unique<sim::SceneFields>(scene);
+    renderScene = scene;
+    if (!renderScene.volume) renderScene.volume = VolumeDesc{};
+    context = sharedContext();
+    context->makeCurrent();
+}
 
 Renderer::Renderer(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Renderer::~Renderer() = default;
@@ -194,10 +139,19 @@ void Renderer::setFields(const std::vector<Field>& fields) {
     Impl& impl = *impl_;
     const auto start = std::chrono::steady_clock::now();
     library::FieldIntake intake = library::takeFields(fields, impl.scene.grid.spec());
-    checkTemperatureUnit(impl.fields->callerOptics(intake.temperatureUnit), intake);
-    if (intake.deltaIndexBuffer) {
+    const VolumeDesc optics = impl.fields->callerOptics(intake.temperatureUnit);
+    library::GpuFieldPass::Taken onGpu;
+    if (!intake.buffers.empty()) {
         impl.context->makeCurrent();
-        checkDeltaIndexBuffer(impl.scene, intake.deltaIndexBuffer);
+        if (!impl.gpuPass)
+            impl.gpuPass = std::make_unique<library::GpuFieldPass>(impl.scene, impl.fields->fields().referenceIndex);
+        onGpu = refusalsAsErrors([&] { return impl.gpuPass->take(intake.buffers, optics); });
+    }
+    checkTemperatureUnit(optics, intake, onGpu.absoluteLookingTemperature);
+    if (onGpu.extinction || onGpu.scattering) {
+        impl.noCoefficients.resize(3 * impl.scene.grid.spec().cellCount());
+        if (onGpu.extinction) intake.samples.extinction = impl.noCoefficients;
+        if (onGpu.scattering) intake.samples.scattering = impl.noCoefficients;
     }
     const FieldSet& current = impl.fields->fields();
     const auto versions = [&] {
@@ -219,8 +173,9 @@ void Renderer::setFields(const std::vector<Field>& fields) {
     impl.fieldsRendered = true;
     impl.copiedBytes = intake.copiedBytes;
     impl.given = intake.names;
-    impl.deltaIndexBuffer = intake.deltaIndexBuffer;
-    if (impl.deltaIndexBuffer) ++impl.bufferVersion;
+    if (impl.gpuPass) impl.gpuPass->keep(onGpu);
+    impl.onGpu = onGpu;
+    if (!intake.buffers.empty()) ++impl.bufferVersion;
     impl.takeMs = app::millisecondsSince(start);
 }
 
@@ -238,12 +193,26 @@ void Renderer::render() {
             impl.source =
                 std::make_unique<app::FrameSource>(impl.renderScene, *impl.fields, options, false, app::ExportNeeds());
             impl.sourceLayout = layout;
+            if (impl.pixelStride != 1) impl.source->renderer().setPixelStride(impl.pixelStride);
         }
         const auto start = std::chrono::steady_clock::now();
-        if (impl.deltaIndexBuffer) {  // the host fields but δn, which the texture copies on the GPU
+        const library::GpuFieldPass::Taken& onGpu = impl.onGpu;
+        if (onGpu.deltaIndex || onGpu.extinction || onGpu.scattering) {
+            // The host fields but those in GL buffers, which the textures copy on the GPU.
             render::FieldUpload upload = render::hostUpload(impl.fields->fields());
-            upload.deltaIndex = {nullptr, impl.deltaIndexBuffer, impl.scene.grid.spec().cellCount()};
-            upload.indexVersion = impl.bufferVersion;
+            const std::size_t cells = impl.scene.grid.spec().cellCount();
+            if (onGpu.deltaIndex) {
+                upload.deltaIndex = {nullptr, onGpu.deltaIndex, cells};
+                upload.indexVersion = impl.bufferVersion;
+            }
+            if (onGpu.extinction) {
+                upload.extinction = {nullptr, onGpu.extinction, 3 * cells};
+                upload.extinctionVersion = impl.bufferVersion;
+            }
+            if (onGpu.scattering) {
+                upload.scattering = {nullptr, onGpu.scattering, 3 * cells};
+                upload.scatteringVersion = impl.bufferVersion;
+            }
             impl.last = impl.source->renderer().render(upload);
         } else {
             impl.last = impl.source->render();

@@ -35,11 +35,12 @@ std::string shapeText(const py::array& array) {
     return text + (array.ndim() == 1 ? ",)" : ")");
 }
 
-// eikon.GLBuffer(name): an OpenGL buffer object made in the renderer's
-// context, handed for a field in place of an array (the GPU path,
-// eikon::Field::buffer).
+// eikon.GLBuffer(name, channels=1): an OpenGL buffer object made in the
+// renderer's context, handed for a field in place of an array (the GPU
+// path, eikon::Field::buffer), with 1 or 3 (RGB) floats per cell.
 struct GlBuffer {
     unsigned name = 0;
+    int channels = 1;
 };
 
 // A NumPy array as an eikon::Field over `grid`'s box, read in place, or a
@@ -49,7 +50,8 @@ eikon::Field fieldOf(const std::string& name, const py::handle& object, const ei
         const std::array<std::size_t, 3> shape{static_cast<std::size_t>(grid.cells[2]),
                                                static_cast<std::size_t>(grid.cells[1]),
                                                static_cast<std::size_t>(grid.cells[0])};
-        return {name, nullptr, shape, 1, grid.boundsMin, grid.boundsMax, {}, object.cast<GlBuffer>().name};
+        const GlBuffer buffer = object.cast<GlBuffer>();
+        return {name, nullptr, shape, buffer.channels, grid.boundsMin, grid.boundsMax, {}, buffer.name};
     }
     if (!py::isinstance<py::array>(object)) refuse(name, "a NumPy array", std::string(py::str(py::type::of(object))));
     const auto array = py::reinterpret_borrow<py::array>(object);
@@ -120,10 +122,14 @@ PYBIND11_MODULE(eikon, m) {
     m.doc() = "eikon: light through graded-index media, rendered from your own solver's fields (docs/library.md)";
     py::register_exception<eikon::Error>(m, "Error", PyExc_ValueError);
 
-    py::class_<GlBuffer>(m, "GLBuffer", "An OpenGL buffer object's name in the renderer's context, handed for "
-                                        "delta_index in place of an array (the GPU path: copied on the GPU).")
-        .def(py::init([](unsigned name) { return GlBuffer{name}; }), py::arg("name"))
-        .def_readonly("name", &GlBuffer::name);
+    py::class_<GlBuffer>(m, "GLBuffer",
+                         "An OpenGL buffer object's name in the renderer's context with `channels` floats a cell, "
+                         "handed for delta_index, index, temperature, extinction or scattering (channels=3) in place "
+                         "of an array (the GPU path: mapped and copied on the GPU, docs/library.md).")
+        .def(py::init([](unsigned name, int channels) { return GlBuffer{name, channels}; }), py::arg("name"),
+             py::arg("channels") = 1)
+        .def_readonly("name", &GlBuffer::name)
+        .def_readonly("channels", &GlBuffer::channels);
 
     py::class_<eikon::Renderer>(m, "Renderer")
         .def(py::init(&makeRenderer), py::arg("scene"), py::arg("folder") = ".",
@@ -143,7 +149,7 @@ PYBIND11_MODULE(eikon, m) {
         .def("set_fields", &setFields,
              "The next frame's fields as keyword arrays (delta_index, index, temperature, density, flame, "
              "extinction, scattering, anisotropy, emission), C-contiguous float32 of shape (nz, ny, nx) or "
-             "(nz, ny, nx, 3), read in place (delta_index also an eikon.GLBuffer); bounds=((x, y, z), (x, y, z)) in m where they lie (default: the "
+             "(nz, ny, nx, 3), read in place (or an eikon.GLBuffer: delta_index, index, temperature, extinction, scattering); bounds=((x, y, z), (x, y, z)) in m where they lie (default: the "
              "scene's grid box); temperature_unit=\"kelvin\", \"celsius\" or \"kelvin_above_ambient\" what the "
              "temperature holds (default: as the scene's volume reads it, kelvin above ambient).")
         .def("render", &eikon::Renderer::render, py::call_guard<py::gil_scoped_release>(),
@@ -182,11 +188,14 @@ PYBIND11_MODULE(eikon, m) {
     py::class_<eikon::View>(m, "View")
         .def(py::init<std::string, int, int>(), py::arg("title") = "eikon", py::arg("width") = 0,
              py::arg("height") = 0,
-             "The live viewer: a window (an X display) showing each frame handed to show(), scaled to fit; "
+             "The live viewer: a window (an X display) with eikon-view's gestures (left drag: orbit, "
+             "middle: pan, wheel: zoom, right: the first light), panel and preview, showing the renderer's frames scaled to fit; "
              "width × height pixels, 0: the first frame's size.")
-        .def("show", &eikon::View::show, py::arg("renderer"),
-             "Shows the renderer's last frame and handles the window's events; False once the window is closed "
-             "(a loop's condition: while view.show(r): ...).")
+        .def("show", &eikon::View::show, py::arg("renderer"), py::call_guard<py::gil_scoped_release>(),
+             "Handles the window's events, renders the renderer's current fields again where the camera moved "
+             "(a preview while it moves, the full frame once it rests) and shows its last frame; False once the "
+             "window is closed (a loop's condition: while view.show(r): ...). Call it between steps too, to keep "
+             "the window live.")
         .def_property_readonly("is_open", &eikon::View::isOpen)
         .def(
             "window_image",
@@ -194,7 +203,7 @@ PYBIND11_MODULE(eikon, m) {
                 eikon::ByteArray a = v.windowImage();
                 return toNumpy(std::move(a.values), a.shape);
             },
-            "What the window shows: (height, width, 3) uint8 sRGB, row 0 at the top.");
+            "The frame as the window shows it, under the panel: (height, width, 3) uint8 sRGB, row 0 at the top.");
 
     m.def(
         "render_image",

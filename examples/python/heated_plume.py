@@ -7,7 +7,11 @@ w = buoyancy · T (first-order upwind), spread by explicit diffusion, and
 fed by a hot strip whose temperature flickers. eikon maps T to the refractive index
 of air by Gladstone–Dale (the scene's volume defaults, docs/library.md).
 
-    PYTHONPATH=build/release/python python3 examples/python/heated_plume.py [steps] [out folder]
+    PYTHONPATH=build/release/python python3 examples/python/heated_plume.py [steps] [out folder] [--view]
+
+With --view the plume is also shown live in eikon's viewer window (an X
+display): drag to orbit the camera while it runs; closing the window ends
+the loop.
 """
 
 import os
@@ -73,20 +77,25 @@ def write_png(path, rgb):
 
 
 def main():
-    steps = int(sys.argv[1]) if len(sys.argv) > 1 else 40
-    out = sys.argv[2] if len(sys.argv) > 2 else "plume_frames"
+    arguments = [a for a in sys.argv[1:] if a != "--view"]
+    steps = int(arguments[0]) if len(arguments) > 0 else 40
+    out = arguments[1] if len(arguments) > 1 else "plume_frames"
     os.makedirs(out, exist_ok=True)
     renderer = eikon.Renderer(SCENE)
+    view = eikon.View("heated plume", 640, 480) if "--view" in sys.argv else None
     plume = Plume(N)
-    start = time.perf_counter()
+    start, done = time.perf_counter(), 0
     for step in range(steps):
         for _ in range(5):
             plume.step()
         renderer.set_fields(temperature=plume.t)
         renderer.render()
         write_png(os.path.join(out, f"plume_{step:03d}.png"), renderer.image())
+        done += 1
+        if view and not view.show(renderer):
+            break  # the window was closed
     elapsed = time.perf_counter() - start
-    print(f"{steps} frames in {elapsed:.2f} s: {steps / elapsed:.2f} frames/s (solver, render and PNG)")
+    print(f"{done} frames in {elapsed:.2f} s: {done / elapsed:.2f} frames/s (solver, render and PNG)")
 
 
 if __name__ == "__main__":

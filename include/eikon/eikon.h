@@ -65,12 +65,24 @@ struct Grid {
 // `buffer` is the GPU path: the name of an OpenGL buffer object made in the
 // renderer's context (Renderer::makeContextCurrent) whose first
 // nz·ny·nx·channels floats are the values, in place of `values` (null
-// then). The renderer copies it into its texture on the GPU: no byte of it
-// crosses to the host (the report's host_bytes_copied). For delta_index
-// only (the other fields are mapped on the host), in a scene without
-// objects or paint (composited over the fields on the host); its values are
-// not checked, as they are never read on the host. Write the buffer, then
-// name it in setFields for each frame.
+// then). No byte of it crosses to the host (the report's
+// host_bytes_copied): the fields of the index — delta_index, index,
+// temperature, with the same units and optics as host arrays — are mapped
+// to δn by a compute pass on the GPU (the host path's own Gladstone–Dale
+// text, so the frames are the same bit for bit), and extinction and
+// scattering (3 channels) are copied into their textures on the GPU. Every
+// check of a host array is made there too (finite values, T > 0 K, n > 0,
+// κ ≥ 0, σs ≤ κ, an undeclared absolute temperature), naming the cell.
+// The GPU path takes fields mapped together on one side: the index's all
+// in buffers or none; extinction and scattering in buffers only without a
+// density or flame, scattering only with extinction and without an
+// anisotropy, in a scene whose medium neither absorbs nor scatters and
+// whose volume.emission is not blackbody. Density, flame, anisotropy and
+// emission, and grey extinction and scattering, are mapped on the host and
+// refused as buffers; so is any buffer in a scene with objects or paint
+// (composited over the fields on the host). Write the buffers, then name
+// them in setFields for each frame: δn is mapped then, κ and σs are read at
+// render().
 struct Field {
     Field() = default;
     Field(std::string name_, const float* values_, std::array<std::size_t, 3> shape_, int channels_,
@@ -151,14 +163,24 @@ public:
     std::string report() const;
 
 private:
+    friend class View;  // re-renders the current fields as the user moves the camera
     struct Impl;
     explicit Renderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
 
 // The live viewer fed by the caller's loop: a window (GLFW, on an X
-// display) showing each frame it is handed, scaled to fit and centred, as
-// eikon-view shows its frames. Used from the renderers' thread.
+// display) with eikon-view's camera gestures, panel and preview policy. It
+// shows the renderer's last frame, scaled to fit and centred; a left drag
+// orbits the camera, a middle drag pans, the wheel zooms, a right drag
+// moves the first light, and the view then renders the renderer's current
+// fields again itself — one ray per k×k
+// pixels while the camera moves (k kept to a 40 ms view pass), the full
+// frame once it has rested a quarter second — so the camera moves even
+// while no new fields come. The panel shows the frame's stage timings and
+// error figures and sets the exposure, the photon count and the tracer's
+// settings ("apply settings"). The camera and the rest stay the renderer's
+// for the frames the caller renders next. Used from the renderers' thread.
 class View {
 public:
     // `width` × `height` pixels, 0: the first frame's size. The window opens
@@ -168,13 +190,17 @@ public:
     View(View&&) noexcept;
     View& operator=(View&&) noexcept;
 
-    // Shows the renderer's last frame (Error before its first, or where no
-    // window can be opened: no display) and handles the window's events;
-    // false, showing nothing, once the user has closed the window.
-    bool show(const Renderer& renderer);
+    // Handles the window's events (the gestures and the panel), renders the
+    // renderer's fields again where the camera moved or the preview refines,
+    // and shows its last frame (Error before its first, or where no window
+    // can be opened: no display). false, showing nothing, once the user has
+    // closed the window. A loop calls it each step, after render(), and may
+    // call it meanwhile to keep the window live:
+    //   while (view.show(renderer)) { solver.step(); renderer.setFields(...); renderer.render(); }
+    bool show(Renderer& renderer);
     bool isOpen() const;
-    // What the window shows, (height, width, 3) sRGB 8-bit, row 0 at the top
-    // (Error before the first show()).
+    // The frame as the window shows it, under the panel, (height, width, 3)
+    // sRGB 8-bit, row 0 at the top (Error before the first show()).
     ByteArray windowImage() const;
 
 private:

@@ -4,11 +4,23 @@
 #include "bridge/core/NumberFormat.h"
 #include "sim/optics/AirOptics.h"
 #include "sim/optics/Blackbody.h"
+#include "shaders/common/cpp_shim.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+namespace eikon::shader {
+namespace {
+#include "shaders/common/gas_index.glsl"
+}  // namespace
+}  // namespace eikon::shader
+// The shared file numbers the units in VolumeDesc::TemperatureUnit's order.
+static_assert(eikon::shader::kKelvinAboveAmbient ==
+                  static_cast<unsigned>(eikon::VolumeDesc::TemperatureUnit::KelvinAboveAmbient) &&
+              eikon::shader::kKelvin == static_cast<unsigned>(eikon::VolumeDesc::TemperatureUnit::Kelvin) &&
+              eikon::shader::kCelsius == static_cast<unsigned>(eikon::VolumeDesc::TemperatureUnit::Celsius));
 
 namespace eikon::sim {
 
@@ -61,14 +73,9 @@ std::optional<float> absoluteLookingTemperature(const VolumeDesc& volume, const 
 double volumeTemperature(const VolumeDesc& volume, const VolumeSamples& samples, std::size_t cell) {
     if (!samples.covers(cell)) return volume.ambientTemperature;
     double t = volume.ambientTemperature;
-    if (!samples.temperature.empty()) {
-        const double sample = samples.temperature[cell];
-        switch (volume.temperatureUnit) {
-        case VolumeDesc::TemperatureUnit::KelvinAboveAmbient: t += volume.temperatureScale * sample; break;
-        case VolumeDesc::TemperatureUnit::Kelvin: t = sample; break;
-        case VolumeDesc::TemperatureUnit::Celsius: t = sample + kZeroCelsius; break;
-        }
-    }
+    if (!samples.temperature.empty())
+        t = shader::sample_temperature(static_cast<unsigned>(volume.temperatureUnit), samples.temperature[cell],
+                                       volume.ambientTemperature, volume.temperatureScale, kZeroCelsius);
     if (!samples.flame.empty()) t += volume.flameTemperature * samples.flame[cell];
     return t;
 }
@@ -186,7 +193,7 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
             if (!(p > 0.0))
                 refuse(c, "volume.fields.pressure", "array \"" + volume.pressureGrid + "\"",
                        "a pressure > 0 Pa (an absolute pressure)", p, " Pa");
-            gas = air.refractivityAt(t, p);
+            gas = shader::gas_refractivity(air.refractivity, air.referenceTemperature, air.referencePressure, t, p);
         }
         const double delta = baseDelta + gas - ambient;
         if (!finiteFloat(delta) || !(fields.referenceIndex + delta > 0.0))

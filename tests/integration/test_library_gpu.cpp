@@ -1,9 +1,12 @@
-// The library's GPU path (eikon::Field::buffer): δn handed as an OpenGL
-// buffer made in the renderer's context renders as the same δn handed from
-// host memory, bit for bit, and no byte of it crosses to the host (the
-// report's host_bytes_copied); each wrong buffer is refused. On llvmpipe the
-// "GPU" is the same memory, but the path — a buffer object copied into the
-// texture by the driver, never read by eikon — is the one a GPU takes.
+// The library's GPU path (eikon::Field::buffer): each field the path takes
+// (δn, index, temperature in each unit, extinction and scattering), handed
+// as an OpenGL buffer made in the renderer's context, renders as the same
+// field handed from host memory, bit for bit, and no byte of it crosses to
+// the host (the report's host_bytes_copied); each wrong buffer, each value
+// the host path refuses and each split of fields mapped together is
+// refused. On llvmpipe the "GPU" is the same memory, but the path — buffer
+// objects mapped by a compute pass and copied into the textures by the
+// driver, never read by eikon — is the one a GPU takes.
 #include "eikon/eikon.h"
 
 #include <epoxy/gl.h>
@@ -12,7 +15,9 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -104,6 +109,113 @@ TEST(LibraryGpu, ABufferRendersAsTheSameHostArrayWithoutAHostCopy) {
     glDeleteBuffers(1, &buffer);
 }
 
+// One field of a frame: its name, unit and channels, and its values at frame f.
+struct Input {
+    Input(std::string name_, int channels_, std::function<std::vector<float>(int)> values_, std::string unit_ = {})
+        : name(std::move(name_)), channels(channels_), values(std::move(values_)), unit(std::move(unit_)) {}
+    std::string name;
+    int channels = 1;
+    std::function<std::vector<float>(int)> values;
+    std::string unit;
+};
+
+eikon::Field fieldOf(const eikon::Renderer& renderer, const Input& input, const std::vector<float>* host,
+                     unsigned buffer) {
+    eikon::Field field = deltaIndex(renderer, host, buffer);
+    field.name = input.name;
+    field.channels = input.channels;
+    field.unit = input.unit;
+    return field;
+}
+
+// Two frames of `inputs` rendered from host arrays and from GL buffers
+// (written anew for the second, as a solver's next step): the same bytes,
+// and the buffers' second frame copies no host byte.
+void expectSameFramesFromBuffers(const std::string& scene, const std::vector<Input>& inputs) {
+    eikon::Renderer host = eikon::Renderer::fromJson(scene);
+    eikon::Renderer device = eikon::Renderer::fromJson(scene);
+    std::vector<GLuint> buffers;
+    for (int frame = 0; frame < 2; ++frame) {
+        std::vector<std::vector<float>> values;
+        for (const Input& input : inputs) values.push_back(input.values(frame));
+        std::vector<eikon::Field> hostFields, deviceFields;
+        for (std::size_t f = 0; f < inputs.size(); ++f) {
+            if (frame == 0) {
+                buffers.push_back(bufferOf(device, values[f]));
+            } else {
+                device.makeContextCurrent();
+                glNamedBufferSubData(buffers[f], 0, static_cast<GLsizeiptr>(values[f].size() * sizeof(float)),
+                                     values[f].data());
+            }
+            hostFields.push_back(fieldOf(host, inputs[f], &values[f], 0));
+            deviceFields.push_back(fieldOf(device, inputs[f], nullptr, buffers[f]));
+        }
+        host.setFields(hostFields);
+        host.render();
+        device.setFields(deviceFields);
+        device.render();
+        EXPECT_EQ(device.image().values, host.image().values) << "frame " << frame;
+        EXPECT_EQ(device.radiance().values, host.radiance().values) << "frame " << frame;
+        EXPECT_EQ(device.receiver(0).values, host.receiver(0).values) << "frame " << frame;
+        EXPECT_EQ(report(device).at("photons"), report(host).at("photons")) << "frame " << frame;
+    }
+    const nlohmann::json fromHost = report(host), fromBuffer = report(device);
+    std::printf("%s, second frame: host arrays %llu host bytes; GL buffers %llu host bytes, %llu GPU bytes\n",
+                inputs.front().name.c_str(), fromHost.at("host_bytes_copied").get<unsigned long long>(),
+                fromBuffer.at("host_bytes_copied").get<unsigned long long>(),
+                fromBuffer.at("gpu_bytes_copied").get<unsigned long long>());
+    EXPECT_GT(fromHost.at("host_bytes_copied").get<std::uint64_t>(), 0u);
+    EXPECT_EQ(fromBuffer.at("host_bytes_copied").get<std::uint64_t>(), 0u);
+    EXPECT_GT(fromBuffer.at("gpu_bytes_copied").get<std::uint64_t>(), 0u);
+    EXPECT_EQ(fromBuffer.at("caller_fields").at("host_bytes_copied").get<std::uint64_t>(), 0u);
+    device.makeContextCurrent();
+    glDeleteBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
+}
+
+// The bump as `base` + `scale`·bump, per frame a stronger one, in `channels`
+// channels (channel c scaled by 1, 0.8, 0.6).
+std::function<std::vector<float>(int)> bumpOf(float base, float scale, int channels = 1) {
+    return [=](int frame) {
+        const std::vector<float> shape = bump(scale * (frame == 0 ? 1.0 : 1.5));
+        std::vector<float> values;
+        for (const float v : shape)
+            for (int c = 0; c < channels; ++c) values.push_back((base + v) * (1.0f - 0.2f * static_cast<float>(c)));
+        return values;
+    };
+}
+
+TEST(LibraryGpu, AnIndexBufferRendersAsTheSameHostArray) {
+    expectSameFramesFromBuffers(kScene, {{"index", 1, bumpOf(1.0f, 0.01f)}});
+}
+
+TEST(LibraryGpu, ATemperatureBufferIsMappedOnTheGpuAsOnTheHostInEachUnit) {
+    // A 600 K plume in 300 K air: n − 1 by Gladstone–Dale, δn ≈ −1.5e-4.
+    expectSameFramesFromBuffers(kScene, {{"temperature", 1, bumpOf(300.0f, 300.0f), "kelvin"}});
+    expectSameFramesFromBuffers(kScene, {{"temperature", 1, bumpOf(26.85f, 300.0f), "celsius"}});
+    expectSameFramesFromBuffers(kScene, {{"temperature", 1, bumpOf(0.0f, 300.0f)}});  // above ambient, undeclared
+    // With an index beside it: both mapped together.
+    expectSameFramesFromBuffers(kScene,
+                                {{"temperature", 1, bumpOf(0.0f, 300.0f)}, {"delta_index", 1, bumpOf(0.0f, 0.002f)}});
+}
+
+TEST(LibraryGpu, ExtinctionAndScatteringBuffersRenderAsTheSameHostArrays) {
+    expectSameFramesFromBuffers(kScene, {{"extinction", 3, bumpOf(0.0f, 4.0f, 3)}});
+    expectSameFramesFromBuffers(kScene, {{"extinction", 3, bumpOf(0.1f, 4.0f, 3)},
+                                         {"scattering", 3, bumpOf(0.05f, 2.0f, 3)},
+                                         {"delta_index", 1, bumpOf(0.0f, 0.01f)}});
+}
+
+void expectRefused(eikon::Renderer& renderer, const std::vector<eikon::Field>& fields,
+                   const std::vector<std::string>& words) {
+    try {
+        renderer.setFields(fields);
+        FAIL() << "accepted";
+    } catch (const eikon::Error& error) {
+        for (const std::string& word : words)
+            EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what() << " lacks " << word;
+    }
+}
+
 void expectRefused(eikon::Renderer& renderer, const eikon::Field& field, const std::vector<std::string>& words) {
     try {
         renderer.setFields({field});
@@ -121,9 +233,12 @@ TEST(LibraryGpu, AWrongBufferIsRefused) {
     expectRefused(renderer, deltaIndex(renderer, nullptr, small), {"\"delta_index\"", "131072 bytes", "65536 bytes"});
     expectRefused(renderer, deltaIndex(renderer, nullptr, small + 1000), {"\"delta_index\"", "naming none"});
     expectRefused(renderer, deltaIndex(renderer, &values, small), {"\"delta_index\"", "not both"});
-    eikon::Field temperature = deltaIndex(renderer, nullptr, small);
-    temperature.name = "temperature";
-    expectRefused(renderer, temperature, {"\"temperature\"", "host memory", "delta_index only"});
+    eikon::Field density = deltaIndex(renderer, nullptr, small);
+    density.name = "density";
+    expectRefused(renderer, density, {"\"density\"", "host memory", "delta_index, index, temperature"});
+    eikon::Field greyExtinction = deltaIndex(renderer, nullptr, small);
+    greyExtinction.name = "extinction";
+    expectRefused(renderer, greyExtinction, {"\"extinction\"", "3 channels", "found 1"});
     std::string withObject = kScene;
     withObject.insert(withObject.rfind('}'),
                       R"(, "objects": [{"type": "sphere", "center": [0.25, 0.25, 0.25], "radius": 0.1,
@@ -134,6 +249,67 @@ TEST(LibraryGpu, AWrongBufferIsRefused) {
     renderer.makeContextCurrent();
     glDeleteBuffers(1, &small);
     glDeleteBuffers(1, &whole);
+}
+
+// Values the host path refuses are refused on the GPU, naming the field
+// and the cell; fields mapped together are taken on one side. A refused
+// frame leaves the last one: the renderer renders it again, the same.
+TEST(LibraryGpu, ValuesAndSplitsTheHostPathRefusesAreRefused) {
+    eikon::Renderer renderer = eikon::Renderer::fromJson(kScene);
+    const auto field = [&](const char* name, std::vector<float> values, int channels = 1, std::string unit = {}) {
+        eikon::Field f = deltaIndex(renderer, nullptr, bufferOf(renderer, values));
+        f.name = name;
+        f.channels = channels;
+        f.unit = std::move(unit);
+        return f;
+    };
+    const std::vector<float> lens = bump(0.01);
+    renderer.setFields({field("delta_index", lens)});
+    renderer.render();
+    const std::vector<std::uint8_t> before = renderer.image().values;
+
+    std::vector<float> values(kCount, 20.0f);
+    values[5 + 32 * (6 + 32 * 7)] = std::nanf("");
+    expectRefused(renderer, field("temperature", values), {"\"temperature\"", "finite values", "NaN", "(5, 6, 7)"});
+    std::vector<float> cold(kCount, 20.0f);
+    cold[3] = -300.0f;
+    expectRefused(renderer, field("temperature", cold, 1, "celsius"),
+                  {"\"temperature\"", "> 0 K", "-26.85 K", "(3, 0, 0)"});
+    expectRefused(renderer, field("temperature", std::vector<float>(kCount, 300.0f)),
+                  {"\"temperature\"", "declare its unit", "at least 300"});
+    std::vector<float> index(kCount, 1.0f);
+    index[kCount - 1] = 0.0f;
+    expectRefused(renderer, field("index", index), {"\"index\"", "n > 0", "(31, 31, 31)"});
+    std::vector<float> kappa(3 * kCount, 1.0f), sigma(3 * kCount, 0.5f);
+    sigma[3 * 40 + 2] = 2.0f;
+    expectRefused(renderer, {field("extinction", kappa, 3), field("scattering", sigma, 3)},
+                  {"\"scattering\"", "scattering <= extinction", "(8, 1, 0)"});
+    kappa[3 * 9] = -1.0f;
+    expectRefused(renderer, field("extinction", kappa, 3), {"\"extinction\"", ">= 0", "-1 /m", "(9, 0, 0)"});
+
+    const eikon::Field hostLens = deltaIndex(renderer, &lens, 0);
+    eikon::Field temperature = field("temperature", std::vector<float>(kCount, 20.0f));
+    expectRefused(renderer, {temperature, hostLens}, {"\"delta_index\"", "a GL buffer as \"temperature\""});
+    eikon::Field flame = hostLens;
+    flame.name = "flame";
+    expectRefused(renderer, {temperature, flame}, {"\"temperature\"", "beside a flame"});
+    eikon::Field scattering = field("scattering", sigma, 3);
+    expectRefused(renderer, scattering, {"\"scattering\"", "an extinction GL buffer"});
+    eikon::Field extinction = field("extinction", std::vector<float>(3 * kCount, 1.0f), 3);
+    eikon::Field density = hostLens;
+    density.name = "density";
+    expectRefused(renderer, {extinction, density}, {"\"extinction\"", "beside \"density\""});
+
+    std::string absorbing = kScene;
+    absorbing.insert(absorbing.rfind('}'), R"(, "medium": {"index": 1.0, "extinction": [0.5, 0.5, 0.5]})");
+    eikon::Renderer murky = eikon::Renderer::fromJson(absorbing);
+    eikon::Field murkyExtinction = deltaIndex(murky, nullptr, bufferOf(murky, std::vector<float>(3 * kCount, 1.0f)));
+    murkyExtinction.name = "extinction";
+    murkyExtinction.channels = 3;
+    expectRefused(murky, murkyExtinction, {"\"extinction\"", "medium absorbs or scatters"});
+
+    renderer.render();  // the last frame taken, unchanged
+    EXPECT_EQ(renderer.image().values, before);
 }
 
 }  // namespace

@@ -183,41 +183,78 @@ class Temperature(unittest.TestCase):
 
 
 class GpuPath(unittest.TestCase):
-    """δn handed as an OpenGL buffer made in the renderer's context
-    (eikon.GLBuffer) renders as the same array from host memory, bit for bit,
-    and crosses no byte to the host. The buffer is made through libOpenGL
-    (ctypes), as a solver on the GPU would have it."""
+    """Fields handed as OpenGL buffers made in the renderer's context
+    (eikon.GLBuffer) render as the same arrays from host memory, bit for bit,
+    and cross no byte to the host: δn copied, a temperature mapped to δn on
+    the GPU, extinction and scattering (RGB) copied. The buffers are made
+    through libOpenGL (ctypes), as a solver on the GPU would have them."""
 
-    def test_a_gl_buffer_renders_as_the_array(self):
-        gl = ctypes.CDLL("libOpenGL.so.0")
-        values = 0.01 * bump(0.08)
-        host, device = eikon.Renderer(SCENE), eikon.Renderer(SCENE)
-        device.make_context_current()
+    gl = ctypes.CDLL("libOpenGL.so.0")
+
+    def buffer_of(self, renderer, values):
+        renderer.make_context_current()
         buffer = ctypes.c_uint(0)
-        gl.glCreateBuffers(1, ctypes.byref(buffer))
-        gl.glNamedBufferData(buffer, ctypes.c_ssize_t(values.nbytes), values.ctypes.data_as(ctypes.c_void_p),
-                             0x88E8)  # GL_DYNAMIC_DRAW
+        self.gl.glCreateBuffers(1, ctypes.byref(buffer))
+        self.gl.glNamedBufferData(buffer, ctypes.c_ssize_t(values.nbytes), values.ctypes.data_as(ctypes.c_void_p),
+                                  0x88E8)  # GL_DYNAMIC_DRAW
+        return buffer
+
+    def write(self, renderer, buffer, values):
+        renderer.make_context_current()
+        self.gl.glNamedBufferSubData(buffer, ctypes.c_ssize_t(0), ctypes.c_ssize_t(values.nbytes),
+                                     values.ctypes.data_as(ctypes.c_void_p))
+
+    def expect_same_frames(self, step_fields, channels, **keywords):
+        """Two steps of the fields (a dict per step) from arrays and from buffers."""
+        host, device = eikon.Renderer(SCENE), eikon.Renderer(SCENE)
+        buffers = {}
         for step in range(2):  # the second: a solver's next step, written in place
-            if step == 1:
-                values = 0.02 * bump(0.08)
-                device.make_context_current()
-                gl.glNamedBufferSubData(buffer, ctypes.c_ssize_t(0), ctypes.c_ssize_t(values.nbytes),
-                                        values.ctypes.data_as(ctypes.c_void_p))
-            host.set_fields(delta_index=values)
+            arrays = step_fields(step)
+            for name, values in arrays.items():
+                if step == 0:
+                    buffers[name] = self.buffer_of(device, values)
+                else:
+                    self.write(device, buffers[name], values)
+            host.set_fields(**arrays, **keywords)
             host.render()
-            device.set_fields(delta_index=eikon.GLBuffer(buffer.value))
+            device.set_fields(**{name: eikon.GLBuffer(buffers[name].value, channels.get(name, 1))
+                                 for name in arrays}, **keywords)
             device.render()
-            self.assertTrue(np.array_equal(device.image(), host.image()))
-            self.assertTrue(np.array_equal(device.radiance(), host.radiance()))
-            self.assertTrue(np.array_equal(device.receiver(0), host.receiver(0)))
+            self.assertTrue(np.array_equal(device.image(), host.image()), f"step {step}")
+            self.assertTrue(np.array_equal(device.radiance(), host.radiance()), f"step {step}")
+            self.assertTrue(np.array_equal(device.receiver(0), host.receiver(0)), f"step {step}")
         self.assertEqual(device.report()["host_bytes_copied"], 0)
-        self.assertEqual(host.report()["host_bytes_copied"], values.nbytes)
-        self.assertGreater(device.receiver(0)[..., 0].max() / device.receiver(0)[..., 0].min(), 1.2, "a caustic")
-        with self.assertRaises(eikon.Error) as caught:
-            device.set_fields(temperature=eikon.GLBuffer(buffer.value))
-        self.assertIn("delta_index only", str(caught.exception))
+        self.assertGreater(host.report()["host_bytes_copied"], 0)
         device.make_context_current()
-        gl.glDeleteBuffers(1, ctypes.byref(buffer))
+        for buffer in buffers.values():
+            self.gl.glDeleteBuffers(1, ctypes.byref(buffer))
+        return device
+
+    def test_a_delta_index_buffer_renders_as_the_array(self):
+        device = self.expect_same_frames(lambda step: {"delta_index": (0.01 + 0.01 * step) * bump(0.08)}, {})
+        self.assertGreater(device.receiver(0)[..., 0].max() / device.receiver(0)[..., 0].min(), 1.2, "a caustic")
+
+    def test_a_temperature_buffer_is_mapped_on_the_gpu_as_the_array(self):
+        self.expect_same_frames(lambda step: {"temperature": (300 + (300 + 100 * step) * bump(0.08))},
+                                {}, temperature_unit="kelvin")
+
+    def test_extinction_and_scattering_buffers_render_as_the_arrays(self):
+        rgb = lambda a: np.ascontiguousarray(np.stack([a, 0.8 * a, 0.6 * a], axis=-1))
+        self.expect_same_frames(lambda step: {"extinction": rgb((3 + step) * bump(0.1)),
+                                              "scattering": rgb((1 + step) * bump(0.1))},
+                                {"extinction": 3, "scattering": 3})
+
+    def test_a_field_mapped_on_the_host_is_refused_as_a_buffer(self):
+        renderer = eikon.Renderer(SCENE)
+        buffer = self.buffer_of(renderer, bump(0.08))
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(density=eikon.GLBuffer(buffer.value))
+        self.assertIn("mapped with the scene's medium on the host", str(caught.exception))
+        with self.assertRaises(eikon.Error) as caught:
+            renderer.set_fields(temperature=eikon.GLBuffer(buffer.value), delta_index=bump(0.08))
+        self.assertIn("mapped together", str(caught.exception))
+        renderer.make_context_current()
+        self.gl.glDeleteBuffers(1, ctypes.byref(buffer))
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 // The viewer's gestures: orbiting keeps the distance to the target, panning
 // moves the point under the cursor with it, zooming scales the distance, and
 // dragging a light moves it in its horizontal plane.
-#include "apps/eikon-view/CameraControls.h"
+#include "apps/viewer/CameraControls.h"
 
 #include <gtest/gtest.h>
 

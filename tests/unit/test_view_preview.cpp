@@ -1,7 +1,7 @@
-// The viewer's preview policy (apps/eikon-view/ViewPreview): the full image
+// The viewer's preview policy (apps/viewer/ViewPreview): the full image
 // at rest, a stride that keeps the view pass to its target while the camera
 // moves, the full image again once the camera has rested.
-#include "apps/eikon-view/ViewPreview.h"
+#include "apps/viewer/ViewPreview.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "apps/eikon-view/CameraControls.h"
+#include "apps/viewer/CameraControls.h"
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>

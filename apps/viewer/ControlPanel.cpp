@@ -1,4 +1,4 @@
-#include "apps/eikon-view/ControlPanel.h"
+#include "apps/viewer/ControlPanel.h"
 
 #include <imgui.h>
 

@@ -1,4 +1,4 @@
-#include "apps/eikon-view/ViewPreview.h"
+#include "apps/viewer/ViewPreview.h"
 
 #include <algorithm>
 #include <cmath>
