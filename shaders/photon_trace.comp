@@ -18,7 +18,7 @@
 //   EIKON_LATTICE_SOURCE   1: also the power scattered per cell (the multiple-scattering lattice's source)
 //   EIKON_BOUNCE           1: some receiver reflects photons (receivers[].map.z)
 //   EIKON_BARE_MARCH       1: march only (benchmark limit): no attenuation, deposits or receivers
-//   EIKON_SHARP_SURFACES   1: the scene has sharp surfaces (common/sharp_surface_blocks.glsl)
+//   EIKON_SHARP_SURFACES   0 none, 1 spheres and boxes, 2 meshes or water too (common/sharp_surface_blocks.glsl)
 //   EIKON_VOLUME_GLOW      1: a glowing volume may be an emitter (common/volume_glow.glsl)
 //   EIKON_RECORD_PATHS     vertices recorded (position, RGB power) for each of EIKON_RECORDED_PHOTONS
 //                          photons: every EIKON_RECORD_STRIDE-th one from photon 0

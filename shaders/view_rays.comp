@@ -34,7 +34,7 @@
 // EIKON_HAS_ANISOTROPY, EIKON_HAS_EMISSION, EIKON_MULTIPLE_SCATTERING (1: add the
 // lattice's multiply scattered fluence, σs·φ_ms/(4π)), EIKON_STEP_STRUCTURE (1: large steps through empty
 // nodes), EIKON_FRESNEL, EIKON_ENVIRONMENT (layout::EnvironmentKind),
-// EIKON_SHARP_SURFACES (1: the scene has sharp surfaces),
+// EIKON_SHARP_SURFACES (0 none, 1 spheres and boxes, 2 meshes or water too),
 // EIKON_RECORD_EXIT (1: write each pixel's exit direction from the first pass, for tests).
 layout(local_size_x = 8, local_size_y = 8) in;
 

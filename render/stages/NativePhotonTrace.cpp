@@ -15,7 +15,7 @@
 // scene that needs others to the compute shader).
 #define EIKON_INTEGRATOR 1
 #define EIKON_OCTREE_STEPS 1
-#define EIKON_SHARP_SURFACES 1
+#define EIKON_SHARP_SURFACES 1  // spheres and boxes: the triangle functions below are never called
 #define EIKON_RENORMALIZE 0
 #define EIKON_DISPERSION 0
 #define EIKON_BOUNCE 0

@@ -141,9 +141,7 @@ std::string nativePhotonRefusal(const Scene& scene, const FieldTextures& fields,
     if (tracer.storeFluence || fields.hasScattering()) return "the native pass keeps no fluence";
     if (fields.hasExtinction()) return "the native pass has no extinction";
     if (glowLights(scene)) return "the native pass has no glowing volume";
-    for (const layout::GpuSharpSurface& surface : buildSharpSurfaces(scene))
-        if (static_cast<int>(surface.shapeA.w + 0.5f) == layout::kSharpTriangles)
-            return "the native pass has no mesh or water surfaces";
+    if (hasTriangleSurfaces(buildSharpSurfaces(scene))) return "the native pass has no mesh or water surfaces";
     if (options.bareMarch || options.recordPathVertices > 0 || options.recordEnds)
         return "the native pass records no paths or ends";
     if (options.loopBudget) return "the native pass has no loop budget";
@@ -172,7 +170,7 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_HAS_SCATTERING", fields.hasScattering() ? "1" : "0"},
         {"EIKON_INTEGRATOR", std::to_string(integratorNumber(tracer.integrator))},
         {"EIKON_OCTREE_STEPS", tracer.stepPolicy == TracerDesc::StepPolicy::Octree ? "1" : "0"},
-        {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
+        surfaces_.kindsOption(),
         {"EIKON_LOOP_BUDGET", std::to_string(loopBudget)},
         receivers.countOption(),
         {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},

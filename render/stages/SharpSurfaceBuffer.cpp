@@ -31,6 +31,12 @@ std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene) {
     return surfaces;
 }
 
+bool hasTriangleSurfaces(const std::vector<layout::GpuSharpSurface>& surfaces) {
+    for (const layout::GpuSharpSurface& surface : surfaces)
+        if (static_cast<int>(surface.shapeA.w + 0.5f) == layout::kSharpTriangles) return true;
+    return false;
+}
+
 SharpSurfaceBuffer::SharpSurfaceBuffer(const Scene& scene) : SharpSurfaceBuffer(buildSharpSurfaces(scene)) {}
 
 SharpSurfaceBuffer::SharpSurfaceBuffer(std::vector<layout::GpuSharpSurface> surfaces) : surfaces_(std::move(surfaces)) {

@@ -11,6 +11,7 @@
 #include "bridge/layout/GpuLayouts.h"
 #include "bridge/scene/Scene.h"
 #include "gl/GlObjects.h"
+#include "gl/ShaderLibrary.h"
 
 #include <cstdint>
 #include <vector>
@@ -22,6 +23,9 @@ namespace eikon::render {
 // get their root node: the k-th such object in scene order has node k.
 std::vector<layout::GpuSharpSurface> buildSharpSurfaces(const Scene& scene);
 
+// Whether a mesh or water surface (kSharpTriangles) is among `surfaces`.
+bool hasTriangleSurfaces(const std::vector<layout::GpuSharpSurface>& surfaces);
+
 class SharpSurfaceBuffer {
 public:
     explicit SharpSurfaceBuffer(const Scene& scene);
@@ -29,6 +33,13 @@ public:
 
     unsigned count() const { return static_cast<unsigned>(surfaces_.size()); }
     bool empty() const { return surfaces_.empty(); }
+    // The tracers' program option EIKON_SHARP_SURFACES: 0 none, 1 spheres
+    // and boxes only, 2 meshes or water too. The triangle trees' traversal
+    // is most of a tracer's compile on llvmpipe (docs/benchmarks-cpu.md), so
+    // a scene without them does not compile it.
+    gl::ShaderDefines::value_type kindsOption() const {
+        return {"EIKON_SHARP_SURFACES", empty() ? "0" : (hasTriangleSurfaces(surfaces_) ? "2" : "1")};
+    }
     const std::vector<layout::GpuSharpSurface>& surfaces() const { return surfaces_; }
     void bind() const;
 

@@ -108,7 +108,7 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
                            {"EIKON_MULTIPLE_SCATTERING", multipleScattering ? "1" : "0"},
                            {"EIKON_STEP_STRUCTURE", hasStepStructure ? "1" : "0"},
                            {"EIKON_ENVIRONMENT", std::to_string(environmentKind(scene.render.environment))},
-                           {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
+                           surfaces_.kindsOption(),
                            {"EIKON_RECORD_EXIT", recordExit ? "1" : "0"},
                            {"EIKON_LOOP_BUDGET", std::to_string(gl::currentLoopBudget())},
                            receivers.countOption()});

@@ -8,7 +8,7 @@
 // Program options (#defines set by the stage):
 //   EIKON_INTEGRATOR       0 Euler, 1 leapfrog, 2 RK4
 //   EIKON_OCTREE_STEPS     1: adaptive steps from the step structure
-//   EIKON_SHARP_SURFACES   1: the scene has sharp surfaces (common/sharp_surface_blocks.glsl)
+//   EIKON_SHARP_SURFACES   0 none, 1 spheres and boxes, 2 meshes or water too (common/sharp_surface_blocks.glsl)
 #ifndef EIKON_INTEGRATOR
 #define EIKON_INTEGRATOR 1
 #endif

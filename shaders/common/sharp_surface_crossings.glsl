@@ -6,7 +6,12 @@
 // (common/sharp_triangle_surfaces.glsl); needs common/sharp_surfaces.glsl,
 // common/fresnel.glsl and common/grid_box.glsl.
 
-bool is_triangle_surface(uint k) { return surface_kind(sharp_surfaces[k].shape_a) == kSharpTriangles; }
+// Program option EIKON_SHARP_SURFACES (1 spheres and boxes only, 2 meshes or
+// water too; common/sharp_surface_blocks.glsl): under 2, no triangle
+// surface exists, and the compiler drops their searches.
+bool is_triangle_surface(uint k) {
+    return EIKON_SHARP_SURFACES == 2 && surface_kind(sharp_surfaces[k].shape_a) == kSharpTriangles;
+}
 
 // The bits of the surfaces whose inside holds x.
 uint inside_mask_at(vec3 x) {
@@ -109,7 +114,7 @@ SurfaceEvent sharp_surface_event(SurfaceCrossing crossing, vec3 x, vec3 d, uint 
     vec4 shape_a = sharp_surfaces[k].shape_a;
     vec4 shape_b = sharp_surfaces[k].shape_b;
     SurfaceEvent event;
-    bool mesh = crossing.triangle >= 0;
+    bool mesh = EIKON_SHARP_SURFACES == 2 && crossing.triangle >= 0;
     vec3 on = mesh ? onto_triangle(crossing.triangle, x) : onto_surface(shape_a, shape_b, x);
     event.beyond_mask = inside_mask ^ (1u << k);
     event.beyond_offset = sharp_index_offset(event.beyond_mask);
