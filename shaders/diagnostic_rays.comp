@@ -244,6 +244,19 @@ Measured march(vec3 start, vec3 direction) {
         // first ends where its step took it out.
         float chord = span.y - max(span.x, 0.0f);
         float travelled = 0.0f;
+#if EIKON_SHARP_SURFACES
+        // The first surface along v_ahead (zero: none searched yet), found out
+        // to the grid's face from the point the ray has since travelled
+        // ahead_travelled beyond. Where the field has no gradient a step keeps
+        // the ray's direction, so that surface stays the first until the ray
+        // turns or meets it: one search per straight stretch, as the camera's
+        // rays search meshes (a search every step tripled the pass's cost).
+        // RK4 (the error estimate's reference) may bend within a step that
+        // starts without a gradient; the crossing is then put on the surface.
+        SurfaceCrossing ahead = no_surface_crossing(0.0f);
+        vec3 v_ahead = vec3(0.0f);
+        float ahead_travelled = 0.0f;
+#endif
         for (uint steps = 0u; steps < max_steps; ++steps) {
             spend_loops(1u);
             if (!loops_left()) break;
@@ -258,9 +271,21 @@ Measured march(vec3 start, vec3 direction) {
                 ds = min(step_length, remaining);
             }
 #if EIKON_SHARP_SURFACES
-            SurfaceCrossing crossing = nearest_surface_crossing(
-                ray_origin + world_direction(x), world_direction(normalize(v)), inside_mask, ds, 1e-4f * grid.voxel_size.x);
+            if (field.xyz != vec3(0.0f) || v != v_ahead) {
+                vec3 here = ray_origin + world_direction(x);
+                vec3 d = world_direction(normalize(v));
+                ahead = nearest_surface_crossing(here, d, inside_mask, max(grid_ray_interval(here, d).y, ds),
+                                                 1e-4f * grid.voxel_size.x);
+                v_ahead = v;
+                ahead_travelled = 0.0f;
+            }
+            SurfaceCrossing crossing = no_surface_crossing(ds);
+            if (ahead.surface >= 0 && ahead.distance - ahead_travelled < ds) {
+                crossing = ahead;
+                crossing.distance = max(ahead.distance - ahead_travelled, 0.0f);
+            }
             ds = crossing.distance;
+            ahead_travelled += ds;
 #endif
 #if EIKON_INTEGRATOR == 2
             integrate_rk4(x, x_lost, v, field, ds);  // its last sample is at the new x, as the trapezoid needs
@@ -278,6 +303,7 @@ Measured march(vec3 start, vec3 direction) {
 #if EIKON_SHARP_SURFACES
             if (crossing.surface >= 0) {
                 cross_sharp_surface(crossing, x, v, measured.fresnel_transmittance);
+                v_ahead = vec3(0.0f);  // at normal incidence v stays as it was
                 x_lost = vec3(0.0f);
                 field = field_at(x);
                 delta_before = sampled_delta;
