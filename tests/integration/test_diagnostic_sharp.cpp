@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -224,6 +225,56 @@ TEST(DiagnosticSharp, AWeakGlassSpheresShadowgraphCastsItsCausticWhereTheExactRa
         EXPECT_LE(std::abs(fold - expected), 1.0) << "side " << side;
         EXPECT_GT(at(side * fold), 2.0f * at(side * (fold + 1))) << "side " << side;
     }
+}
+
+// Background-oriented schlieren through a weak glass sphere (n = 1.05,
+// R = 0.2 m): a pinhole 2 m from its centre (tan of the half view 0.2, 96
+// rows), the background 2 m beyond it. Each exact ray from the pinhole
+// through a pixel's centre refracts through the sphere and lands on the
+// background; the displacement is that pixel less the one whose straight
+// ray sees the landing point, in pixels on the image's right and up.
+TEST(DiagnosticSharp, BosThroughAGlassSphereDisplacesTheBackgroundAsTheExactRaysDo) {
+    constexpr int kSize = 96;
+    constexpr double kCameraZ = 2.0, kBackgroundZ = -2.0, kHalfView = 0.2, kWeakRadius = 0.2, kWeakGlass = 1.05;
+    DiagnosticDesc bos;
+    bos.type = DiagnosticDesc::Type::Bos;
+    bos.backgroundDistance = -0.5 - kBackgroundZ;  // behind the grid's far face
+    Scene scene = sphereScene(kSize, bos, kWeakRadius, kWeakGlass);
+    scene.camera.projection = CameraDesc::Projection::Perspective;
+    scene.camera.fovDeg = glm::degrees(2.0 * std::atan(kHalfView));
+    const render::DiagnosticMeasurements measured = measure(scene);
+    ASSERT_EQ(measured.displacement.size(), 2u * kSize * kSize);
+    const reference::Sphere sphere{glm::dvec3(0.0), kWeakRadius};
+    const glm::dvec3 camera(0.0, 0.0, kCameraZ);
+    const double pixel = 2.0 * kHalfView / kSize;  // at unit distance
+    const double metresPerPixel = (kCameraZ - kBackgroundZ) * pixel;  // on the background
+    std::vector<glm::dvec2> expected;
+    double peak = 0.0;
+    for (int j = 0; j < kSize; ++j)
+        for (int i = 0; i < kSize; ++i) {
+            const glm::dvec3 d =
+                glm::normalize(glm::dvec3((i + 0.5 - 0.5 * kSize) * pixel, (0.5 * kSize - j - 0.5) * pixel, -1.0));
+            const glm::dvec3 straight = camera + (kBackgroundZ - camera.z) / d.z * d;
+            glm::dvec3 landed = straight;
+            if (const auto transit = reference::transitSphere(camera, d, sphere, kWeakGlass)) {
+                const glm::dvec3 out = transit->exitDirection;
+                landed = transit->exitPoint + (kBackgroundZ - transit->exitPoint.z) / out.z * out;
+            }
+            expected.push_back(-glm::dvec2(landed - straight) / metresPerPixel);
+            peak = std::max(peak, glm::length(expected.back()));
+        }
+    double squares = 0.0, worst = 0.0;
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+        const glm::dvec2 found(measured.displacement[2 * k], measured.displacement[2 * k + 1]);
+        const double error = glm::length(found - expected[k]) / peak;
+        squares += error * error;
+        worst = std::max(worst, error);
+    }
+    const double rms = std::sqrt(squares / static_cast<double>(expected.size()));
+    reportFigure("sharp_sphere_bos_peak_displacement_px", peak);
+    reportFigure("sharp_sphere_bos_rms_error_of_peak", rms);
+    reportFigure("sharp_sphere_bos_worst_error_of_peak", worst);
+    EXPECT_LE(worst, 0.01);
 }
 
 }  // namespace
