@@ -7,7 +7,8 @@
 // OPD = (n − 1)·chord and its deflection is the angle between its exit
 // direction and −z, along the direction its part across the beam points. A
 // ray turned by 90° or more is lost (it never reaches the instrument).
-// The graded field is uniform (δn = 0).
+// The shadowgraph and BOS follow the same exact rays on to the screen or
+// background. The graded field is uniform (δn = 0).
 #include "render/graph/FrameRenderer.h"
 #include "sim/SceneFields.h"
 #include "sim/deform/MeshShapes.h"
