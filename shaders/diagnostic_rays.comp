@@ -46,10 +46,11 @@
 // and this one — a box filter over the pixel, for the picture and for the
 // measured quantities alike. Writes per pixel (ε_right, ε_up, OPD, how its
 // rays ended: 1 crossed the grid, 2 all missed it, 0 one was cut by the
-// step cap or the loop budget; 3 one was lost, which outranks the others). Every instrument but the shadowgraph writes
-// the linear I/I₀ (HdrImage) and its sRGB encoding (LdrImage), row 0 at the
-// top; BOS also writes the background without the medium
-// (DiagnosticReference) and per pixel its displacement (DiagnosticLanding).
+// step cap or the loop budget, 3 one was lost, which outranks the others).
+// Every instrument but the shadowgraph writes the linear I/I₀ (HdrImage)
+// and its sRGB encoding (LdrImage), row 0 at the top; BOS also writes the
+// background without the medium (DiagnosticReference) and per pixel its
+// displacement (DiagnosticLanding).
 // The shadowgraph's rays start at the corners of a beam `beam_margin`
 // pixels wider than the picture on every side, each pixel's square of it
 // cut into k × k squares (`beam_subdivision` k), so
@@ -250,7 +251,7 @@ Measured march(vec3 start, vec3 direction) {
         // ahead_travelled beyond. Where the field has no gradient a step keeps
         // the ray's direction, so that surface stays the first until the ray
         // turns or meets it: one search per straight stretch, as the camera's
-        // rays search meshes (a search every step tripled the pass's cost).
+        // rays search meshes (a mesh's tree is costly to search every step).
         // RK4 (the error estimate's reference) may bend within a step that
         // starts without a gradient; the crossing is then put on the surface.
         SurfaceCrossing ahead = no_surface_crossing(0.0f);
