@@ -174,6 +174,34 @@ void cross_sharp_surface(SurfaceCrossing crossing, INOUT(vec3) x, INOUT(vec3) v,
 }
 #endif
 
+#if EIKON_SHARP_SURFACES
+// How far a ray at p can go, along any path, before it can meet a sharp
+// surface: the distance to the nearest sphere's or box's surface, or to a
+// mesh's bounding box (0 inside it). A path is no shorter than the distance
+// between its ends, so, bent or straight, the ray needs no search for the
+// surfaces until it has travelled that far.
+float surface_clearance(vec3 p) {
+    float clearance = EIKON_NO_CROSSING;
+    for (uint k = 0u; k < sharp_surface_count; ++k) {
+        vec4 shape_a = sharp_surfaces[k].shape_a;
+        vec4 shape_b = sharp_surfaces[k].shape_b;
+        if (is_triangle_surface(k)) {
+            int root = triangle_root(shape_b);
+            vec3 outside = max(max(surface_nodes[2 * root].xyz - p, p - surface_nodes[2 * root + 1].xyz), vec3(0.0f));
+            clearance = min(clearance, length(outside));
+        } else if (is_box(shape_a)) {
+            vec3 outside = max(max(shape_a.xyz - p, p - shape_b.xyz), vec3(0.0f));
+            vec3 within = min(p - shape_a.xyz, shape_b.xyz - p);
+            float inside = max(min(min(within.x, within.y), within.z), 0.0f);
+            clearance = min(clearance, any(greaterThan(outside, vec3(0.0f))) ? length(outside) : inside);
+        } else {
+            clearance = min(clearance, abs(length(p - shape_a.xyz) - shape_b.x));
+        }
+    }
+    return clearance;
+}
+#endif
+
 // The deflection ε of a ray that left along v (its frame), on the frame's right and up axes.
 vec2 deflection_of(vec3 v) {
     vec3 d = normalize(v);
@@ -246,17 +274,11 @@ Measured march(vec3 start, vec3 direction) {
         float chord = span.y - max(span.x, 0.0f);
         float travelled = 0.0f;
 #if EIKON_SHARP_SURFACES
-        // The first surface along v_ahead (zero: none searched yet), found out
-        // to the grid's face from the point the ray has since travelled
-        // ahead_travelled beyond. Where the field has no gradient a step keeps
-        // the ray's direction, so that surface stays the first until the ray
-        // turns or meets it: one search per straight stretch, as the camera's
-        // rays search meshes (a mesh's tree is costly to search every step).
-        // RK4 (the error estimate's reference) may bend within a step that
-        // starts without a gradient; the crossing is then put on the surface.
-        SurfaceCrossing ahead = no_surface_crossing(0.0f);
-        vec3 v_ahead = vec3(0.0f);
-        float ahead_travelled = 0.0f;
+        // How far the ray may still go without a search for the surfaces
+        // (surface_clearance, less a margin for float32): the search runs only
+        // near a surface (inside an object, every step).
+        float clear = 0.0f;
+        float clearance_margin = 1e-3f * grid.voxel_size.x;
 #endif
         for (uint steps = 0u; steps < max_steps; ++steps) {
             spend_loops(1u);
@@ -272,21 +294,16 @@ Measured march(vec3 start, vec3 direction) {
                 ds = min(step_length, remaining);
             }
 #if EIKON_SHARP_SURFACES
-            if (field.xyz != vec3(0.0f) || v != v_ahead) {
-                vec3 here = ray_origin + world_direction(x);
-                vec3 d = world_direction(normalize(v));
-                ahead = nearest_surface_crossing(here, d, inside_mask, max(grid_ray_interval(here, d).y, ds),
-                                                 1e-4f * grid.voxel_size.x);
-                v_ahead = v;
-                ahead_travelled = 0.0f;
-            }
             SurfaceCrossing crossing = no_surface_crossing(ds);
-            if (ahead.surface >= 0 && ahead.distance - ahead_travelled < ds) {
-                crossing = ahead;
-                crossing.distance = max(ahead.distance - ahead_travelled, 0.0f);
+            if (clear < ds) {
+                vec3 here = ray_origin + world_direction(x);
+                clear = surface_clearance(here) - clearance_margin;
+                if (clear < ds)
+                    crossing = nearest_surface_crossing(here, world_direction(normalize(v)), inside_mask, ds,
+                                                        1e-4f * grid.voxel_size.x);
             }
             ds = crossing.distance;
-            ahead_travelled += ds;
+            clear -= ds;
 #endif
 #if EIKON_INTEGRATOR == 2
             integrate_rk4(x, x_lost, v, field, ds);  // its last sample is at the new x, as the trapezoid needs
@@ -304,7 +321,7 @@ Measured march(vec3 start, vec3 direction) {
 #if EIKON_SHARP_SURFACES
             if (crossing.surface >= 0) {
                 cross_sharp_surface(crossing, x, v, measured.fresnel_transmittance);
-                v_ahead = vec3(0.0f);  // at normal incidence v stays as it was
+                clear = 0.0f;
                 x_lost = vec3(0.0f);
                 field = field_at(x);
                 delta_before = sampled_delta;
