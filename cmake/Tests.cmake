@@ -213,14 +213,15 @@ eikon_test(test_sharp_surfaces LABELS integration LIBS eikon_io eikon_render eik
   tests/integration/test_image_space.cpp
   tests/integration/test_image_space_water.cpp
   tests/integration/test_caustic_polygons.cpp)
-# The diagnostics (interferometry, schlieren) against a Gaussian bump's closed forms, their anti-aliasing and
-# error estimate, and the orthographic view.
+# The diagnostics (interferometry, schlieren) against a Gaussian bump's closed forms, through a sharp glass sphere
+# against its exact rays, their anti-aliasing and error estimate, and the orthographic view.
 eikon_test(test_diagnostics LABELS integration LIBS eikon_io eikon_render eikon_sim eikon_reference eikon_vdb_test_files SOURCES
   tests/integration/GlTestContext.cpp
   tests/integration/TraceHelpers.cpp
   tests/integration/test_diagnostics.cpp
   tests/integration/test_diagnostic_samples.cpp
   tests/integration/test_diagnostic_error_estimate.cpp
+  tests/integration/test_diagnostic_sharp.cpp
   tests/integration/test_orthographic_view.cpp)
 # The shadowgraph and BOS against the bump's closed forms: the weak lens's −L·∇²Φ, the strong lens's intensity law and caustic, BOS's displacement.
 eikon_test(test_shadowgraph_bos LABELS integration LIBS eikon_io eikon_render eikon_sim SOURCES

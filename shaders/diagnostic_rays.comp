@@ -26,6 +26,19 @@
 // directions near 1; and OPD sums δn as the field holds it, since
 // n_ref + δn in float32 rounds δn.
 //
+// Sharp surfaces (common/sharp_surface_crossings.glsl, as the camera's view
+// rays and the photons cross them): a step that would cross one ends
+// exactly on it, and the ray goes on refracted (Snell), its transmittance
+// times Fresnel's 1 − R (the reflected share leaves the beam), or mirrored
+// where it is totally reflected; inside an object δn is the graded field's
+// plus the object's offset, so OPD = ∫ (n − n_ref) ds takes in the glass
+// along the ray's actual path. Through glass ε is no longer small: it is
+// the angle θ between the exit direction and the ray's first direction,
+// along the direction in which the exit direction's part across the beam
+// points. A ray that leaves turned back (at 90° or more from the camera's
+// axis: it never reaches the instrument's optics, the screen or the camera)
+// is lost: its ray is dark in every instrument and lands nowhere.
+//
 // A pass traces one ray a pixel, through the point `sample_offset` of it
 // (render/stages/PixelSamples.h: render.samples_per_pixel = k² passes
 // through the centres of a k × k grid of cells, as the view's); each
@@ -33,10 +46,11 @@
 // and this one — a box filter over the pixel, for the picture and for the
 // measured quantities alike. Writes per pixel (ε_right, ε_up, OPD, how its
 // rays ended: 1 crossed the grid, 2 all missed it, 0 one was cut by the
-// step cap or the loop budget). Every instrument but the shadowgraph writes
-// the linear I/I₀ (HdrImage) and its sRGB encoding (LdrImage), row 0 at the
-// top; BOS also writes the background without the medium
-// (DiagnosticReference) and per pixel its displacement (DiagnosticLanding).
+// step cap or the loop budget, 3 one was lost, which outranks the others).
+// Every instrument but the shadowgraph writes the linear I/I₀ (HdrImage)
+// and its sRGB encoding (LdrImage), row 0 at the top; BOS also writes the
+// background without the medium (DiagnosticReference) and per pixel its
+// displacement (DiagnosticLanding).
 // The shadowgraph's rays start at the corners of a beam `beam_margin`
 // pixels wider than the picture on every side, each pixel's square of it
 // cut into k × k squares (`beam_subdivision` k), so
@@ -45,7 +59,8 @@
 // shadowgraph_screen.comp.
 // Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET,
 // EIKON_INTEGRATOR (1 leapfrog, 2 RK4, as common/ray_march.glsl numbers them),
-// EIKON_BOS_IMAGE (1: BOS's background is an image, common/bos_background.glsl).
+// EIKON_BOS_IMAGE (1: BOS's background is an image, common/bos_background.glsl),
+// EIKON_SHARP_SURFACES (1: the scene has sharp surfaces).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/grid_sampling.glsl"
@@ -54,6 +69,17 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/camera_block.glsl"
 #include "common/srgb.glsl"
 #include "common/diagnostic_instruments.glsl"
+
+#ifndef EIKON_SHARP_SURFACES
+#define EIKON_SHARP_SURFACES 0
+#endif
+#if EIKON_SHARP_SURFACES
+#include "common/fresnel.glsl"
+#include "common/sharp_surfaces.glsl"
+#include "common/sharp_surface_blocks.glsl"
+uint inside_mask = 0u;        // the sharp surfaces the ray is inside
+float sharp_offset = 0.0f;    // δn the sharp objects it is inside add to the graded field
+#endif
 
 vec3 ray_origin;      // world position of the ray's frame's origin, where it entered the grid
 vec3 ray_right;       // the frame's axes: its first direction, and the image's right and up made square to it
@@ -65,13 +91,19 @@ vec3 world_direction(vec3 local) {
     return local.x * ray_right + local.y * ray_up + local.z * ray_forward;
 }
 
+vec3 local_direction(vec3 world) { return vec3(dot(world, ray_right), dot(world, ray_up), dot(world, ray_forward)); }
+
 // (∇n, n) at a point of the ray's frame, the gradient on the frame's axes.
 vec4 field_at(vec3 local) {
     vec4 sample_ = sample_gradient_and_delta(ray_origin + world_direction(local));
+#if EIKON_SHARP_SURFACES
+    sampled_delta = sample_.w + sharp_offset;
+#else
     sampled_delta = sample_.w;
+#endif
     vec3 gradient = sample_.xyz;
     return vec4(dot(gradient, ray_right), dot(gradient, ray_up), dot(gradient, ray_forward),
-                reference_index() + sample_.w);
+                reference_index() + sampled_delta);
 }
 
 #include "common/integrators.glsl"
@@ -109,6 +141,7 @@ uniform uint max_steps;
 const float kRayCut = 0.0f;
 const float kRayCrossed = 1.0f;
 const float kRayMissed = 2.0f;
+const float kRayLost = 3.0f;
 
 struct Measured {
     float opd;
@@ -116,7 +149,71 @@ struct Measured {
     vec2 deflection;
     float ended;
     vec2 landing;  // on the plane, m along the camera's right and up from the straight ray's point
+    float fresnel_transmittance;  // the product of 1 − R over the sharp surfaces it was refracted through
 };
+
+#if EIKON_SHARP_SURFACES
+// Where a step ended on a sharp surface (`crossing`): the ray, at x with v
+// (its frame), goes on refracted into the side beyond, or mirrored where it
+// is totally reflected; the refracted ray keeps 1 − R of the light.
+void cross_sharp_surface(SurfaceCrossing crossing, INOUT(vec3) x, INOUT(vec3) v, INOUT(float) transmitted) {
+    vec3 d = world_direction(normalize(v));
+    SurfaceEvent event = sharp_surface_event(crossing, ray_origin + world_direction(x), d, inside_mask, 1.0f);
+    vec3 at;
+    if (event.reflectance >= 1.0f) {
+        at = event.x_reflected;
+        v = local_direction(event.n_here * mirrored_direction(d, event.facing));
+    } else {
+        at = event.x_transmitted;
+        v = local_direction(event.n_beyond * refracted_direction(d, event.facing, event.n_here, event.n_beyond));
+        inside_mask = event.beyond_mask;
+        sharp_offset = event.beyond_offset;
+        transmitted *= 1.0f - event.reflectance;
+    }
+    x = local_direction(at - ray_origin);
+}
+#endif
+
+#if EIKON_SHARP_SURFACES
+// How far a ray at p can go, along any path, before it can meet a sharp
+// surface: the distance to the nearest sphere's or box's surface, or to a
+// mesh's bounding box (0 inside it). A path is no shorter than the distance
+// between its ends, so, bent or straight, the ray needs no search for the
+// surfaces until it has travelled that far.
+float surface_clearance(vec3 p) {
+    float clearance = EIKON_NO_CROSSING;
+    for (uint k = 0u; k < sharp_surface_count; ++k) {
+        vec4 shape_a = sharp_surfaces[k].shape_a;
+        vec4 shape_b = sharp_surfaces[k].shape_b;
+        if (is_triangle_surface(k)) {
+            int root = triangle_root(shape_b);
+            vec3 outside = max(max(surface_nodes[2 * root].xyz - p, p - surface_nodes[2 * root + 1].xyz), vec3(0.0f));
+            clearance = min(clearance, length(outside));
+        } else if (is_box(shape_a)) {
+            vec3 outside = max(max(shape_a.xyz - p, p - shape_b.xyz), vec3(0.0f));
+            vec3 within = min(p - shape_a.xyz, shape_b.xyz - p);
+            float inside = max(min(min(within.x, within.y), within.z), 0.0f);
+            clearance = min(clearance, any(greaterThan(outside, vec3(0.0f))) ? length(outside) : inside);
+        } else {
+            clearance = min(clearance, abs(length(p - shape_a.xyz) - shape_b.x));
+        }
+    }
+    return clearance;
+}
+#endif
+
+// The deflection ε of a ray that left along v (its frame), on the frame's right and up axes.
+vec2 deflection_of(vec3 v) {
+    vec3 d = normalize(v);
+#if EIKON_SHARP_SURFACES
+    // The angle θ = atan2(|d⊥|, d_z) along d⊥/|d⊥|.
+    float across = length(d.xy);
+    return across > 0.0f ? (atan(across, d.z) / across) * d.xy : vec2(0.0f);
+#else
+    // In a graded field ε is small: sin θ, which is θ within θ²/6 (2e-7 at 1 mrad).
+    return d.xy;
+#endif
+}
 
 // Where the ray, leaving the grid at x with direction v (its frame),
 // reaches the plane `plane_depth` from the camera, less where the straight
@@ -150,6 +247,7 @@ Measured march(vec3 start, vec3 direction) {
     measured.deflection = vec2(0.0f);
     measured.ended = kRayMissed;
     measured.landing = vec2(0.0f);
+    measured.fresnel_transmittance = 1.0f;
     float opd = 0.0f;
     vec3 optical_depth = vec3(0.0f);
     if (span.x < span.y && span.y > 0.0f) {
@@ -157,6 +255,10 @@ Measured march(vec3 start, vec3 direction) {
         ray_origin = start + max(span.x, 0.0f) * direction;
         vec3 x = vec3(0.0f);
         vec3 x_lost = vec3(0.0f);  // Kahan compensation of x
+#if EIKON_SHARP_SURFACES
+        inside_mask = inside_mask_at(ray_origin);
+        sharp_offset = sharp_index_offset(inside_mask);
+#endif
         vec4 field = field_at(x);
         vec3 v = vec3(0.0f, 0.0f, field.w);
         float delta_before = sampled_delta;
@@ -171,6 +273,13 @@ Measured march(vec3 start, vec3 direction) {
         // first ends where its step took it out.
         float chord = span.y - max(span.x, 0.0f);
         float travelled = 0.0f;
+#if EIKON_SHARP_SURFACES
+        // How far the ray may still go without a search for the surfaces
+        // (surface_clearance, less a margin for float32): the search runs only
+        // near a surface (inside an object, every step).
+        float clear = 0.0f;
+        float clearance_margin = 1e-3f * grid.voxel_size.x;
+#endif
         for (uint steps = 0u; steps < max_steps; ++steps) {
             spend_loops(1u);
             if (!loops_left()) break;
@@ -184,6 +293,18 @@ Measured march(vec3 start, vec3 direction) {
                 }
                 ds = min(step_length, remaining);
             }
+#if EIKON_SHARP_SURFACES
+            SurfaceCrossing crossing = no_surface_crossing(ds);
+            if (clear < ds) {
+                vec3 here = ray_origin + world_direction(x);
+                clear = surface_clearance(here) - clearance_margin;
+                if (clear < ds)
+                    crossing = nearest_surface_crossing(here, world_direction(normalize(v)), inside_mask, ds,
+                                                        1e-4f * grid.voxel_size.x);
+            }
+            ds = crossing.distance;
+            clear -= ds;
+#endif
 #if EIKON_INTEGRATOR == 2
             integrate_rk4(x, x_lost, v, field, ds);  // its last sample is at the new x, as the trapezoid needs
 #else
@@ -197,6 +318,15 @@ Measured march(vec3 start, vec3 direction) {
             optical_depth += 0.5f * (kappa_before + kappa) * ds;
             kappa_before = kappa;
 #endif
+#if EIKON_SHARP_SURFACES
+            if (crossing.surface >= 0) {
+                cross_sharp_surface(crossing, x, v, measured.fresnel_transmittance);
+                clear = 0.0f;
+                x_lost = vec3(0.0f);
+                field = field_at(x);
+                delta_before = sampled_delta;
+            }
+#endif
             if (!grid_contains(ray_origin + world_direction(x))) {
                 ended = kRayCrossed;
                 break;
@@ -204,7 +334,10 @@ Measured march(vec3 start, vec3 direction) {
         }
         measured.opd = opd;
         measured.optical_depth = optical_depth;
-        measured.deflection = normalize(v).xy;
+        measured.deflection = deflection_of(v);
+#if EIKON_SHARP_SURFACES
+        if (ended == kRayCrossed && dot(world_direction(v), camera.forward.xyz) <= 0.0f) ended = kRayLost;
+#endif
         measured.ended = ended;
         if (ended == kRayCrossed) measured.landing = landing_offset(x, v);
     }
@@ -228,7 +361,7 @@ void main() {
     uint i = corner.y * (corners.x + 1u) + corner.x;
     rays[i] = vec4(measured.deflection, measured.opd, measured.ended);
     landing[2u * i] = vec4(measured.landing / pixel_size(), 0.0f, 0.0f);
-    landing[2u * i + 1u] = vec4(exp(-measured.optical_depth), measured.ended);
+    landing[2u * i + 1u] = vec4(measured.fresnel_transmittance * exp(-measured.optical_depth), measured.ended);
 }
 #else
 void main() {
@@ -237,10 +370,13 @@ void main() {
     vec2 point = vec2(pixel) + sample_offset;
     Measured measured = march(camera_ray_origin_at(point), camera_ray_direction_at(point));
     uint i = pixel.y * camera.image.x + pixel.x;
-    // One cut ray marks its pixel cut; one that crossed, crossed (0 < 1 < 2).
-    float ended = samples_before == 0u ? measured.ended : min(rays[i].w, measured.ended);
+    // One lost ray marks its pixel lost; else one cut ray, cut; else one that crossed, crossed (0 < 1 < 2).
+    float ended = measured.ended;
+    if (samples_before > 0u) ended = max(rays[i].w, ended) == kRayLost ? kRayLost : min(rays[i].w, ended);
     rays[i] = vec4(running_mean(rays[i], vec4(measured.deflection, measured.opd, 0.0f)).xyz, ended);
-    vec3 transmittance = exp(-measured.optical_depth);
+    // A lost ray brings no light.
+    vec3 transmittance = measured.ended == kRayLost ? vec3(0.0f)
+                                                    : measured.fresnel_transmittance * exp(-measured.optical_depth);
 #if EIKON_INSTRUMENT == EIKON_BOS
     // The background point this ray sees without the medium, and with it.
     vec3 offset = camera_image_offset_at(point);

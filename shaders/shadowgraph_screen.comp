@@ -15,7 +15,8 @@
 // pixels take each triangle's power by the share of its area over them
 // (common/footprint_coverage.glsl), into 64-bit fixed-point tallies, so
 // that each pixel holds its mean irradiance and the power is kept exactly.
-// A square with a corner ray cut by the step cap carries nothing.
+// A square with a corner ray cut by the step cap, or lost (turned back by a
+// sharp surface, diagnostic_rays.comp), carries nothing.
 //
 // EIKON_SCREEN_PASS 0: one invocation per square of the beam's k × k a pixel, deposits; 1: one per
 // pixel, I/I₀ from the tallies into HdrImage and, exposed so that I₀ is
@@ -117,7 +118,9 @@ void main() {
     for (int k = 0; k < 4; ++k) {
         vec4 moved = landing[2u * corners[k]];
         vec4 light = landing[2u * corners[k] + 1u];
-        if (light.w == 0.0f) return;  // cut by the step cap: where its light went is not known
+        // Cut by the step cap (0), where its light went is not known; or lost
+        // (3), turned back before the screen: the square carries nothing.
+        if (light.w == 0.0f || light.w == 3.0f) return;
         // From the square's own pixel's top-left corner; the image's up is the pixels' −y.
         lands[k] = (within + vec2(float(k & 1), float(k >> 1))) * side + vec2(moved.x, -moved.y);
         transmittance += 0.25f * light.xyz;

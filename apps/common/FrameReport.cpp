@@ -197,6 +197,7 @@ std::string frameReportJson(int frame, const ProducedFrame& produced, bool simul
     if (result.imageSpace)
         report["image_space"] = {{"frames_averaged", result.imageSpace->framesAveraged},
                                  {"dropped", result.imageSpace->dropped}};
+    if (result.diagnosticLost) report["diagnostic"] = {{"lost", *result.diagnosticLost}};
     if (distribution != Distribution::None)
         report["distribution"] = {{"mode", distributionName(distribution)}, {"ranks", ranks}};
     if (simulated) {

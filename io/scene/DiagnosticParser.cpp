@@ -111,11 +111,6 @@ void checkDiagnostic(const JsonObjectReader& sceneFields, const Scene& scene) {
     if (scene.render.method == RenderDesc::Method::ImageSpace)
         sceneFields.member("render").member("method").fail("\"eikonal\" with a diagnostic (it traces the graded field)",
                                                            "\"image_space\"");
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-        if (!scene.objects[i].isSharp()) continue;
-        sceneFields.member("objects").element(i).member("surface").fail(
-            "\"smooth\" with a diagnostic (it traces graded fields, not sharp surfaces)", "\"sharp\"");
-    }
     // The fringes of a tilted reference beam alone must stay two pixels apart (Nyquist).
     const double tiltLimit = 0.5 * scene.render.width;
     if (std::abs(scene.diagnostic->fringeTilt) > tiltLimit)

@@ -15,9 +15,9 @@ namespace eikon {
 DiagnosticDesc readDiagnostic(const JsonReader& node, const std::string& sceneFolder);
 
 // Once the whole scene is read, where a diagnostic is set: the camera must
-// be orthographic (the light is parallel), the method eikonal, every object
-// smooth (the diagnostics trace graded fields, not sharp surfaces), and a
-// tilted reference beam's fringes at least two pixels apart. InputError at
+// be orthographic (the light is parallel; BOS: perspective), the method
+// eikonal, and a tilted reference beam's fringes at least two pixels
+// apart. InputError at
 // the key that breaks it.
 void checkDiagnostic(const JsonObjectReader& sceneFields, const Scene& scene);
 

@@ -285,6 +285,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     const bool diagnosticNeeded = diagnostic_ && (indexChanged || extinctionChanged || cameraChanged_);
     if (diagnostic_) result.stages.push_back(runStage("diagnostic", diagnosticNeeded, [&] {
         last_.image = diagnostic_->run(fields_);
+        if (diagnostic_->crossesSharpSurfaces()) last_.diagnosticLost = diagnostic_->lostRays();
     }));
     if (diagnosticEstimate_)
         result.stages.push_back(runStage("error_estimate", diagnosticNeeded && !diagnostic_->preview(),
@@ -303,6 +304,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.photons = last_.photons;
     result.lattice = last_.lattice;
     result.errorEstimate = last_.errorEstimate;
+    result.diagnosticLost = last_.diagnosticLost;
     result.pixelStride = view_ ? view_->pixelStride() : 1;
     result.viewSamples = view_ ? view_->samplesTaken() : diagnostic_ ? diagnostic_->raysPerPixel() : 1;
     return result;

@@ -67,6 +67,7 @@ struct FrameResult {
     int pixelStride = 1;  // of the image: 1 the full image, k a preview of one ray per k×k pixels
     int viewSamples = 1;  // camera rays averaged in each pixel of the image (0: a preview)
     std::optional<ImageSpaceStats> imageSpace;  // where the scene renders in image space
+    std::optional<int> diagnosticLost;  // a diagnostic through sharp surfaces: DiagnosticStage::lostRays
 };
 
 struct RendererOptions {

@@ -60,7 +60,7 @@ gl::Texture2D patternTexture(const FloatImage& image) {
 
 DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields, TracerDesc::Integrator integrator)
     : render_(scene.render), diagnostic_(scene.diagnostic.value_or(DiagnosticDesc{})), cameraDesc_(scene.camera),
-      grid_(fields.grid()), sampleSide_(sampleGridSide(scene.render.samplesPerPixel)) {
+      grid_(fields.grid()), surfaces_(scene), sampleSide_(sampleGridSide(scene.render.samplesPerPixel)) {
     EIKON_CHECK_MSG(sampleSide_ > 0, "render.samples_per_pixel a square (io/scene/SceneParser)");
     const bool bos = diagnostic_.type == DiagnosticDesc::Type::Bos;
     EIKON_CHECK_MSG(scene.diagnostic && scene.camera.orthographic() != bos,
@@ -75,6 +75,7 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
                                  {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
                                  {"EIKON_BOS_IMAGE", diagnostic_.patternImage ? "1" : "0"},
                                  {"EIKON_INTEGRATOR", integrator == TracerDesc::Integrator::Rk4 ? "2" : "1"},
+                                 {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
                                  {"EIKON_LOOP_BUDGET", loopBudget}});
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
@@ -150,6 +151,10 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
     program_.use();
     glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength_));
     glUniform1ui(program_.uniform("max_steps"), maxSteps_);
+    if (!surfaces_.empty()) {
+        surfaces_.bind();
+        glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
+    }
     const auto width = static_cast<std::size_t>(render_.width), height = static_cast<std::size_t>(render_.height);
     const double sensitivity = diagnostic_.focalLength / diagnostic_.sourceHeight;  // f/a
     switch (instrumentOf(diagnostic_)) {
@@ -228,6 +233,11 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
 std::vector<float> DiagnosticStage::downloadHdr() const { return hdr_.downloadAll<float>(); }
 
 std::vector<glm::vec4> DiagnosticStage::downloadRays() const { return rays_.downloadAll<glm::vec4>(); }
+
+int DiagnosticStage::lostRays() const {
+    const std::vector<glm::vec4> rays = downloadRays();
+    return static_cast<int>(std::count_if(rays.begin(), rays.end(), [](const glm::vec4& ray) { return ray.w == 3.0f; }));
+}
 
 Image8 DiagnosticStage::downloadReference() const {
     EIKON_CHECK_MSG(hasReference(), "only BOS draws a reference picture");

@@ -12,13 +12,15 @@
 // a k × k grid over it as the view's (render/stages/PixelSamples.h), each
 // pixel the mean of its rays' picture and measurements: a box filter over
 // the pixel. The shadowgraph cuts each pixel's square of its beam into
-// k × k. Runs alone when only the camera changes.
+// k × k. The rays refract and reflect at the scene's sharp surfaces as the
+// camera's view rays do. Runs alone when only the camera changes.
 #pragma once
 
 #include "bridge/scene/Scene.h"
 #include "gl/GlObjects.h"
 #include "render/stages/FieldTextures.h"
 #include "render/stages/PostStage.h"
+#include "render/stages/SharpSurfaceBuffer.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -63,11 +65,18 @@ public:
     std::vector<float> downloadHdr() const;  // linear I/I₀, RGBA per pixel
     DiagnosticMeasurements downloadMeasurements() const;
     // (ε right, ε up, OPD, how the rays ended: 1 crossed the grid, 2 all
-    // missed it, 0 one was cut by the step cap), as the pass wrote it: per
+    // missed it, 0 one was cut by the step cap, 3 one was lost: turned back
+    // by a sharp surface), as the pass wrote it: per
     // pixel, the mean of its rays; or for the shadowgraph per corner ray of
     // its beam, kBeamMargin pixels wider than the picture on every side, k
     // corners a pixel along each side (k² = render.samples_per_pixel).
     std::vector<glm::vec4> downloadRays() const;
+    // Whether the scene has sharp surfaces for the rays to cross.
+    bool crossesSharpSurfaces() const { return !surfaces_.empty(); }
+    // The pixels of the latest picture with a lost ray (turned back by a
+    // sharp surface: it brings no light); for the shadowgraph, the lost
+    // corner rays of its beam.
+    int lostRays() const;
     // BOS: the background seen without the medium (sRGB, as the picture).
     Image8 downloadReference() const;
     bool hasReference() const { return diagnostic_.type == DiagnosticDesc::Type::Bos; }
@@ -91,6 +100,7 @@ private:
     DiagnosticDesc diagnostic_;
     CameraDesc cameraDesc_;
     GridSpec grid_;
+    SharpSurfaceBuffer surfaces_;
     int sampleSide_;  // k: render.samples_per_pixel = k²
     bool preview_ = false;
     double stepLength_;

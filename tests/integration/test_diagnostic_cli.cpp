@@ -244,6 +244,46 @@ TEST_F(DiagnosticCli, BosWritesTheReferencePictureAndTheDisplacement) {
         << refused.output;
 }
 
+// A dense flint ball (n = 1.9, R = 0.3 m) in the interferometer: rays that
+// meet it beyond ρ/R = sin θᵢ with θᵢ − θₜ = 45° leave turned by 90° or
+// more and are lost. The report counts the pixels with a lost ray — here
+// those with one of their 2 × 2 sample points in that rim — and a scene
+// without sharp surfaces counts none (no "diagnostic" entry).
+TEST_F(DiagnosticCli, TheReportCountsThePixelsWhoseRaysAGlassBallTurnsBack) {
+    constexpr double kRadius = 0.3, kIndex = 1.9;
+    std::ofstream(dir_ / "scene.json") << R"({
+  "grid": {"resolution": [40, 40, 40], "bounds": {"min": [-0.5, -0.5, -0.5], "max": [0.5, 0.5, 0.5]}},
+  "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 0.3, "index": 1.9}],
+  "lights": [{"type": "directional", "direction": [0, -1, 0], "irradiance": 1}],
+  "camera": {"position": [0, 0, 2], "target": [0, 0, 0], "projection": "orthographic", "width_m": 0.8},
+  "render": {"width": 40, "height": 30},
+  "diagnostic": {"type": "interferometry"}
+})";
+    const auto outcome = run();
+    ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+    // sin θᵢ = n·sin(θᵢ − 45°): tan θᵢ = (n/√2) / (n/√2 − 1).
+    const double ratio = kIndex / std::numbers::sqrt2, tangent = ratio / (ratio - 1.0);
+    const double rim = kRadius * tangent / std::sqrt(1.0 + tangent * tangent);
+    int expected = 0;
+    for (int j = 0; j < 30; ++j)
+        for (int i = 0; i < 40; ++i) {
+            bool lost = false;
+            for (const double dx : {0.25, 0.75})
+                for (const double dy : {0.25, 0.75}) {
+                    const double rho = std::hypot((i + dx - 20) * 0.02, (15 - j - dy) * 0.02);
+                    lost = lost || (rho > rim && rho < kRadius);
+                }
+            expected += lost;
+        }
+    const std::vector<nlohmann::json> report = eikon::test::readReport(dir_ / "out" / "report.jsonl");
+    ASSERT_EQ(report.size(), 1u);
+    ASSERT_TRUE(report[0].contains("diagnostic")) << report[0].dump();
+    EXPECT_GT(expected, 50);
+    EXPECT_EQ(report[0]["diagnostic"]["lost"].get<int>(), expected);
+    ASSERT_EQ(run("--force --set objects.0.surface=smooth").exitCode, 0);
+    EXPECT_FALSE(eikon::test::readReport(dir_ / "out" / "report.jsonl")[0].contains("diagnostic"));
+}
+
 // BOS over a background image (`pattern` names a PNG beside the scene):
 // the reference picture is the image where it fills the view at the
 // picture's own pixel count; a file that is no image, or none, is refused

@@ -222,19 +222,25 @@ TEST(SceneParserDiagnostic, BosReadsAnImagePatternRelativeToTheScene) {
     std::filesystem::remove_all(folder);
 }
 
-TEST(SceneParserDiagnostic, RefusesAPerspectiveCameraImageSpaceAndSharpObjects) {
+TEST(SceneParserDiagnostic, RefusesAPerspectiveCameraAndImageSpace) {
     json perspective = diagnosticScene({{"type", "schlieren"}});
     perspective["camera"] = {{"position", {0, 0, 4}}, {"fov_deg", 30}};
     expectErrorAt(perspective, "camera.projection", "\"orthographic\" with a diagnostic");
     json noCamera = diagnosticScene({{"type", "schlieren"}});
     noCamera.erase("camera");
     expectErrorAt(noCamera, "camera", "a camera with projection \"orthographic\" and width_m");
-    json sharp = diagnosticScene({{"type", "interferometry"}});
-    sharp["objects"][1].erase("surface");  // sharp by default
-    expectErrorAt(sharp, "objects[1].surface", "\"smooth\" with a diagnostic");
     json imageSpace = diagnosticScene({{"type", "interferometry"}});
     imageSpace["render"]["method"] = "image_space";
     expectErrorAt(imageSpace, "render.method", "\"eikonal\" with a diagnostic");
+}
+
+// The diagnostics' rays cross sharp surfaces as the view's do.
+TEST(SceneParserDiagnostic, TakesSharpObjects) {
+    json sharp = diagnosticScene({{"type", "interferometry"}});
+    sharp["objects"][1].erase("surface");  // sharp by default
+    const Scene parsed = parseScene(sharp, "test.json");
+    EXPECT_TRUE(parsed.objects[1].isSharp());
+    EXPECT_TRUE(parsed.diagnostic.has_value());
 }
 
 TEST(SceneParserDiagnostic, SetReachesTheSectionAsAnyOther) {
