@@ -60,7 +60,8 @@
 // Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET,
 // EIKON_INTEGRATOR (1 leapfrog, 2 RK4, as common/ray_march.glsl numbers them),
 // EIKON_BOS_IMAGE (1: BOS's background is an image, common/bos_background.glsl),
-// EIKON_SHARP_SURFACES (1: the scene has sharp surfaces).
+// EIKON_SHARP_SURFACES (0 none, 1 spheres and boxes, 2 meshes or water too;
+// render/stages/SharpSurfaceBuffer, kindsOption).
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/grid_sampling.glsl"

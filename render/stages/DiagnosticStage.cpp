@@ -75,7 +75,7 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
                                  {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
                                  {"EIKON_BOS_IMAGE", diagnostic_.patternImage ? "1" : "0"},
                                  {"EIKON_INTEGRATOR", integrator == TracerDesc::Integrator::Rk4 ? "2" : "1"},
-                                 {"EIKON_SHARP_SURFACES", surfaces_.empty() ? "0" : "1"},
+                                 surfaces_.kindsOption(),
                                  {"EIKON_LOOP_BUDGET", loopBudget}});
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
     camera_ = gl::Buffer(sizeof block, &block, GL_DYNAMIC_STORAGE_BIT);
