@@ -382,8 +382,13 @@ void main() {
             ++steps;
             ReceiverHit hit = first_receiver_crossing(start, x);
             float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
-            vec3 kappa = sample_extinction(start);
-            vec3 gathered = in_scattered_radiance(start, d) + sample_emission(start);
+#if EIKON_SHARP_SURFACES
+            vec3 medium = owned_medium_point(start, ray.inside_mask);
+#else
+            vec3 medium = start;
+#endif
+            vec3 kappa = sample_extinction(medium);
+            vec3 gathered = in_scattered_radiance(medium, d) + sample_emission(medium);
             radiance += ray.throughput * gathered * attenuated_track_length(kappa, travelled);
             ray.throughput *= beer_lambert_transmittance(kappa, travelled);
             vec3 normal = vec3(0.0f);
