@@ -314,6 +314,7 @@ void main() {
         // takes a new one.
         vec4 field = vec4(0.0f);
         bool field_fresh = false;
+        bool stepped_out = false;  // x is where a step that left the grid ended, past its boundary
         for (;;) {
             // Where the driver caps loops, a ray out of budget keeps the
             // radiance it has gathered (docs/accuracy.md).
@@ -328,13 +329,17 @@ void main() {
                     break;
                 }
                 if (!flight.enters_grid) {
-                    radiance += ray.throughput * environment_seen(x, d);
+                    // Seen from where the ray crossed the grid's boundary: the
+                    // step overshot it by up to its length, and a ground
+                    // plane just below the grid's floor lies within that.
+                    radiance += ray.throughput * environment_seen(stepped_out ? grid_exit_point(x, d) : x, d);
                     branch_exit = 1.0f;
                     break;
                 }
                 x = grid_entry_point(x, d, flight);
                 x_lost = vec3(0.0f);
                 field_fresh = false;
+                stepped_out = false;
 #if EIKON_SHARP_SURFACES
                 mesh_ahead_direction = vec3(0.0f);
 #endif
@@ -416,7 +421,10 @@ void main() {
                 field_fresh = false;
             }
 #endif
-            if (!grid_contains(x)) v = reference_index() * normalize(v);
+            if (!grid_contains(x)) {
+                v = reference_index() * normalize(v);
+                stepped_out = true;
+            }
         }
         if (first_branch) {
             exit_kind = branch_exit;
