@@ -206,6 +206,7 @@ eikon_test(test_volume_emission LABELS integration LIBS eikon_io eikon_render ei
 eikon_test(test_sharp_surfaces LABELS integration LIBS eikon_io eikon_render eikon_sim eikon_reference SOURCES
   tests/integration/GlTestContext.cpp
   tests/integration/TraceHelpers.cpp
+  tests/integration/test_sharp_attenuation.cpp
   tests/integration/test_sharp_caustic.cpp
   tests/integration/test_sharp_mesh.cpp
   tests/integration/test_sharp_plume.cpp

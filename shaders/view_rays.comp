@@ -152,8 +152,10 @@ vec3 environment_seen(vec3 x, vec3 d) {
 // stored per voxel is its fluence φ and the power-weighted mean direction
 // m of the photons through it (|m| ≤ 1); the phase function mixes
 // isotropic and Henyey–Greenstein scattering about m by |m| ([Sun08]
-// §4.4: the mean direction stands for the distribution).
-vec3 in_scattered_radiance(vec3 x, vec3 d) {
+// §4.4: the mean direction stands for the distribution). The material (σs,
+// g) is read at `medium` (owned_medium_point), the fluences, which do not
+// jump at a surface, at x.
+vec3 in_scattered_radiance(vec3 x, vec3 medium, vec3 d, uint inside_mask) {
 #if EIKON_HAS_SCATTERING
     uint index = 3u * uint(grid_linear_index(grid_cell(x)));
     vec3 phi = vec3(fluence[index], fluence[index + 1u], fluence[index + 2u]);
@@ -164,7 +166,7 @@ vec3 in_scattered_radiance(vec3 x, vec3 d) {
     float coherence = total > 0.0f ? min(length(direction_sum) / total, 1.0f) : 0.0f;
     if (coherence > 0.0f) {
 #if EIKON_HAS_ANISOTROPY
-        float g = textureLod(anisotropy_texture, grid_uvw(x), 0.0f).r;
+        float g = textureLod(anisotropy_texture, grid_uvw(medium), 0.0f).r;
 #else
         float g = 0.0f;
 #endif
@@ -173,9 +175,18 @@ vec3 in_scattered_radiance(vec3 x, vec3 d) {
     }
 #if EIKON_MULTIPLE_SCATTERING
     // Light scattered before, from the lattice: isotropic ([Bernabei12] §III-D).
-    return sample_scattering(x) * (phi * phase + multiple_fluence_at(x) * isotropic);
+    // Interpolated between cell centres, it is read a cell diagonal off a
+    // sphere's or box's surface on the ray's side, where every centre read
+    // lies on that side: an outer cell's, where the lattice's light streams
+    // away, would darken the rim.
+#if EIKON_SHARP_SURFACES
+    vec3 lattice_point = off_sharp_surfaces(x, inside_mask, length(grid.voxel_size.xyz));
 #else
-    return sample_scattering(x) * phi * phase;
+    vec3 lattice_point = x;
+#endif
+    return sample_scattering(medium) * (phi * phase + multiple_fluence_at(lattice_point) * isotropic);
+#else
+    return sample_scattering(medium) * phi * phase;
 #endif
 #else
     return vec3(0.0f);
@@ -314,6 +325,7 @@ void main() {
         // takes a new one.
         vec4 field = vec4(0.0f);
         bool field_fresh = false;
+        bool stepped_out = false;  // x is where a step that left the grid ended, past its boundary
         for (;;) {
             // Where the driver caps loops, a ray out of budget keeps the
             // radiance it has gathered (docs/accuracy.md).
@@ -328,13 +340,17 @@ void main() {
                     break;
                 }
                 if (!flight.enters_grid) {
-                    radiance += ray.throughput * environment_seen(x, d);
+                    // Seen from where the ray crossed the grid's boundary: the
+                    // step overshot it by up to its length, and a ground
+                    // plane just below the grid's floor lies within that.
+                    radiance += ray.throughput * environment_seen(stepped_out ? grid_exit_point(x, d) : x, d);
                     branch_exit = 1.0f;
                     break;
                 }
                 x = grid_entry_point(x, d, flight);
                 x_lost = vec3(0.0f);
                 field_fresh = false;
+                stepped_out = false;
 #if EIKON_SHARP_SURFACES
                 mesh_ahead_direction = vec3(0.0f);
 #endif
@@ -382,8 +398,13 @@ void main() {
             ++steps;
             ReceiverHit hit = first_receiver_crossing(start, x);
             float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
-            vec3 kappa = sample_extinction(start);
-            vec3 gathered = in_scattered_radiance(start, d) + sample_emission(start);
+#if EIKON_SHARP_SURFACES
+            vec3 medium = owned_medium_point(start, ray.inside_mask);
+#else
+            vec3 medium = start;
+#endif
+            vec3 kappa = sample_extinction(medium);
+            vec3 gathered = in_scattered_radiance(start, medium, d, ray.inside_mask) + sample_emission(medium);
             radiance += ray.throughput * gathered * attenuated_track_length(kappa, travelled);
             ray.throughput *= beer_lambert_transmittance(kappa, travelled);
             vec3 normal = vec3(0.0f);
@@ -411,7 +432,10 @@ void main() {
                 field_fresh = false;
             }
 #endif
-            if (!grid_contains(x)) v = reference_index() * normalize(v);
+            if (!grid_contains(x)) {
+                v = reference_index() * normalize(v);
+                stepped_out = true;
+            }
         }
         if (first_branch) {
             exit_kind = branch_exit;

@@ -329,9 +329,14 @@ void trace_photon(uint id) {
                 travelled = min(travelled, max(grid_ray_interval(start, chord / chord_length).y, 0.0f) /
                                                chord_length * ds);
         }
-        vec3 kappa = sample_extinction(start);
+#if EIKON_SHARP_SURFACES
+        vec3 medium = owned_medium_point(start, inside_mask);
+#else
+        vec3 medium = start;
+#endif
+        vec3 kappa = sample_extinction(medium);
         deposit_segment(start, hit.receiver >= 0 ? mix(start, x, hit.fraction) : x, power, kappa,
-                        sample_scattering(start));
+                        sample_scattering(medium));
         vec3 transmitted = power * beer_lambert_transmittance(kappa, travelled);
         absorbed += power - transmitted;
         power = transmitted;

@@ -32,6 +32,34 @@ float sharp_index_offset(uint mask) {
     return 0.0f;
 }
 
+// x, moved off every sphere and box it lies within `margin` of, to `margin`
+// off it on the side `mask` says it is (off_the_surface); meshes and water
+// leave it where it is.
+vec3 off_sharp_surfaces(vec3 x, uint mask, float margin) {
+    vec3 p = x;
+    for (uint k = 0u; k < sharp_surface_count; ++k) {
+        if (is_triangle_surface(k)) continue;
+        p = off_the_surface(sharp_surfaces[k].shape_a, sharp_surfaces[k].shape_b, p, (mask & (1u << k)) != 0u, margin);
+    }
+    return p;
+}
+
+// Where a ray inside exactly the surfaces of `mask` reads the grid's
+// voxelised material (κ, σs, g, ε) at x. A sharp object's extinction and
+// scattering are painted into the voxels it covers (sim/voxelize/
+// Compositor), so a voxel its surface cuts blends both sides: read there, a
+// ray's attenuation and glow would end at voxel faces, not at the surface
+// the ray crosses exactly. Near a sphere or box the material is read off it,
+// on the ray's side, by the reach of a trilinear read (1.5 voxels along each
+// axis), where every voxel read lies wholly on that side.
+vec3 owned_medium_point(vec3 x, uint mask) {
+#if EIKON_HAS_EXTINCTION || EIKON_HAS_SCATTERING || EIKON_HAS_EMISSION
+    return off_sharp_surfaces(x, mask, 1.5f * length(xyz_of(grid.voxel_size)));
+#else
+    return x;  // nothing voxelised is read
+#endif
+}
+
 // The first surface a step from x along the unit d meets within reach
 // (index −1: none; the distance is then the reach), for a ray inside the
 // surfaces of `mask`; on a mesh, the triangle and its barycentrics.

@@ -90,6 +90,34 @@ vec3 surface_normal(vec4 shape_a, vec4 shape_b, vec3 p) {
     return vec3(0.0f, 0.0f, sign_.z);
 }
 
+// p, where it lies within `margin` of the surface on the side `inside`
+// says, moved along the surface's normal to `margin` off it on that side (to
+// the centre of a sphere, or the middle of a box on an axis, narrower than
+// that). Tracers read a sharp object's voxelised optics there (common/
+// sharp_surface_crossings.glsl, owned_medium_point).
+vec3 off_the_surface(vec4 shape_a, vec4 shape_b, vec3 p, bool inside, float margin) {
+    if (is_box(shape_a)) {
+        vec3 low = xyz_of(shape_a);
+        vec3 high = xyz_of(shape_b);
+        if (inside) {
+            vec3 middle = 0.5f * (low + high);
+            return clamp(p, min(low + margin, middle), max(high - margin, middle));
+        }
+        vec3 nearest = clamp(p, low, high);
+        vec3 away = p - nearest;
+        float gap = length(away);
+        if (gap >= margin) return p;
+        if (gap > 0.0f) return nearest + (margin / gap) * away;
+        return p + margin * surface_normal(shape_a, shape_b, p);  // on a face
+    }
+    vec3 centre = xyz_of(shape_a);
+    vec3 offset = p - centre;
+    float r = length(offset);
+    float wanted = inside ? max(shape_b.x - margin, 0.0f) : shape_b.x + margin;
+    if (inside ? r <= wanted : r >= wanted) return p;
+    return r > 0.0f ? centre + (wanted / r) * offset : p;
+}
+
 // Snell's law in vector form: the refracted unit direction of the unit d
 // through a surface whose unit normal `facing` points back against d, from
 // index n_i into n_t; cos_t² < 0 (total internal reflection) is the caller's

@@ -182,10 +182,15 @@ Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
                 travelled = min(travelled, max(grid_ray_interval(start, chord / chord_length).y, 0.0f) /
                                                chord_length * ds);
         }
-        vec3 kappa = sample_extinction(start);
+#if EIKON_SHARP_SURFACES
+        vec3 medium = owned_medium_point(start, inside_mask);
+#else
+        vec3 medium = start;
+#endif
+        vec3 kappa = sample_extinction(medium);
         last_inside = vec4(mix(start, x, ds > 0.0f ? travelled / ds : 0.0f), 1.0f);
         if (tube && ledger.branched)
-            deposit_tube_segment(start, last_inside.xyz, tube_power * power, kappa, sample_scattering(start));
+            deposit_tube_segment(start, last_inside.xyz, tube_power * power, kappa, sample_scattering(medium));
         vec3 transmitted = power * beer_lambert_transmittance(kappa, travelled);
         absorbed += power - transmitted;
         power = transmitted;

@@ -1,6 +1,7 @@
 // The viewing pass against closed forms: heat-shimmer deflection through a
 // Gaussian hot-air bump, single scattering in a homogeneous slab, total
-// internal reflection in glass; and the default picture against a reference.
+// internal reflection in glass, a ground just below the grid's floor; and the
+// default picture against a reference.
 #include "bridge/core/Error.h"
 #include "io/image/ImageIo.h"
 #include "io/scene/SceneParser.h"
@@ -149,6 +150,63 @@ TEST(ViewPass, TotalInternalReflectionComesFromTheRayEquation) {
             EXPECT_NEAR(std::asin(exit.x), refracted, 0.01) << "Snell's law";
         }
     }
+}
+
+// A ground plane 1 mm below the grid's floor, seen through a graded field
+// (camera steps of a 10 cm voxel): a ray that steps out through the floor
+// overshoots it by up to a step, below the ground, and must still meet the
+// ground where its straight line does (the field bends it by ~1e-7 rad).
+// Every pixel whose ray meets the ground at least 2 cm inside a 10 cm
+// checker square must show that square's colour.
+TEST(ViewPass, AGroundJustBelowTheGridFloorIsSeenWhereTheRayMeetsIt) {
+    const double ground = -0.001, square = 0.1;
+    Scene scene = emptyScene(glm::dvec3(-0.5, 0.0, -0.5), glm::dvec3(0.5), 10);
+    scene.grid.smoothingSigmaVoxels = 0.0;
+    scene.lights.push_back(directionalLight({0.0, -1.0, 0.0}, 1.0));
+    scene.render.photons = 64;
+    scene.render.width = 160;
+    scene.render.height = 120;
+    scene.render.samplesPerPixel = 1;
+    EnvironmentDesc& sky = scene.render.environment;
+    sky.kind = EnvironmentDesc::Kind::Sky;
+    sky.groundHeight = ground;
+    sky.checkerSize = square;
+    sky.groundA = Rgb(0.8);
+    sky.groundB = Rgb(0.05);
+    scene.camera.position = glm::dvec3(0.05, 1.2, 1.7);
+    scene.camera.target = glm::dvec3(0.0, 0.0, 0.0);
+    scene.camera.fovDeg = 30.0;
+    FieldSet fields;
+    fields.grid = scene.grid.spec();
+    fields.deltaIndex.resize(fields.grid.cellCount());
+    for (int k = 0; k < 10; ++k)
+        for (int j = 0; j < 10; ++j)
+            for (int i = 0; i < 10; ++i) {  // no two cells alike: no step spans more than the step length
+                const glm::dvec3 x = fields.grid.cellCentre(i, j, k);
+                fields.deltaIndex[fields.grid.linearIndex(i, j, k)] = static_cast<float>(1e-7 * (x.x + 2.0 * x.y + 3.0 * x.z));
+            }
+    fields.indexVersion = 1;
+    const ViewResult result = view(scene, fields);
+
+    int checked = 0, wrong = 0;
+    for (int j = 0; j < scene.render.height; ++j)
+        for (int i = 0; i < scene.render.width; ++i) {
+            const glm::dvec3 d = reference::pixelDirection(scene.camera, scene.render.width, scene.render.height, i, j);
+            if (d.y >= 0.0) continue;
+            const glm::dvec3 hit = scene.camera.position + (ground - scene.camera.position.y) / d.y * d;
+            if (std::abs(hit.x) > 0.5 || std::abs(hit.z) > 0.5) continue;  // only rays that leave through the floor
+            const double u = hit.x / square, w = hit.z / square;
+            const double fu = u - std::floor(u), fw = w - std::floor(w);
+            if (std::min(fu, 1.0 - fu) < 0.2 || std::min(fw, 1.0 - fw) < 0.2) continue;  // near a line: filtered
+            const bool first = ((static_cast<long>(std::floor(u)) + static_cast<long>(std::floor(w))) & 1) == 0;
+            const double expected = first ? 0.8 : 0.05;
+            const double seen = result.hdr[4 * static_cast<std::size_t>(j * scene.render.width + i) + 1];
+            ++checked;
+            if (std::abs(seen - expected) > 0.01) ++wrong;
+        }
+    reportFigure("ground_below_floor_wrong_square_pixels", wrong);
+    EXPECT_GT(checked, 2000);
+    EXPECT_EQ(wrong, 0) << "of " << checked << " pixels";
 }
 
 // The default scene (reduced) against a reference picture made by this

@@ -74,5 +74,31 @@ TEST(SharpSurfaceMath, RefractionObeysSnell) {
     EXPECT_NEAR(m.y, -d.y, 1e-7f);
 }
 
+// Where tracers read a sharp object's voxelised optics: a point within the
+// margin of a sphere or box moves along the normal to the margin off the
+// surface, on the side it is on; one further off stays put.
+TEST(SharpSurfaceMath, PointsNearASurfaceMoveOffItToTheirOwnSide) {
+    using shader::vec4;
+    const vec4 sphereA(0.0f, 0.0f, 0.0f, 0.0f), sphereB(0.5f, 0.0f, 0.0f, 0.0f);
+    const float margin = 0.1f;
+    EXPECT_NEAR(glm::length(shader::off_the_surface(sphereA, sphereB, vec3(0.3f, 0.3f, 0.0f), true, margin)), 0.4f, 1e-6f);
+    EXPECT_NEAR(glm::length(shader::off_the_surface(sphereA, sphereB, vec3(0.0f, 0.51f, 0.0f), false, margin)), 0.6f, 1e-6f);
+    EXPECT_EQ(shader::off_the_surface(sphereA, sphereB, vec3(0.0f, 0.2f, 0.0f), true, margin), vec3(0.0f, 0.2f, 0.0f));
+    EXPECT_EQ(shader::off_the_surface(sphereA, sphereB, vec3(0.0f, 0.7f, 0.0f), false, margin), vec3(0.0f, 0.7f, 0.0f));
+    EXPECT_EQ(shader::off_the_surface(sphereA, vec4(0.05f, 0.0f, 0.0f, 0.0f), vec3(0.0f, 0.04f, 0.0f), true, margin),
+              vec3(0.0f)) << "a sphere narrower than the margin: its centre";
+
+    const vec4 boxA(-1.0f, -1.0f, -1.0f, 1.0f), boxB(1.0f, 0.0f, 1.0f, 0.0f);
+    const vec3 inside = shader::off_the_surface(boxA, boxB, vec3(0.95f, -0.05f, 0.2f), true, margin);
+    EXPECT_NEAR(inside.x, 0.9f, 1e-6f);
+    EXPECT_NEAR(inside.y, -0.1f, 1e-6f);
+    EXPECT_NEAR(inside.z, 0.2f, 1e-6f);
+    const vec3 above = shader::off_the_surface(boxA, boxB, vec3(0.2f, 0.03f, 0.3f), false, margin);
+    EXPECT_NEAR(above.y, 0.1f, 1e-6f);
+    EXPECT_NEAR(above.x, 0.2f, 1e-6f);
+    const vec3 onFace = shader::off_the_surface(boxA, boxB, vec3(0.2f, 0.0f, 0.3f), false, margin);
+    EXPECT_NEAR(onFace.y, 0.1f, 1e-6f);
+}
+
 }  // namespace
 }  // namespace eikon
