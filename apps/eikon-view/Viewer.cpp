@@ -80,8 +80,6 @@ public:
         const auto viewerStart = Clock::now();
         auto runStart = viewerStart;  // from the end of the first frame: steady state
         double scriptedSeconds = 0.0;
-        // The stage that draws the picture: the diagnostic's instrument, or the view.
-        const bool diagnostic = session_->scene().diagnostic.has_value();
         while (!window_->shouldClose()) {
             window_->pollEvents();
             const auto frameStart = Clock::now();
@@ -100,6 +98,8 @@ public:
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
             const bool imageSpacePreview = stride > 1 && session_->hasImageSpacePreview();
+            // The stage that draws the picture: the diagnostic's instrument, or the view.
+            const char* pictureStage = session_->scene().diagnostic ? "diagnostic" : "view";
             if (imageSpacePreview) {
                 const int scale = preview_.imageSpaceScale();
                 last_ = session_->renderImageSpacePreview(advance, scale);
@@ -108,14 +108,11 @@ public:
             } else {
                 session_->renderer().setPixelStride(stride);
                 last_ = session_->renderFrame(advance, pipelined_);
-                // A diagnostic previews with one ray a pixel, whatever the
-                // stride: only its full frame tells what a full frame costs.
-                if (!diagnostic) preview_.measured(last_.pixelStride, stageMilliseconds(last_, "view"));
-                else if (stride == 1) preview_.measured(1, stageMilliseconds(last_, "diagnostic"));
+                preview_.measured(last_.pixelStride, stageMilliseconds(last_, pictureStage),
+                                  last_.pixelStride > 1 ? 1 : last_.viewSamples);
             }
-            const double viewMs =
-                stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : diagnostic ? "diagnostic" : "view");
-            const bool previewed = last_.pixelStride > 1 || imageSpacePreview || (diagnostic && stride > 1);
+            const double viewMs = stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : pictureStage);
+            const bool previewed = last_.pixelStride > 1 || imageSpacePreview;
             if (viewMs > 0.0 && previewed && scripted()) {
                 ++previewFrames_;
                 imageSpacePreviews_ += imageSpacePreview ? 1 : 0;
