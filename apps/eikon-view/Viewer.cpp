@@ -94,6 +94,17 @@ public:
             bool advance = (running && pacer_.advances(cameraMoving)) || (session_->simulated() && stepOnce_);
             // A followed simulation moves on only when its next step is complete.
             if (advance && session_->following()) advance = session_->nextStepReady();
+            // A CPU solver's frame produced in the background is shown once
+            // ready; while the camera moves the next one is begun at once, so
+            // that the camera never waits for a solver step.
+            const bool shownFromBackground = session_->showBackgroundAdvance();
+            if (session_->advancingInBackground()) {
+                advance = false;
+            } else if (running && cameraMoving && session_->canAdvanceInBackground()) {
+                session_->beginBackgroundAdvance();
+                advance = false;
+            }
+            const bool advanced = advance || shownFromBackground;
             stepOnce_ = false;
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
@@ -117,7 +128,7 @@ public:
                 ++previewFrames_;
                 imageSpacePreviews_ += imageSpacePreview ? 1 : 0;
                 largestStride_ = std::max(largestStride_, last_.pixelStride);
-                advancedFrames_ += advance ? 1 : 0;
+                advancedFrames_ += advanced ? 1 : 0;
             }
             if (advance && session_->following()) noteSkippedSteps();
             adaptPhotons(cameraMoving);
@@ -131,7 +142,7 @@ public:
             status_.waterDevice = session_->waterDevice();
             status_.photonsInUse = photons_;
             status_.imageSpacePreview = imageSpacePreview;
-            status_.simulationHeld = running && !advance;
+            status_.simulationHeld = running && !advanced && !session_->advancingInBackground();
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);
             act(requests);
             ImGui::Render();
