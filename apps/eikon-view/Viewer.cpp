@@ -94,13 +94,13 @@ public:
             bool advance = (running && pacer_.advances(cameraMoving)) || (session_->simulated() && stepOnce_);
             // A followed simulation moves on only when its next step is complete.
             if (advance && session_->following()) advance = session_->nextStepReady();
-            // A CPU solver's frame produced in the background is shown once
-            // ready; while the camera moves the next one is begun at once, so
-            // that the camera never waits for a solver step.
+            // While the camera moves, an advance the pacer asks of a CPU
+            // solver is produced in the background and shown once ready: the
+            // camera never waits for a solver step.
             const bool shownFromBackground = session_->showBackgroundAdvance();
             if (session_->advancingInBackground()) {
                 advance = false;
-            } else if (running && cameraMoving && session_->canAdvanceInBackground()) {
+            } else if (advance && cameraMoving && session_->canAdvanceInBackground()) {
                 session_->beginBackgroundAdvance();
                 advance = false;
             }
@@ -158,7 +158,8 @@ public:
             const double ms = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
             status_.framesPerSecond = 0.9 * status_.framesPerSecond + 0.1 * 1000.0 / std::max(ms, 1e-3);
             // A session's first frame compiles its shaders: no measure of a frame.
-            if (running && !sessionStarting_) pacer_.frameDone(advance, cameraMoving, ms);
+            // A background advance is measured from the frame that shows it.
+            if (running && !sessionStarting_) pacer_.frameDone(advanced, cameraMoving, ms);
             sessionStarting_ = false;
             if (rendered_ >= 1 && rendered_ < options_.frames) longestFrameMs_ = std::max(longestFrameMs_, ms);
             if (rendered_ < std::max(options_.frames, 1)) {

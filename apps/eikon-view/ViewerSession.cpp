@@ -54,7 +54,8 @@ std::vector<sim::SkippedStep> ViewerSession::skippedBefore() const {
 }
 
 bool ViewerSession::canAdvanceInBackground() const {
-    return source_->throughRing() && fields_->fluidDevice() != "gpu" && !following();
+    return source_->throughRing() && fields_->fluidDevice() != "gpu" && !following() &&
+           !source_->renderer().photonStage();
 }
 
 void ViewerSession::beginBackgroundAdvance() {
