@@ -39,6 +39,10 @@
 // axis: it never reaches the instrument's optics, the screen or the camera)
 // is lost: its ray is dark in every instrument and lands nowhere.
 //
+// A preview (`pixel_stride` k > 1, the viewer while the camera moves)
+// traces one ray per k×k block of pixels, through the middle of the pixel
+// nearest the block's centre, and fills the block with it, as the view's
+// preview does (view_rays.comp); the shadowgraph has none.
 // A pass traces one ray a pixel, through the point `sample_offset` of it
 // (render/stages/PixelSamples.h: render.samples_per_pixel = k² passes
 // through the centres of a k × k grid of cells, as the view's); each
@@ -236,7 +240,36 @@ vec2 landing_offset(vec3 x, vec3 v) {
 #endif
 }
 
-// The ray from `start` along `direction`, marched through the grid.
+// The box, in world coordinates, outside which the traced medium is
+// uniform (render/stages/VaryingVoxels.h; the whole grid where unknown), and
+// the δn and κ it holds there.
+uniform vec3 varying_low;
+uniform vec3 varying_high;
+uniform float uniform_delta;
+uniform vec3 uniform_extinction;
+
+bool varying_contains(vec3 x) {
+    return all(greaterThanEqual(x, varying_low)) && all(lessThanEqual(x, varying_high));
+}
+
+// Parameters (t_enter, t_leave) of the line x + t·d inside the varying box
+// (slabs; a zero component of d becomes tiny so that 0·∞ never appears);
+// t_enter > t_leave when it misses.
+vec2 varying_ray_interval(vec3 x, vec3 d) {
+    vec3 safe = mix(d, vec3(1e-12f), lessThan(abs(d), vec3(1e-12f)));
+    vec3 t1 = (varying_low - x) / safe;
+    vec3 t2 = (varying_high - x) / safe;
+    vec3 t_low = min(t1, t2);
+    vec3 t_high = max(t1, t2);
+    return vec2(max(t_low.x, max(t_low.y, t_low.z)), min(t_high.x, min(t_high.y, t_high.z)));
+}
+
+// The ray from `start` along `direction`, marched through the grid. Where
+// the medium is uniform — before the ray reaches the varying box and after
+// it has left it — its gradient is 0 and the march is a straight line
+// gathering δn and κ at a constant rate: the ray jumps there, by whole
+// steps before the box (its steps inside fall where the march from the
+// grid's face puts them) and to the grid's far face after it.
 Measured march(vec3 start, vec3 direction) {
     ray_forward = direction;
     ray_right = normalize(cross(direction, camera.up.xyz));
@@ -262,11 +295,6 @@ Measured march(vec3 start, vec3 direction) {
 #endif
         vec4 field = field_at(x);
         vec3 v = vec3(0.0f, 0.0f, field.w);
-        float delta_before = sampled_delta;
-#if EIKON_HAS_EXTINCTION
-        vec3 kappa_before = sample_extinction(ray_origin);
-#endif
-        float exit_tolerance = 1e-3f * min(min(grid.voxel_size.x, grid.voxel_size.y), grid.voxel_size.z);
         // The straight ray's way through the grid. A bent ray needs at least
         // as long to reach the far face, so the face is looked for along the
         // ray's own direction only over its last two steps (a slab test each
@@ -274,6 +302,31 @@ Measured march(vec3 start, vec3 direction) {
         // first ends where its step took it out.
         float chord = span.y - max(span.x, 0.0f);
         float travelled = 0.0f;
+        uint steps = 0u;
+        bool varies = all(lessThanEqual(varying_low, varying_high));  // else the medium is uniform
+        vec2 medium_span = varying_ray_interval(ray_origin, direction);
+        if (!(varies && medium_span.x < medium_span.y && medium_span.y > 0.0f && medium_span.x < chord)) {
+            // Straight across the grid, as the march would go with ∇n = 0.
+            measured.opd = uniform_delta * chord;
+            measured.optical_depth = uniform_extinction * chord;
+            measured.ended = chord > float(max_steps) * step_length ? kRayCut : kRayCrossed;
+            if (measured.ended == kRayCrossed) measured.landing = landing_offset(vec3(0.0f, 0.0f, chord), v);
+            return measured;
+        }
+        if (medium_span.x > step_length) {
+            steps = min(uint(medium_span.x / step_length), max_steps);
+            travelled = float(steps) * step_length;
+            x = vec3(0.0f, 0.0f, travelled);
+            field = field_at(x);
+            opd = uniform_delta * travelled;
+            optical_depth = uniform_extinction * travelled;
+        }
+        float delta_before = sampled_delta;
+#if EIKON_HAS_EXTINCTION
+        vec3 kappa_before = sample_extinction(ray_origin + world_direction(x));
+#endif
+        float exit_tolerance = 1e-3f * min(min(grid.voxel_size.x, grid.voxel_size.y), grid.voxel_size.z);
+        bool entered = false;  // the march has reached the varying box
 #if EIKON_SHARP_SURFACES
         // How far the ray may still go without a search for the surfaces
         // (surface_clearance, less a margin for float32): the search runs only
@@ -281,7 +334,7 @@ Measured march(vec3 start, vec3 direction) {
         float clear = 0.0f;
         float clearance_margin = 1e-3f * grid.voxel_size.x;
 #endif
-        for (uint steps = 0u; steps < max_steps; ++steps) {
+        for (; steps < max_steps; ++steps) {
             spend_loops(1u);
             if (!loops_left()) break;
             float ds = step_length;
@@ -314,8 +367,9 @@ Measured march(vec3 start, vec3 direction) {
             travelled += ds;
             opd += 0.5f * (delta_before + sampled_delta) * ds;
             delta_before = sampled_delta;
+            vec3 position = ray_origin + world_direction(x);
 #if EIKON_HAS_EXTINCTION
-            vec3 kappa = sample_extinction(ray_origin + world_direction(x));
+            vec3 kappa = sample_extinction(position);
             optical_depth += 0.5f * (kappa_before + kappa) * ds;
             kappa_before = kappa;
 #endif
@@ -326,10 +380,22 @@ Measured march(vec3 start, vec3 direction) {
                 x_lost = vec3(0.0f);
                 field = field_at(x);
                 delta_before = sampled_delta;
+                position = ray_origin + world_direction(x);
             }
 #endif
-            if (!grid_contains(ray_origin + world_direction(x))) {
+            if (varying_contains(position)) {
+                entered = true;
+            } else if (!grid_contains(position)) {
                 ended = kRayCrossed;
+                break;
+            } else if (entered) {
+                // Past the box: straight on to the grid's far face.
+                vec3 heading = normalize(v);
+                float remaining = max(grid_ray_interval(position, world_direction(heading)).y, 0.0f);
+                x += remaining * heading;
+                opd += uniform_delta * remaining;
+                optical_depth += uniform_extinction * remaining;
+                ended = float(steps + 1u) + remaining / step_length > float(max_steps) ? kRayCut : kRayCrossed;
                 break;
             }
         }
@@ -365,16 +431,19 @@ void main() {
     landing[2u * i + 1u] = vec4(measured.fresnel_transmittance * exp(-measured.optical_depth), measured.ended);
 }
 #else
+uniform uint pixel_stride;  // 1: a ray a pixel; k: a ray per k×k block of pixels, filling it (a preview)
+
 void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, camera.image.xy))) return;
+    uvec2 block = gl_GlobalInvocationID.xy * pixel_stride;
+    if (any(greaterThanEqual(block, camera.image.xy))) return;
+    uvec2 pixel = min(block + pixel_stride / 2u, camera.image.xy - 1u);  // the block's middle pixel
     vec2 point = vec2(pixel) + sample_offset;
     Measured measured = march(camera_ray_origin_at(point), camera_ray_direction_at(point));
     uint i = pixel.y * camera.image.x + pixel.x;
     // One lost ray marks its pixel lost; else one cut ray, cut; else one that crossed, crossed (0 < 1 < 2).
     float ended = measured.ended;
     if (samples_before > 0u) ended = max(rays[i].w, ended) == kRayLost ? kRayLost : min(rays[i].w, ended);
-    rays[i] = vec4(running_mean(rays[i], vec4(measured.deflection, measured.opd, 0.0f)).xyz, ended);
+    vec4 ray = vec4(running_mean(rays[i], vec4(measured.deflection, measured.opd, 0.0f)).xyz, ended);
     // A lost ray brings no light.
     vec3 transmittance = measured.ended == kRayLost ? vec3(0.0f)
                                                     : measured.fresnel_transmittance * exp(-measured.optical_depth);
@@ -382,19 +451,32 @@ void main() {
     // The background point this ray sees without the medium, and with it.
     vec3 offset = camera_image_offset_at(point);
     vec2 straight = plane_depth * vec2(dot(offset, camera.right.xyz), dot(offset, camera.up.xyz));
-    vec3 intensity = transmittance * background_intensity(straight + measured.landing);
+    float unmoved = background_intensity(straight);
+    // A ray that crossed no varying medium lands where the straight one does.
+    float seen = all(equal(measured.landing, vec2(0.0f))) ? unmoved : background_intensity(straight + measured.landing);
+    vec3 intensity = transmittance * seen;
     // The feature seen here with the medium is, without it, seen where its
     // straight ray points: the apparent displacement, reference to measurement.
-    vec4 moved = running_mean(landing[i], vec4(-measured.landing / (plane_depth * pixel_size()),
-                                               background_intensity(straight), 0.0f));
-    landing[i] = moved;
-    reference_rgba8[i] = packUnorm4x8(vec4(srgb_encode(vec3(moved.z)), 1.0f));
+    vec4 moved = running_mean(landing[i], vec4(-measured.landing / (plane_depth * pixel_size()), unmoved, 0.0f));
+    uint reference = packUnorm4x8(vec4(srgb_encode(vec3(moved.z)), 1.0f));
 #else
     float u = point.x / float(camera.image.x);
     vec3 intensity = instrument_intensity(measured.opd, measured.deflection, u, transmittance);
 #endif
     vec3 mean = running_mean(hdr_radiance[i], vec4(intensity, 1.0f)).rgb;
-    hdr_radiance[i] = vec4(mean, 1.0f);
-    ldr_rgba8[i] = packUnorm4x8(vec4(srgb_encode(mean), 1.0f));
+    uint encoded = packUnorm4x8(vec4(srgb_encode(mean), 1.0f));
+    // A pass of the full picture: the block is the pixel.
+    uvec2 block_end = min(block + pixel_stride, camera.image.xy);
+    for (uint y = block.y; y < block_end.y; ++y)
+        for (uint x = block.x; x < block_end.x; ++x) {
+            uint j = y * camera.image.x + x;
+            rays[j] = ray;
+#if EIKON_INSTRUMENT == EIKON_BOS
+            landing[j] = moved;
+            reference_rgba8[j] = reference;
+#endif
+            hdr_radiance[j] = vec4(mean, 1.0f);
+            ldr_rgba8[j] = encoded;
+        }
 }
 #endif

@@ -48,6 +48,8 @@ render::FieldUpload FrameSource::hostFields() const {
     return upload;
 }
 
+bool FrameSource::nextReady() const { return !live_ || live_->nextReady(); }
+
 const ProducedFrame& FrameSource::waitNext() {
     return live_ ? live_->waitNext() : host_;
 }

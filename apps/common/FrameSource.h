@@ -45,6 +45,8 @@ public:
     // The current frame's fields as a renderer takes them, for another
     // renderer of the same scene (the viewer's preview); host fields only.
     render::FieldUpload hostFields() const;
+    // Ring: whether waitNext() would return at once (always, for host fields).
+    bool nextReady() const;
     // Ring: produces the next frame (not pipelined) or waits for it; its
     // production times. Host: nothing yet (the fields advance in publishNext).
     const ProducedFrame& waitNext();

@@ -113,7 +113,7 @@ void LiveFrames::beginNext() {
 }
 
 const ProducedFrame& LiveFrames::waitNext() {
-    produced_ = pipelined_ ? pending_.get() : produce(next_);
+    produced_ = pending_.valid() ? pending_.get() : produce(next_);
     return produced_;
 }
 

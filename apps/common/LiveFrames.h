@@ -69,7 +69,12 @@ public:
     // Acquires the next slot and, when pipelined, starts producing the next
     // frame into it. GL thread; call before rendering the current frame.
     void beginNext();
-    // Produces the next frame (when not pipelined) or waits for it.
+    // Whether waitNext() would return at once: the next frame, begun
+    // pipelined, is produced (true when none is being produced on a thread).
+    bool nextReady() const {
+        return !pending_.valid() || pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+    }
+    // Produces the next frame (when not begun pipelined) or waits for it.
     const ProducedFrame& waitNext();
     // Publishes the next frame as current. GL thread; call once the current
     // frame's outputs were written from its slot.

@@ -80,8 +80,6 @@ public:
         const auto viewerStart = Clock::now();
         auto runStart = viewerStart;  // from the end of the first frame: steady state
         double scriptedSeconds = 0.0;
-        // The stage that draws the picture: the diagnostic's instrument, or the view.
-        const bool diagnostic = session_->scene().diagnostic.has_value();
         while (!window_->shouldClose()) {
             window_->pollEvents();
             const auto frameStart = Clock::now();
@@ -96,10 +94,23 @@ public:
             bool advance = (running && pacer_.advances(cameraMoving)) || (session_->simulated() && stepOnce_);
             // A followed simulation moves on only when its next step is complete.
             if (advance && session_->following()) advance = session_->nextStepReady();
+            // While the camera moves, an advance the pacer asks of a CPU
+            // solver is produced in the background and shown once ready: the
+            // camera never waits for a solver step.
+            const bool shownFromBackground = session_->showBackgroundAdvance();
+            if (session_->advancingInBackground()) {
+                advance = false;
+            } else if (advance && cameraMoving && session_->canAdvanceInBackground()) {
+                session_->beginBackgroundAdvance();
+                advance = false;
+            }
+            const bool advanced = advance || shownFromBackground;
             stepOnce_ = false;
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
             const bool imageSpacePreview = stride > 1 && session_->hasImageSpacePreview();
+            // The stage that draws the picture: the diagnostic's instrument, or the view.
+            const char* pictureStage = session_->scene().diagnostic ? "diagnostic" : "view";
             if (imageSpacePreview) {
                 const int scale = preview_.imageSpaceScale();
                 last_ = session_->renderImageSpacePreview(advance, scale);
@@ -108,19 +119,16 @@ public:
             } else {
                 session_->renderer().setPixelStride(stride);
                 last_ = session_->renderFrame(advance, pipelined_);
-                // A diagnostic previews with one ray a pixel, whatever the
-                // stride: only its full frame tells what a full frame costs.
-                if (!diagnostic) preview_.measured(last_.pixelStride, stageMilliseconds(last_, "view"));
-                else if (stride == 1) preview_.measured(1, stageMilliseconds(last_, "diagnostic"));
+                preview_.measured(last_.pixelStride, stageMilliseconds(last_, pictureStage),
+                                  last_.pixelStride > 1 ? 1 : last_.viewSamples);
             }
-            const double viewMs =
-                stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : diagnostic ? "diagnostic" : "view");
-            const bool previewed = last_.pixelStride > 1 || imageSpacePreview || (diagnostic && stride > 1);
+            const double viewMs = stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : pictureStage);
+            const bool previewed = last_.pixelStride > 1 || imageSpacePreview;
             if (viewMs > 0.0 && previewed && scripted()) {
                 ++previewFrames_;
                 imageSpacePreviews_ += imageSpacePreview ? 1 : 0;
                 largestStride_ = std::max(largestStride_, last_.pixelStride);
-                advancedFrames_ += advance ? 1 : 0;
+                advancedFrames_ += advanced ? 1 : 0;
             }
             if (advance && session_->following()) noteSkippedSteps();
             adaptPhotons(cameraMoving);
@@ -134,7 +142,7 @@ public:
             status_.waterDevice = session_->waterDevice();
             status_.photonsInUse = photons_;
             status_.imageSpacePreview = imageSpacePreview;
-            status_.simulationHeld = running && !advance;
+            status_.simulationHeld = running && !advanced && !session_->advancingInBackground();
             const PanelRequests requests = panel_.draw(last_, status_, paused_, pipelined_, exposure_, fullPhotons_);
             act(requests);
             ImGui::Render();
@@ -150,7 +158,8 @@ public:
             const double ms = std::chrono::duration<double, std::milli>(Clock::now() - frameStart).count();
             status_.framesPerSecond = 0.9 * status_.framesPerSecond + 0.1 * 1000.0 / std::max(ms, 1e-3);
             // A session's first frame compiles its shaders: no measure of a frame.
-            if (running && !sessionStarting_) pacer_.frameDone(advance, cameraMoving, ms);
+            // A background advance is measured from the frame that shows it.
+            if (running && !sessionStarting_) pacer_.frameDone(advanced, cameraMoving, ms);
             sessionStarting_ = false;
             if (rendered_ >= 1 && rendered_ < options_.frames) longestFrameMs_ = std::max(longestFrameMs_, ms);
             if (rendered_ < std::max(options_.frames, 1)) {

@@ -2,8 +2,10 @@
 // `eikon run` — while the user orbits the camera, drags the light and edits
 // settings. Only the stages whose inputs changed run, so orbiting costs a
 // view pass, drawn as a preview while the camera moves (ViewPreview.h),
-// and a moving scene is held between its frames meanwhile as far as keeps
-// the camera to its frame time (SimulationPacer.h);
+// and meanwhile a fluid solver on the CPU advances in the background
+// (ViewerSession::beginBackgroundAdvance) while other moving scenes are
+// held between their frames as far as keeps the camera to its frame time
+// (SimulationPacer.h);
 // while a light is dragged or the scene moves, the photon count
 // drops to keep the target frame time and returns to the scene's count when
 // the drag ends or the scene is paused.

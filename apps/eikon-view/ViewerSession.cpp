@@ -1,5 +1,6 @@
 #include "apps/eikon-view/ViewerSession.h"
 
+#include "bridge/core/Error.h"
 #include "bridge/scene/ImageSpaceScope.h"
 
 #include <algorithm>
@@ -52,6 +53,26 @@ std::vector<sim::SkippedStep> ViewerSession::skippedBefore() const {
     return followed_ ? followed_->skippedBefore() : std::vector<sim::SkippedStep>{};
 }
 
+bool ViewerSession::canAdvanceInBackground() const {
+    return source_->throughRing() && fields_->fluidDevice() != "gpu" && !following() &&
+           !source_->renderer().photonStage();
+}
+
+void ViewerSession::beginBackgroundAdvance() {
+    EIKON_CHECK_MSG(canAdvanceInBackground() && !advancingInBackground_, "one background advance of a CPU solver at a time");
+    source_->setPipelined(true);
+    source_->beginNext();
+    advancingInBackground_ = true;
+}
+
+bool ViewerSession::showBackgroundAdvance() {
+    if (!advancingInBackground_ || !source_->nextReady()) return false;
+    source_->waitNext();
+    source_->publishNext();
+    advancingInBackground_ = false;
+    return true;
+}
+
 render::FrameResult ViewerSession::renderImageSpacePreview(bool advance, int scale) {
     std::unique_ptr<render::FrameRenderer>& preview = imageSpace_[scale];
     if (!preview) {
@@ -78,6 +99,7 @@ render::FrameResult ViewerSession::renderImageSpacePreview(bool advance, int sca
 }
 
 render::FrameResult ViewerSession::renderFrame(bool advance, bool pipelined) {
+    EIKON_CHECK_MSG(!(advance && advancingInBackground_), "the background advance shown before the next");
     fields_->keepSharpCoverage(sim::SceneFields::needsSharpCoverage(scene_));
     if (!advance) return source_->render();
     // A solver on the GPU queues its passes on this context: nothing to overlap on a thread.

@@ -47,6 +47,22 @@ public:
     // Renders the current frame; with `advance`, a simulated scene moves on
     // one frame (simulated during the render when `pipelined`).
     render::FrameResult renderFrame(bool advance, bool pipelined);
+    // While the camera moves, a solver on the CPU advances in the background:
+    // its next frame is produced on a thread while the viewer draws the
+    // current one, and shown once ready, so that the camera never waits
+    // for a solver step. Only where no light is traced (a diagnostic, a
+    // view without receivers or scattering): there the step is what the
+    // camera waited for, while a light pass after each advance runs on this
+    // thread either way and a solver beside it only takes cores from it
+    // (an orbit of syrup_mixing 10–15% slower on two cores). Not for a
+    // solver on the GPU (it queues its passes on this context) nor a
+    // followed simulation (read as it is written).
+    bool canAdvanceInBackground() const;
+    void beginBackgroundAdvance();
+    bool advancingInBackground() const { return advancingInBackground_; }
+    // Once the background frame is ready (nothing waits): makes it current,
+    // and returns true; the next render draws it.
+    bool showBackgroundAdvance();
     // Whether the scene has an image-space preview (all surfaces, drawn eikonally).
     bool hasImageSpacePreview() const { return imageSpaceScene_.has_value(); }
     // The image-space frame of the current fields, seen by the eikonal
@@ -59,6 +75,7 @@ private:
     std::unique_ptr<sim::SceneFields> fields_;
     std::unique_ptr<app::FrameSource> source_;
     sim::VolumeSequence* followed_ = nullptr;
+    bool advancingInBackground_ = false;
     std::chrono::steady_clock::time_point lastLook_{};
     std::optional<Scene> imageSpaceScene_;  // the scene as its image-space preview draws it
     std::map<int, std::unique_ptr<render::FrameRenderer>> imageSpace_;  // by scale, made when first drawn

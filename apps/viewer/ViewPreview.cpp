@@ -10,18 +10,20 @@ int ViewPreview::strideFor(bool cameraMoved, double nowSeconds) {
         lastMoveSeconds_ = nowSeconds;
         moved_ = true;
     }
-    if (!cameraMoving(nowSeconds) || fullViewMs_ <= settings_.targetViewMs) return 1;
-    // A k×k stride traces 1/k² of the rays.
-    const int stride = static_cast<int>(std::ceil(std::sqrt(fullViewMs_ / settings_.targetViewMs)));
-    return std::clamp(stride, 1, settings_.largestStride);
+    if (!cameraMoving(nowSeconds) || oneRayViewMs_ * fullRaysPerPixel_ <= settings_.targetViewMs) return 1;
+    // A k×k stride traces one ray per k² pixels.
+    const int stride = static_cast<int>(std::ceil(std::sqrt(oneRayViewMs_ / settings_.targetViewMs)));
+    return std::clamp(stride, 2, std::max(settings_.largestStride, 2));
 }
 
 bool ViewPreview::cameraMoving(double nowSeconds) const {
     return moved_ && nowSeconds - lastMoveSeconds_ < settings_.refineDelaySeconds;
 }
 
-void ViewPreview::measured(int stride, double viewMs) {
-    if (viewMs > 0.0) fullViewMs_ = viewMs * stride * stride;
+void ViewPreview::measured(int stride, double viewMs, int raysPerPixel) {
+    if (viewMs <= 0.0 || raysPerPixel < 1) return;
+    oneRayViewMs_ = viewMs * stride * stride / raysPerPixel;
+    if (stride == 1) fullRaysPerPixel_ = raysPerPixel;
 }
 
 int ViewPreview::imageSpaceScale() const {

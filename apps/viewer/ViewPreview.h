@@ -29,9 +29,11 @@ public:
     // (as strideFor last saw it): the viewer is in its interactive mode,
     // whether or not the view needs a stride to keep to its target.
     bool cameraMoving(double nowSeconds) const;
-    // After a frame whose view pass ran at `stride`, its time: the cost per
-    // ray it implies sets the next preview's stride.
-    void measured(int stride, double viewMs);
+    // After a frame whose view pass ran at `stride`, its time and the rays
+    // it traced for each pixel (block) it drew (render.samples_per_pixel for
+    // a full image, 1 for a preview): the cost per ray it implies sets the
+    // next preview's stride.
+    void measured(int stride, double viewMs, int raysPerPixel = 1);
     // The image-space preview's downscale k (1: full size) while the camera
     // moves, and after such a preview at scale k, its view pass's time.
     int imageSpaceScale() const;
@@ -39,7 +41,8 @@ public:
 
 private:
     PreviewSettings settings_;
-    double fullViewMs_ = 0.0;  // estimated view-pass time of the full image; 0: not yet measured
+    double oneRayViewMs_ = 0.0;  // estimated view-pass time of one ray a pixel; 0: not yet measured
+    int fullRaysPerPixel_ = 1;   // the rays a pixel of the full image, as last measured
     double fullImageSpaceViewMs_ = 0.0;  // the same for the image-space preview
     double lastMoveSeconds_ = 0.0;
     bool moved_ = false;  // the camera has moved at least once

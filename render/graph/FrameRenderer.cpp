@@ -144,8 +144,8 @@ void FrameRenderer::setCamera(const CameraDesc& camera) {
 }
 
 void FrameRenderer::setPixelStride(int stride) {
-    if (diagnostic_ && diagnostic_->preview() != (stride > 1)) {  // a diagnostic previews with one ray a pixel
-        diagnostic_->setPreview(stride > 1);
+    if (diagnostic_ && stride != diagnostic_->pixelStride()) {
+        diagnostic_->setPixelStride(stride);
         cameraChanged_ = true;
     }
     if (!view_ || stride == view_->pixelStride()) return;
@@ -284,11 +284,16 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     // A diagnostic sees the index and, through its transmittance, the extinction.
     const bool diagnosticNeeded = diagnostic_ && (indexChanged || extinctionChanged || cameraChanged_);
     if (diagnostic_) result.stages.push_back(runStage("diagnostic", diagnosticNeeded, [&] {
+        if (indexChanged || extinctionChanged) {
+            const VaryingVoxels varying = varyingVoxels(fields);
+            diagnostic_->setVaryingVoxels(varying);
+            if (diagnosticEstimate_) diagnosticEstimate_->setVaryingVoxels(varying);
+        }
         last_.image = diagnostic_->run(fields_);
         if (diagnostic_->crossesSharpSurfaces()) last_.diagnosticLost = diagnostic_->lostRays();
     }));
     if (diagnosticEstimate_)
-        result.stages.push_back(runStage("error_estimate", diagnosticNeeded && !diagnostic_->preview(),
+        result.stages.push_back(runStage("error_estimate", diagnosticNeeded && diagnostic_->pixelStride() == 1,
                                          [&] { last_.errorEstimate = diagnosticEstimate_->run(fields_); }));
     // The estimate is of the full image, not of a preview.
     if (errorEstimate_) result.stages.push_back(runStage("error_estimate", viewNeeded && view_->pixelStride() == 1, [&] {
@@ -305,7 +310,7 @@ FrameResult FrameRenderer::render(const FieldUpload& fields, FieldRing* ring) {
     result.lattice = last_.lattice;
     result.errorEstimate = last_.errorEstimate;
     result.diagnosticLost = last_.diagnosticLost;
-    result.pixelStride = view_ ? view_->pixelStride() : 1;
+    result.pixelStride = view_ ? view_->pixelStride() : diagnostic_ ? diagnostic_->drawnStride() : 1;
     result.viewSamples = view_ ? view_->samplesTaken() : diagnostic_ ? diagnostic_->raysPerPixel() : 1;
     return result;
 }

@@ -128,8 +128,8 @@ public:
     // Exposure of the tone map: post runs again.
     void setExposure(double exposureEv);
     // 1: the full image; k > 1: a preview of one camera ray per k×k pixels
-    // (the viewer while the camera moves; a diagnostic's preview is one ray
-    // a pixel, DiagnosticStage::setPreview). A changed stride draws anew.
+    // (the viewer while the camera moves; the view's and the diagnostic's,
+    // DiagnosticStage::setPixelStride). A changed stride draws anew.
     void setPixelStride(int stride);
     const Scene& scene() const { return scene_; }
     // Traces the photons of the last rendered fields again (a relight, as

@@ -14,8 +14,8 @@ namespace eikon::render {
 
 // True when every cell of `field` (`components` floats a cell) holds the
 // same value, or the scene has no such field (it is 0 everywhere); false for
-// a field whose values are on the GPU only (a solver's ring), which is not
-// read back to find out.
+// a field whose values are on the GPU only (a GPU solver's ring), which is
+// not read back to find out.
 bool holdsOneValue(const FieldSource& field, int components);
 
 inline constexpr const char* kUniformIndexReason =

@@ -37,6 +37,11 @@ void DiagnosticErrorEstimate::setCamera(const CameraDesc& camera) {
     reference_.setCamera(camera);
 }
 
+void DiagnosticErrorEstimate::setVaryingVoxels(const VaryingVoxels& varying) {
+    march_.setVaryingVoxels(varying);
+    reference_.setVaryingVoxels(varying);
+}
+
 ErrorEstimate DiagnosticErrorEstimate::run(const FieldTextures& fields) {
     const auto start = std::chrono::steady_clock::now();
     ErrorEstimate estimate;

@@ -29,6 +29,7 @@ public:
     DiagnosticErrorEstimate(const Scene& scene, const FieldTextures& fields, const DiagnosticStage& frame);
 
     void setCamera(const CameraDesc& camera);
+    void setVaryingVoxels(const VaryingVoxels& varying);  // DiagnosticStage::setVaryingVoxels
     ErrorEstimate run(const FieldTextures& fields);
 
 private:

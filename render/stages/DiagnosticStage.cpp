@@ -6,6 +6,7 @@
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
 #include "render/stages/PhotonStage.h"
+#include "render/stages/GaussianKernel.h"
 #include "render/stages/PixelSamples.h"
 #include "render/stages/ViewStage.h"
 
@@ -60,7 +61,11 @@ gl::Texture2D patternTexture(const FloatImage& image) {
 
 DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields, TracerDesc::Integrator integrator)
     : render_(scene.render), diagnostic_(scene.diagnostic.value_or(DiagnosticDesc{})), cameraDesc_(scene.camera),
-      grid_(fields.grid()), surfaces_(scene), sampleSide_(sampleGridSide(scene.render.samplesPerPixel)) {
+      grid_(fields.grid()), surfaces_(scene), sampleSide_(sampleGridSide(scene.render.samplesPerPixel)),
+      smoothingReach_(static_cast<int>(
+                          gaussianHalfKernel(scene.grid.smoothingSigmaVoxels, scene.grid.smoothingWindowVoxels).size()) -
+                      1),
+      varyingLow_(grid_.boundsMin), varyingHigh_(grid_.boundsMax) {
     EIKON_CHECK_MSG(sampleSide_ > 0, "render.samples_per_pixel a square (io/scene/SceneParser)");
     const bool bos = diagnostic_.type == DiagnosticDesc::Type::Bos;
     EIKON_CHECK_MSG(scene.diagnostic && scene.camera.orthographic() != bos,
@@ -124,6 +129,34 @@ void DiagnosticStage::setCamera(const CameraDesc& camera) {
     cameraDesc_ = camera;
 }
 
+void DiagnosticStage::setVaryingVoxels(const VaryingVoxels& varying) {
+    uniformDelta_ = varying.uniformDelta;
+    uniformExtinction_ = varying.uniformExtinction;
+    if (!surfaces_.empty()) {  // sharp surfaces bend rays wherever they lie: the march covers the grid
+        varyingLow_ = glm::vec3(grid_.boundsMin);
+        varyingHigh_ = glm::vec3(grid_.boundsMax);
+        return;
+    }
+    if (varying.box.empty()) {  // a uniform medium: every ray crosses straight
+        varyingLow_ = glm::vec3(grid_.boundsMax);
+        varyingHigh_ = glm::vec3(grid_.boundsMin);
+        return;
+    }
+    // A voxel's δn reaches smoothingReach_ voxels by the smoothing, one more
+    // by the central differences, and the trilinear filter reads it up to a
+    // voxel from its centre; one voxel more for rounding.
+    const double reach = smoothingReach_ + 1 + 1.5 + 1;
+    const glm::dvec3 h = grid_.voxelSize();
+    varyingLow_ = glm::vec3(glm::max(grid_.boundsMin, grid_.boundsMin + (glm::dvec3(varying.box.lowest) - reach) * h));
+    varyingHigh_ =
+        glm::vec3(glm::min(grid_.boundsMax, grid_.boundsMin + (glm::dvec3(varying.box.highest) + 1.0 + reach) * h));
+}
+
+void DiagnosticStage::setPixelStride(int stride) {
+    EIKON_CHECK_MSG(stride >= 1, "a pixel stride of at least 1");
+    pixelStride_ = stride;
+}
+
 std::size_t DiagnosticStage::beamCorners(std::size_t pixels, int side) {
     return static_cast<std::size_t>(side) * (pixels + 2 * kBeamMargin) + 1;
 }
@@ -155,6 +188,11 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         surfaces_.bind();
         glUniform1ui(program_.uniform("sharp_surface_count"), surfaces_.count());
     }
+    glUniform3f(program_.uniform("varying_low"), varyingLow_.x, varyingLow_.y, varyingLow_.z);
+    glUniform3f(program_.uniform("varying_high"), varyingHigh_.x, varyingHigh_.y, varyingHigh_.z);
+    glUniform1f(program_.uniform("uniform_delta"), uniformDelta_);
+    glUniform3f(program_.uniform("uniform_extinction"), uniformExtinction_.x, uniformExtinction_.y,
+                uniformExtinction_.z);
     const auto width = static_cast<std::size_t>(render_.width), height = static_cast<std::size_t>(render_.height);
     const double sensitivity = diagnostic_.focalLength / diagnostic_.sourceHeight;  // f/a
     switch (instrumentOf(diagnostic_)) {
@@ -212,13 +250,16 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         resolve_.use();
         resolve_.dispatchCovering(width, height, 1, 8, 8, 1);
     } else {
-        // k² passes, one ray a pixel each, averaged as the view's are.
+        // k² passes, one ray a pixel each, averaged as the view's are; or
+        // one pass of a ray a block, through the middle of its middle pixel.
         const int side = drawnSide();
+        const std::size_t stride = static_cast<std::size_t>(pixelStride_);
+        glUniform1ui(program_.uniform("pixel_stride"), static_cast<GLuint>(stride));
         for (int cell = 0; cell < side * side; ++cell) {
             const glm::vec2 offset = gridSampleOffset(cell, side);
             glUniform2f(program_.uniform("sample_offset"), offset.x, offset.y);
             glUniform1ui(program_.uniform("samples_before"), static_cast<GLuint>(cell));
-            program_.dispatchCovering(width, height, 1, 8, 8, 1);
+            program_.dispatchCovering((width + stride - 1) / stride, (height + stride - 1) / stride, 1, 8, 8, 1);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         }
     }

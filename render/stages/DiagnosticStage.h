@@ -21,8 +21,10 @@
 #include "render/stages/FieldTextures.h"
 #include "render/stages/PostStage.h"
 #include "render/stages/SharpSurfaceBuffer.h"
+#include "render/stages/VaryingVoxels.h"
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <vector>
@@ -55,12 +57,21 @@ public:
     // camera records it, sRGB-encoded (no exposure, no filmic curve).
     Image8 run(const FieldTextures& fields);
     void setCamera(const CameraDesc& camera);
-    // The viewer's preview while the camera moves: one ray a pixel (the
-    // shadowgraph: one square a pixel of its beam); false: k².
-    void setPreview(bool preview) { preview_ = preview; }
-    bool preview() const { return preview_; }
+    // Where the fields vary (VaryingVoxels.h): the rays march the box, grown
+    // by the reach of the smoothing, the gradient's central differences and
+    // the trilinear filter, and cross the rest straight. Until set, the
+    // whole grid.
+    void setVaryingVoxels(const VaryingVoxels& varying);
+    // 1: the full picture, k² rays a pixel. s > 1: the viewer's preview
+    // while the camera moves, one ray per s×s block of pixels filling the
+    // block, as the view's (ViewStage::setPixelStride), about s²·k² times
+    // cheaper; the shadowgraph previews with one square a pixel of its beam.
+    void setPixelStride(int stride);
+    int pixelStride() const { return pixelStride_; }  // as set
+    // The stride of the latest picture: as set, but 1 for the shadowgraph.
+    int drawnStride() const { return diagnostic_.type == DiagnosticDesc::Type::Shadowgraph ? 1 : pixelStride_; }
     // The rays each pixel of the latest picture averages (the shadowgraph: squares of its beam).
-    int raysPerPixel() const { return preview_ ? 1 : sampleSide_ * sampleSide_; }
+    int raysPerPixel() const { return drawnSide() * drawnSide(); }
 
     std::vector<float> downloadHdr() const;  // linear I/I₀, RGBA per pixel
     DiagnosticMeasurements downloadMeasurements() const;
@@ -92,7 +103,7 @@ public:
 
 private:
     // k, or 1 in a preview.
-    int drawnSide() const { return preview_ ? 1 : sampleSide_; }
+    int drawnSide() const { return pixelStride_ > 1 ? 1 : sampleSide_; }
     // The shadowgraph's corner rays along a side of `pixels` pixels, `side` squares a pixel.
     static std::size_t beamCorners(std::size_t pixels, int side);
 
@@ -102,7 +113,11 @@ private:
     GridSpec grid_;
     SharpSurfaceBuffer surfaces_;
     int sampleSide_;  // k: render.samples_per_pixel = k²
-    bool preview_ = false;
+    int pixelStride_ = 1;
+    int smoothingReach_;  // voxels: how far the smoothing carries a voxel's δn
+    glm::vec3 varyingLow_, varyingHigh_;  // the box the rays march, world coordinates
+    float uniformDelta_ = 0.0f;
+    glm::vec3 uniformExtinction_{0.0f};
     double stepLength_;
     unsigned maxSteps_;
     double dotDiameter_ = 0.0;  // BOS, m

@@ -78,15 +78,19 @@ void FieldRing::publish(std::uint64_t indexVersion, std::uint64_t extinctionVers
 FieldUpload FieldRing::current() const {
     EIKON_CHECK_MSG(current_ >= 0, "no field ring slot published yet");
     const Slot& slot = slots_[static_cast<std::size_t>(current_)];
+    // A mapped slot is also read on the host (the frame's closed forms,
+    // render/graph/UniformMedium.h, and a diagnostic's varying voxels).
     auto volume = [&](std::size_t field) {
-        return memory_ == FieldRingMemory::Device ? slot.device[field].id() : slot.buffers[field].id();
+        if (!floats_[field]) return FieldSource{};
+        if (memory_ == FieldRingMemory::Device) return FieldSource{nullptr, slot.device[field].id(), floats_[field]};
+        return FieldSource{slot.buffers[field].floats(), slot.buffers[field].id(), floats_[field]};
     };
     return {grid_,
             referenceIndex_,
-            source(volume(kIndex), floats_[kIndex]),
-            source(volume(kExtinction), floats_[kExtinction]),
-            source(volume(kScattering), floats_[kScattering]),
-            source(volume(kAnisotropy), floats_[kAnisotropy]),
+            volume(kIndex),
+            volume(kExtinction),
+            volume(kScattering),
+            volume(kAnisotropy),
             source(slot.buffers[kSurfaceNodes].id(), floats_[kSurfaceNodes]),
             source(slot.buffers[kSurfaceTriangles].id(), floats_[kSurfaceTriangles]),
             slot.indexVersion,

@@ -17,7 +17,8 @@
 
 namespace eikon::render {
 
-// Where one field's values are: host memory, or a GL buffer (offset 0).
+// Where one field's values are: host memory, or a GL buffer (offset 0); a
+// persistently mapped buffer is both, read on the host and copied on the GPU.
 struct FieldSource {
     const float* host = nullptr;
     GLuint buffer = 0;

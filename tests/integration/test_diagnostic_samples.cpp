@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -143,15 +144,21 @@ TEST(DiagnosticSamples, TheShadowgraphsCausticConvergesToTheManySquareImage) {
 }
 
 // The viewer's preview while the camera moves (FrameRenderer::setPixelStride
-// k > 1): one ray a pixel — the picture a scene of one ray a pixel draws,
-// bit for bit — and at rest again all k², as before the preview.
-TEST(DiagnosticSamples, APreviewDrawsOneRayAPixelAndRestDrawsAllOfThem) {
+// s > 1): one ray per s×s block of pixels, through the middle of the
+// block's middle pixel, filling the block — the one-ray picture's pixel
+// there, bit for bit (the shadowgraph: one square a pixel, its one-ray
+// picture) — and at rest again all k², as before the preview.
+TEST(DiagnosticSamples, APreviewDrawsOneRayABlockAndRestDrawsAllOfThem) {
     glContext();
     DiagnosticDesc shadowgraph;
     shadowgraph.type = DiagnosticDesc::Type::Shadowgraph;
     shadowgraph.screenDistance = 20.0;
-    for (const DiagnosticDesc& diagnostic : {DiagnosticDesc{}, shadowgraph}) {
-        Scene scene = bumpScene(32, 24, diagnostic);
+    DiagnosticDesc bos;
+    bos.type = DiagnosticDesc::Type::Bos;
+    const int width = 30, height = 22, stride = 4;  // blocks cut short at the right and bottom edges
+    for (const DiagnosticDesc& diagnostic : {DiagnosticDesc{}, shadowgraph, bos}) {
+        Scene scene = bumpScene(width, height, diagnostic);
+        if (diagnostic.type == DiagnosticDesc::Type::Bos) scene.camera.projection = CameraDesc::Projection::Perspective;
         Bump bump;
         bump.amplitude = 3e-5;
         const FieldSet fields = sampledBump(scene, bump);
@@ -160,15 +167,32 @@ TEST(DiagnosticSamples, APreviewDrawsOneRayAPixelAndRestDrawsAllOfThem) {
         render::FrameRenderer renderer(scene, fields);
         const render::FrameResult full = renderer.render(fields);
         EXPECT_EQ(full.viewSamples, 16);
+        EXPECT_EQ(full.pixelStride, 1);
         const std::vector<float> all = renderer.diagnosticStage()->downloadHdr();
-        renderer.setPixelStride(4);
+        renderer.setPixelStride(stride);
         const render::FrameResult preview = renderer.render(fields);
         EXPECT_EQ(preview.viewSamples, 1);
-        EXPECT_EQ(renderer.diagnosticStage()->downloadHdr(), one);
+        const std::vector<float> drawn = renderer.diagnosticStage()->downloadHdr();
+        if (diagnostic.type == DiagnosticDesc::Type::Shadowgraph) {
+            EXPECT_EQ(preview.pixelStride, 1);
+            EXPECT_EQ(drawn, one);
+        } else {
+            EXPECT_EQ(preview.pixelStride, stride);
+            std::size_t mismatched = 0;
+            for (int y = 0; y < height; ++y)
+                for (int x = 0; x < width; ++x) {
+                    const int middleX = std::min(x / stride * stride + stride / 2, width - 1);
+                    const int middleY = std::min(y / stride * stride + stride / 2, height - 1);
+                    const std::size_t pixel = 4 * (static_cast<std::size_t>(y) * width + x);
+                    const std::size_t middle = 4 * (static_cast<std::size_t>(middleY) * width + middleX);
+                    for (int c = 0; c < 4; ++c) mismatched += drawn[pixel + c] != one[middle + c] ? 1 : 0;
+                }
+            EXPECT_EQ(mismatched, 0u) << static_cast<int>(diagnostic.type);
+        }
         renderer.setPixelStride(1);
         renderer.render(fields);
         EXPECT_EQ(renderer.diagnosticStage()->downloadHdr(), all);
-        EXPECT_NE(all, one) << "the fringes and the screen differ between 1 and 16 rays";
+        EXPECT_NE(all, one) << "the fringes, the screen and the dots differ between 1 and 16 rays";
     }
 }
 

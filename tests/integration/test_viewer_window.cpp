@@ -147,20 +147,61 @@ TEST_F(ViewerWindow, OrbitingShowsThePreviewAndRestRefinesToTheHeadlessFrame) {
 }
 
 // A diagnostic previews too: while the camera moves, the schlieren picture
-// is drawn with one ray a pixel instead of render.samples_per_pixel (the
-// viewer measures the diagnostic's stage, not the view it does not draw).
-TEST_F(ViewerWindow, OrbitingADiagnosticShowsItsOneRayPreview) {
+// of the live candle is drawn with one ray per k×k pixels, as the view's
+// preview is (the viewer measures the diagnostic's stage, not the view it
+// does not draw), and its solver, on the CPU, goes on in the background.
+TEST_F(ViewerWindow, OrbitingADiagnosticShowsItsStridedPreview) {
     const std::string scene = std::string(EIKON_SOURCE_DIR) +
                               "/scenes/candle_schlieren.json --set render.width=90 --set render.height=180 "
                               "--set grid.resolution=[24,60,24] --set sim.resolution=[20,50,20]";
     const fs::path log = dir_ / "viewer.txt";
     ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
-                      scene + " --frames 6 --animate orbit --preview-ms 0.1 --width 640 --height 480",
+                      scene + " --frames 12 --animate orbit --preview-ms 0.1 --width 640 --height 480",
                   log.string()),
               0);
     const PreviewCounts counts = previewCounts(log);
-    EXPECT_GE(counts.previews, 5);  // every orbiting frame after the first
+    EXPECT_GE(counts.previews, 11);  // every orbiting frame after the first
     EXPECT_EQ(counts.imageSpace, 0);
+    EXPECT_GT(counts.stride, 1);
+    EXPECT_GE(counts.advanced, 1) << "the simulation goes on while the camera moves";
+}
+
+// Back at the scene's camera and at rest, a diagnostic's preview refines to
+// the headless picture, pixel for pixel (a still, graded sphere seen
+// through the knife-edge schlieren system).
+TEST_F(ViewerWindow, ADiagnosticAtRestRefinesToTheHeadlessPicture) {
+    const fs::path scene = dir_ / "sphere_schlieren.json", frame = dir_ / "frame.png", headless = dir_ / "headless",
+                   log = dir_ / "viewer.txt";
+    std::FILE* file = std::fopen(scene.c_str(), "w");
+    ASSERT_NE(file, nullptr);
+    std::fputs(R"({
+  "grid": {"resolution": [24, 48, 24], "bounds": {"min": [-0.06, 0.0, -0.06], "max": [0.06, 0.24, 0.06]}},
+  "medium": {"index": 1.000273},
+  "objects": [{"type": "sphere", "center": [0.0, 0.12, 0.0], "radius": 0.03, "index": 1.0004, "surface": "smooth"}],
+  "lights": [{"type": "directional", "direction": [0.0, -1.0, 0.0], "irradiance": [1.0, 1.0, 1.0]}],
+  "camera": {"position": [0.0, 0.12, 0.5], "target": [0.0, 0.12, 0.0], "up": [0, 1, 0],
+             "projection": "orthographic", "width_m": 0.12},
+  "render": {"width": 90, "height": 180},
+  "diagnostic": {"type": "schlieren", "focal_length": 2.0, "source_height": 0.001,
+                 "cutoff": "knife_edge", "knife_angle_deg": 90}
+})",
+               file);
+    std::fclose(file);
+    ASSERT_EQ(run(std::string(EIKON_XVFB_RUN) + " -a -s '-screen 0 800x600x24' " + EIKON_VIEW_EXECUTABLE + " " +
+                      scene.string() + " --frames 6 --animate orbit-return --preview-ms 0.1 --width 640 --height 480" +
+                      " --screenshot " + frame.string(),
+                  log.string()),
+              0);
+    const PreviewCounts counts = previewCounts(log);
+    EXPECT_GE(counts.previews, 5);  // every orbiting frame after the first, and the return
+    EXPECT_GT(counts.stride, 1);
+    ASSERT_EQ(run(std::string(EIKON_EXECUTABLE) + " run " + scene.string() + " --quiet --out " + headless.string()), 0);
+    const auto viewed = eikon::io::readImage(frame);
+    const auto rendered = eikon::io::readImage(headless / "frames" / "frame_00000.png");
+    ASSERT_EQ(viewed.width, rendered.width);
+    ASSERT_EQ(viewed.height, rendered.height);
+    EXPECT_EQ(viewed.rgba, rendered.rgba);
+    EXPECT_GT(luminanceSpread(rendered, 0, 0, rendered.width, rendered.height), 5.0) << "the sphere shows";
 }
 
 // While the camera moves (every moving frame a preview, as above), a

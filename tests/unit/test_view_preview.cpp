@@ -35,6 +35,23 @@ TEST(ViewPreview, StrideKeepsTheViewPassToItsTarget) {
     EXPECT_EQ(preview.strideFor(true, 1.1), 5);
 }
 
+// A full image of k² rays a pixel costs k² one-ray images; a preview traces
+// one ray a block: the stride is set by the cost of one ray.
+TEST(ViewPreview, StrideIsSetByTheCostOfOneRay) {
+    ViewPreview preview(settings());
+    preview.measured(1, 400.0, 4);  // 4 rays a pixel in 400 ms: one ray a pixel 100 ms
+    // k² ≥ 2.5: a 2×2 stride, 25 ms (not the 4×4 that 400 ms of one ray a pixel would want).
+    EXPECT_EQ(preview.strideFor(true, 1.0), 2);
+    preview.measured(2, 25.0);
+    EXPECT_EQ(preview.strideFor(true, 1.05), 2);
+
+    ViewPreview cheapRays(settings());
+    cheapRays.measured(1, 80.0, 4);  // twice the target, though one ray a pixel (20 ms) is within it
+    EXPECT_EQ(cheapRays.strideFor(true, 1.0), 2) << "a preview is one ray a block, at least 2×2";
+    cheapRays.measured(1, 36.0, 4);  // the full image within the target: no preview
+    EXPECT_EQ(cheapRays.strideFor(true, 1.1), 1);
+}
+
 TEST(ViewPreview, ImageSpacePreviewShrinksToKeepItsViewPassToTheTarget) {
     ViewPreview preview(settings());
     EXPECT_EQ(preview.imageSpaceScale(), 1) << "full size until measured";
