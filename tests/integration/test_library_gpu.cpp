@@ -249,28 +249,30 @@ eikon::Renderer smokeRenderer() {
     return eikon::Renderer::fromJson(scene, folder.string());
 }
 
-// In a scene with a volume, two renders of the same host arrays may differ
-// in a radiance value's last bits (one of 3840 by 1.9e-9, 6e-8 of the
-// largest, on llvmpipe): the radiance is compared to 1e-6 of its largest,
-// the image's bytes, the receiver maps and the photon figures exactly.
-constexpr double kVolumeRadianceTolerance = 1e-6;
+// Two renders of the same host arrays of a smoke, or of a grey scattering,
+// may differ in a radiance value's last bits (one or two of 3840 by
+// 1.9e-9, 6e-8 of the largest, in about half the runs on llvmpipe): there
+// the radiance is compared to 1e-6 of its largest, the image's bytes, the
+// receiver maps and the photon figures exactly.
+constexpr double kScatteringRadianceTolerance = 1e-6;
 
 TEST(LibraryGpu, ADensityBufferIsMappedOnTheGpuAsOnTheHost) {
     // Below 0 at the grid's edges: clamped to 0 on both paths.
-    expectSameFramesFromBuffers(smokeRenderer, {{"density", 1, bumpOf(-0.05f, 2.0f)}}, kVolumeRadianceTolerance);
+    expectSameFramesFromBuffers(smokeRenderer, {{"density", 1, bumpOf(-0.05f, 2.0f)}}, kScatteringRadianceTolerance);
     // With the extinction and scattering it adds to (grey and RGB), and the index beside.
     expectSameFramesFromBuffers(smokeRenderer,
                                 {{"density", 1, bumpOf(0.0f, 1.0f)},
                                  {"extinction", 3, bumpOf(0.2f, 1.0f, 3)},
                                  {"scattering", 1, bumpOf(0.1f, 0.5f)},
                                  {"delta_index", 1, bumpOf(0.0f, 0.01f)}},
-                                kVolumeRadianceTolerance);
+                                kScatteringRadianceTolerance);
 }
 
 TEST(LibraryGpu, GreyExtinctionAndScatteringBuffersRenderAsTheSameHostArrays) {
     expectSameFramesFromBuffers(kScene, {{"extinction", 1, bumpOf(0.0f, 4.0f)}});
-    expectSameFramesFromBuffers(kScene, {{"extinction", 1, bumpOf(0.1f, 4.0f)},
-                                         {"scattering", 1, bumpOf(0.05f, 2.0f)}});
+    expectSameFramesFromBuffers([] { return eikon::Renderer::fromJson(kScene); },
+                                {{"extinction", 1, bumpOf(0.1f, 4.0f)}, {"scattering", 1, bumpOf(0.05f, 2.0f)}},
+                                kScatteringRadianceTolerance);
 }
 
 void expectRefused(eikon::Renderer& renderer, const std::vector<eikon::Field>& fields,
@@ -383,6 +385,8 @@ TEST(LibraryGpu, ValuesAndSplitsTheHostPathRefusesAreRefused) {
     expectRefused(smoky, smokyField("density", rho), {"\"density\"", "finite values", "NaN", "(5, 6, 7)"});
     rho[5 + 32 * (6 + 32 * 7)] = -std::numeric_limits<float>::infinity();
     expectRefused(smoky, smokyField("density", rho), {"\"density\"", "an infinity", "(5, 6, 7)"});
+    rho[5 + 32 * (6 + 32 * 7)] = 1e38f;  // κ = 8·1e38 /m, past float32
+    expectRefused(smoky, smokyField("density", rho), {"\"density\"", "a finite extinction", "(5, 6, 7)"});
     std::vector<float> greyKappa(kCount, 1.0f), greySigma(kCount, 0.5f);
     greyKappa[2 + 32 * 3] = -2.0f;
     expectRefused(smoky, smokyField("extinction", greyKappa), {"\"extinction\"", ">= 0", "-2 /m", "(2, 3, 0)"});

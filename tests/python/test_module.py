@@ -252,7 +252,7 @@ class GpuPath(unittest.TestCase):
     def test_a_density_buffer_is_mapped_on_the_gpu_as_the_array(self):
         # A smoke whose density absorbs and scatters (volume.density_*); a
         # volume names its file, whose zero temperature the fields replace.
-        # Two renders of a volume's arrays may differ in a radiance value's
+        # Two renders of the smoke's arrays may differ in a radiance value's
         # last bits (6e-8 of the largest): compared to 1e-6 of it.
         with tempfile.TemporaryDirectory() as folder:
             write_legacy_vtk(os.path.join(folder, "smoke.vtk"), "T", np.zeros((32, 32, 32), np.float32))
