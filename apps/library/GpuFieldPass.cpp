@@ -260,7 +260,6 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
     if (extinction) negative(extinction, kExtinctionNegative, "an extinction >= 0 in each channel");
     if (scattering) negative(scattering, kScatteringNegative, "a scattering >= 0 in each channel");
     // κ and σs mapped: past float32, or σs above κ, by their values in the pass's buffers.
-    const auto mappedValues = [&](GLuint buffer, std::uint32_t cell) { return valuesAt(buffer, cell, 3); };
     const BufferField* named = density ? density : extinction ? extinction : scattering;
     if (variant.writesExtinction && found[kMappedExtinctionNotFinite] != kNone)
         refuse(named->name, "a finite extinction (density_extinction·ρ + the extinction, in float32)",
@@ -270,10 +269,10 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
                "a scattering past float32" + at(found[kMappedScatteringNotFinite]));
     if ((scattering || variant.writesScattering) && found[kScatteringAboveExtinction] != kNone) {
         const std::uint32_t cell = found[kScatteringAboveExtinction];
-        const std::vector<float> sigma = variant.writesScattering ? mappedValues(mappedScattering, cell)
-                                                                  : valuesAt(scattering->buffer, cell, 3);
-        const std::vector<float> kappa = variant.writesExtinction ? mappedValues(mappedExtinction, cell)
-                                                                  : valuesAt(extinction->buffer, cell, 3);
+        const std::vector<float> sigma =
+            valuesAt(variant.writesScattering ? mappedScattering : scattering->buffer, cell, 3);
+        const std::vector<float> kappa =
+            valuesAt(variant.writesExtinction ? mappedExtinction : extinction->buffer, cell, 3);
         refuse(scattering ? "scattering" : named->name, "scattering <= extinction in each channel",
                "σs (" + formatRounded(sigma[0]) + ", " + formatRounded(sigma[1]) + ", " + formatRounded(sigma[2]) +
                    ") /m above κ (" + formatRounded(kappa[0]) + ", " + formatRounded(kappa[1]) + ", " +
