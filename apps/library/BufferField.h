@@ -13,10 +13,11 @@ struct BufferField {
 };
 
 // The fields the GPU path takes (apps/library/GpuFieldPass.h): those of the
-// index, mapped to δn on the GPU, and the RGB coefficients, checked there.
-// The others (density, flame, anisotropy, emission) are mapped with the
-// scene's medium on the host.
+// index, mapped to δn on the GPU, and those of κ and σs (a density, grey or
+// RGB extinction and scattering), mapped or checked there. The others
+// (flame, anisotropy, emission) are mapped with the scene's medium on the
+// host.
 inline constexpr const char* kIndexBufferFields[] = {"delta_index", "index", "temperature"};
-inline constexpr const char* kCoefficientBufferFields[] = {"extinction", "scattering"};
+inline constexpr const char* kCoefficientBufferFields[] = {"density", "extinction", "scattering"};
 
 }  // namespace eikon::library

@@ -95,32 +95,31 @@ bool isOneOf(const std::string& name, const char* const (&names)[N]) {
 std::string bufferFieldNames() {
     std::string names;
     for (const char* name : kIndexBufferFields) names += std::string(names.empty() ? "" : ", ") + name;
-    for (const char* name : kCoefficientBufferFields) names += std::string(", ") + name + " (RGB)";
+    for (const char* name : kCoefficientBufferFields) names += std::string(", ") + name;
     return names;
 }
 
 // Fields mapped together are taken on one side: the index's inputs
 // (temperature, index, δn; a flame heats the gas) all in GL buffers or all
-// in host memory, and extinction and scattering in GL buffers only without
-// a density or flame (which add to them on the host), scattering with
-// extinction (σs ≤ κ is checked where both lie) and without an anisotropy
-// (g is weighted by σs).
+// in host memory, and likewise κ's and σs's (density, extinction,
+// scattering; a flame adds soot on the host), scattering beside extinction
+// or a density (σs ≤ κ is checked where both lie) and without an
+// anisotropy (g is weighted by σs).
 void refuseSplitMappings(const std::vector<Field>& fields) {
     const Field* indexBuffer = nullptr;
     const Field* indexHost = nullptr;
     const Field* coefficientBuffer = nullptr;
-    const Field* addsToCoefficients = nullptr;  // a density or a flame
+    const Field* coefficientHost = nullptr;
     const Field* flame = nullptr;
     const Field* scattering = nullptr;
     const Field* anisotropy = nullptr;
     bool extinctionBuffer = false;
     for (const Field& field : fields) {
         if (isOneOf(field.name, kIndexBufferFields)) (field.buffer ? indexBuffer : indexHost) = &field;
-        if (field.buffer && isOneOf(field.name, kCoefficientBufferFields)) coefficientBuffer = &field;
-        if (field.buffer && field.name == "extinction") extinctionBuffer = true;
+        if (isOneOf(field.name, kCoefficientBufferFields)) (field.buffer ? coefficientBuffer : coefficientHost) = &field;
+        if (field.buffer && (field.name == "extinction" || field.name == "density")) extinctionBuffer = true;
         if (field.name == "scattering") scattering = &field;
         if (field.name == "anisotropy") anisotropy = &field;
-        if (field.name == "density" || field.name == "flame") addsToCoefficients = &field;
         if (field.name == "flame") flame = &field;
     }
     if (indexBuffer && indexHost)
@@ -130,20 +129,22 @@ void refuseSplitMappings(const std::vector<Field>& fields) {
     if (indexBuffer && flame)
         refuse(indexBuffer->name, "values in host memory beside a flame (which heats the gas, on the host)",
                "GL buffer " + std::to_string(indexBuffer->buffer));
-    if (coefficientBuffer && addsToCoefficients)
+    if (coefficientBuffer && coefficientHost)
+        refuse(coefficientHost->name,
+               "a GL buffer as \"" + coefficientBuffer->name +
+                   "\" is (density, extinction and scattering are mapped together, on one side)",
+               "values in host memory");
+    if (coefficientBuffer && flame)
         refuse(coefficientBuffer->name,
-               "values in host memory beside \"" + addsToCoefficients->name +
-                   "\" (which adds to extinction and scattering on the host)",
+               "values in host memory beside \"flame\" (which adds to extinction on the host)",
                "GL buffer " + std::to_string(coefficientBuffer->buffer));
     if (scattering && scattering->buffer && !extinctionBuffer)
-        refuse("scattering", "an extinction GL buffer beside a scattering one (σs ≤ κ is checked where both lie)",
+        refuse("scattering",
+               "an extinction or density GL buffer beside a scattering one (σs ≤ κ is checked where both lie)",
                "none");
-    if (scattering && scattering->buffer && anisotropy)
-        refuse("scattering", "values in host memory beside an anisotropy (g is σs-weighted on the host)",
-               "GL buffer " + std::to_string(scattering->buffer));
-    if (scattering && !scattering->buffer && extinctionBuffer)
-        refuse("scattering", "a GL buffer beside an extinction GL buffer (σs ≤ κ is checked where both lie)",
-               "values in host memory");
+    if (coefficientBuffer && anisotropy)
+        refuse(coefficientBuffer->name, "values in host memory beside an anisotropy (g is σs-weighted on the host)",
+               "GL buffer " + std::to_string(coefficientBuffer->buffer));
 }
 
 // A temperature's unit, as volume.fields.temperature_unit names it.
@@ -171,9 +172,6 @@ FieldIntake takeFields(const std::vector<Field>& fields, const GridSpec& grid) {
             refuse(field.name, "values in host memory (a GL buffer is taken for " + bufferFieldNames() +
                                    "; the others are mapped with the scene's medium on the host)",
                    "GL buffer " + std::to_string(field.buffer));
-        if (field.buffer && slot->rgb && field.channels != 3)
-            refuse(field.name, "3 channels (RGB) in a GL buffer (a grey field is spread over three on the host)",
-                   std::to_string(field.channels));
         if (field.buffer && field.values)
             refuse(field.name, "values or a GL buffer, not both", "both");
         if (!field.values && !field.buffer) refuse(field.name, "values", "a null pointer");

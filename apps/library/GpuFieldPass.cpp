@@ -31,10 +31,15 @@ enum CallerCheck : std::size_t {
     kScatteringAboveExtinction,
     kSmallestTemperature,
     kSmallTemperature,
+    kDensityNotFinite,
+    kMappedExtinctionNotFinite,
+    kMappedScatteringNotFinite,
     kCheckCount
 };
 constexpr std::uint32_t kNone = 0xffffffffu;
 constexpr double kZeroCelsius = 273.15;  // K
+
+bool positive(const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; }
 
 [[noreturn]] void refuse(const std::string& field, const std::string& expected, const std::string& found) {
     throw Error("eikon::Renderer::setFields: field \"" + field + "\": expected " + expected + ", found " + found);
@@ -76,18 +81,20 @@ GpuFieldPass::GpuFieldPass(const Scene& scene, double referenceIndex)
       referenceIndex_(referenceIndex),
       checks_(kCheckCount * sizeof(std::uint32_t), {"the library's GPU path", "its checks"}) {}
 
-const gl::Program& GpuFieldPass::program(bool temperature, int base, bool extinction, bool scattering) {
-    const auto key = std::tuple{temperature, base, extinction, scattering};
-    auto it = programs_.find(key);
+const gl::Program& GpuFieldPass::program(const Variant& variant) {
+    auto it = programs_.find(variant);
     if (it != programs_.end()) return it->second;
-    const bool index = temperature || base != 0;
+    const auto flag = [](bool on) { return std::string(on ? "1" : "0"); };
     gl::Program made = gl::compileComputeProgram(
-        "caller_fields.comp", {{"EIKON_INDEX", index ? "1" : "0"},
-                               {"EIKON_TEMPERATURE", temperature ? "1" : "0"},
-                               {"EIKON_BASE", std::to_string(base)},
-                               {"EIKON_EXTINCTION", extinction ? "1" : "0"},
-                               {"EIKON_SCATTERING", scattering ? "1" : "0"}});
-    return programs_.emplace(key, std::move(made)).first->second;
+        "caller_fields.comp", {{"EIKON_INDEX", flag(variant.temperature || variant.base != 0)},
+                               {"EIKON_TEMPERATURE", flag(variant.temperature)},
+                               {"EIKON_BASE", std::to_string(variant.base)},
+                               {"EIKON_EXTINCTION", std::to_string(variant.extinctionChannels)},
+                               {"EIKON_SCATTERING", std::to_string(variant.scatteringChannels)},
+                               {"EIKON_DENSITY", flag(variant.density)},
+                               {"EIKON_WRITES_EXTINCTION", flag(variant.writesExtinction)},
+                               {"EIKON_WRITES_SCATTERING", flag(variant.writesScattering)}});
+    return programs_.emplace(variant, std::move(made)).first->second;
 }
 
 // What the GPU path leaves to the host: objects and paint composited over
@@ -98,20 +105,24 @@ void GpuFieldPass::checkScene(const std::vector<BufferField>& buffers, const Vol
         refuse(first.name, "values in host memory in a scene with objects or paint (composited over the fields on "
                            "the host)",
                "GL buffer " + std::to_string(first.buffer));
-    const BufferField* coefficients = find(buffers, "extinction");
+    const BufferField* density = find(buffers, "density");
+    const BufferField* extinction = find(buffers, "extinction");
+    const BufferField* scattering = find(buffers, "scattering");
+    const BufferField* coefficients = density ? density : extinction ? extinction : scattering;
     if (!coefficients) return;
-    const auto positive = [](const Rgb& rgb) { return rgb.r > 0.0 || rgb.g > 0.0 || rgb.b > 0.0; };
     const std::string inBuffer = "GL buffer " + std::to_string(coefficients->buffer);
     if (positive(scene_.medium.extinction) || positive(scene_.medium.scattering))
-        refuse("extinction", "values in host memory in a scene whose medium absorbs or scatters (added on the host)",
-               inBuffer);
+        refuse(coefficients->name,
+               "values in host memory in a scene whose medium absorbs or scatters (added on the host)", inBuffer);
     if (optics.emission == VolumeDesc::Emission::Blackbody)
-        refuse("extinction", "values in host memory with volume.emission \"blackbody\" (a cell emits as it absorbs, "
-                             "on the host)",
+        refuse(coefficients->name,
+               "values in host memory with volume.emission \"blackbody\" (a cell emits as it absorbs, on the host)",
                inBuffer);
-    if (find(buffers, "scattering") && (scene_.medium.anisotropy != 0.0 || optics.anisotropy != 0.0))
-        refuse("scattering", "values in host memory with an anisotropy g ≠ 0 (σs-weighted on the host)",
-               "GL buffer " + std::to_string(find(buffers, "scattering")->buffer));
+    const bool scatters = scattering || (density && positive(optics.densityScattering));
+    if (scatters && (scene_.medium.anisotropy != 0.0 || optics.anisotropy != 0.0))
+        refuse(scattering ? "scattering" : "density",
+               "values in host memory with an anisotropy g ≠ 0 (σs-weighted on the host)",
+               "GL buffer " + std::to_string((scattering ? scattering : density)->buffer));
 }
 
 GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, const VolumeDesc& optics) {
@@ -125,9 +136,25 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
     const BufferField* base = index ? index : deltaIndex;
     const BufferField* extinction = find(buffers, "extinction");
     const BufferField* scattering = find(buffers, "scattering");
+    const BufferField* density = find(buffers, "density");
     const bool mapsIndex = temperature || base;
+    // κ and σs as the host path has them (writeVolumeOptics, the medium's
+    // none): mapped into the pass's buffers beside a density or from a grey
+    // field, read where they lie when RGB alone.
+    const bool absorbs = extinction || scattering || (density && positive(optics.densityExtinction));
+    const bool scatters = scattering || (density && positive(optics.densityScattering));
+    const bool mapsCoefficients =
+        absorbs && (density || (extinction && extinction->channels == 1) || (scattering && scattering->channels == 1));
 
-    const gl::Program& pass = program(temperature, index ? 1 : deltaIndex ? 2 : 0, extinction, scattering);
+    Variant variant;
+    variant.temperature = temperature != nullptr;
+    variant.base = index ? 1 : deltaIndex ? 2 : 0;
+    variant.extinctionChannels = extinction ? extinction->channels : 0;
+    variant.scatteringChannels = scattering ? scattering->channels : 0;
+    variant.density = density != nullptr;
+    variant.writesExtinction = mapsCoefficients;
+    variant.writesScattering = mapsCoefficients && scatters;
+    const gl::Program& pass = program(variant);
     const GLuint id = pass.id();
     const glm::ivec3 r = grid.resolution;
     glProgramUniform3i(id, pass.uniform("cells"), r.x, r.y, r.z);
@@ -157,8 +184,26 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
             target = gl::Buffer(cells * sizeof(float), gl::gridResource("the caller's δn", r.x, r.y, r.z));
         target.bindStorage(layout::kOpticsDeltaIndex);
     }
-    if (extinction) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layout::kOpticsExtinction, extinction->buffer);
-    if (scattering) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layout::kOpticsScattering, scattering->buffer);
+    if (extinction) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layout::kSolverSource, extinction->buffer);
+    if (scattering) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layout::kSolverField, scattering->buffer);
+    if (density) {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, layout::kOpticsDye, density->buffer);
+        const VolumeRgb& e = optics.densityExtinction;
+        const VolumeRgb& s = optics.densityScattering;
+        glProgramUniform3d(id, pass.uniform("density_extinction"), e.r, e.g, e.b);
+        glProgramUniform3d(id, pass.uniform("density_scattering"), s.r, s.g, s.b);
+    }
+    const auto mapped = [&](gl::Buffer* pair, const char* what, GLuint binding) {
+        gl::Buffer& buffer = pair[next_];
+        if (buffer.bytes() != 3 * cells * sizeof(float))
+            buffer = gl::Buffer(3 * cells * sizeof(float), gl::gridResource(what, r.x, r.y, r.z));
+        buffer.bindStorage(binding);
+        return buffer.id();
+    };
+    const GLuint mappedExtinction =
+        variant.writesExtinction ? mapped(extinction_, "the caller's κ", layout::kOpticsExtinction) : 0;
+    const GLuint mappedScattering =
+        variant.writesScattering ? mapped(scattering_, "the caller's σs", layout::kOpticsScattering) : 0;
     std::array<std::uint32_t, kCheckCount> found{};
     found.fill(kNone);
     found[kSmallTemperature] = 0;
@@ -175,7 +220,7 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
         const int i = static_cast<int>(cell % nx), j = static_cast<int>(cell / nx % ny),
                   k = static_cast<int>(cell / (nx * ny));
         return " at cell (i, j, k) = (" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) +
-               "), " + formatPosition(grid.cellCentre(i, j, k)) + " m";
+               "), " + formatPosition(grid.cellCentre(i, j, k));
     };
     const auto notFinite = [&](const BufferField* field, std::size_t check) {
         if (found[check] == kNone) return;
@@ -188,6 +233,7 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
     if (base) notFinite(base, kIndexNotFinite);
     if (extinction) notFinite(extinction, kExtinctionNotFinite);
     if (scattering) notFinite(scattering, kScatteringNotFinite);
+    if (density) notFinite(density, kDensityNotFinite);
     if (found[kTemperatureNotPositive] != kNone) {
         const std::uint32_t cell = found[kTemperatureNotPositive];
         const std::vector<float> sample = valuesAt(temperature->buffer, cell, 1);
@@ -208,15 +254,26 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
     }
     const auto negative = [&](const BufferField* field, std::size_t check, const char* expected) {
         if (found[check] == kNone) return;
-        const std::vector<float> v = valuesAt(field->buffer, found[check], 3);
+        const std::vector<float> v = valuesAt(field->buffer, found[check], field->channels);
         refuse(field->name, expected, formatRounded(*std::min_element(v.begin(), v.end())) + " /m" + at(found[check]));
     };
     if (extinction) negative(extinction, kExtinctionNegative, "an extinction >= 0 in each channel");
     if (scattering) negative(scattering, kScatteringNegative, "a scattering >= 0 in each channel");
-    if (scattering && found[kScatteringAboveExtinction] != kNone) {
+    // κ and σs mapped: past float32, or σs above κ, by their values in the pass's buffers.
+    const BufferField* named = density ? density : extinction ? extinction : scattering;
+    if (variant.writesExtinction && found[kMappedExtinctionNotFinite] != kNone)
+        refuse(named->name, "a finite extinction (density_extinction·ρ + the extinction, in float32)",
+               "an extinction past float32" + at(found[kMappedExtinctionNotFinite]));
+    if (variant.writesExtinction && found[kMappedScatteringNotFinite] != kNone)
+        refuse(named->name, "a finite scattering (density_scattering·ρ + the scattering, in float32)",
+               "a scattering past float32" + at(found[kMappedScatteringNotFinite]));
+    if ((scattering || variant.writesScattering) && found[kScatteringAboveExtinction] != kNone) {
         const std::uint32_t cell = found[kScatteringAboveExtinction];
-        const std::vector<float> sigma = valuesAt(scattering->buffer, cell, 3), kappa = valuesAt(extinction->buffer, cell, 3);
-        refuse("scattering", "scattering <= extinction in each channel",
+        const std::vector<float> sigma =
+            valuesAt(variant.writesScattering ? mappedScattering : scattering->buffer, cell, 3);
+        const std::vector<float> kappa =
+            valuesAt(variant.writesExtinction ? mappedExtinction : extinction->buffer, cell, 3);
+        refuse(scattering ? "scattering" : named->name, "scattering <= extinction in each channel",
                "σs (" + formatRounded(sigma[0]) + ", " + formatRounded(sigma[1]) + ", " + formatRounded(sigma[2]) +
                    ") /m above κ (" + formatRounded(kappa[0]) + ", " + formatRounded(kappa[1]) + ", " +
                    formatRounded(kappa[2]) + ") /m" + at(cell));
@@ -224,15 +281,13 @@ GpuFieldPass::Taken GpuFieldPass::take(const std::vector<BufferField>& buffers, 
 
     Taken taken;
     if (mapsIndex) taken.deltaIndex = target.id();
-    taken.extinction = extinction ? extinction->buffer : 0;
-    taken.scattering = scattering ? scattering->buffer : 0;
+    taken.extinction = variant.writesExtinction ? mappedExtinction : extinction ? extinction->buffer : 0;
+    taken.scattering = variant.writesScattering ? mappedScattering : scattering ? scattering->buffer : 0;
     if (temperature && found[kSmallTemperature] == 0 && found[kSmallestTemperature] != kNone)
         taken.absoluteLookingTemperature = std::bit_cast<float>(found[kSmallestTemperature]);
     return taken;
 }
 
-void GpuFieldPass::keep(const Taken& taken) {
-    if (taken.deltaIndex) next_ = 1 - next_;
-}
+void GpuFieldPass::keep() { next_ = 1 - next_; }
 
 }  // namespace eikon::library

@@ -173,7 +173,7 @@ void Renderer::setFields(const std::vector<Field>& fields) {
     impl.fieldsRendered = true;
     impl.copiedBytes = intake.copiedBytes;
     impl.given = intake.names;
-    if (impl.gpuPass) impl.gpuPass->keep(onGpu);
+    if (impl.gpuPass) impl.gpuPass->keep();
     impl.onGpu = onGpu;
     if (!intake.buffers.empty()) ++impl.bufferVersion;
     impl.takeMs = app::millisecondsSince(start);

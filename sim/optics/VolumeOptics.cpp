@@ -14,6 +14,7 @@
 namespace eikon::shader {
 namespace {
 #include "shaders/common/gas_index.glsl"
+#include "shaders/common/volume_coefficient.glsl"
 }  // namespace
 }  // namespace eikon::shader
 // The shared file numbers the units in VolumeDesc::TemperatureUnit's order.
@@ -202,7 +203,7 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
                    "n_air(ambient_temperature) by Gladstone–Dale, here at T = " + formatRounded(t) + " K)",
                    fields.referenceIndex + delta);
         deltaIndex[c] = static_cast<float>(delta);
-        const double rho = dense ? std::max(0.0, static_cast<double>(samples.density[c])) : 0.0;
+        const double rho = dense ? static_cast<double>(samples.density[c]) : 0.0;
         const double flameKappa = soot ? volume.flameAbsorption * std::max(0.0, static_cast<double>(samples.flame[c])) : 0.0;
         const glm::dvec3 radiance = blackbody ? volume.emissionScale * planckTable().rgb(t) : glm::dvec3(0.0);
         double sigmaSum = 0.0, volumeSigmaSum = 0.0;
@@ -216,8 +217,9 @@ void writeVolumeOptics(const VolumeDesc& volume, const Material& medium, const V
             if (sigmaGrid < 0.0)
                 refuse(c, "volume.grids.scattering", "grid \"" + volume.scatteringGrid + "\"",
                        "a scattering >= 0 in the scattering grid", sigmaGrid, " /m");
-            const double kappa = medium.extinction[ch] + volume.densityExtinction[ch] * rho + kappaGrid + flameKappa;
-            const double volumeSigma = volume.densityScattering[ch] * rho + sigmaGrid;
+            const double kappa = shader::volume_coefficient(medium.extinction[ch], volume.densityExtinction[ch], rho,
+                                                            kappaGrid, flameKappa);
+            const double volumeSigma = shader::volume_coefficient(0.0, volume.densityScattering[ch], rho, sigmaGrid, 0.0);
             if (absorbs && !finiteFloat(kappa))
                 refuse(c, extinctionKeys, "the extinction κ",
                        "a finite extinction (medium.extinction + density_extinction·ρ + the extinction grid + "
