@@ -25,6 +25,8 @@
 #include <utility>
 #include <vector>
 
+#include <unistd.h>  // getpid
+
 namespace {
 
 constexpr int kCells = 32;
@@ -218,19 +220,31 @@ TEST(LibraryGpu, ATemperatureBufferIsMappedOnTheGpuAsOnTheHostInEachUnit) {
                                 {{"temperature", 1, bumpOf(0.0f, 300.0f)}, {"delta_index", 1, bumpOf(0.0f, 0.002f)}});
 }
 
+// Two renders of the same host arrays of a scattering medium (a smoke, grey
+// or RGB scattering) may differ in a radiance value's last bits (one or two
+// of 3840 by 1.9e-9, 6e-8 of the largest, in about half the runs on
+// llvmpipe): there the radiance is compared to 1e-6 of its largest, the
+// image's bytes, the receiver maps and the photon figures exactly.
+constexpr double kScatteringRadianceTolerance = 1e-6;
+
 TEST(LibraryGpu, ExtinctionAndScatteringBuffersRenderAsTheSameHostArrays) {
     expectSameFramesFromBuffers(kScene, {{"extinction", 3, bumpOf(0.0f, 4.0f, 3)}});
     expectSameFramesFromBuffers(kScene, {{"extinction", 3, bumpOf(0.1f, 4.0f, 3)},
                                          {"scattering", 3, bumpOf(0.05f, 2.0f, 3)},
-                                         {"delta_index", 1, bumpOf(0.0f, 0.01f)}});
+                                         {"delta_index", 1, bumpOf(0.0f, 0.01f)}},
+                                kScatteringRadianceTolerance);
 }
 
 // A renderer of kScene with a smoke whose density absorbs and scatters
 // (volume.density_*). A volume names its file: a legacy VTK image of a
 // temperature 0 K above ambient on the render cells, which the fields
-// handed replace.
+// handed replace. The folder is the test's and the process's own, so that
+// tests run in parallel never read each other's half-written file.
 eikon::Renderer smokeRenderer() {
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / "eikon_library_gpu_smoke";
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() /
+        ("eikon_library_gpu_smoke_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+         "_" + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     {
         std::ofstream file(folder / "smoke.vtk", std::ios::binary);
@@ -248,13 +262,6 @@ eikon::Renderer smokeRenderer() {
                                                               "temperature_unit": "kelvin_above_ambient"}})");
     return eikon::Renderer::fromJson(scene, folder.string());
 }
-
-// Two renders of the same host arrays of a smoke, or of a grey scattering,
-// may differ in a radiance value's last bits (one or two of 3840 by
-// 1.9e-9, 6e-8 of the largest, in about half the runs on llvmpipe): there
-// the radiance is compared to 1e-6 of its largest, the image's bytes, the
-// receiver maps and the photon figures exactly.
-constexpr double kScatteringRadianceTolerance = 1e-6;
 
 TEST(LibraryGpu, ADensityBufferIsMappedOnTheGpuAsOnTheHost) {
     // Below 0 at the grid's edges: clamped to 0 on both paths.
