@@ -5,6 +5,7 @@
 #include "apps/viewer/ControlPanel.h"
 #include "apps/common/ImagePresenter.h"
 #include "apps/eikon-view/SimulationPacer.h"
+#include "apps/viewer/StageTimes.h"
 #include "apps/viewer/ViewPreview.h"
 #include "apps/eikon-view/ViewerSession.h"
 #include "bridge/core/Error.h"
@@ -29,13 +30,6 @@ namespace eikon::view {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// The time of stage `name` in the frame, 0 where it did not run.
-double stageMilliseconds(const render::FrameResult& result, const char* name) {
-    for (const auto& stage : result.stages)
-        if (stage.name == name && stage.ran) return stage.milliseconds;
-    return 0.0;
-}
 
 std::filesystem::file_time_type modificationTime(const std::string& path) {
     std::error_code error;
@@ -109,8 +103,7 @@ public:
             // While the camera moves, a scene of surfaces shows its image-space
             // preview; others (and at rest, every scene) the eikonal frame.
             const bool imageSpacePreview = stride > 1 && session_->hasImageSpacePreview();
-            // The stage that draws the picture: the diagnostic's instrument, or the view.
-            const char* pictureStage = session_->scene().diagnostic ? "diagnostic" : "view";
+            const char* picture = pictureStage(session_->scene().diagnostic.has_value());
             if (imageSpacePreview) {
                 const int scale = preview_.imageSpaceScale();
                 last_ = session_->renderImageSpacePreview(advance, scale);
@@ -119,10 +112,10 @@ public:
             } else {
                 session_->renderer().setPixelStride(stride);
                 last_ = session_->renderFrame(advance, pipelined_);
-                preview_.measured(last_.pixelStride, stageMilliseconds(last_, pictureStage),
+                preview_.measured(last_.pixelStride, stageMilliseconds(last_, picture),
                                   last_.pixelStride > 1 ? 1 : last_.viewSamples);
             }
-            const double viewMs = stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : pictureStage);
+            const double viewMs = stageMilliseconds(last_, imageSpacePreview ? "image_space_view" : picture);
             const bool previewed = last_.pixelStride > 1 || imageSpacePreview;
             if (viewMs > 0.0 && previewed && scripted()) {
                 ++previewFrames_;

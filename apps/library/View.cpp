@@ -17,6 +17,7 @@
 #include "apps/library/RendererImpl.h"
 #include "apps/viewer/CameraControls.h"
 #include "apps/viewer/ControlPanel.h"
+#include "apps/viewer/StageTimes.h"
 #include "apps/viewer/ViewPreview.h"
 #include "bridge/scene/Orbit.h"
 #include "gl/GlContext.h"
@@ -41,13 +42,6 @@ namespace eikon {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// The time of stage `name` in the frame, 0 where it did not run.
-double stageMilliseconds(const render::FrameResult& result, const char* name) {
-    for (const auto& stage : result.stages)
-        if (stage.name == name && stage.ran) return stage.milliseconds;
-    return 0.0;
-}
 
 }  // namespace
 
@@ -175,8 +169,9 @@ struct View::Impl {
         if (again) {
             renderer.render();
             const render::FrameResult& frame = state.lastFrame();
-            if (!state.renderScene.diagnostic) preview.measured(frame.pixelStride, stageMilliseconds(frame, "view"));
-            else if (stride == 1) preview.measured(1, stageMilliseconds(frame, "diagnostic"));
+            preview.measured(frame.pixelStride,
+                             view::stageMilliseconds(frame, view::pictureStage(state.renderScene.diagnostic.has_value())),
+                             frame.pixelStride > 1 ? 1 : frame.viewSamples);
         }
         rerender = false;
         enter();
