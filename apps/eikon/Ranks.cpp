@@ -164,6 +164,10 @@ void Ranks::checkInputsTogether(const std::function<void()>& checks, const Agree
     int all[2] = {0, 0};
     check(MPI_Allreduce(mine, all, 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
     if (all[0] != 0) {
+        // The job ends together, its error reported once: mpirun may stop a
+        // rank still on its way out once another has exited, and that signal
+        // is not a second error.
+        io::exitOnSignalsWith(all[0], "");
         if (failure && first()) std::rethrow_exception(failure);
         if (failure && all[1] == 0) {  // met by this rank, not by rank 0: say which rank
             try {
