@@ -190,8 +190,9 @@ void expectSameFramesFromBuffers(const std::function<eikon::Renderer()>& makeRen
     glDeleteBuffers(static_cast<GLsizei>(buffers.size()), buffers.data());
 }
 
-void expectSameFramesFromBuffers(const std::string& scene, const std::vector<Input>& inputs) {
-    expectSameFramesFromBuffers([&] { return eikon::Renderer::fromJson(scene); }, inputs);
+void expectSameFramesFromBuffers(const std::string& scene, const std::vector<Input>& inputs,
+                                 double radianceTolerance = 0.0) {
+    expectSameFramesFromBuffers([&] { return eikon::Renderer::fromJson(scene); }, inputs, radianceTolerance);
 }
 
 // The bump as `base` + `scale`·bump, per frame a stronger one, in `channels`
