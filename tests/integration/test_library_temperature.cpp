@@ -4,6 +4,7 @@
 // an absolute temperature without a declared unit is refused with words
 // that say how to declare it.
 #include "eikon/eikon.h"
+#include "tests/integration/LibraryRefusals.h"
 #include "tests/unit/VdbTestFiles.h"
 
 #include <gtest/gtest.h>
@@ -122,17 +123,6 @@ fs::path LibraryTemperature::folder_;
 TEST_F(LibraryTemperature, KelvinRendersAsTheSameFileDeclaredKelvin) { expectAsTheFile("T", "kelvin", kelvinAt); }
 
 TEST_F(LibraryTemperature, CelsiusRendersAsTheSameFileDeclaredCelsius) { expectAsTheFile("Tc", "celsius", celsiusAt); }
-
-void expectRefused(eikon::Renderer& renderer, const std::vector<eikon::Field>& fields,
-                   const std::vector<std::string>& words) {
-    try {
-        renderer.setFields(fields);
-        FAIL() << "accepted";
-    } catch (const eikon::Error& error) {
-        for (const std::string& word : words)
-            EXPECT_NE(std::string(error.what()).find(word), std::string::npos) << error.what() << " lacks " << word;
-    }
-}
 
 TEST_F(LibraryTemperature, AnAbsoluteTemperatureWithoutAUnitIsRefusedAndSaysHowToDeclareIt) {
     eikon::Renderer renderer = eikon::Renderer::fromJson(sceneJson(), folder_.string());
