@@ -1,5 +1,7 @@
 #include "apps/eikon/BenchCommand.h"
 
+#include "apps/eikon/BenchKernels.h"
+
 #include "io/files/AtomicFile.h"
 #include "io/scene/SceneParser.h"
 #include "gl/GlContext.h"
@@ -141,6 +143,14 @@ int benchCommand(const BenchOptions& options) {
                 viewMs, postMs);
     summary["camera_only_view_ms"] = viewMs;
     summary["camera_only_post_ms"] = postMs;
+    std::vector<KernelFigure> kernels = measureKernels(scene, fields, options.repeats);
+    const bool storedEitherWay = scene.tracer.storeFluence || fields.hasScattering();
+    kernels.push_back(fluenceFigure(static_cast<std::uint64_t>(scene.grid.spec().cellCount()), storedEitherWay,
+                                    measurements[1].medianMs, measurements[0].medianMs));
+    std::printf("per kernel, median of %d frames with every field new (fluence: tracer+fluence - tracer):\n",
+                options.repeats);
+    printKernels(kernels);
+    summary["kernels"] = kernelsJson(kernels);
     if (!options.outFile.empty()) io::writeFileAtomically(options.outFile, summary.dump(2) + "\n");
     return 0;
 }
