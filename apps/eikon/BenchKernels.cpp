@@ -1,6 +1,7 @@
 #include "apps/eikon/BenchKernels.h"
 
 #include "render/graph/FrameRenderer.h"
+#include "render/stages/StageDevice.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -19,7 +20,8 @@ double median(std::vector<double> values) {
 std::vector<std::pair<std::string, std::uint64_t>> unitsOf(const std::string& stage, const Scene& scene,
                                                            const render::FrameResult& frame) {
     const auto cells = static_cast<std::uint64_t>(scene.grid.spec().cellCount());
-    const auto pixels = static_cast<std::uint64_t>(scene.render.width) * static_cast<std::uint64_t>(scene.render.height);
+    const auto pixels =
+        static_cast<std::uint64_t>(scene.render.width) * static_cast<std::uint64_t>(scene.render.height);
     const render::PhotonStats& photons = frame.photons;
     if (stage == "prepare" || stage == "step_structure" || stage == "reference_steps" ||
         stage == "multiple_scattering")
@@ -57,14 +59,15 @@ std::vector<KernelFigure> measureKernels(const Scene& scene, const FieldSet& fie
     std::vector<KernelFigure> figures;
     for (const render::StageReport& stage : last.stages)
         for (const auto& [unit, count] : unitsOf(stage.name, scene, last))
-            figures.push_back({stage.name, unit, count, median(times[stage.name]), stage.ran,
+            figures.push_back({stage.name, unit, render::stageDeviceName(stage.device), count,
+                               median(times[stage.name]), stage.ran,
                                stage.ran ? "" : "not run: " + stage.skippedBecause});
     return figures;
 }
 
 KernelFigure fluenceFigure(std::uint64_t cells, bool storedEitherWay, double withFluenceMs, double withoutFluenceMs) {
     const double difference = withFluenceMs - withoutFluenceMs;
-    KernelFigure figure{"fluence", "cell", cells, difference, true, ""};
+    KernelFigure figure{"fluence", "cell", "", cells, difference, true, ""};
     if (storedEitherWay) {
         figure.measured = false;
         figure.reason = "the scene stores fluence with or without tracer.store_fluence (it scatters, or sets it)";
@@ -79,15 +82,16 @@ KernelFigure fluenceFigure(std::uint64_t cells, bool storedEitherWay, double wit
 }
 
 void printKernels(const std::vector<KernelFigure>& figures) {
-    std::printf("%-20s %-11s %14s %12s %14s\n", "kernel", "unit", "count", "ms", "ns/unit");
+    std::printf("%-20s %-11s %-6s %14s %12s %14s\n", "kernel", "unit", "device", "count", "ms", "ns/unit");
     for (const KernelFigure& figure : figures) {
         if (figure.measured)
-            std::printf("%-20s %-11s %14llu %12.2f %14.2f\n", figure.kernel.c_str(), figure.unit.c_str(),
-                        static_cast<unsigned long long>(figure.count), figure.milliseconds,
+            std::printf("%-20s %-11s %-6s %14llu %12.2f %14.2f\n", figure.kernel.c_str(), figure.unit.c_str(),
+                        figure.device.c_str(), static_cast<unsigned long long>(figure.count), figure.milliseconds,
                         figure.nanosecondsPerUnit());
         else
-            std::printf("%-20s %-11s %14llu %12.2f   %s\n", figure.kernel.c_str(), figure.unit.c_str(),
-                        static_cast<unsigned long long>(figure.count), figure.milliseconds, figure.reason.c_str());
+            std::printf("%-20s %-11s %-6s %14llu %12.2f   %s\n", figure.kernel.c_str(), figure.unit.c_str(),
+                        figure.device.c_str(), static_cast<unsigned long long>(figure.count), figure.milliseconds,
+                        figure.reason.c_str());
     }
 }
 
@@ -96,6 +100,7 @@ nlohmann::json kernelsJson(const std::vector<KernelFigure>& figures) {
     for (const KernelFigure& figure : figures) {
         nlohmann::json row = {{"kernel", figure.kernel}, {"unit", figure.unit}, {"count", figure.count},
                               {"ms", figure.milliseconds}, {"measured", figure.measured}};
+        if (!figure.device.empty()) row["device"] = figure.device;
         if (figure.measured)
             row["ns_per_unit"] = figure.nanosecondsPerUnit();
         else

@@ -20,6 +20,7 @@ namespace eikon::app {
 struct KernelFigure {
     std::string kernel;       // the frame report's stage name
     std::string unit;         // photon, ray, patch, step, cell, camera ray, pixel, frame
+    std::string device;       // "gpu" (compute shaders) or "cpu" (native loops), as the report says
     std::uint64_t count = 0;  // units of work in one frame
     double milliseconds = 0.0;
     bool measured = true;  // false: the stage did not run, or its time was not resolved

@@ -41,9 +41,9 @@ protected:
     // frame; its JSON.
     nlohmann::json bench(const fs::path& scene) const {
         const fs::path out = dir_ / "bench.json";
-        const Outcome outcome = runEikon("bench " + scene.string() + " --resolution 16 --photons 4096 --repeats 1 --out " +
-                                             out.string(),
-                                         "LP_NUM_THREADS=2");
+        const std::string arguments =
+            "bench " + scene.string() + " --resolution 16 --photons 4096 --repeats 1 --out " + out.string();
+        const Outcome outcome = runEikon(arguments, "LP_NUM_THREADS=2");
         EXPECT_EQ(outcome.exitCode, 0) << outcome.output;
         EXPECT_NE(outcome.output.find("ns/unit"), std::string::npos) << outcome.output;
         std::ifstream file(out);
@@ -103,8 +103,12 @@ TEST_F(BenchCli, EachPhotonKernelHasTheRunsCountAndATimePerUnit) {
     EXPECT_EQ(prepare.at("count"), 16 * 16 * 16);
     EXPECT_FALSE(prepare.at("measured").get<bool>());
     for (const nlohmann::json& stage : run.at("stages")) {
-        if (stage.at("name") != "prepare") continue;
-        EXPECT_EQ(prepare.at("reason"), "not run: " + stage.at("reason").get<std::string>());
+        if (stage.at("name") == "prepare") {
+            EXPECT_EQ(prepare.at("reason"), "not run: " + stage.at("reason").get<std::string>());
+        }
+        if (stage.at("name") == "photons") {
+            EXPECT_EQ(row(bench, "photons", "photon").at("device"), stage.at("device"));
+        }
     }
 }
 
