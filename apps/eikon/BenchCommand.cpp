@@ -6,6 +6,7 @@
 #include "io/scene/SceneParser.h"
 #include "gl/GlContext.h"
 #include "render/graph/FrameRenderer.h"
+#include "render/stages/StageDevice.h"
 #include "sim/SceneFields.h"
 
 #include <nlohmann/json.hpp>
@@ -25,6 +26,7 @@ struct Measurement {
     std::string name;
     double medianMs = 0.0;
     render::PhotonStats stats;
+    std::string device;  // of the photon stage, as the frame report names it
 };
 
 // Median wall time of `repeats` relights after one full frame (compilation,
@@ -33,8 +35,9 @@ Measurement measure(const std::string& name, const Scene& scene, const FieldSet&
                     render::RendererOptions options, int repeats) {
     options.tracePhotons = true;
     render::FrameRenderer renderer(scene, fields, options);
-    renderer.render(fields);
-    Measurement measurement{name, 0.0, {}};
+    Measurement measurement{name, 0.0, {}, ""};
+    for (const render::StageReport& stage : renderer.render(fields).stages)
+        if (stage.name == "photons") measurement.device = render::stageDeviceName(stage.device);
     std::vector<double> times;
     for (int i = 0; i < repeats; ++i) times.push_back(renderer.relight(measurement.stats).milliseconds);
     std::sort(times.begin(), times.end());
@@ -146,7 +149,8 @@ int benchCommand(const BenchOptions& options) {
     std::vector<KernelFigure> kernels = measureKernels(scene, fields, options.repeats);
     const bool storedEitherWay = scene.tracer.storeFluence || fields.hasScattering();
     kernels.push_back(fluenceFigure(static_cast<std::uint64_t>(scene.grid.spec().cellCount()), storedEitherWay,
-                                    measurements[1].medianMs, measurements[0].medianMs));
+                                    {measurements[1].medianMs, measurements[1].device},
+                                    {measurements[0].medianMs, measurements[0].device}));
     std::printf("per kernel, median of %d frames with every field new (fluence: tracer+fluence - tracer):\n",
                 options.repeats);
     printKernels(kernels);

@@ -65,16 +65,22 @@ std::vector<KernelFigure> measureKernels(const Scene& scene, const FieldSet& fie
     return figures;
 }
 
-KernelFigure fluenceFigure(std::uint64_t cells, bool storedEitherWay, double withFluenceMs, double withoutFluenceMs) {
-    const double difference = withFluenceMs - withoutFluenceMs;
-    KernelFigure figure{"fluence", "cell", "", cells, difference, true, ""};
+KernelFigure fluenceFigure(std::uint64_t cells, bool storedEitherWay, const Relight& withFluence,
+                           const Relight& withoutFluence) {
+    const double difference = withFluence.milliseconds - withoutFluence.milliseconds;
+    KernelFigure figure{"fluence", "cell", withFluence.device, cells, difference, true, ""};
+    char text[200];
     if (storedEitherWay) {
         figure.measured = false;
         figure.reason = "the scene stores fluence with or without tracer.store_fluence (it scatters, or sets it)";
+    } else if (withFluence.device != withoutFluence.device) {
+        std::snprintf(text, sizeof text, "not measured: the photon pass ran on %s with fluence, on %s without it",
+                      withFluence.device.c_str(), withoutFluence.device.c_str());
+        figure.measured = false;
+        figure.reason = text;
     } else if (difference <= 0.0) {
-        char text[160];
         std::snprintf(text, sizeof text, "not resolved: the relight with fluence took %.2f ms, without it %.2f ms",
-                      withFluenceMs, withoutFluenceMs);
+                      withFluence.milliseconds, withoutFluence.milliseconds);
         figure.measured = false;
         figure.reason = text;
     }

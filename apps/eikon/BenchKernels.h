@@ -36,9 +36,15 @@ std::vector<KernelFigure> measureKernels(const Scene& scene, const FieldSet& fie
 // The fluence tallies and their smoothing: the photon pass with
 // tracer.store_fluence on less the pass without it (relight medians), per
 // grid cell. A difference of two timings: one no larger than zero is
-// reported as not resolved. Not measured where the scene stores fluence
-// either way.
-KernelFigure fluenceFigure(std::uint64_t cells, bool storedEitherWay, double withFluenceMs, double withoutFluenceMs);
+// reported as not resolved, and one between two devices (render.device
+// "auto" may run one natively and not the other) as not measured; nor where
+// the scene stores fluence either way.
+struct Relight {
+    double milliseconds = 0.0;
+    std::string device;  // of the photon stage
+};
+KernelFigure fluenceFigure(std::uint64_t cells, bool storedEitherWay, const Relight& withFluence,
+                           const Relight& withoutFluence);
 
 void printKernels(const std::vector<KernelFigure>& figures);
 nlohmann::json kernelsJson(const std::vector<KernelFigure>& figures);
