@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # eikon developer entry point. On a fresh Debian 12 machine:
-#   ./dev.sh run    install missing packages, build, render scenes/default.json into out/default/
+#   ./dev.sh run    install missing packages, build, fill the shader cache
+#                   (eikon warm-shaders), render scenes/default.json into out/default/
 #   ./dev.sh test   install missing packages, build, run every test with ctest;
 #                   then build the tests labelled "sanitize" (robustness and
 #                   stability suites) under AddressSanitizer + UBSan and run them
@@ -105,7 +106,10 @@ check_fuzzers() {
 case "${1:-}" in
     run)
         install_packages
-        build release eikon  # the command line alone: no tests before the first picture
+        # The command line alone, no tests before the first picture; then the
+        # default scene's shaders into the driver's cache (eikon warm-shaders,
+        # once per build of eikon), so that the run below starts warm.
+        build release eikon eikon_shader_cache
         shift
         ./build/release/eikon run scenes/default.json --out out/default --force "$@"
         echo "dev.sh: wrote out/default/frames/frame_00000.png" >&2

@@ -246,7 +246,8 @@ eikon_test(test_cli LABELS integration LIBS eikon_io eikon_vdb_test_files VTK::C
   tests/integration/test_cli_fluid.cpp
   tests/integration/test_cli_limits.cpp
   tests/integration/test_cli_output_folder.cpp
-  tests/integration/test_converge_cli.cpp)
+  tests/integration/test_converge_cli.cpp
+  tests/integration/test_bench_cli.cpp)
 vtk_module_autoinit(TARGETS test_cli MODULES VTK::CommonCore VTK::CommonDataModel VTK::IOXML)
 add_dependencies(test_cli eikon)
 # eikon converge's rungs: what each knob refines.

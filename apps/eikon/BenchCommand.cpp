@@ -1,9 +1,12 @@
 #include "apps/eikon/BenchCommand.h"
 
+#include "apps/eikon/BenchKernels.h"
+
 #include "io/files/AtomicFile.h"
 #include "io/scene/SceneParser.h"
 #include "gl/GlContext.h"
 #include "render/graph/FrameRenderer.h"
+#include "render/stages/StageDevice.h"
 #include "sim/SceneFields.h"
 
 #include <nlohmann/json.hpp>
@@ -23,6 +26,7 @@ struct Measurement {
     std::string name;
     double medianMs = 0.0;
     render::PhotonStats stats;
+    std::string device;  // of the photon stage, as the frame report names it
 };
 
 // Median wall time of `repeats` relights after one full frame (compilation,
@@ -31,8 +35,9 @@ Measurement measure(const std::string& name, const Scene& scene, const FieldSet&
                     render::RendererOptions options, int repeats) {
     options.tracePhotons = true;
     render::FrameRenderer renderer(scene, fields, options);
-    renderer.render(fields);
-    Measurement measurement{name, 0.0, {}};
+    Measurement measurement{name, 0.0, {}, ""};
+    for (const render::StageReport& stage : renderer.render(fields).stages)
+        if (stage.name == "photons") measurement.device = render::stageDeviceName(stage.device);
     std::vector<double> times;
     for (int i = 0; i < repeats; ++i) times.push_back(renderer.relight(measurement.stats).milliseconds);
     std::sort(times.begin(), times.end());
@@ -141,6 +146,15 @@ int benchCommand(const BenchOptions& options) {
                 viewMs, postMs);
     summary["camera_only_view_ms"] = viewMs;
     summary["camera_only_post_ms"] = postMs;
+    std::vector<KernelFigure> kernels = measureKernels(scene, fields, options.repeats);
+    const bool storedEitherWay = scene.tracer.storeFluence || fields.hasScattering();
+    kernels.push_back(fluenceFigure(static_cast<std::uint64_t>(scene.grid.spec().cellCount()), storedEitherWay,
+                                    {measurements[1].medianMs, measurements[1].device},
+                                    {measurements[0].medianMs, measurements[0].device}));
+    std::printf("per kernel, median of %d frames with every field new (fluence: tracer+fluence - tracer):\n",
+                options.repeats);
+    printKernels(kernels);
+    summary["kernels"] = kernelsJson(kernels);
     if (!options.outFile.empty()) io::writeFileAtomically(options.outFile, summary.dump(2) + "\n");
     return 0;
 }

@@ -1,7 +1,8 @@
 // `eikon bench`: photon-tracer throughput on a scene at a given size —
 // steps/s, voxel deposits/s, ms per relight, and a bare march kernel (no
 // deposits, attenuation or receivers) as the limit the tracer is held to —
-// and the view pass of camera-only frames.
+// the view pass of camera-only frames, and each stage's time per unit of
+// its work beside its count (BenchKernels.h).
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -10,6 +10,7 @@
 #include "apps/eikon/ParaViewCommand.h"
 #include "apps/eikon/Ranks.h"
 #include "apps/eikon/RunCommand.h"
+#include "apps/eikon/WarmShadersCommand.h"
 
 #include <CLI/CLI.hpp>
 
@@ -18,8 +19,9 @@
 
 namespace {
 
-// bench, accuracy and converge measure one process, and paraview writes one
-// file; under mpirun every rank would do the same thing at once.
+// bench, accuracy and converge measure one process, paraview writes one
+// file and warm-shaders fills one machine's cache; under mpirun every rank
+// would do the same thing at once.
 void requireOneProcess(eikon::app::Ranks& ranks, const char* command) {
     ranks.checkInputsTogether([&] {
         if (ranks.distributed())
@@ -45,6 +47,8 @@ int main(int argc, char** argv) {
     eikon::app::addConvergeCommand(app, convergeOptions);
     eikon::app::ParaViewOptions paraviewOptions;
     eikon::app::addParaViewCommand(app, paraviewOptions);
+    eikon::app::WarmShadersOptions warmShadersOptions;
+    eikon::app::addWarmShadersCommand(app, warmShadersOptions);
     return eikon::app::runReportingFailures("eikon", [&] {
         return ranks.runGuarded([&] {
             // Every rank parses its own command line (a launcher may give each
@@ -79,6 +83,10 @@ int main(int argc, char** argv) {
             if (app.got_subcommand("paraview")) {
                 requireOneProcess(ranks, "paraview");
                 return eikon::app::paraviewCommand(paraviewOptions);
+            }
+            if (app.got_subcommand("warm-shaders")) {
+                requireOneProcess(ranks, "warm-shaders");
+                return eikon::app::warmShadersCommand(warmShadersOptions);
             }
             return eikon::app::infoCommand();
         });
