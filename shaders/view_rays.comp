@@ -3,9 +3,11 @@
 // photons inside the field grid (leapfrog: one field sample per step, and
 // second order — Euler's one-voxel steps misplaced a totally reflected ray
 // by 6°), straight outside it. Inside media it steps
-// a fixed `step_length` (one voxel by default: no voxel is missed and
-// neighbouring pixels agree); through nodes of the step structure that are
-// uniform in index and empty of extinction it jumps to the node's face.
+// render.step_voxels voxels (one by default: no voxel is missed and
+// neighbouring pixels agree) — on voxels that are boxes, that many along
+// each axis, the ray's bend included (common/step_size.glsl); through nodes
+// of the step structure that are uniform in index and empty of extinction
+// it jumps to the node's face.
 // Along the way it gathers in-scattered light σs·φ·p(θ) — Henyey–Greenstein
 // against the stored mean photon direction — under the Beer–Lambert
 // transmittance, and at interfaces the environment reflected about ∇n/|∇n|
@@ -126,7 +128,9 @@ layout(std430, binding = kHdrImage) buffer HdrImage { vec4 hdr_radiance[]; };
 layout(std430, binding = kViewExit) writeonly buffer ViewExit { vec4 view_exit[]; };  // xyz direction; w: 1 escaped, 2 receiver, 0 cut
 #endif
 
-uniform float step_length;
+uniform float step_length;   // m: step_voxels × the smallest voxel edge, the shortest step
+uniform float longest_step;  // m: step_voxels × the largest voxel edge
+uniform vec3 step_reach;     // m: step_voxels × the voxel's edge along each axis
 uniform uint max_steps;
 uniform float interface_half_width;  // m: beyond the smoothing kernel, where n is the bulk value
 uniform uint pixel_stride;           // 1: a ray per pixel; k: a ray per k×k block (preview)
@@ -198,13 +202,20 @@ vec3 receiver_radiance(ReceiverHit hit) {
     return receivers[hit.receiver].albedo.rgb / 3.14159265358979f * receiver_irradiance_at(hit.receiver, hit.map_uv);
 }
 
-float view_step(vec3 x, vec3 d) {
+// The step from x along d, where the field there is (∇n, n): step_voxels
+// voxels along each axis (common/step_size.glsl), or, through a node of the
+// step structure that is uniform in index and empty of extinction, to the
+// node's face, at least that step and at most the node's cap or that step,
+// whichever is longer.
+float view_step(vec3 x, vec3 d, vec4 field) {
+    vec3 bend = (field.xyz - dot(field.xyz, d) * d) / field.w;
+    float ds = voxel_crossing_step(d, bend, step_reach, step_length, longest_step);
 #if EIKON_STEP_STRUCTURE
     vec4 node = texelFetch(step_structure, grid_cell(x), 0);
     if (node.z > 0.5f && node.x > 0.0f)
-        return octree_step(x, d, grid.bounds_min.xyz, grid.voxel_size.xyz, node.x, step_length, node.y);
+        return octree_step(x, d, grid.bounds_min.xyz, grid.voxel_size.xyz, node.x, ds, max(node.y, ds));
 #endif
-    return step_length;
+    return ds;
 }
 
 // The share of an interface's reflection a step takes: a graded interface
@@ -215,7 +226,8 @@ float view_step(vec3 x, vec3 d) {
 float fresnel_share(vec3 start, vec3 end, vec3 d, float n_start, vec3 gradient, INOUT(vec3) normal) {
 #if EIKON_FRESNEL
     float strength = length(gradient);
-    if (strength * grid.voxel_size.x < 1e-4f) return 0.0f;
+    // Over a voxel's smallest edge, the scale interface_half_width is measured in.
+    if (strength * min(grid.voxel_size.x, min(grid.voxel_size.y, grid.voxel_size.z)) < 1e-4f) return 0.0f;
     normal = gradient / strength;
     float n_lo = reference_index() + sample_gradient_and_delta(start - interface_half_width * normal).w;
     float n_hi = reference_index() + sample_gradient_and_delta(start + interface_half_width * normal).w;
@@ -371,7 +383,7 @@ void main() {
             float n_start = field.w;
             vec3 gradient = field.xyz;
             vec3 d = normalize(v);
-            float ds = view_step(x, d);
+            float ds = view_step(x, d, field);
 #if EIKON_SHARP_SURFACES
             // Meshes are searched once per straight stretch: where the field
             // has no gradient the ray keeps its direction, and the first

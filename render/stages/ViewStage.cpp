@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace eikon::render {
@@ -96,6 +97,8 @@ ViewStage::ViewStage(const Scene& scene, const FieldTextures& fields, const Rece
       samplesPerPixel_(recordExit ? 1 : scene.render.samplesPerPixel) {
     const double voxel = fields.grid().smallestVoxelEdge();
     stepLength_ = scene.render.stepVoxels * voxel;
+    stepReach_ = scene.render.stepVoxels * fields.grid().voxelSize();
+    longestStep_ = std::max({stepReach_.x, stepReach_.y, stepReach_.z});
     maxSteps_ = defaultMaxSteps(fields.grid(), stepLength_);
     // Past the smoothing kernel (plus a voxel) the index is the bulk value on either side of an interface.
     const auto kernel = gaussianHalfKernel(scene.grid.smoothingSigmaVoxels, scene.grid.smoothingWindowVoxels);
@@ -153,6 +156,9 @@ void ViewStage::bind(const FieldTextures& fields, const ViewInputs& inputs) {
         glUniform1ui(program_.uniform("surface_depth"), static_cast<GLuint>(render_.surfaceDepth));
     }
     glUniform1f(program_.uniform("step_length"), static_cast<float>(stepLength_));
+    glUniform1f(program_.uniform("longest_step"), static_cast<float>(longestStep_));
+    glUniform3f(program_.uniform("step_reach"), static_cast<float>(stepReach_.x), static_cast<float>(stepReach_.y),
+                static_cast<float>(stepReach_.z));
     glUniform1ui(program_.uniform("max_steps"), maxSteps_);
     glUniform1f(program_.uniform("interface_half_width"), interfaceHalfWidth_);
     glUniform1ui(program_.uniform("pixel_stride"), static_cast<GLuint>(pixelStride_));

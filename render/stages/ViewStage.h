@@ -9,6 +9,7 @@
 #include "render/stages/ReceiverMaps.h"
 #include "render/stages/SharpSurfaceBuffer.h"
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include <string>
@@ -75,7 +76,9 @@ private:
     bool multipleScattering_;
     RenderDesc render_;
     int width_, height_;
-    double stepLength_;
+    double stepLength_;     // m: the shortest step in media (render.step_voxels × the smallest voxel edge)
+    double longestStep_;    // m: render.step_voxels × the largest voxel edge
+    glm::dvec3 stepReach_;  // m: render.step_voxels × the voxel's edge along each axis
     unsigned maxSteps_;
     int pixelStride_ = 1;
     int samplesPerPixel_;

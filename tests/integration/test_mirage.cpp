@@ -73,8 +73,9 @@ TEST(Mirage, TheRoadShowsTheSkyMirroredDownToTheCriticalAngle) {
     EXPECT_GT(mirrored, 20);
     EXPECT_GT(onRoad, 20);
     // The boundary lies between two rows (0.12 mrad apart) that bracket α_c,
-    // to the leapfrog's error over 2 m steps (a ray near α_c dips 14 mm a
-    // step into a 0.1 m layer): within 2% of α_c.
+    // to the leapfrog's error over steps that cross one 2 cm layer of the
+    // 0.1 m hot layer each (render.step_voxels, on the grid's flat voxels):
+    // within 2% of α_c.
     EXPECT_LT(lowestMirrored, highestOnRoad);
     EXPECT_NEAR(lowestMirrored, critical, 0.02 * critical);
     EXPECT_NEAR(highestOnRoad, critical, 0.02 * critical);

@@ -1,7 +1,8 @@
 // shaders/common/step_size.glsl and sharp_surfaces.glsl compiled as C++
 // (through cpp_shim.h): the octree step reaches just past the far face of
-// the node around x, within [Δs_min, the node's cap]; sharp surfaces are
-// met where they are.
+// the node around x, within [Δs_min, the node's cap]; a camera ray's step
+// crosses step_voxels voxels along each axis; sharp surfaces are met where
+// they are.
 #include "shaders/common/cpp_shim.h"
 
 #include <gtest/gtest.h>
@@ -37,6 +38,35 @@ TEST(StepSize, OctreeStepIsClamped) {
     const vec3 d(1.0f, 0.0f, 0.0f);
     EXPECT_FLOAT_EQ(shader::octree_step(x, d, vec3(0.0f), voxel, 2.0f, 0.01f, 0.2f), 0.2f);
     EXPECT_FLOAT_EQ(shader::octree_step(x, d, vec3(0.0f), voxel, 0.0f, 0.08f, 1.0f), 0.08f);
+}
+
+// A camera ray's step on cubic voxels is step_voxels edges whatever its
+// direction and bend: the isotropic step, unchanged.
+TEST(StepSize, VoxelCrossingStepOnCubicVoxelsIsTheIsotropicStep) {
+    const float reach = 2.0f * 0.0125f;
+    for (const vec3& d : {vec3(1.0f, 0.0f, 0.0f), glm::normalize(vec3(1.0f, 1.0f, 1.0f)), glm::normalize(vec3(0.1f, -3.0f, 2.0f))})
+        for (const vec3& bend : {vec3(0.0f), vec3(0.0f, 40.0f, 0.0f)})
+            EXPECT_EQ(shader::voxel_crossing_step(d, bend, vec3(reach), reach, reach), reach);
+}
+
+// On flat voxels (16 m × 2 cm × 47 m, scenes/hot_road_mirage.json) a ray
+// 5 mrad off level crosses one 2 cm layer in 4 m: the step is that, not 2 cm.
+TEST(StepSize, VoxelCrossingStepCrossesOneLayerOfFlatVoxels) {
+    const vec3 reach(16.0f, 0.02f, 46.875f);
+    const vec3 d = glm::normalize(vec3(0.0f, -0.005f, -1.0f));
+    EXPECT_NEAR(shader::voxel_crossing_step(d, vec3(0.0f), reach, 0.02f, 46.875f), 0.02f / std::abs(d.y), 1e-4f);
+}
+
+// Where the ray levels off its bend, counted four times, limits the step:
+// 2·|bend|·s² = one layer. The step never exceeds step_voxels of the
+// largest edge.
+TEST(StepSize, VoxelCrossingStepOfALevelRayIsBoundByItsBend) {
+    const vec3 reach(16.0f, 0.02f, 46.875f);
+    const vec3 level(0.0f, 0.0f, -1.0f);
+    const float bend = 2.4e-4f;  // 1/m: the hot road's at the asphalt
+    EXPECT_NEAR(shader::voxel_crossing_step(level, vec3(0.0f, bend, 0.0f), reach, 0.02f, 46.875f),
+                std::sqrt(0.02f / (2.0f * bend)), 1e-3f);
+    EXPECT_FLOAT_EQ(shader::voxel_crossing_step(level, vec3(0.0f), reach, 0.02f, 46.875f), 46.875f);
 }
 
 // shaders/common/sharp_surfaces.glsl as C++: crossings from outside and
