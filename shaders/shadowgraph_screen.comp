@@ -127,6 +127,15 @@ void main() {
     }
     ivec2 origin = ivec2(square / beam_subdivision) - int(beam_margin);
     vec3 power = side * side * transmittance;  // the square's share of its pixel's I₀·T
+    // A square that lands within one pixel (undisturbed light, most of the
+    // screen) gives it all its power, as its two triangles would, in one
+    // deposit instead of two.
+    ivec2 first = ivec2(floor(min(min(lands[0], lands[1]), min(lands[2], lands[3]))));
+    ivec2 last = ivec2(ceil(max(max(lands[0], lands[1]), max(lands[2], lands[3])))) - 1;
+    if (first == last) {
+        if (on_screen(origin + first)) deposit_in_pixel(origin + first, power);
+        return;
+    }
     deposit_triangle(origin, lands[0], lands[1], lands[3], 0.5f * power);
     deposit_triangle(origin, lands[0], lands[3], lands[2], 0.5f * power);
 }
