@@ -70,7 +70,8 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
                         gaussianHalfKernel(scene.grid.smoothingSigmaVoxels, scene.grid.smoothingWindowVoxels).size()) -
                     1 + 1 + 1.5 + 1),
       varyingLow_(grid_.boundsMin), varyingHigh_(grid_.boundsMax),
-      nodeSteps_(integrator == TracerDesc::Integrator::Leapfrog), nodeEpsilon_(scene.tracer.epsilon) {
+      nodeSteps_(integrator == TracerDesc::Integrator::Leapfrog), nodeEpsilon_(scene.tracer.epsilon),
+      extinctionChannels_(fields.hasExtinction() ? 3 : 1), screenChannels_(extinctionChannels_) {
     EIKON_CHECK_MSG(sampleSide_ > 0, "render.samples_per_pixel a square (io/scene/SceneParser)");
     const bool bos = diagnostic_.type == DiagnosticDesc::Type::Bos;
     EIKON_CHECK_MSG(scene.diagnostic && scene.camera.orthographic() != bos,
@@ -137,6 +138,7 @@ void DiagnosticStage::setCamera(const CameraDesc& camera) {
 }
 
 void DiagnosticStage::setVaryingVoxels(const VaryingVoxels& varying) {
+    screenChannels_ = varying.greyExtinction ? 1 : extinctionChannels_;
     uniformDelta_ = varying.uniformDelta;
     uniformExtinction_ = varying.uniformExtinction;
     nodeLevelsSet_ = nodeSteps_ && !varying.bricks.empty();
@@ -262,9 +264,11 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         deposit_.use();
         glUniform1ui(deposit_.uniform("beam_margin"), kBeamMargin);
         glUniform1ui(deposit_.uniform("beam_subdivision"), static_cast<GLuint>(drawnSide()));
+        glUniform1i(deposit_.uniform("tallied_channels"), screenChannels_);
         deposit_.dispatchCovering(cornersX - 1, cornersY - 1, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         resolve_.use();
+        glUniform1i(resolve_.uniform("tallied_channels"), screenChannels_);
         resolve_.dispatchCovering(width, height, 1, 8, 8, 1);
     } else {
         // k² passes, one ray a pixel each, averaged as the view's are; or

@@ -122,6 +122,8 @@ private:
     double nodeEpsilon_;    // tracer.epsilon
     bool nodeLevelsSet_ = false;
     gl::Texture3D nodeLevels_;  // per brick, the level of its nearly uniform node (DiagnosticNodeSteps.h)
+    int extinctionChannels_;  // 3 where the scene has extinction, else 1 (T = 1)
+    int screenChannels_;      // shadowgraph: the channels its screen tallies, 1 where T is grey
     float uniformDelta_ = 0.0f;
     glm::vec3 uniformExtinction_{0.0f};
     double stepLength_;

@@ -72,6 +72,10 @@ VaryingVoxels varyingVoxels(const FieldUpload& fields) {
     }
     if (fields.extinction.floats) {
         varying.uniformExtinction = {fields.extinction.host[0], fields.extinction.host[1], fields.extinction.host[2]};
+        const float* kappa = fields.extinction.host;
+        varying.greyExtinction = true;
+        for (std::size_t i = 0; i < fields.grid.cellCount() && varying.greyExtinction; ++i)
+            varying.greyExtinction = kappa[3 * i] == kappa[3 * i + 1] && kappa[3 * i] == kappa[3 * i + 2];
         addDifferingVoxels(varying.box, fields.grid, fields.extinction.host, 3);
     }
     varying.bricks = brickRanges(fields);

@@ -41,6 +41,7 @@ struct VaryingVoxels {
     BrickRanges bricks;
     float uniformDelta = 0.0f;    // δn outside the box: the first voxel's
     glm::vec3 uniformExtinction{0.0f};  // κ rgb outside it, 1/m
+    bool greyExtinction = false;  // κ r = g = b in every voxel (false where not known)
 };
 
 // The voxels of `fields` whose δn or κ differ from voxel (0, 0, 0)'s; the
