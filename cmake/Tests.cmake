@@ -222,6 +222,7 @@ eikon_test(test_diagnostics LABELS integration LIBS eikon_io eikon_render eikon_
   tests/integration/test_diagnostics.cpp
   tests/integration/test_diagnostic_samples.cpp
   tests/integration/test_diagnostic_varying_voxels.cpp
+  tests/integration/test_diagnostic_node_steps.cpp
   tests/integration/test_diagnostic_error_estimate.cpp
   tests/integration/test_diagnostic_sharp.cpp
   tests/integration/test_orthographic_view.cpp)

@@ -61,8 +61,15 @@
 // (k·(width + 2·margin) + 1) × (k·(height + 2·margin) + 1) of them, and
 // write where they land and their transmittance (DiagnosticLanding) for
 // shadowgraph_screen.comp.
+// Inside the varying box the leapfrog steps across nodes where the medium is
+// nearly uniform (render/stages/DiagnosticNodeSteps.h) to the node's far
+// face, in whole steps of `step_length`, as the view steps across its
+// octree's nodes (view_rays.comp, common/step_size.glsl); RK4 keeps uniform
+// steps, so that the error estimate's reference measures what they cost.
 // Program options: EIKON_INSTRUMENT, EIKON_HAS_EXTINCTION, EIKON_LOOP_BUDGET,
 // EIKON_INTEGRATOR (1 leapfrog, 2 RK4, as common/ray_march.glsl numbers them),
+// EIKON_NODE_STEPS (1: the steps across nodes; EIKON_BRICK_VOXELS voxels a
+// brick of their levels, render/stages/VaryingVoxels.h BrickRanges),
 // EIKON_BOS_IMAGE (1: BOS's background is an image, common/bos_background.glsl),
 // EIKON_SHARP_SURFACES (0 none, 1 spheres and boxes, 2 meshes or water too;
 // render/stages/SharpSurfaceBuffer, kindsOption).
@@ -264,6 +271,34 @@ vec2 varying_ray_interval(vec3 x, vec3 d) {
     return vec2(max(t_low.x, max(t_low.y, t_low.z)), min(t_high.x, min(t_high.y, t_high.z)));
 }
 
+#ifndef EIKON_NODE_STEPS
+#define EIKON_NODE_STEPS 0
+#endif
+#if EIKON_NODE_STEPS
+#include "common/step_size.glsl"
+uniform uint node_steps;  // 0: no levels known, uniform steps
+// Per brick of EIKON_BRICK_VOXELS³ voxels, the octree level of the nearly
+// uniform node around it (its edge 2^level voxels), 0 for none.
+layout(binding = kStepTexture) uniform sampler3D node_levels;
+#endif
+
+// The step from `position` (world), the ray's direction v (its frame):
+// one `step_length`, or in a nearly uniform node as many whole ones as
+// stay within it (at least one).
+float march_step(vec3 position, vec3 v) {
+#if EIKON_NODE_STEPS
+    if (node_steps != 0u) {
+        float level = texelFetch(node_levels, grid_cell(position) / EIKON_BRICK_VOXELS, 0).r;
+        if (level > 0.0f) {
+            float to_face = octree_step(position, world_direction(normalize(v)), grid.bounds_min.xyz,
+                                        grid.voxel_size.xyz, level, step_length, 1e30f);
+            return step_length * floor(to_face / step_length);
+        }
+    }
+#endif
+    return step_length;
+}
+
 // The ray from `start` along `direction`, marched through the grid. Where
 // the medium is uniform — before the ray reaches the varying box and after
 // it has left it — its gradient is 0 and the march is a straight line
@@ -334,18 +369,19 @@ Measured march(vec3 start, vec3 direction) {
         float clear = 0.0f;
         float clearance_margin = 1e-3f * grid.voxel_size.x;
 #endif
+        vec3 position = ray_origin + world_direction(x);
         for (; steps < max_steps; ++steps) {
             spend_loops(1u);
             if (!loops_left()) break;
-            float ds = step_length;
-            if (travelled + 2.0f * step_length >= chord) {
+            float ds = march_step(position, v);
+            if (travelled + ds + step_length >= chord) {
                 // NaN (a ray along a face) counts as out.
                 float remaining = grid_ray_interval(ray_origin + world_direction(x), world_direction(normalize(v))).y;
                 if (!(remaining > exit_tolerance)) {
                     ended = kRayCrossed;
                     break;
                 }
-                ds = min(step_length, remaining);
+                ds = min(ds, remaining);
             }
 #if EIKON_SHARP_SURFACES
             SurfaceCrossing crossing = no_surface_crossing(ds);
@@ -367,7 +403,7 @@ Measured march(vec3 start, vec3 direction) {
             travelled += ds;
             opd += 0.5f * (delta_before + sampled_delta) * ds;
             delta_before = sampled_delta;
-            vec3 position = ray_origin + world_direction(x);
+            position = ray_origin + world_direction(x);
 #if EIKON_HAS_EXTINCTION
             vec3 kappa = sample_extinction(position);
             optical_depth += 0.5f * (kappa_before + kappa) * ds;

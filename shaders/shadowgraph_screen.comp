@@ -37,6 +37,9 @@ const int kChannels = 3;
 #else
 const int kChannels = 1;
 #endif
+// The channels tallied: 1 where the extinction is grey (T equal in all
+// three), else kChannels.
+uniform int tallied_channels;
 
 const float kUnit = 1.0f / 16777216.0f;  // 2⁻²⁴ of a pixel's undisturbed power
 
@@ -51,7 +54,7 @@ const int kMaxFootprintPixels = 256;
 
 void deposit_in_pixel(ivec2 pixel, vec3 power) {
     uint base = uint(2 * kChannels) * (uint(pixel.y) * camera.image.x + uint(pixel.x));
-    for (int c = 0; c < kChannels; ++c) ADD_WIDE_UNITS(tallies, base + uint(2 * c), wide_units(power[c] / kUnit));
+    for (int c = 0; c < tallied_channels; ++c) ADD_WIDE_UNITS(tallies, base + uint(2 * c), wide_units(power[c] / kUnit));
 }
 
 bool on_screen(ivec2 pixel) { return all(greaterThanEqual(pixel, ivec2(0))) && all(lessThan(pixel, ivec2(camera.image.xy))); }
@@ -127,6 +130,15 @@ void main() {
     }
     ivec2 origin = ivec2(square / beam_subdivision) - int(beam_margin);
     vec3 power = side * side * transmittance;  // the square's share of its pixel's I₀·T
+    // A square that lands within one pixel (undisturbed light, most of the
+    // screen) gives it all its power, as its two triangles would, in one
+    // deposit instead of two.
+    ivec2 first = ivec2(floor(min(min(lands[0], lands[1]), min(lands[2], lands[3]))));
+    ivec2 last = ivec2(ceil(max(max(lands[0], lands[1]), max(lands[2], lands[3])))) - 1;
+    if (first == last) {
+        if (on_screen(origin + first)) deposit_in_pixel(origin + first, power);
+        return;
+    }
     deposit_triangle(origin, lands[0], lands[1], lands[3], 0.5f * power);
     deposit_triangle(origin, lands[0], lands[3], lands[2], 0.5f * power);
 }
@@ -140,9 +152,9 @@ void main() {
     uint i = pixel.y * camera.image.x + pixel.x;
     vec3 intensity;
     uint base = uint(2 * kChannels) * i;
-    for (int c = 0; c < kChannels; ++c)
+    for (int c = 0; c < tallied_channels; ++c)
         intensity[c] = (float(tallies[base + uint(2 * c) + 1u]) * 4294967296.0f + float(tallies[base + uint(2 * c)])) * kUnit;
-    if (kChannels == 1) intensity = vec3(intensity.x);
+    if (tallied_channels == 1) intensity = vec3(intensity.x);
     hdr_radiance[i] = vec4(intensity, 1.0f);
     // Exposed so that the undisturbed screen is mid-grey, twice its irradiance white.
     ldr_rgba8[i] = packUnorm4x8(vec4(srgb_encode(0.5f * intensity), 1.0f));

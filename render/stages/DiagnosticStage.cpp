@@ -6,6 +6,7 @@
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
 #include "render/stages/PhotonStage.h"
+#include "render/stages/DiagnosticNodeSteps.h"
 #include "render/stages/GaussianKernel.h"
 #include "render/stages/PixelSamples.h"
 #include "render/stages/ViewStage.h"
@@ -62,10 +63,15 @@ gl::Texture2D patternTexture(const FloatImage& image) {
 DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields, TracerDesc::Integrator integrator)
     : render_(scene.render), diagnostic_(scene.diagnostic.value_or(DiagnosticDesc{})), cameraDesc_(scene.camera),
       grid_(fields.grid()), surfaces_(scene), sampleSide_(sampleGridSide(scene.render.samplesPerPixel)),
-      smoothingReach_(static_cast<int>(
-                          gaussianHalfKernel(scene.grid.smoothingSigmaVoxels, scene.grid.smoothingWindowVoxels).size()) -
-                      1),
-      varyingLow_(grid_.boundsMin), varyingHigh_(grid_.boundsMax) {
+      // A voxel's δn reaches as far as the smoothing carries it, one voxel
+      // more by the central differences, and the trilinear filter reads it
+      // up to a voxel from its centre; one voxel more for rounding.
+      varyingReach_(static_cast<double>(
+                        gaussianHalfKernel(scene.grid.smoothingSigmaVoxels, scene.grid.smoothingWindowVoxels).size()) -
+                    1 + 1 + 1.5 + 1),
+      varyingLow_(grid_.boundsMin), varyingHigh_(grid_.boundsMax),
+      nodeSteps_(integrator == TracerDesc::Integrator::Leapfrog), nodeEpsilon_(scene.tracer.epsilon),
+      extinctionChannels_(fields.hasExtinction() ? 3 : 1), screenChannels_(extinctionChannels_) {
     EIKON_CHECK_MSG(sampleSide_ > 0, "render.samples_per_pixel a square (io/scene/SceneParser)");
     const bool bos = diagnostic_.type == DiagnosticDesc::Type::Bos;
     EIKON_CHECK_MSG(scene.diagnostic && scene.camera.orthographic() != bos,
@@ -80,6 +86,8 @@ DiagnosticStage::DiagnosticStage(const Scene& scene, const FieldTextures& fields
                                  {"EIKON_HAS_EXTINCTION", fields.hasExtinction() ? "1" : "0"},
                                  {"EIKON_BOS_IMAGE", diagnostic_.patternImage ? "1" : "0"},
                                  {"EIKON_INTEGRATOR", integrator == TracerDesc::Integrator::Rk4 ? "2" : "1"},
+                                 {"EIKON_NODE_STEPS", nodeSteps_ ? "1" : "0"},
+                                 {"EIKON_BRICK_VOXELS", std::to_string(BrickRanges::kVoxels)},
                                  surfaces_.kindsOption(),
                                  {"EIKON_LOOP_BUDGET", loopBudget}});
     const layout::GpuCamera block = cameraBlock(scene.camera, scene.render);
@@ -130,8 +138,18 @@ void DiagnosticStage::setCamera(const CameraDesc& camera) {
 }
 
 void DiagnosticStage::setVaryingVoxels(const VaryingVoxels& varying) {
+    screenChannels_ = varying.greyExtinction ? 1 : extinctionChannels_;
     uniformDelta_ = varying.uniformDelta;
     uniformExtinction_ = varying.uniformExtinction;
+    nodeLevelsSet_ = nodeSteps_ && !varying.bricks.empty();
+    if (nodeLevelsSet_) {
+        const glm::ivec3 count = varying.bricks.count;
+        if (!nodeLevels_.id())
+            nodeLevels_ = gl::Texture3D(GL_R32F, count.x, count.y, count.z,
+                                        gl::gridResource("the diagnostic's nearly uniform nodes", count.x, count.y, count.z));
+        const std::vector<float> levels = nearlyUniformNodeLevels(varying.bricks, varyingReach_, nodeEpsilon_);
+        nodeLevels_.upload(GL_RED, GL_FLOAT, levels.data());
+    }
     if (!surfaces_.empty()) {  // sharp surfaces bend rays wherever they lie: the march covers the grid
         varyingLow_ = glm::vec3(grid_.boundsMin);
         varyingHigh_ = glm::vec3(grid_.boundsMax);
@@ -142,10 +160,7 @@ void DiagnosticStage::setVaryingVoxels(const VaryingVoxels& varying) {
         varyingHigh_ = glm::vec3(grid_.boundsMin);
         return;
     }
-    // A voxel's δn reaches smoothingReach_ voxels by the smoothing, one more
-    // by the central differences, and the trilinear filter reads it up to a
-    // voxel from its centre; one voxel more for rounding.
-    const double reach = smoothingReach_ + 1 + 1.5 + 1;
+    const double reach = varyingReach_;
     const glm::dvec3 h = grid_.voxelSize();
     varyingLow_ = glm::vec3(glm::max(grid_.boundsMin, grid_.boundsMin + (glm::dvec3(varying.box.lowest) - reach) * h));
     varyingHigh_ =
@@ -191,6 +206,10 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
     glUniform3f(program_.uniform("varying_low"), varyingLow_.x, varyingLow_.y, varyingLow_.z);
     glUniform3f(program_.uniform("varying_high"), varyingHigh_.x, varyingHigh_.y, varyingHigh_.z);
     glUniform1f(program_.uniform("uniform_delta"), uniformDelta_);
+    if (nodeSteps_) {
+        glUniform1ui(program_.uniform("node_steps"), nodeLevelsSet_ ? 1u : 0u);
+        if (nodeLevelsSet_) nodeLevels_.bindSampler(layout::kStepTexture);
+    }
     glUniform3f(program_.uniform("uniform_extinction"), uniformExtinction_.x, uniformExtinction_.y,
                 uniformExtinction_.z);
     const auto width = static_cast<std::size_t>(render_.width), height = static_cast<std::size_t>(render_.height);
@@ -245,9 +264,11 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         deposit_.use();
         glUniform1ui(deposit_.uniform("beam_margin"), kBeamMargin);
         glUniform1ui(deposit_.uniform("beam_subdivision"), static_cast<GLuint>(drawnSide()));
+        glUniform1i(deposit_.uniform("tallied_channels"), screenChannels_);
         deposit_.dispatchCovering(cornersX - 1, cornersY - 1, 1, 8, 8, 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         resolve_.use();
+        glUniform1i(resolve_.uniform("tallied_channels"), screenChannels_);
         resolve_.dispatchCovering(width, height, 1, 8, 8, 1);
     } else {
         // k² passes, one ray a pixel each, averaged as the view's are; or

@@ -59,8 +59,10 @@ public:
     void setCamera(const CameraDesc& camera);
     // Where the fields vary (VaryingVoxels.h): the rays march the box, grown
     // by the reach of the smoothing, the gradient's central differences and
-    // the trilinear filter, and cross the rest straight. Until set, the
-    // whole grid.
+    // the trilinear filter, and cross the rest straight; inside it the
+    // leapfrog steps across nodes where the medium is nearly uniform
+    // (DiagnosticNodeSteps.h; RK4, the error estimate's reference, keeps
+    // its uniform steps). Until set, the whole grid in uniform steps.
     void setVaryingVoxels(const VaryingVoxels& varying);
     // 1: the full picture, k² rays a pixel. s > 1: the viewer's preview
     // while the camera moves, one ray per s×s block of pixels filling the
@@ -114,8 +116,14 @@ private:
     SharpSurfaceBuffer surfaces_;
     int sampleSide_;  // k: render.samples_per_pixel = k²
     int pixelStride_ = 1;
-    int smoothingReach_;  // voxels: how far the smoothing carries a voxel's δn
+    double varyingReach_;  // voxels: how far a voxel's δn and κ reach into the traced medium
     glm::vec3 varyingLow_, varyingHigh_;  // the box the rays march, world coordinates
+    bool nodeSteps_;        // the leapfrog: it may step across nearly uniform nodes
+    double nodeEpsilon_;    // tracer.epsilon
+    bool nodeLevelsSet_ = false;
+    gl::Texture3D nodeLevels_;  // per brick, the level of its nearly uniform node (DiagnosticNodeSteps.h)
+    int extinctionChannels_;  // 3 where the scene has extinction, else 1 (T = 1)
+    int screenChannels_;      // shadowgraph: the channels its screen tallies, 1 where T is grey
     float uniformDelta_ = 0.0f;
     glm::vec3 uniformExtinction_{0.0f};
     double stepLength_;

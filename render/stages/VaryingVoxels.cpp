@@ -1,6 +1,9 @@
 #include "render/stages/VaryingVoxels.h"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
+#include <limits>
 
 namespace eikon::render {
 
@@ -27,6 +30,30 @@ void addDifferingVoxels(VoxelBox& box, const GridSpec& grid, const float* values
                             components, n.x, j, k);
 }
 
+// The ranges of (δn, κ) per brick; a field the scene lacks counts as 0.
+BrickRanges brickRanges(const FieldUpload& fields) {
+    const glm::ivec3 n = fields.grid.resolution;
+    BrickRanges bricks;
+    bricks.count = (n + BrickRanges::kVoxels - 1) / BrickRanges::kVoxels;
+    const std::size_t count = static_cast<std::size_t>(bricks.count.x) * bricks.count.y * bricks.count.z;
+    bricks.lowest.assign(count, glm::vec4(std::numeric_limits<float>::infinity()));
+    bricks.highest.assign(count, glm::vec4(-std::numeric_limits<float>::infinity()));
+    for (int k = 0; k < n.z; ++k)
+        for (int j = 0; j < n.y; ++j)
+            for (int i = 0; i < n.x; ++i) {
+                const std::size_t voxel = fields.grid.linearIndex(i, j, k);
+                glm::vec4 value(0.0f);
+                if (fields.deltaIndex.floats) value.x = fields.deltaIndex.host[voxel];
+                if (fields.extinction.floats)
+                    value = {value.x, fields.extinction.host[3 * voxel], fields.extinction.host[3 * voxel + 1],
+                             fields.extinction.host[3 * voxel + 2]};
+                const std::size_t brick = bricks.index(glm::ivec3(i, j, k) / BrickRanges::kVoxels);
+                bricks.lowest[brick] = glm::min(bricks.lowest[brick], value);
+                bricks.highest[brick] = glm::max(bricks.highest[brick], value);
+            }
+    return bricks;
+}
+
 }  // namespace
 
 VaryingVoxels varyingVoxels(const FieldUpload& fields) {
@@ -45,8 +72,13 @@ VaryingVoxels varyingVoxels(const FieldUpload& fields) {
     }
     if (fields.extinction.floats) {
         varying.uniformExtinction = {fields.extinction.host[0], fields.extinction.host[1], fields.extinction.host[2]};
+        const float* kappa = fields.extinction.host;
+        varying.greyExtinction = true;
+        for (std::size_t i = 0; i < fields.grid.cellCount() && varying.greyExtinction; ++i)
+            varying.greyExtinction = kappa[3 * i] == kappa[3 * i + 1] && kappa[3 * i] == kappa[3 * i + 2];
         addDifferingVoxels(varying.box, fields.grid, fields.extinction.host, 3);
     }
+    varying.bricks = brickRanges(fields);
     return varying;
 }
 

@@ -236,12 +236,14 @@ TEST(Diagnostics, KnifeEdgeContrastIsFocalLengthTimesDeflectionOverSourceHeight)
 // alone (the index as it was) draws the picture again.
 TEST(Diagnostics, AbsorptionDimsTheLightByItsTransmittance) {
     glContext();
-    for (const DiagnosticDesc& diagnostic : {knifeEdge(1.0, 1e-3), kInterferometer}) {
+    DiagnosticDesc shadowgraph;
+    shadowgraph.type = DiagnosticDesc::Type::Shadowgraph;
+    for (const DiagnosticDesc& diagnostic : {knifeEdge(1.0, 1e-3), kInterferometer, shadowgraph}) {
         const Scene scene = bumpScene(16, 16, diagnostic);
         FieldSet fields = sampledBump(scene, Bump{0.0});
         std::unique_ptr<render::FrameRenderer> renderer;
-        for (const double scale : {1.0, 2.0}) {
-            const Rgb kappa = scale * Rgb(0.5, 1.0, 2.0);
+        // Coloured, grey (the shadowgraph's screen then tallies one channel), coloured again.
+        for (const Rgb& kappa : {Rgb(0.5, 1.0, 2.0), Rgb(1.5, 1.5, 1.5), Rgb(1.0, 2.0, 4.0)}) {
             fields.extinction.assign(3 * fields.grid.cellCount(), 0.0f);
             for (std::size_t c = 0; c < fields.grid.cellCount(); ++c)
                 for (int channel = 0; channel < 3; ++channel)
@@ -252,11 +254,12 @@ TEST(Diagnostics, AbsorptionDimsTheLightByItsTransmittance) {
             const std::vector<float> intensity = renderer->diagnosticStage()->downloadHdr();
             for (int channel = 0; channel < 3; ++channel) {
                 const double t = std::exp(-kappa[channel]);
-                const double expected = diagnostic.type == DiagnosticDesc::Type::Schlieren
-                                            ? 0.5 * t
-                                            : 0.25 * (1.0 + std::sqrt(t)) * (1.0 + std::sqrt(t));
+                // The shadowgraph's undisturbed screen: I/I₀ = T.
+                const double expected = diagnostic.type == DiagnosticDesc::Type::Schlieren     ? 0.5 * t
+                                        : diagnostic.type == DiagnosticDesc::Type::Shadowgraph ? t
+                                                                                               : 0.25 * (1.0 + std::sqrt(t)) * (1.0 + std::sqrt(t));
                 EXPECT_NEAR(intensity[4 * 136 + channel], expected, 1e-5 * expected)
-                    << "κ × " << scale << ", channel " << channel;
+                    << static_cast<int>(diagnostic.type) << ", κ " << kappa[0] << ", channel " << channel;
             }
         }
     }
