@@ -143,6 +143,10 @@ eikon_test(test_render LABELS integration LIBS eikon_io eikon_render eikon_sim S
 eikon_test(test_photon_devices LABELS integration LIBS eikon_io eikon_render eikon_sim SOURCES
   tests/integration/GlTestContext.cpp
   tests/integration/test_photon_devices.cpp)
+# render.device for the wavefront pass: native against the compute shader.
+eikon_test(test_wavefront_devices LABELS integration LIBS eikon_io eikon_render eikon_sim SOURCES
+  tests/integration/GlTestContext.cpp
+  tests/integration/test_wavefront_devices.cpp)
 # How far light reaches and how much leaves a light: scaled scenes, spot-light power.
 eikon_test(test_light_reach LABELS integration LIBS eikon_io eikon_render eikon_sim SOURCES
   tests/integration/GlTestContext.cpp

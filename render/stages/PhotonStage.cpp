@@ -131,7 +131,6 @@ bool feedsLattice(const Scene& scene, const FieldTextures& fields) {
 
 std::string nativePhotonRefusal(const Scene& scene, const FieldTextures& fields, const PhotonProgramOptions& options) {
     const TracerDesc& tracer = scene.tracer;
-    if (tracer.estimator == TracerDesc::Estimator::Wavefront) return "the wavefront estimator has no native pass";
     if (tracer.integrator != TracerDesc::Integrator::Leapfrog) return "the native pass integrates by leapfrog only";
     if (tracer.stepPolicy != TracerDesc::StepPolicy::Octree) return "the native pass takes octree steps only";
     if (tracer.renormalize) return "the native pass does not renormalise";
@@ -176,9 +175,11 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
         {"EIKON_STORE_FLUENCE", std::to_string(storeFluence_)},
         {"EIKON_LATTICE_SOURCE", feedsLattice(scene, fields) ? "1" : "0"}};
     fixedFluence_ = byWavefront && storeFluence_ > 0;
+    if (options.device == StageDevice::Cpu) deviceReason_ = nativePhotonRefusal(scene, fields, options);
+    native_ = options.device == StageDevice::Cpu && deviceReason_.empty();
     if (byWavefront) {
         defines.insert({"EIKON_FIXED_FLUENCE", fixedFluence_ ? "1" : "0"});
-        wavefront_ = std::make_unique<WavefrontStage>(tracer, defines, storeFluence_ > 0);
+        wavefront_ = std::make_unique<WavefrontStage>(tracer, defines, storeFluence_ > 0, native_);
     } else {
         defines.insert({{"EIKON_RENORMALIZE", tracer.renormalize ? "1" : "0"},
                         {"EIKON_DISPERSION", tracer.dispersive() ? "1" : "0"},
@@ -190,8 +191,6 @@ PhotonStage::PhotonStage(const Scene& scene, const FieldTextures& fields, Receiv
                         {"EIKON_RECORD_STRIDE", std::to_string(options.recordPathVertices > 0 ? std::max(1, options.recordStride) : 1)},
                         {"EIKON_RECORD_ENDS", options.recordEnds ? "1" : "0"},
                         {"EIKON_VOLUME_GLOW", glowLights(scene) ? "1" : "0"}});
-        if (options.device == StageDevice::Cpu) deviceReason_ = nativePhotonRefusal(scene, fields, options);
-        native_ = options.device == StageDevice::Cpu && deviceReason_.empty();
         if (!native_) program_ = gl::compileComputeProgram("photon_trace.comp", defines);
         resumable_ = loopBudget > 0 && !native_;
     }
@@ -303,7 +302,9 @@ PhotonStats PhotonStage::run(const FieldTextures& fields, const gl::Texture3D* s
         stats.wavefront = wavefront_->run({emissionFaces_, surfaces_.empty() ? 0u : surfaces_.count(),
                                            settings.maxSteps, settings.stepLength, dispersion_, powerUnit_,
                                            settings.share, fixedFluence_ ? fluenceUnits(fields) : FluenceUnits{},
-                                           rawScattered_.id() != 0});
+                                           rawScattered_.id() != 0, native_ ? &nativeInputs_ : nullptr,
+                                           native_ ? &nativeTallies_ : nullptr});
+        if (native_) uploadNativeTallies();
     } else if (settings.recordedOnly) {
         const std::size_t stride = static_cast<std::size_t>(std::max(1, options_.recordStride));
         const std::size_t count = std::min(static_cast<std::size_t>(options_.recordedPhotons),
@@ -438,6 +439,12 @@ void PhotonStage::gatherNativeInputs(const FieldTextures& fields, const gl::Text
     nativeTallies_.receiver.assign(3 * static_cast<std::size_t>(receivers_.texelCount()), 0);
 }
 
+void PhotonStage::uploadNativeTallies() {
+    receivers_.uploadTallies(nativeTallies_.receiver);
+    const layout::GpuPhotonStats gpu = nativeTallies_.stats();
+    stats_.upload(&gpu, sizeof gpu);
+}
+
 void PhotonStage::tracePhotons(const PhotonSettings& settings, std::size_t first, std::size_t stride,
                                std::size_t count, bool checkerboard) {
     if (emitterCount_ == 0) return;  // no light this frame: lights of no power, a volume that does not glow yet
@@ -445,9 +452,7 @@ void PhotonStage::tracePhotons(const PhotonSettings& settings, std::size_t first
         // The tallies so far replace the buffers' (cleared by run): the halves
         // of a halved pass read them between their traces.
         tracePhotonsNative(nativeInputs_, first, stride, count, checkerboard, nativeTallies_);
-        receivers_.uploadTallies(nativeTallies_.receiver);
-        const layout::GpuPhotonStats gpu = nativeTallies_.stats();
-        stats_.upload(&gpu, sizeof gpu);
+        uploadNativeTallies();
         return;
     }
     program_.use();

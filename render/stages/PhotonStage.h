@@ -67,9 +67,10 @@ struct PhotonProgramOptions {
     // driver's (gl::currentLoopBudget). Tests shrink it to suspend photons
     // often; it may not exceed the driver's where the driver has one.
     std::optional<unsigned> loopBudget{};
-    // Where the photons are traced (render.device, resolved): Cpu runs the
-    // shader's tracer natively (NativePhotonTrace.h) where the scene needs
-    // no option it lacks (nativePhotonRefusal), else the compute shader.
+    // Where the light pass runs (render.device, resolved): Cpu runs the
+    // shader's photon tracer or wavefront natively (NativePhotonTrace.h,
+    // NativeWavefrontTrace.h) where the scene needs no option it lacks
+    // (nativePhotonRefusal), else the compute shader.
     StageDevice device = StageDevice::Gpu;
 };
 
@@ -179,6 +180,8 @@ private:
     // The native pass's inputs for this run: the field and step textures'
     // texels on the host.
     void gatherNativeInputs(const FieldTextures& fields, const gl::Texture3D* stepTexture, const PhotonSettings& settings);
+    // The native pass's tallies so far into the receivers' and statistics' buffers.
+    void uploadNativeTallies();
 
     ReceiverMaps& receivers_;
     SharpSurfaceBuffer surfaces_;
@@ -212,15 +215,16 @@ private:
     gl::Buffer suspendedCount_;        // layout::GpuSuspendedCount
     std::uint64_t resumed_ = 0;        // this trace's resumed photons
     int resumeDispatches_ = 0;         // and the dispatches that resumed them
-    bool native_ = false;              // the tracer runs natively (NativePhotonTrace.h)
+    bool native_ = false;              // the tracer runs natively (NativePhotonTrace.h, NativeWavefrontTrace.h)
     std::string deviceReason_;         // why not, where render.device asked for it
     NativePhotonInputs nativeInputs_;
     std::vector<glm::vec4> hostGradient_, hostSteps_;
     NativePhotonTallies nativeTallies_;  // this run's, so far
 };
 
-// Why the native photon pass cannot trace `scene` with `options` (the
-// program options it is not compiled with); empty where it can.
+// Why the native light pass — photons or wavefront — cannot trace `scene`
+// with `options` (the program options it is not compiled with); empty where
+// it can.
 std::string nativePhotonRefusal(const Scene& scene, const FieldTextures& fields, const PhotonProgramOptions& options);
 
 // Whether the scene diffuses what its photons scatter on a lattice

@@ -59,9 +59,11 @@ std::uint64_t wavefrontStartPatches(const Scene& scene) {
                                  !buildSharpSurfaces(scene).empty());
 }
 
-WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines, bool storesFluence)
-    : settings_(tracer.wavefront), dispersive_(tracer.dispersive()), storesFluence_(storesFluence) {
+WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines, bool storesFluence, bool native)
+    : settings_(tracer.wavefront), dispersive_(tracer.dispersive()), storesFluence_(storesFluence),
+      runsNatively_(native) {
     capacity_ = levelCapacity(settings_.maxPatches);
+    if (native) return;
     program_ = gl::compileComputeProgram("wavefront_trace.comp", defines);
     for (gl::Buffer& level : levels_)
         level = gl::Buffer(std::size_t{capacity_} * sizeof(layout::GpuWavefrontPatch),
@@ -78,38 +80,77 @@ void WavefrontStage::dispatch(Mode mode, unsigned invocations) {
 
 void WavefrontStage::traceWavefront(unsigned emitter, unsigned faces, int channel, int branch,
                                     const PassShare& share) {
-    glUniform1ui(program_.uniform("emission_faces"), faces);
-    glUniform1ui(program_.uniform("seed_emitter"), emitter);
-    glUniform1i(program_.uniform("channel"), channel);
-    glUniform1i(program_.uniform("branch"), branch);
+    if (native_) {
+        native_->setWavefront(emitter, faces, channel, branch);
+    } else {
+        glUniform1ui(program_.uniform("emission_faces"), faces);
+        glUniform1ui(program_.uniform("seed_emitter"), emitter);
+        glUniform1i(program_.uniform("channel"), channel);
+        glUniform1i(program_.uniform("branch"), branch);
+    }
     const auto cellsPerEdge = static_cast<unsigned>(settings_.gridCells);
     const unsigned cells = faces * cellsPerEdge * cellsPerEdge;
     const unsigned chunkCells = std::max(1u, capacity_ / (2u * kChunkHeadroom));
     for (unsigned first = 0; first < cells; first += chunkCells) {
         if (!share.ownsChunk(chunk_++)) continue;
-        unsigned count = 2u * std::min(chunkCells, cells - first);
-        levels_[0].bindStorage(layout::kWavefrontChildren);
-        glUniform1ui(program_.uniform("first_cell"), first);
-        dispatch(kSeed, count);
-        glUniform1ui(program_.uniform("seeded_jobs"), 1u);
-        dispatch(kTrace, 3u * count);
-        glUniform1ui(program_.uniform("seeded_jobs"), 0u);
-        for (int source = 0; count > 0; source = 1 - source) {
-            levels_[source].bindStorage(layout::kWavefrontPatches);
-            levels_[1 - source].bindStorage(layout::kWavefrontChildren);
-            const std::uint32_t none = 0;
-            counters_.upload(&none, sizeof none, offsetof(layout::GpuWavefrontCounters, children));
-            dispatch(kRefine, count);
-            const auto children = counters_.downloadAs<std::uint32_t>(offsetof(layout::GpuWavefrontCounters, children));
-            count = std::min(children, capacity_);
-            if (count > 0) dispatch(kTrace, count / 4u * 3u);
-        }
+        const unsigned seeds = 2u * std::min(chunkCells, cells - first);
+        if (native_) native_->traceChunk(first, seeds);
+        else traceChunk(first, seeds);
     }
 }
 
-WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
-    program_.use();
+void WavefrontStage::traceChunk(unsigned first, unsigned seeds) {
+    levels_[0].bindStorage(layout::kWavefrontChildren);
+    glUniform1ui(program_.uniform("first_cell"), first);
+    dispatch(kSeed, seeds);
+    glUniform1ui(program_.uniform("seeded_jobs"), 1u);
+    dispatch(kTrace, 3u * seeds);
+    glUniform1ui(program_.uniform("seeded_jobs"), 0u);
+    for (unsigned count = seeds, source = 0; count > 0; source = 1 - source) {
+        levels_[source].bindStorage(layout::kWavefrontPatches);
+        levels_[1 - source].bindStorage(layout::kWavefrontChildren);
+        const std::uint32_t none = 0;
+        counters_.upload(&none, sizeof none, offsetof(layout::GpuWavefrontCounters, children));
+        dispatch(kRefine, count);
+        const auto children = counters_.downloadAs<std::uint32_t>(offsetof(layout::GpuWavefrontCounters, children));
+        count = std::min(children, capacity_);
+        if (count > 0) dispatch(kTrace, count / 4u * 3u);
+    }
+}
+
+void WavefrontStage::traceWavefronts(const WavefrontInputs& inputs) {
     chunk_ = 0;
+    const int channels = dispersive_ ? 3 : 1;
+    const int branches = wavefrontBranches(settings_, inputs.sharpSurfaceCount > 0);
+    for (unsigned emitter = 0; emitter < inputs.emissionFaces.size(); ++emitter)
+        for (int channel = 0; channel < channels; ++channel)
+            for (int branch = -1; branch < branches; ++branch)
+                traceWavefront(emitter, inputs.emissionFaces[emitter], dispersive_ ? channel : -1, branch, inputs.share);
+}
+
+WavefrontCounts WavefrontStage::runNative(const WavefrontInputs& inputs) {
+    EIKON_CHECK_MSG(inputs.native && inputs.nativeTallies, "the native wavefront pass's inputs");
+    NativeWavefrontSettings settings;
+    settings.gridCells = static_cast<unsigned>(settings_.gridCells);
+    settings.maxDepth = static_cast<unsigned>(settings_.maxDepth);
+    settings.capacity = capacity_;
+    settings.splitTexels = static_cast<float>(settings_.splitTexels);
+    settings.tearTexels = static_cast<float>(settings_.tearTexels);
+    settings.minPower = static_cast<float>(settings_.minPower);
+    settings.reflectionSplit = static_cast<float>(settings_.reflectionSplit);
+    NativeWavefrontTrace native(*inputs.native, settings, inputs.nativeTallies->receiver.size() / 3);
+    native_ = &native;
+    traceWavefronts(inputs);
+    native_ = nullptr;
+    *inputs.nativeTallies = native.tallies();
+    const NativeWavefrontCounts counts = native.counts();
+    return {counts.finished, counts.splits, counts.atLimit, counts.rays, 0,
+            wavefrontStartPatches(settings_, dispersive_, inputs.emissionFaces, inputs.sharpSurfaceCount > 0)};
+}
+
+WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
+    if (runsNatively_) return runNative(inputs);
+    program_.use();
     counters_.clearToZero();
     counters_.bindStorage(layout::kWavefrontCounters);
     if (inputs.sharpSurfaceCount > 0)
@@ -135,12 +176,7 @@ WavefrontCounts WavefrontStage::run(const WavefrontInputs& inputs) {
             glUniform3f(program_.uniform("scattered_unit"), units.scattered.r, units.scattered.g, units.scattered.b);
     }
 
-    const int channels = dispersive_ ? 3 : 1;
-    const int branches = wavefrontBranches(settings_, inputs.sharpSurfaceCount > 0);
-    for (unsigned emitter = 0; emitter < inputs.emissionFaces.size(); ++emitter)
-        for (int channel = 0; channel < channels; ++channel)
-            for (int branch = -1; branch < branches; ++branch)
-                traceWavefront(emitter, inputs.emissionFaces[emitter], dispersive_ ? channel : -1, branch, inputs.share);
+    traceWavefronts(inputs);
     gl::checkpoint("wavefront stage");
     const auto counters = counters_.downloadAs<layout::GpuWavefrontCounters>();
     return {counters.finished, counters.splits, counters.atLimit, counters.rays, counters.tubes,

@@ -16,6 +16,7 @@
 #include "gl/GlObjects.h"
 #include "gl/ShaderLibrary.h"
 #include "render/stages/LightPassShare.h"
+#include "render/stages/NativeWavefrontTrace.h"
 
 #include <glm/vec3.hpp>
 
@@ -53,6 +54,10 @@ struct WavefrontInputs {
     PassShare share{};          // the seed chunks this process traces
     FluenceUnits fluenceUnits{};  // where the pass stores fluence
     bool latticeSource = false;   // it also tallies the power scattered per cell
+    // The native pass's (WavefrontStage built with `native`): its inputs,
+    // and the tallies it leaves, whose receiver tallies hold every texel.
+    const NativePhotonInputs* native = nullptr;
+    NativePhotonTallies* nativeTallies = nullptr;
 };
 
 // Faces of an emitter's emission domain (shaders/wavefront_trace.comp,
@@ -77,25 +82,36 @@ std::uint64_t wavefrontStartPatches(const Scene& scene);
 class WavefrontStage {
 public:
     // defines: the march's program options (common/ray_march.glsl) and the
-    // fluence's (common/fluence_deposits.glsl).
-    WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines, bool storesFluence);
+    // fluence's (common/fluence_deposits.glsl). native: the pass runs the
+    // shader's text as C++ (NativeWavefrontTrace.h), the scene needing no
+    // option it lacks (nativePhotonRefusal), and compiles no program.
+    WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defines, bool storesFluence, bool native);
 
     // Traces every emitter's wavefront into the receivers' tallies and the
     // light pass's statistics; every binding of the light pass (fields,
     // emitters, receivers, tallies, statistics, sharp surfaces) in place.
+    // Natively, into inputs.nativeTallies instead.
     WavefrontCounts run(const WavefrontInputs& inputs);
 
 private:
     enum Mode : unsigned { kSeed = 0, kTrace = 1, kRefine = 2 };  // shaders/wavefront_trace.comp
     void dispatch(Mode mode, unsigned invocations);
+    // Every emitter's wavefronts: per channel where the medium disperses, the
+    // main one and each reflected branch.
+    void traceWavefronts(const WavefrontInputs& inputs);
     // One wavefront: the emitter's faces in chunks of seeds, each refined
     // level by level until no patch splits.
     void traceWavefront(unsigned emitter, unsigned faces, int channel, int branch, const PassShare& share);
+    // One chunk of `seeds` start patches from cell `first`, refined until none splits.
+    void traceChunk(unsigned first, unsigned seeds);
+    WavefrontCounts runNative(const WavefrontInputs& inputs);
 
     TracerDesc::Wavefront settings_;
     bool dispersive_ = false;
     bool storesFluence_ = false;
     unsigned capacity_ = 0;  // patches a level buffer holds (a multiple of 4)
+    NativeWavefrontTrace* native_ = nullptr;  // the native pass of the run under way, if it runs natively
+    bool runsNatively_ = false;
     gl::Program program_;
     gl::Buffer levels_[2];
     gl::Buffer counters_;

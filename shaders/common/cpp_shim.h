@@ -42,6 +42,8 @@ using layout::kTallyCount;
 inline uint floatBitsToUint(float value) { return glm::floatBitsToUint(value); }
 inline float uintBitsToFloat(uint value) { return glm::uintBitsToFloat(value); }
 inline vec3 xyz_of(vec4 v) { return vec3(v); }
+inline vec2 xy_of(vec4 v) { return vec2(v.x, v.y); }
+inline vec2 zw_of(vec4 v) { return vec2(v.z, v.w); }
 
 // GLSL has no `inline`: the shared functions get internal linkage instead,
 // so any number of translation units may include this header.

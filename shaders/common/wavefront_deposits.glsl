@@ -2,9 +2,9 @@
 // tallies of the energy balance and the receivers' texels, and a patch's
 // power spread over its footprint by exact texel coverage
 // (common/footprint_coverage.glsl). The includer declares `power_unit` and
-// the tally blocks. GLSL only.
-
-#include "common/wide_units.glsl"
+// the tally blocks, and includes common/wide_units.glsl. Shared by GLSL and
+// C++ (render/stages/NativeWavefrontTrace.cpp, where ADD_WIDE_UNITS adds to
+// a thread's 64-bit sums).
 
 void add_stat(int tally, vec3 watts) {
     for (int c = 0; c < 3; ++c)
@@ -52,7 +52,10 @@ float deposit_footprint(int r, vec2 a, vec2 b, vec2 c, vec3 watts) {
     }
     if (span.x * span.y > kMaxFootprintTexels) {
         float share = 0.0f;
-        vec2 corners[3] = vec2[3](a, b, c);
+        vec2 corners[3];
+        corners[0] = a;
+        corners[1] = b;
+        corners[2] = c;
         for (int k = 0; k < 3; ++k)
             if (on_square(corners[k])) {
                 deposit_in_texel(r, texel_of(r, corners[k]), watts / 3.0f);

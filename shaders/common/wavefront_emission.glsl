@@ -1,8 +1,10 @@
 // The emission domain of a light for the wavefront pass
 // (wavefront_trace.comp): its faces, the ray of each point of a face, and
 // the exact power of a patch. Needs common/emitters.glsl and
-// common/footprint_coverage.glsl; the includer declares `channel`. GLSL only.
-uniform uint emission_faces;  // faces of this emitter's emission domain (WavefrontStage::emissionFaces)
+// common/footprint_coverage.glsl; the includer declares `channel` and
+// `emission_faces` (the faces of this emitter's emission domain,
+// WavefrontStage::emissionFaces). Shared by GLSL and C++
+// (render/stages/NativeWavefrontTrace.cpp).
 
 // The emission domain of a light: one or six square faces, each [0, 1]², so
 // that straight lines in a face stay straight where light lands on a plane
@@ -19,9 +21,9 @@ uniform uint emission_faces;  // faces of this emitter's emission domain (Wavefr
 //   ±tangent, ±bitangent), each gnomonic.
 vec3 face_direction(Emitter emitter, uint face, vec2 u) {
     vec2 s = 2.0f * u - 1.0f;
-    vec3 axis = emitter.axis.xyz;
-    vec3 tangent = emitter.tangent.xyz;
-    vec3 bitangent = emitter.bitangent.xyz;
+    vec3 axis = xyz_of(emitter.axis);
+    vec3 tangent = xyz_of(emitter.tangent);
+    vec3 bitangent = xyz_of(emitter.bitangent);
     if (emission_faces == 1u) {
         float h = emitter.axis.w;  // 1 − cos α
         float spread = sqrt(max(0.0f, h * (2.0f - h))) / (1.0f - h);  // tan α
@@ -33,14 +35,14 @@ vec3 face_direction(Emitter emitter, uint face, vec2 u) {
     return side * bitangent + s.x * axis + s.y * tangent;
 }
 
-void emission_ray(Emitter emitter, uint face, vec2 u, out vec3 x, out vec3 d) {
+void emission_ray(Emitter emitter, uint face, vec2 u, OUT(vec3) x, OUT(vec3) d) {
     if (emitter.origin.w == 0.0f) {
-        x = emitter.origin.xyz;
+        x = xyz_of(emitter.origin);
         d = normalize(face_direction(emitter, face, u));
     } else {
         vec2 s = 2.0f * u - 1.0f;
-        x = emitter.origin.xyz + emitter.axis.w * (s.x * emitter.tangent.xyz + s.y * emitter.bitangent.xyz);
-        d = emitter.axis.xyz;
+        x = xyz_of(emitter.origin) + emitter.axis.w * (s.x * xyz_of(emitter.tangent) + s.y * xyz_of(emitter.bitangent));
+        d = xyz_of(emitter.axis);
     }
 }
 
@@ -53,17 +55,17 @@ vec3 channel_mask() {
 
 // face_direction in double precision, unit length.
 dvec3 face_direction_exact(Emitter emitter, uint face, vec2 u) {
-    dvec2 s = 2.0lf * dvec2(u) - 1.0lf;
-    dvec3 axis = dvec3(emitter.axis.xyz);
-    dvec3 tangent = dvec3(emitter.tangent.xyz);
-    dvec3 bitangent = dvec3(emitter.bitangent.xyz);
+    dvec2 s = double(2.0f) * dvec2(u) - double(1.0f);
+    dvec3 axis = dvec3(xyz_of(emitter.axis));
+    dvec3 tangent = dvec3(xyz_of(emitter.tangent));
+    dvec3 bitangent = dvec3(xyz_of(emitter.bitangent));
     dvec3 direction;
     if (emission_faces == 1u) {
         float h = emitter.axis.w;
         float spread = sqrt(max(0.0f, h * (2.0f - h))) / (1.0f - h);
         direction = axis + double(spread) * (s.x * tangent + s.y * bitangent);
     } else {
-        double side = (face % 2u == 0u) ? 1.0lf : -1.0lf;
+        double side = (face % 2u == 0u) ? double(1.0f) : double(-1.0f);
         if (face < 2u) direction = side * axis + s.x * tangent + s.y * bitangent;
         else if (face < 4u) direction = side * tangent + s.x * bitangent + s.y * axis;
         else direction = side * bitangent + s.x * axis + s.y * tangent;
@@ -78,7 +80,7 @@ dvec3 face_direction_exact(Emitter emitter, uint face, vec2 u) {
 // digits in float.
 float solid_angle(dvec3 a, dvec3 b, dvec3 c) {
     double triple = abs(dot(a, cross(b - a, c - a)));
-    double denominator = 1.0lf + dot(a, b) + dot(b, c) + dot(c, a);
+    double denominator = double(1.0f) + dot(a, b) + dot(b, c) + dot(c, a);
     return 2.0f * atan(float(triple), float(denominator));
 }
 
@@ -86,10 +88,10 @@ float solid_angle(dvec3 a, dvec3 b, dvec3 c) {
 // where 1 − a·b would cancel.
 double versine_between(dvec3 a, dvec3 b) {
     dvec3 apart = a - b;
-    return 0.5lf * dot(apart, apart);
+    return double(0.5f) * dot(apart, apart);
 }
 
-float angle_of_versine(double h) { return 2.0f * asin(min(1.0f, sqrt(float(0.5lf * h)))); }
+float angle_of_versine(double h) { return 2.0f * asin(min(1.0f, sqrt(float(double(0.5f) * h)))); }
 
 // Of a triangle on which f is linear, the share where f ≥ 0 (the spot's hard
 // edge, f = vₒ − v, cut as the chord of its circle across a sub-triangle).
@@ -120,10 +122,13 @@ const int kProfileCuts = 8;
 
 float patch_profile(Emitter emitter, uint face, vec2 u0, vec2 u1, vec2 u2) {
     if (emitter.origin.w != 0.0f || emitter.spot.w < 0.0f) return 1.0f;
-    dvec3 axis = normalize(dvec3(emitter.spot.xyz));
+    dvec3 axis = normalize(dvec3(xyz_of(emitter.spot)));
     double outer = double(emitter.spot.w), inner = double(emitter.spot_edge.x);
     bool hard = inner >= outer;
-    vec2 u[3] = vec2[3](u0, u1, u2);
+    vec2 u[3];
+    u[0] = u0;
+    u[1] = u1;
+    u[2] = u2;
     dvec3 d[3];
     for (int k = 0; k < 3; ++k) d[k] = face_direction_exact(emitter, face, u[k]);
     float width = max(angle_of_versine(versine_between(d[0], d[1])),
@@ -172,7 +177,7 @@ float patch_profile(Emitter emitter, uint face, vec2 u0, vec2 u1, vec2 u2) {
 // I = P/(2π(1 − cos α)) or irradiance E = P/(πR²); a cone's patch carries
 // I·Ω times the spot profile's mean over it (patch_profile).
 vec3 patch_power(Emitter emitter, uint face, vec2 u0, vec2 u1, vec2 u2) {
-    vec3 power = emitter.photon_power.rgb * float(emitter.photons.y);
+    vec3 power = xyz_of(emitter.photon_power) * float(emitter.photons.y);
     if (emitter.origin.w != 0.0f) {
         float radius = emitter.axis.w;
         return power / (3.14159265358979f * radius * radius) * (4.0f * radius * radius) *

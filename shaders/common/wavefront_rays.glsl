@@ -1,10 +1,13 @@
-// A wavefront ray (wavefront_trace.comp): its march from the light to where
-// it ends with the photons' march (common/ray_march.glsl), following one
-// branch of the Fresnel tree, and what it brings back (the Corner). A
-// patch's corners are such rays; so is the axis of a finished patch's tube
-// where the pass stores fluence, which deposits the patch's power along its
-// way (common/fluence_deposits.glsl). The includer declares Corner, `branch`
-// and the statistics blocks. GLSL only.
+// A wavefront ray (common/wavefront_patches.glsl): its march from the light
+// to where it ends with the photons' march (common/ray_march_steps.glsl),
+// following one branch of the Fresnel tree, and what it brings back (the
+// Corner). A patch's corners are such rays; so is the axis of a finished
+// patch's tube where the pass stores fluence, which deposits the patch's
+// power along its way (common/fluence_deposits.glsl). The includer declares
+// Corner, `branch`, `channel` and count_march (the march's tallies). Shared
+// by GLSL and C++ (render/stages/NativeWavefrontTrace.cpp).
+const uint kUnbranched = 0xFFFFFFu;  // history of a ray that ended before its branch's reflection
+
 // A ray's ledger at sharp surfaces. A Fresnel event is a crossing whose
 // reflectance is strictly between 0 and 1 (total internal reflection is not
 // one: it always reflects). Each wavefront follows one branch of the ray
@@ -53,15 +56,6 @@ void follow_branch(SurfaceCrossing crossing, INOUT(vec3) x, INOUT(vec3) x_lost, 
 }
 #endif
 
-void add_steps(uint steps, float max_invariant_error, float invariant_error_sum) {
-    uint before = atomicAdd(step_tallies[0], steps);
-    if (before + steps < before) atomicAdd(step_tallies[1], 1u);
-    atomicMax(step_tallies[2], floatBitsToUint(max_invariant_error));
-    uvec2 units = invariant_units(invariant_error_sum);
-    uint low_before = atomicAdd(invariant_tallies[0], units.x);
-    atomicAdd(invariant_tallies[1], units.y + (low_before + units.x < low_before ? 1u : 0u));
-}
-
 // Where a ray first crossed a receiver's plane outside its square: a
 // footprint reaching past the square's edge is cut there exactly.
 struct PlaneCrossing {
@@ -71,11 +65,11 @@ struct PlaneCrossing {
 
 void note_plane_crossing(vec3 a, vec3 b, INOUT(PlaneCrossing) crossing) {
     for (uint r = 0u; r < receiver_count; ++r) {
-        float da = receiver_signed_distance(a, receivers[r].origin.xyz, receivers[r].normal.xyz);
-        float db = receiver_signed_distance(b, receivers[r].origin.xyz, receivers[r].normal.xyz);
+        float da = receiver_signed_distance(a, xyz_of(receivers[r].origin), xyz_of(receivers[r].normal));
+        float db = receiver_signed_distance(b, xyz_of(receivers[r].origin), xyz_of(receivers[r].normal));
         bool first = crossing.receiver < 0 && da > 0.0f && db <= 0.0f;  // lit side to back only, the first noted
-        vec2 uv = receiver_map_coordinates(mix(a, b, first ? da / (da - db) : 0.0f), receivers[r].origin.xyz,
-                                           receivers[r].axis_u.xyz, receivers[r].axis_v.xyz, receivers[r].origin.w);
+        vec2 uv = receiver_map_coordinates(mix(a, b, first ? da / (da - db) : 0.0f), xyz_of(receivers[r].origin),
+                                           xyz_of(receivers[r].axis_u), xyz_of(receivers[r].axis_v), receivers[r].origin.w);
         crossing.receiver = first ? int(r) : crossing.receiver;
         crossing.map_uv = first ? uv : crossing.map_uv;
     }
@@ -85,12 +79,12 @@ void note_plane_crossing(vec3 a, vec3 b, INOUT(PlaneCrossing) crossing) {
 // may be EIKON_INFINITY): the plane's crossing solved for t.
 void note_ray_plane_crossing(vec3 x, vec3 d, float reach, INOUT(PlaneCrossing) crossing) {
     for (uint r = 0u; r < receiver_count; ++r) {
-        float height = receiver_signed_distance(x, receivers[r].origin.xyz, receivers[r].normal.xyz);
-        float approach = dot(d, receivers[r].normal.xyz);
+        float height = receiver_signed_distance(x, xyz_of(receivers[r].origin), xyz_of(receivers[r].normal));
+        float approach = dot(d, xyz_of(receivers[r].normal));
         float t = approach < 0.0f ? -height / approach : 0.0f;
         bool first = crossing.receiver < 0 && height > 0.0f && approach < 0.0f && t <= reach;  // lit side to back only
-        vec2 uv = receiver_map_coordinates(x + t * d, receivers[r].origin.xyz, receivers[r].axis_u.xyz,
-                                           receivers[r].axis_v.xyz, receivers[r].origin.w);
+        vec2 uv = receiver_map_coordinates(x + t * d, xyz_of(receivers[r].origin), xyz_of(receivers[r].axis_u),
+                                           xyz_of(receivers[r].axis_v), receivers[r].origin.w);
         crossing.receiver = first ? int(r) : crossing.receiver;
         crossing.map_uv = first ? uv : crossing.map_uv;
     }
@@ -190,7 +184,7 @@ Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
         vec3 kappa = sample_extinction(medium);
         last_inside = vec4(mix(start, x, ds > 0.0f ? travelled / ds : 0.0f), 1.0f);
         if (tube && ledger.branched)
-            deposit_tube_segment(start, last_inside.xyz, tube_power * power, kappa, sample_scattering(medium));
+            deposit_tube_segment(start, xyz_of(last_inside), tube_power * power, kappa, sample_scattering(medium));
         vec3 transmitted = power * beer_lambert_transmittance(kappa, travelled);
         absorbed += power - transmitted;
         power = transmitted;
@@ -209,7 +203,7 @@ Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
         landed.receiver = outside.receiver;
         landed.map_uv = outside.map_uv;
     }
-    add_steps(steps, max_invariant_error, invariant_error_sum);
+    count_march(steps, max_invariant_error, invariant_units(invariant_error_sum));
     Corner corner;
     corner.ends = vec4(u, landed.map_uv);
     corner.exit = last_inside;
