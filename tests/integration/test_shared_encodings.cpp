@@ -21,6 +21,8 @@
 namespace eikon {
 namespace {
 
+using sim::SevenPointOperator;
+
 constexpr const char* kEncodingProbe = R"(
 layout(local_size_x = 64) in;
 #include "common/stencil_flags.glsl"
