@@ -182,6 +182,7 @@ Program compileCompute(const std::vector<std::string>& parts) {
     glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
     glGetProgramInfoLog(program.id(), GLsizei(log.size()), nullptr, log.data());
     if (!ok) throw std::runtime_error("compute program failed to link:\n" + log);
+    program.readWorkGroupSize();
     return program;
 }
 
@@ -223,10 +224,10 @@ public:
 
     // One dispatch of `kernel` over all rays, waited for with glFinish.
     double timedDispatch(Kernel kernel, const GpuScene& scene) {
-        bind(kernel, scene);
+        const Program& program = bind(kernel, scene);
         glFinish();
         const auto start = std::chrono::steady_clock::now();
-        glDispatchCompute(GLuint(kRays / 64), 1, 1);
+        program.dispatchCovering(kRays);
         glFinish();
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
@@ -247,7 +248,7 @@ private:
         return scene;
     }
 
-    void bind(Kernel kernel, const GpuScene& scene) const {
+    const Program& bind(Kernel kernel, const GpuScene& scene) const {
         const Program& program = kernel == Kernel::DenseTexture ? dense_ : nano_;
         program.use();
         glUniform1f(program.uniform("uExtent"), float(scene.n - 1));
@@ -258,6 +259,7 @@ private:
             scene.nanoGrid.bindStorage(1);
         }
         sums_.bindStorage(0);
+        return program;
     }
 
     double dispatchAndSum(Kernel kernel, const GpuScene& scene) {

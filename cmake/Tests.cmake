@@ -132,6 +132,8 @@ eikon_test(test_render LABELS integration LIBS eikon_io eikon_render eikon_sim S
   tests/integration/test_field_textures.cpp
   tests/integration/test_emission_region.cpp
   tests/integration/test_gpu_contract.cpp
+  tests/integration/test_work_group_size.cpp
+  tests/integration/test_shared_encodings.cpp
   tests/integration/test_memory_estimate.cpp
   tests/integration/test_step_structure.cpp
   tests/integration/test_grid_pass_devices.cpp

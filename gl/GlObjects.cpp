@@ -156,20 +156,27 @@ GLint Program::uniform(const char* name) const {
     return location;
 }
 
-void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX,
-                               GLuint localY, GLuint localZ) const {
+void Program::readWorkGroupSize() {
+    GLint size[3] = {0, 0, 0};
+    glGetProgramiv(id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+    workGroupSize_ = glm::uvec3(static_cast<GLuint>(size[0]), static_cast<GLuint>(size[1]),
+                                static_cast<GLuint>(size[2]));
+}
+
+glm::uvec3 Program::groupsCovering(std::size_t countX, std::size_t countY, std::size_t countZ) const {
+    EIKON_CHECK_MSG(workGroupSize_.x > 0, shaderName_ + ": no work-group size (not a linked compute program)");
     const std::size_t counts[3] = {countX, countY, countZ};
-    const GLuint locals[3] = {localX, localY, localZ};
-    GLuint groups[3];
+    glm::uvec3 groups;
     // The driver's limits, read once (every context of a process is made by the same driver).
     static const std::array<GLint, 3> mostGroups = [] {
         std::array<GLint, 3> most{};
         for (GLuint axis = 0; axis < 3; ++axis) glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, axis, &most[axis]);
         return most;
     }();
-    for (GLuint axis = 0; axis < 3; ++axis) {
-        const GLint most = mostGroups[axis];
-        const std::size_t needed = (counts[axis] + locals[axis] - 1) / locals[axis];
+    for (int axis = 0; axis < 3; ++axis) {
+        const GLint most = mostGroups[static_cast<std::size_t>(axis)];
+        const std::size_t local = workGroupSize_[axis];
+        const std::size_t needed = (counts[axis] + local - 1) / local;
         // A stage that asks for more work groups than the driver dispatches
         // must split its work: OpenGL would refuse with GL_INVALID_VALUE.
         EIKON_CHECK_MSG(needed <= static_cast<std::size_t>(most),
@@ -177,13 +184,30 @@ void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size
                             std::to_string(axis) + ", above GL_MAX_COMPUTE_WORK_GROUP_COUNT " + std::to_string(most));
         groups[axis] = static_cast<GLuint>(needed);
     }
+    return groups;
+}
+
+void Program::dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ) const {
+    const glm::uvec3 groups = groupsCovering(countX, countY, countZ);
     use();
-    glDispatchCompute(groups[0], groups[1], groups[2]);
+    glDispatchCompute(groups.x, groups.y, groups.z);
 }
 
 void Program::dispatchOverCells(const glm::ivec3& cells) const {
     dispatchCovering(static_cast<std::size_t>(cells.x), static_cast<std::size_t>(cells.y),
-                     static_cast<std::size_t>(cells.z), 4, 4, 4);
+                     static_cast<std::size_t>(cells.z));
+}
+
+void Program::dispatchGroups(GLuint groupsX, GLuint groupsY, GLuint groupsZ) const {
+    use();
+    glDispatchCompute(groupsX, groupsY, groupsZ);
+}
+
+void Program::dispatchIndirect(const Buffer& command, GLintptr offset) const {
+    use();
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, command.id());
+    glDispatchComputeIndirect(offset);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace eikon::gl

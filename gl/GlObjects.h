@@ -154,8 +154,11 @@ private:
     GlName<deleteTexture> name_;
 };
 
-// A linked compute program, named in its errors after the shader it was
-// compiled from (gl::compileComputeProgram).
+// A linked program, named in its errors after the shader it was compiled
+// from (gl::compileComputeProgram). A compute program knows its work-group
+// size, read from the driver at link time (GL_COMPUTE_WORK_GROUP_SIZE): the
+// shader's `layout(local_size_…)` is its only statement, and dispatches take
+// counts of items, not of groups.
 class Program {
 public:
     Program() = default;
@@ -170,15 +173,28 @@ public:
     // an error. Compilers also drop uniforms a program never reads, so every
     // uniform a stage sets must be read in every #define variant it compiles.
     GLint uniform(const char* name) const;
-    // Dispatches enough work groups of `localSize` to cover `count` items.
-    void dispatchCovering(std::size_t countX, std::size_t countY, std::size_t countZ, GLuint localX, GLuint localY,
-                          GLuint localZ) const;
-    // Covers a 3D grid of cells with 4×4×4 work groups (the grid shaders' local size).
+
+    // Reads the linked compute program's work-group size from the driver;
+    // called once the program links (gl::compileComputeProgram does).
+    void readWorkGroupSize();
+    glm::uvec3 workGroupSize() const { return workGroupSize_; }
+    // The work groups that cover `count` items along each axis: ⌈count / size⌉.
+    glm::uvec3 groupsCovering(std::size_t countX, std::size_t countY = 1, std::size_t countZ = 1) const;
+    // Dispatches the work groups that cover `count` items along each axis.
+    void dispatchCovering(std::size_t countX, std::size_t countY = 1, std::size_t countZ = 1) const;
+    // Covers a 3D grid of cells.
     void dispatchOverCells(const glm::ivec3& cells) const;
+    // Dispatches exactly `groups` work groups, for the passes that count
+    // groups rather than items (a reduction's partials, one group a body).
+    void dispatchGroups(GLuint groupsX, GLuint groupsY = 1, GLuint groupsZ = 1) const;
+    // Dispatches the work groups that an earlier pass wrote into `command`
+    // (x, y, z at `offset`, glDispatchComputeIndirect).
+    void dispatchIndirect(const Buffer& command, GLintptr offset = 0) const;
 
 private:
     GlName<deleteProgram> name_;
     std::string shaderName_;
+    glm::uvec3 workGroupSize_{0};
 };
 
 }  // namespace eikon::gl

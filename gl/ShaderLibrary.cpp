@@ -159,6 +159,7 @@ Program linkStages(const std::vector<std::pair<GLenum, std::pair<std::string, Re
     GLint linked = GL_FALSE;
     glGetProgramiv(program.id(), GL_LINK_STATUS, &linked);
     if (!linked) throw std::runtime_error("linking shader " + name + ":\n" + logOf(program.id(), true));
+    if (stages.front().first == GL_COMPUTE_SHADER) program.readWorkGroupSize();
     return program;
 }
 

@@ -99,8 +99,11 @@ ProducedFrame LiveFrames::produce(const FieldViews& slot) {
     frame.fluid = fields_.fluidReport();
     const std::uint64_t exportedBytes = captureExport(index, frame);
     frame.simulationDevice = fields_.fluidDevice();
-    const std::size_t ringFloats = slot.deltaIndex.size() + slot.extinction.size() + slot.scattering.size() +
-                                   slot.anisotropy.size() + slot.surfaceNodes.size() + slot.surfaceTriangles.size();
+    std::size_t ringFloats = 0;  // the slot's fields of the ring that the host wrote
+#define EIKON_RING_FIELD_FLOATS(member, channels, version, format, ring, ...) \
+    EIKON_IN_RING_##ring(ringFloats += slot.member.size();)
+    EIKON_OPTICAL_FIELDS(EIKON_RING_FIELD_FLOATS)
+#undef EIKON_RING_FIELD_FLOATS
     // After the export's reads, which count too.
     frame.busBytes = fields_.takeFluidBusBytes() + ringFloats * sizeof(float) + exportedBytes;
     return frame;

@@ -7,6 +7,7 @@
 
 #include "bridge/grid/CellBox.h"
 #include "bridge/grid/GridSpec.h"
+#include "bridge/grid/OpticalFields.h"
 
 #include <glm/vec3.hpp>
 
@@ -47,27 +48,24 @@ struct FieldChange {
     }
 };
 
+// One vector per optical field (OpticalFields.h), `channels` floats per
+// cell, empty where the scene lacks the field: δn always; extinction κ and
+// scattering σs in 1/m (RGB) where nonzero somewhere; the Henyey–Greenstein
+// g where nonzero somewhere; the emitted radiance per unit length ε in
+// W/(m³·sr) (RGB) where something glows (an imported volume's blackbody
+// emission or emission grid, sim/optics/VolumeOptics.h); and the sharp mesh
+// and water surfaces (sim/SharpMeshSurfaces.h): the nodes of every object's
+// tree, the roots first (node k is the root of the k-th such object in scene
+// order), and the triangles the leaves index.
 struct FieldSet {
     GridSpec grid;
-    double referenceIndex = 1.0;      // n_ref
-    std::vector<float> deltaIndex;    // one per cell
-    std::vector<float> extinction;    // three per cell (RGB), empty when κ = 0 everywhere
-    std::vector<float> scattering;    // three per cell (RGB), empty when σs = 0 everywhere
-    std::vector<float> anisotropy;    // Henyey–Greenstein g, one per cell, empty when g = 0 everywhere
-    // Emitted radiance per unit length ε in W/(m³·sr), three per cell (RGB),
-    // empty when nothing glows: an imported volume's blackbody emission or
-    // emission grid (sim/optics/VolumeOptics.h). It shares κ's version.
-    std::vector<float> emission;
-    // The sharp mesh and water surfaces (sim/SharpMeshSurfaces.h), empty
-    // when the scene has none: the nodes of every object's tree, the roots
-    // first (node k is the root of the k-th such object in scene order), and
-    // the triangles the leaves index.
-    std::vector<float> surfaceNodes;
-    std::vector<float> surfaceTriangles;
-    std::uint64_t indexVersion = 0;
-    std::uint64_t extinctionVersion = 0;  // κ and ε together
-    std::uint64_t scatteringVersion = 0;  // σs and g together
-    std::uint64_t surfaceVersion = 0;     // surface nodes and triangles together
+    double referenceIndex = 1.0;  // n_ref
+#define EIKON_FIELD_VECTOR(member, ...) std::vector<float> member;
+    EIKON_OPTICAL_FIELDS(EIKON_FIELD_VECTOR)
+#undef EIKON_FIELD_VECTOR
+#define EIKON_FIELD_VERSION(group) std::uint64_t group##Version = 0;
+    EIKON_OPTICAL_FIELD_VERSIONS(EIKON_FIELD_VERSION)
+#undef EIKON_FIELD_VERSION
     FieldChange indexChange, extinctionChange, scatteringChange;
 
     bool hasExtinction() const { return !extinction.empty(); }

@@ -2,14 +2,23 @@
 
 namespace eikon {
 
-FieldViews viewsOf(FieldSet& fields) {
-    return {fields.grid, fields.referenceIndex, fields.deltaIndex, fields.extinction, fields.scattering,
-            fields.anisotropy, fields.surfaceNodes, fields.surfaceTriangles, fields.emission};
+namespace {
+
+template <typename Views, typename Fields>
+Views viewsOfFields(Fields& fields) {
+    Views views;
+    views.grid = fields.grid;
+    views.referenceIndex = fields.referenceIndex;
+#define EIKON_FIELD_VIEW(member, ...) views.member = fields.member;
+    EIKON_OPTICAL_FIELDS(EIKON_FIELD_VIEW)
+#undef EIKON_FIELD_VIEW
+    return views;
 }
 
-ConstFieldViews viewsOf(const FieldSet& fields) {
-    return {fields.grid, fields.referenceIndex, fields.deltaIndex, fields.extinction, fields.scattering,
-            fields.anisotropy, fields.surfaceNodes, fields.surfaceTriangles, fields.emission};
-}
+}  // namespace
+
+FieldViews viewsOf(FieldSet& fields) { return viewsOfFields<FieldViews>(fields); }
+
+ConstFieldViews viewsOf(const FieldSet& fields) { return viewsOfFields<ConstFieldViews>(fields); }
 
 }  // namespace eikon

@@ -2,9 +2,9 @@
 // lives: a FieldSet's vectors, or a slot of the renderer's ring of
 // persistently mapped GPU buffers (render/stages/FieldRing.h), so that the
 // simulation writes its output straight into memory the GPU reads.
-// Layout as in FieldSet: δn one float per cell, κ and σs three (RGB), g one,
-// the sharp surfaces' tree nodes and triangles as FieldSet lays them out, ε
-// three; an empty span is a field the scene does not have.
+// One span per optical field (OpticalFields.h), laid out as in FieldSet; an
+// empty span is a field the scene does not have. ε lives in host memory
+// only (an imported volume's), never in the ring.
 #pragma once
 
 #include "bridge/grid/FieldSet.h"
@@ -18,13 +18,9 @@ template <typename Value>  // float, or const float for read-only views
 struct BasicFieldViews {
     GridSpec grid;
     double referenceIndex = 1.0;
-    std::span<Value> deltaIndex;
-    std::span<Value> extinction;
-    std::span<Value> scattering;
-    std::span<Value> anisotropy;
-    std::span<Value> surfaceNodes;
-    std::span<Value> surfaceTriangles;
-    std::span<Value> emission{};  // RGB per cell; host memory only (an imported volume's), never in the ring
+#define EIKON_FIELD_SPAN(member, ...) std::span<Value> member{};
+    EIKON_OPTICAL_FIELDS(EIKON_FIELD_SPAN)
+#undef EIKON_FIELD_SPAN
 
     bool hasExtinction() const { return !extinction.empty(); }
     bool hasScattering() const { return !scattering.empty(); }
@@ -32,8 +28,13 @@ struct BasicFieldViews {
     bool hasEmission() const { return !emission.empty(); }
 
     operator BasicFieldViews<const float>() const {
-        return {grid,       referenceIndex, deltaIndex,   extinction,       scattering,
-                anisotropy, surfaceNodes,   surfaceTriangles, emission};
+        BasicFieldViews<const float> views;
+        views.grid = grid;
+        views.referenceIndex = referenceIndex;
+#define EIKON_FIELD_CONST_SPAN(member, ...) views.member = member;
+        EIKON_OPTICAL_FIELDS(EIKON_FIELD_CONST_SPAN)
+#undef EIKON_FIELD_CONST_SPAN
+        return views;
     }
 };
 using FieldViews = BasicFieldViews<float>;

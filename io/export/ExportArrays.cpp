@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 namespace eikon::io {
 
@@ -25,12 +26,19 @@ std::vector<NamedArray> fieldArrays(const ConstFieldViews& fields, double outsid
     NamedArray index{"index", 1, std::vector<float>(cells), {"1", ArrayRole::Scalar, indexOf(outside)}};
     for (std::size_t c = 0; c < cells; ++c) index.values[c] = indexOf(fields.deltaIndex[c]);
     arrays.push_back(std::move(index));
-    auto copy = [](std::span<const float> values) { return std::vector<float>(values.begin(), values.end()); };
-    arrays.push_back({"delta_index", 1, copy(fields.deltaIndex), {"1", ArrayRole::Scalar, outside}});
-    if (fields.hasExtinction()) arrays.push_back({"extinction", 3, copy(fields.extinction), {"1/m", ArrayRole::Density}});
-    if (fields.hasScattering()) arrays.push_back({"scattering", 3, copy(fields.scattering), {"1/m", ArrayRole::Density}});
-    if (fields.hasAnisotropy()) arrays.push_back({"anisotropy", 1, copy(fields.anisotropy), {"1", ArrayRole::Scalar}});
-    if (fields.hasEmission()) arrays.push_back({"emission", 3, copy(fields.emission), {"W/(m^3 sr)", ArrayRole::Density}});
+    // Then each exported optical field the frame has, as it holds it; δn's
+    // background is the outside δn.
+    const auto add = [&](std::span<const float> values, const char* name, int channels, const char* unit,
+                         ArrayRole role, float background) {
+        if (values.empty()) return;
+        arrays.push_back({name, channels, std::vector<float>(values.begin(), values.end()), {unit, role, background}});
+    };
+#define EIKON_EXPORT_FIELD(member, channels, version, format, ring, exportName, unit, role, ...) \
+    if (*exportName)                                                                          \
+        add(fields.member, exportName, channels, unit, ArrayRole::role,                       \
+            std::string_view(#member) == "deltaIndex" ? outside : 0.0f);
+    EIKON_OPTICAL_FIELDS(EIKON_EXPORT_FIELD)
+#undef EIKON_EXPORT_FIELD
     return arrays;
 }
 

@@ -3,6 +3,7 @@
 #include "bridge/mesh/Creases.h"
 #include "gl/GlDebug.h"
 #include "gl/ShaderLibrary.h"
+#include "shaders/common/cpp_shim.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -13,8 +14,7 @@ namespace eikon::render {
 
 namespace {
 
-constexpr int kSheets = 2;  // refracted and reflected (common/caustic_vertices.glsl)
-constexpr int kCellGroupEdge = 8;  // caustic_polygons.comp's work groups: 8 × 8 cells of one sheet
+constexpr auto kSheets = static_cast<std::size_t>(shader::kCausticSheets);  // refracted and reflected
 constexpr std::size_t kVertexBytes = 3 * 4 * sizeof(float);
 constexpr std::size_t kTriangleBytes = 3 * 4 * sizeof(float);
 constexpr std::size_t kDepositBytes = 3 * 4 * sizeof(float);
@@ -84,8 +84,10 @@ void CausticPolygons::clear() {
 
 void CausticPolygons::bindVertices(const glm::ivec2& grid) {
     vertices_.bindStorage(layout::kCausticVertices);
-    const auto groups = [](int texels) { return static_cast<unsigned>((texels - 1 + kCellGroupEdge - 1) / kCellGroupEdge); };
-    const glm::uvec4 refractedSheet(groups(grid.x), groups(grid.y), 1u, 0u);
+    // The cell pass's work groups over the refracted sheet's cells (one fewer than texels a side).
+    const glm::uvec3 cells = cellProgram_.groupsCovering(static_cast<std::size_t>(grid.x - 1),
+                                                         static_cast<std::size_t>(grid.y - 1));
+    const glm::uvec4 refractedSheet(cells.x, cells.y, 1u, 0u);
     cellGroups_.upload(&refractedSheet, sizeof refractedSheet);
     cellGroups_.bindStorage(layout::kCausticCellGroups);
 }
@@ -101,17 +103,13 @@ void CausticPolygons::drawLight(const glm::ivec2& grid, const glm::vec3& powerUn
     depositCount_.bindStorage(layout::kCausticDepositCount);
     cellProgram_.use();
     glUniform2i(cellProgram_.uniform("layer_size"), grid.x, grid.y);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, cellGroups_.id());
-    glDispatchComputeIndirect(0);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    cellProgram_.dispatchIndirect(cellGroups_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
     // The small triangles and the splats, straight into the tallies.
     depositProgram_.use();
     glUniform3fv(depositProgram_.uniform("power_unit"), 1, glm::value_ptr(powerUnit));
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, depositCount_.id());
-    glDispatchComputeIndirect(0);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    depositProgram_.dispatchIndirect(depositCount_);
 
     // The larger triangles, into the atlas.
     GLint previousFramebuffer = 0;

@@ -256,7 +256,7 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
     }
     if (instrumentOf(diagnostic_) == Instrument::Shadowgraph) {
         const std::size_t cornersX = beamCorners(width, drawnSide()), cornersY = beamCorners(height, drawnSide());
-        program_.dispatchCovering(cornersX, cornersY, 1, 8, 8, 1);
+        program_.dispatchCovering(cornersX, cornersY);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         screen_.clearToZero();
         screen_.bindStorage(layout::kDiagnosticScreen);
@@ -265,11 +265,11 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
         glUniform1ui(deposit_.uniform("beam_margin"), kBeamMargin);
         glUniform1ui(deposit_.uniform("beam_subdivision"), static_cast<GLuint>(drawnSide()));
         glUniform1i(deposit_.uniform("tallied_channels"), screenChannels_);
-        deposit_.dispatchCovering(cornersX - 1, cornersY - 1, 1, 8, 8, 1);
+        deposit_.dispatchCovering(cornersX - 1, cornersY - 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         resolve_.use();
         glUniform1i(resolve_.uniform("tallied_channels"), screenChannels_);
-        resolve_.dispatchCovering(width, height, 1, 8, 8, 1);
+        resolve_.dispatchCovering(width, height);
     } else {
         // k² passes, one ray a pixel each, averaged as the view's are; or
         // one pass of a ray a block, through the middle of its middle pixel.
@@ -280,7 +280,7 @@ Image8 DiagnosticStage::run(const FieldTextures& fields) {
             const glm::vec2 offset = gridSampleOffset(cell, side);
             glUniform2f(program_.uniform("sample_offset"), offset.x, offset.y);
             glUniform1ui(program_.uniform("samples_before"), static_cast<GLuint>(cell));
-            program_.dispatchCovering((width + stride - 1) / stride, (height + stride - 1) / stride, 1, 8, 8, 1);
+            program_.dispatchCovering((width + stride - 1) / stride, (height + stride - 1) / stride);
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         }
     }

@@ -8,49 +8,53 @@ namespace eikon::render {
 
 namespace {
 
-enum Field { kIndex, kExtinction, kScattering, kAnisotropy, kSurfaceNodes, kSurfaceTriangles };
-
 std::span<float> span(const gl::MappedBuffer& buffer, std::size_t floats) {
     return floats ? std::span<float>(buffer.floats(), floats) : std::span<float>();
 }
 
-FieldSource source(GLuint buffer, std::size_t floats) { return floats ? FieldSource{nullptr, buffer, floats} : FieldSource{}; }
-
-constexpr std::size_t kVolumeFields = 4;  // δn, κ, σs, g: those that may live in device memory
+// Whether a field of the ring is a volume field: those may live in device
+// memory (GPU passes write them) and, mapped, are read on the host too; the
+// surfaces' arrays are always mapped and read by the GPU only.
+constexpr bool kVolumeField_Volume = true;
+constexpr bool kVolumeField_Surface = false;
 
 }  // namespace
 
 FieldRing::FieldRing(const FieldSet& layout, int slots, FieldRingMemory memory)
-    : grid_(layout.grid),
-      referenceIndex_(layout.referenceIndex),
-      memory_(memory),
-      floats_{layout.deltaIndex.size(),      layout.extinction.size(),    layout.scattering.size(),
-              layout.anisotropy.size(),      layout.surfaceNodes.size(),    layout.surfaceTriangles.size()},
-      slots_(static_cast<std::size_t>(slots)) {
+    : grid_(layout.grid), referenceIndex_(layout.referenceIndex), memory_(memory), slots_(static_cast<std::size_t>(slots)) {
     EIKON_CHECK_MSG(slots >= 2, "a field ring needs two slots or more");
-    for (Slot& slot : slots_)
-        for (std::size_t field = 0; field < floats_.size(); ++field) {
-            if (!floats_[field]) continue;
-            const gl::GpuResource resource{field < kVolumeFields ? "grid.resolution" : "objects",
-                                           "a slot of the live field ring"};
-            if (memory_ == FieldRingMemory::Device && field < kVolumeFields)
-                slot.device[field] = gl::Buffer(floats_[field] * sizeof(float), nullptr, 0, resource);
-            else
-                slot.buffers[field] = gl::MappedBuffer(floats_[field] * sizeof(float), resource);
-        }
+#define EIKON_RING_FLOATS(member, channels, version, format, ring, ...) \
+    EIKON_IN_RING_##ring(floats_.member = layout.member.size();)
+    EIKON_OPTICAL_FIELDS(EIKON_RING_FLOATS)
+#undef EIKON_RING_FLOATS
+    const auto make = [&](SlotField& field, std::size_t floats, bool volumeField) {
+        if (!floats) return;
+        const gl::GpuResource resource{volumeField ? "grid.resolution" : "objects", "a slot of the live field ring"};
+        if (memory_ == FieldRingMemory::Device && volumeField)
+            field.device = gl::Buffer(floats * sizeof(float), nullptr, 0, resource);
+        else
+            field.mapped = gl::MappedBuffer(floats * sizeof(float), resource);
+    };
+    for (Slot& slot : slots_) {
+#define EIKON_MAKE_SLOT_FIELD(member, channels, version, format, ring, ...) \
+    EIKON_IN_RING_##ring(make(slot.member, floats_.member, kVolumeField_##ring);)
+        EIKON_OPTICAL_FIELDS(EIKON_MAKE_SLOT_FIELD)
+#undef EIKON_MAKE_SLOT_FIELD
+    }
     stats_.slots = slots;
 }
 
 FieldViews FieldRing::views(const Slot& slot) const {
     const bool mapped = memory_ == FieldRingMemory::Mapped;  // device memory has no host view
-    return {grid_,
-            referenceIndex_,
-            span(slot.buffers[kIndex], mapped ? floats_[kIndex] : 0),
-            span(slot.buffers[kExtinction], mapped ? floats_[kExtinction] : 0),
-            span(slot.buffers[kScattering], mapped ? floats_[kScattering] : 0),
-            span(slot.buffers[kAnisotropy], mapped ? floats_[kAnisotropy] : 0),
-            span(slot.buffers[kSurfaceNodes], floats_[kSurfaceNodes]),
-            span(slot.buffers[kSurfaceTriangles], floats_[kSurfaceTriangles])};
+    FieldViews views;
+    views.grid = grid_;
+    views.referenceIndex = referenceIndex_;
+#define EIKON_SLOT_VIEW(member, channels, version, format, ring, ...)                                       \
+    EIKON_IN_RING_##ring(views.member = span(slot.member.mapped,                                            \
+                                             mapped || !kVolumeField_##ring ? floats_.member : 0);)
+    EIKON_OPTICAL_FIELDS(EIKON_SLOT_VIEW)
+#undef EIKON_SLOT_VIEW
+    return views;
 }
 
 FieldViews FieldRing::acquire() {
@@ -79,34 +83,31 @@ FieldUpload FieldRing::current() const {
     EIKON_CHECK_MSG(current_ >= 0, "no field ring slot published yet");
     const Slot& slot = slots_[static_cast<std::size_t>(current_)];
     // A mapped slot is also read on the host (the frame's closed forms,
-    // render/graph/UniformMedium.h, and a diagnostic's varying voxels).
-    auto volume = [&](std::size_t field) {
-        if (!floats_[field]) return FieldSource{};
-        if (memory_ == FieldRingMemory::Device) return FieldSource{nullptr, slot.device[field].id(), floats_[field]};
-        return FieldSource{slot.buffers[field].floats(), slot.buffers[field].id(), floats_[field]};
+    // render/graph/UniformMedium.h, and a diagnostic's varying voxels); a
+    // slot's fields are copied whole, on the GPU (no FieldChange). Emission
+    // comes only from imported volumes, never through the ring.
+    const auto source = [&](const SlotField& field, std::size_t floats, bool volumeField) {
+        if (!floats) return FieldSource{};
+        if (field.device.id()) return FieldSource{nullptr, field.device.id(), floats};
+        return FieldSource{volumeField ? field.mapped.floats() : nullptr, field.mapped.id(), floats};
     };
-    return {grid_,
-            referenceIndex_,
-            volume(kIndex),
-            volume(kExtinction),
-            volume(kScattering),
-            volume(kAnisotropy),
-            source(slot.buffers[kSurfaceNodes].id(), floats_[kSurfaceNodes]),
-            source(slot.buffers[kSurfaceTriangles].id(), floats_[kSurfaceTriangles]),
-            slot.indexVersion,
-            slot.extinctionVersion,
-            slot.scatteringVersion,
-            slot.surfaceVersion,
-            FieldSource{},  // emission comes only from imported volumes, never through the ring
-            FieldChange{},  // a slot's fields are copied whole, on the GPU
-            FieldChange{},
-            FieldChange{}};
+    FieldUpload upload;
+    upload.grid = grid_;
+    upload.referenceIndex = referenceIndex_;
+#define EIKON_SLOT_SOURCE(member, channels, version, format, ring, ...) \
+    EIKON_IN_RING_##ring(upload.member = source(slot.member, floats_.member, kVolumeField_##ring);)
+    EIKON_OPTICAL_FIELDS(EIKON_SLOT_SOURCE)
+#undef EIKON_SLOT_SOURCE
+#define EIKON_SLOT_VERSION(group) upload.group##Version = slot.group##Version;
+    EIKON_OPTICAL_FIELD_VERSIONS(EIKON_SLOT_VERSION)
+#undef EIKON_SLOT_VERSION
+    return upload;
 }
 
 std::array<GLuint, 3> FieldRing::acquiredDeviceBuffers() const {
     EIKON_CHECK_MSG(acquired_ >= 0 && memory_ == FieldRingMemory::Device, "no device-memory slot acquired");
     const Slot& slot = slots_[static_cast<std::size_t>(acquired_)];
-    return {slot.device[kIndex].id(), slot.device[kExtinction].id(), slot.device[kScattering].id()};
+    return {slot.deltaIndex.device.id(), slot.extinction.device.id(), slot.scattering.device.id()};
 }
 
 ConstFieldViews FieldRing::currentViews() const {

@@ -1,7 +1,8 @@
 // The zero-copy bridge between the simulation and the GPU.
 //
 // Sun et al. ([Sun08] §5.2) lost about a tenth of every frame copying volumes
-// between OpenGL and CUDA. Here each field the scene has (δn, κ, σs, g) lives
+// between OpenGL and CUDA. Here each field of the ring the scene has (δn,
+// κ, σs, g and the sharp surfaces' arrays: bridge/grid/OpticalFields.h) lives
 // in a ring of persistently mapped GL buffers (gl/MappedBuffer.h): the
 // simulation writes frame k+1 straight into one slot, from any thread, while
 // the GPU copies frame k from another slot into the 3D textures the tracer
@@ -61,18 +62,33 @@ public:
     std::array<GLuint, 3> acquiredDeviceBuffers() const;
 
 private:
+    // One field of a slot: mapped, or (a volume field, in device memory) a
+    // plain GL buffer; neither when the scene lacks the field.
+    struct SlotField {
+        gl::MappedBuffer mapped;
+        gl::Buffer device;
+    };
     struct Slot {
-        std::array<gl::MappedBuffer, 6> buffers;  // δn, κ, σs, g, surface nodes and triangles (empty when absent)
-        std::array<gl::Buffer, 4> device;         // δn, κ, σs, g in device memory, in place of the first four
+#define EIKON_SLOT_FIELD(member, channels, version, format, ring, ...) EIKON_IN_RING_##ring(SlotField member;)
+        EIKON_OPTICAL_FIELDS(EIKON_SLOT_FIELD)
+#undef EIKON_SLOT_FIELD
         gl::Fence readByGpu;
-        std::uint64_t indexVersion = 0, extinctionVersion = 0, scatteringVersion = 0, surfaceVersion = 0;
+#define EIKON_SLOT_VERSION(group) std::uint64_t group##Version = 0;
+        EIKON_OPTICAL_FIELD_VERSIONS(EIKON_SLOT_VERSION)
+#undef EIKON_SLOT_VERSION
+    };
+    // The floats of each field of the ring; 0 when the scene lacks it.
+    struct FieldFloats {
+#define EIKON_RING_FLOATS(member, channels, version, format, ring, ...) EIKON_IN_RING_##ring(std::size_t member = 0;)
+        EIKON_OPTICAL_FIELDS(EIKON_RING_FLOATS)
+#undef EIKON_RING_FLOATS
     };
     FieldViews views(const Slot& slot) const;
 
     GridSpec grid_;
     double referenceIndex_ = 1.0;
     FieldRingMemory memory_;
-    std::array<std::size_t, 6> floats_{};  // per field; 0 when the scene lacks it
+    FieldFloats floats_;
     std::vector<Slot> slots_;
     int current_ = -1;
     int acquired_ = -1;

@@ -69,22 +69,19 @@ bool uploadBuffer(gl::Buffer& buffer, const FieldSource& source, UploadBytes& by
 }  // namespace
 
 FieldUpload hostUpload(const FieldSet& fields) {
-    return {fields.grid,
-            fields.referenceIndex,
-            hostSource(fields.deltaIndex),
-            hostSource(fields.extinction),
-            hostSource(fields.scattering),
-            hostSource(fields.anisotropy),
-            hostSource(fields.surfaceNodes),
-            hostSource(fields.surfaceTriangles),
-            fields.indexVersion,
-            fields.extinctionVersion,
-            fields.scatteringVersion,
-            fields.surfaceVersion,
-            hostSource(fields.emission),
-            fields.indexChange,
-            fields.extinctionChange,
-            fields.scatteringChange};
+    FieldUpload upload;
+    upload.grid = fields.grid;
+    upload.referenceIndex = fields.referenceIndex;
+#define EIKON_HOST_SOURCE(member, ...) upload.member = hostSource(fields.member);
+    EIKON_OPTICAL_FIELDS(EIKON_HOST_SOURCE)
+#undef EIKON_HOST_SOURCE
+#define EIKON_HOST_VERSION(group) upload.group##Version = fields.group##Version;
+    EIKON_OPTICAL_FIELD_VERSIONS(EIKON_HOST_VERSION)
+#undef EIKON_HOST_VERSION
+    upload.indexChange = fields.indexChange;
+    upload.extinctionChange = fields.extinctionChange;
+    upload.scatteringChange = fields.scatteringChange;
+    return upload;
 }
 
 UploadBytes FieldTextures::upload(const FieldUpload& fields) {
@@ -98,66 +95,55 @@ UploadBytes FieldTextures::upload(const FieldUpload& fields) {
         block.voxelSize = glm::vec4(glm::vec3(grid_.voxelSize()), static_cast<float>(grid_.voxelVolume()));
         block.resolution = glm::ivec4(r, 0);
         gridBlock_ = gl::Buffer(sizeof block, &block);
-        index_ = {};
         gradient_ = gl::Texture3D(GL_RGBA32F, r.x, r.y, r.z, gl::gridResource("the index gradient", r.x, r.y, r.z));
-        extinction_ = {};
-        scattering_ = {};
-        anisotropy_ = {};
-        emission_ = {};
-        indexVersion_ = extinctionVersion_ = scatteringVersion_ = surfaceVersion_ = kNothingHeld;
+        // Textures of the old grid's shape go; every field is uploaded anew.
+#define EIKON_DROP_TEXTURE(member, ...) member##_.texture = {};
+        EIKON_OPTICAL_FIELDS(EIKON_DROP_TEXTURE)
+#undef EIKON_DROP_TEXTURE
+#define EIKON_FORGET_VERSION(group) group##Version_ = kNothingHeld;
+        EIKON_OPTICAL_FIELD_VERSIONS(EIKON_FORGET_VERSION)
+#undef EIKON_FORGET_VERSION
         bytes.host += sizeof block;
     }
-    if (fields.indexVersion != indexVersion_)
-        uploadField(index_, "the refractive index", GL_R32F, GL_RED, grid_, fields.deltaIndex, fields.indexChange,
-                    indexVersion_, fields.indexVersion, bytes);
-    indexVersion_ = fields.indexVersion;
-    const bool extinctionChanged = fields.extinctionVersion != extinctionVersion_;
-    if (!fields.extinction.floats) extinction_ = {};
-    else if (extinctionChanged)
-        uploadField(extinction_, "the extinction", GL_RGBA32F, GL_RGB, grid_, fields.extinction, fields.extinctionChange,
-                    extinctionVersion_, fields.extinctionVersion, bytes);
-    if (!fields.emission.floats) emission_ = {};
-    else if (extinctionChanged)
-        uploadField(emission_, "the emission", GL_RGBA32F, GL_RGB, grid_, fields.emission, fields.extinctionChange,
-                    extinctionVersion_, fields.extinctionVersion, bytes);
-    extinctionVersion_ = fields.extinctionVersion;
-    const bool scatteringChanged = fields.scatteringVersion != scatteringVersion_;
-    if (!fields.scattering.floats) scattering_ = {};
-    else if (scatteringChanged)
-        uploadField(scattering_, "the scattering", GL_RGBA32F, GL_RGB, grid_, fields.scattering, fields.scatteringChange,
-                    scatteringVersion_, fields.scatteringVersion, bytes);
-    if (!fields.anisotropy.floats) anisotropy_ = {};
-    else if (scatteringChanged)
-        uploadField(anisotropy_, "the anisotropy", GL_R32F, GL_RED, grid_, fields.anisotropy, fields.scatteringChange,
-                    scatteringVersion_, fields.scatteringVersion, bytes);
-    scatteringVersion_ = fields.scatteringVersion;
-    if (!fields.surfaceTriangles.floats) {
-        surfaceNodes_ = {};
-        surfaceNodeTexels_ = {};
-        surfaceTriangleTexels_ = {};
-        surfaceTriangles_ = {};
-    } else if (fields.surfaceVersion != surfaceVersion_) {
-        if (uploadBuffer(surfaceNodes_, fields.surfaceNodes, bytes))
-            surfaceNodeTexels_ = gl::BufferTexture(surfaceNodes_, GL_RGBA32F, {"objects", "the sharp surfaces' trees"});
-        if (uploadBuffer(surfaceTriangles_, fields.surfaceTriangles, bytes))
-            surfaceTriangleTexels_ =
-                gl::BufferTexture(surfaceTriangles_, GL_RGBA32F, {"objects", "the sharp surfaces' triangles"});
-    }
-    surfaceVersion_ = fields.surfaceVersion;
+    // A group's fields are uploaded when its version moved on; a field the
+    // frame lacks is dropped.
+#define EIKON_GROUP_CHANGED(group) const bool group##Changed = fields.group##Version != group##Version_;
+    EIKON_OPTICAL_FIELD_VERSIONS(EIKON_GROUP_CHANGED)
+#undef EIKON_GROUP_CHANGED
+#define EIKON_UPLOAD_R32F(member, version, what)                                                             \
+    uploadField(member##_.texture, what, GL_R32F, GL_RED, grid_, fields.member, fields.version##Change,      \
+                version##Version_, fields.version##Version, bytes)
+#define EIKON_UPLOAD_RGBA32F(member, version, what)                                                          \
+    uploadField(member##_.texture, what, GL_RGBA32F, GL_RGB, grid_, fields.member, fields.version##Change,   \
+                version##Version_, fields.version##Version, bytes)
+#define EIKON_UPLOAD_Buffer(member, version, what)                                                           \
+    if (uploadBuffer(member##_.buffer, fields.member, bytes))                                                \
+    member##_.texels = gl::BufferTexture(member##_.buffer, GL_RGBA32F, {"objects", what})
+#define EIKON_UPLOAD_FIELD(member, channels, version, format, ring, exportName, unit, role, what) \
+    if (!fields.member.floats) member##_ = {};                                                     \
+    else if (version##Changed) EIKON_UPLOAD_##format(member, version, what);
+    EIKON_OPTICAL_FIELDS(EIKON_UPLOAD_FIELD)
+#undef EIKON_UPLOAD_FIELD
+#undef EIKON_UPLOAD_Buffer
+#undef EIKON_UPLOAD_RGBA32F
+#undef EIKON_UPLOAD_R32F
+#define EIKON_HOLD_VERSION(group) group##Version_ = fields.group##Version;
+    EIKON_OPTICAL_FIELD_VERSIONS(EIKON_HOLD_VERSION)
+#undef EIKON_HOLD_VERSION
     return bytes;
 }
 
 void FieldTextures::bindForTracing() const {
     gridBlock_.bindUniform(layout::kGridBlock);
     gradient_.bindSampler(layout::kGradientTexture);
-    if (hasExtinction()) extinction_.bindSampler(layout::kExtinctionTexture);
-    if (hasScattering()) scattering_.bindSampler(layout::kScatteringTexture);
-    if (hasAnisotropy()) anisotropy_.bindSampler(layout::kAnisotropyTexture);
-    if (hasEmission()) emission_.bindSampler(layout::kEmissionTexture);
-    if (surfaceTriangles_.id()) {
-        surfaceNodes_.bindStorage(layout::kSurfaceNodes);
-        surfaceNodeTexels_.bindSampler(layout::kSurfaceNodeTexture);
-        surfaceTriangles_.bindStorage(layout::kSurfaceTriangles);
+    if (hasExtinction()) extinction_.texture.bindSampler(layout::kExtinctionTexture);
+    if (hasScattering()) scattering_.texture.bindSampler(layout::kScatteringTexture);
+    if (hasAnisotropy()) anisotropy_.texture.bindSampler(layout::kAnisotropyTexture);
+    if (hasEmission()) emission_.texture.bindSampler(layout::kEmissionTexture);
+    if (surfaceTriangles_.buffer.id()) {
+        surfaceNodes_.buffer.bindStorage(layout::kSurfaceNodes);
+        surfaceNodes_.texels.bindSampler(layout::kSurfaceNodeTexture);
+        surfaceTriangles_.buffer.bindStorage(layout::kSurfaceTriangles);
     }
 }
 

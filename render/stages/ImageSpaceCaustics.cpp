@@ -131,7 +131,7 @@ void ImageSpaceCaustics::run(const FieldTextures& fields, bool changed) {
         glUniform1f(photonProgram_.uniform("frame_half_extent"), static_cast<float>(frame.halfExtent));
         glUniform2fv(photonProgram_.uniform("jitter"), 1, glm::value_ptr(jitter));
         photonProgram_.dispatchCovering(static_cast<std::size_t>(layers.width()),
-                                        static_cast<std::size_t>(layers.height()), 1, 8, 8, 1);
+                                        static_cast<std::size_t>(layers.height()));
         // The cells read the landings as texels, and their work groups as a command.
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
         polygons_.drawLight({layers.width(), layers.height()}, powerUnit_);

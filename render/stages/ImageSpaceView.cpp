@@ -76,7 +76,7 @@ void ImageSpaceView::run(const FieldTextures& fields) {
     } else {
         surfaceProgram_.use();
         surfaceProgram_.dispatchCovering(static_cast<std::size_t>(render_.width),
-                                         static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
+                                         static_cast<std::size_t>(render_.height));
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     gl::checkpoint("image-space view");
@@ -90,13 +90,11 @@ void ImageSpaceView::drawThroughLayers(const Viewpoint& view) {
     surfacePixelCount_.bindStorage(layout::kSurfacePixelCount);
     listingProgram_.use();
     listingProgram_.dispatchCovering(static_cast<std::size_t>(render_.width),
-                                     static_cast<std::size_t>(render_.height), 1, 8, 8, 1);
+                                     static_cast<std::size_t>(render_.height));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     surfaceProgram_.use();
     glUniformMatrix4fv(surfaceProgram_.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(view.viewProjection));
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, surfacePixelCount_.id());
-    glDispatchComputeIndirect(0);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    surfaceProgram_.dispatchIndirect(surfacePixelCount_);
 }
 
 std::vector<float> ImageSpaceView::downloadHdr() const {

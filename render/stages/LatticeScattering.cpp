@@ -22,11 +22,6 @@ namespace {
 
 constexpr int kLedgerValues = 8;  // per work group: source, absorbed, escaped through six faces (two vec4)
 
-int groupCount(const glm::ivec3& resolution) {
-    const glm::ivec3 groups = (resolution + 3) / 4;
-    return groups.x * groups.y * groups.z;
-}
-
 // The share of light born in a voxel of extinction σt that leaves its half
 // link unscattered (collide in lattice_scattering.comp), in double.
 double escapeShare(int directions, const glm::dvec3& voxelSize, double sigmaT) {
@@ -106,7 +101,6 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
     fluence_ = gl::Buffer(3 * cells * sizeof(float), gl::gridResource("the multiply scattered fluence", r.x, r.y, r.z));
     fluence_.clearToZero();
     probeValues_ = gl::Buffer(static_cast<std::size_t>(probes_.x) * probes_.y * probes_.z * sizeof(float));
-    tallies_ = gl::Buffer(static_cast<std::size_t>(groupCount(r)) * 2 * sizeof(glm::vec4));
 
     directed_ = fields.hasAnisotropy();
     if (directed_) {
@@ -139,6 +133,9 @@ LatticeScattering::LatticeScattering(const GridSpec& grid, const FieldTextures& 
         glUniform1fv(birthPass_.uniform("link_solid_angle"), static_cast<GLsizei>(solidAngles.size()),
                      solidAngles.data());
     }
+    const glm::uvec3 ledgerGroups = result_.groupsCovering(static_cast<std::size_t>(r.x), static_cast<std::size_t>(r.y),
+                                                                static_cast<std::size_t>(r.z));  // one ledger a group
+    tallies_ = gl::Buffer(std::size_t{ledgerGroups.x} * ledgerGroups.y * ledgerGroups.z * kLedgerValues * sizeof(float));
     surveyValues_ = gl::Buffer(sizeof(layout::GpuLatticeSurvey));
     depthLimit_ = latticeDepthLimit(settings.directions, grid.voxelSize());
 }

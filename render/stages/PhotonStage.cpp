@@ -482,7 +482,7 @@ void PhotonStage::tracePhotons(const PhotonSettings& settings, std::size_t first
             suspended_[1].bindStorage(layout::kSuspendedIn);  // unread when emitting, but bound
             suspended_[0].bindStorage(layout::kSuspendedOut);
         }
-        program_.dispatchCovering(batch, 1, 1, 64, 1, 1);
+        program_.dispatchCovering(batch);
         if (resumable_) resumeSuspended(batch);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -547,7 +547,7 @@ void PhotonStage::resumeSuspended(std::size_t batch) {
         suspendedCount_.clearToZero();
         glUniform1ui(program_.uniform("resuming"), 1u);
         glUniform1ui(program_.uniform("batch_size"), static_cast<GLuint>(suspended));
-        program_.dispatchCovering(suspended, 1, 1, 64, 1, 1);
+        program_.dispatchCovering(suspended);
         written = 1 - written;
     }
 }

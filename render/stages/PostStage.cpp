@@ -20,7 +20,7 @@ Image8 PostStage::run(const gl::BufferTexture& hdrImage, double exposureEv) {
     program_.use();
     glUniform2ui(program_.uniform("image_size"), static_cast<GLuint>(width_), static_cast<GLuint>(height_));
     glUniform1f(program_.uniform("exposure_scale"), static_cast<float>(std::exp2(exposureEv)));
-    program_.dispatchCovering(static_cast<std::size_t>(width_), static_cast<std::size_t>(height_), 1, 8, 8, 1);
+    program_.dispatchCovering(static_cast<std::size_t>(width_), static_cast<std::size_t>(height_));
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     Image8 image{width_, height_, std::vector<std::uint8_t>(pixels * 4)};
     ldr_.download(image.rgba.data(), image.rgba.size());

@@ -59,7 +59,7 @@ void ReceiverMaps::bind() const {
 void ReceiverMaps::dispatchOverTexels(const gl::Program& program) const {
     constexpr std::size_t kRow = 1024;  // texels per row of the dispatch
     glUniform1ui(program.uniform("texel_count"), texelCount_);
-    program.dispatchCovering(kRow, (texelCount_ + kRow - 1) / kRow, 1, 8, 8, 1);
+    program.dispatchCovering(kRow, (texelCount_ + kRow - 1) / kRow);
 }
 
 void ReceiverMaps::filter(const glm::vec3& powerUnit) {
@@ -77,7 +77,7 @@ void ReceiverMaps::filter(const glm::vec3& powerUnit) {
         glUniform1ui(program.uniform("first_texel"), receiver.map.x);
         glUniform1i(program.uniform("resolution"), static_cast<GLint>(receiver.map.y));
         glUniform1f(program.uniform("texel_area"), receiver.normal.w);
-        program.dispatchCovering(receiver.map.y, receiver.map.y, 1, 8, 8, 1);
+        program.dispatchCovering(receiver.map.y, receiver.map.y);
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("receiver filter");

@@ -32,7 +32,7 @@ public:
     gl::ShaderDefines::value_type countOption() const { return {"EIKON_RECEIVERS", std::to_string(count())}; }
     // Texels of all receivers' maps together.
     unsigned texelCount() const { return texelCount_; }
-    // Dispatches `program` (used, local size 8×8) once per texel of all the
+    // Dispatches `program` (used) once per texel of all the
     // maps, numbered as common/caustic_deposits.glsl's
     // receiver_texel_of_invocation reads them; sets its uniform texel_count.
     void dispatchOverTexels(const gl::Program& program) const;

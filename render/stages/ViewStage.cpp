@@ -173,7 +173,7 @@ void ViewStage::pass(int cell, int k) {
         glUniform1f(program_.uniform("footprint_pixels"), pixelStride_ > 1 ? static_cast<float>(pixelStride_)
                                                                             : 1.0f / static_cast<float>(k));
     const auto blocks = [&](int pixels) { return static_cast<std::size_t>((pixels + pixelStride_ - 1) / pixelStride_); };
-    program_.dispatchCovering(blocks(width_), blocks(height_), 1, 8, 8, 1);
+    program_.dispatchCovering(blocks(width_), blocks(height_));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     ++samplesTaken_;
 }

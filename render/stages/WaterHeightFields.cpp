@@ -15,7 +15,7 @@ namespace {
 
 bool isWaterBody(const ObjectDesc& object) { return object.isSharp() && object.kind == ObjectDesc::Kind::Water; }
 
-// Work groups of 64 per body that share its cells out in pass 1 of water_height_fields.comp.
+// Work groups per body that share its cells out in pass 1 of water_height_fields.comp.
 constexpr GLuint kCellGroups = 16;
 
 }  // namespace
@@ -94,15 +94,15 @@ void WaterHeightFields::update(const FieldTextures& fields) {
     gatherProgram_.use();
     glUniform1i(gatherProgram_.uniform("triangle_count"), triangles);
     glUniform1iv(gatherProgram_.uniform("water_of_ordinal"), layout::kMaxSharpObjects, waterOfOrdinal_.data());
-    gatherProgram_.dispatchCovering(static_cast<std::size_t>(triangles), 1, 1, 64, 1, 1);
+    gatherProgram_.dispatchCovering(static_cast<std::size_t>(triangles));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the cells read the nodes as texels
     nodeTexels_.bindSampler(layout::kWaterNodeTexture);
     cellProgram_.use();
-    glDispatchCompute(kCellGroups, static_cast<GLuint>(bodies_), 1);
+    cellProgram_.dispatchGroups(kCellGroups, static_cast<GLuint>(bodies_));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     slabProgram_.use();
     glUniform1i(slabProgram_.uniform("body_count"), bodies_);
-    slabProgram_.dispatchCovering(static_cast<std::size_t>(bodies_), 1, 1, 64, 1, 1);
+    slabProgram_.dispatchCovering(static_cast<std::size_t>(bodies_));
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     gl::checkpoint("water height fields");
 }

@@ -13,7 +13,6 @@ namespace eikon::render {
 
 namespace {
 
-constexpr GLuint kLocalSize = 64;
 // A chunk seeds at most capacity / kChunkHeadroom patches, so that its tree
 // may grow that many times over before a level is full.
 constexpr unsigned kChunkHeadroom = 1024;
@@ -74,7 +73,7 @@ WavefrontStage::WavefrontStage(const TracerDesc& tracer, gl::ShaderDefines defin
 void WavefrontStage::dispatch(Mode mode, unsigned invocations) {
     glUniform1ui(program_.uniform("mode"), static_cast<GLuint>(mode));
     glUniform1ui(program_.uniform("patch_count"), invocations);
-    program_.dispatchCovering(invocations, 1, 1, kLocalSize, 1, 1);
+    program_.dispatchCovering(invocations);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

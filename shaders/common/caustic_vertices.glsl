@@ -10,14 +10,13 @@
 // buffer texture (render/stages/CausticPolygons.h says why). GLSL only;
 // needs receiver.glsl and receiver_blocks.glsl.
 
+#include "common/caustic_sheets.glsl"
 #include "common/surface_layers.glsl"
 
 // [3·(2·texel + sheet)]: (flight origin, surface); [+ 1]: (direction, receiver or −1);
 // [+ 2]: (W rgb, the facet normals packed: an integer under 2^24, exact as a float)
 layout(std430, binding = kCausticVertices) writeonly buffer CausticVertices { vec4 caustic_vertices[]; };
 layout(binding = kCausticVertexTexture) uniform samplerBuffer caustic_vertex_texels;
-
-const int kCausticSheets = 2;
 
 struct CausticVertex {
     int receiver;    // the first receiver whose lit side it lands on; −1: none

@@ -64,6 +64,8 @@ namespace {
 #include "shaders/common/lattice_directions.glsl"
 #include "shaders/common/lattice_phase.glsl"
 #include "shaders/common/invariant_units.glsl"
+#include "shaders/common/stencil_flags.glsl"
+#include "shaders/common/caustic_sheets.glsl"
 }  // namespace
 #pragma GCC diagnostic pop
 

@@ -34,3 +34,15 @@ vec2 grid_ray_interval(vec3 x, vec3 d) {
     vec3 far = max(t0, t1);
     return vec2(max(max(near.x, near.y), near.z), min(min(far.x, far.y), far.z));
 }
+
+// Of `travelled`, the length a step of length ds from `start` to x counts,
+// the part inside the grid: a step that leaves the grid overshoots its
+// boundary, and outside the grid nothing absorbs.
+float travelled_inside_grid(vec3 start, vec3 x, float ds, float travelled) {
+    if (grid_contains(x)) return travelled;
+    vec3 chord = x - start;
+    float chord_length = length(chord);
+    if (chord_length > 0.0f)
+        travelled = min(travelled, max(grid_ray_interval(start, chord / chord_length).y, 0.0f) / chord_length * ds);
+    return travelled;
+}

@@ -319,21 +319,8 @@ void trace_photon(uint id) {
 
 #if !EIKON_BARE_MARCH
         ReceiverHit hit = first_receiver_crossing(start, x);
-        float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
-        if (!grid_contains(x)) {
-            // A step that leaves the grid overshoots its boundary, and
-            // outside the grid nothing absorbs: only the part inside counts.
-            vec3 chord = x - start;
-            float chord_length = length(chord);
-            if (chord_length > 0.0f)
-                travelled = min(travelled, max(grid_ray_interval(start, chord / chord_length).y, 0.0f) /
-                                               chord_length * ds);
-        }
-#if EIKON_SHARP_SURFACES
+        float travelled = travelled_inside_grid(start, x, ds, hit.receiver >= 0 ? hit.fraction * ds : ds);
         vec3 medium = owned_medium_point(start, inside_mask);
-#else
-        vec3 medium = start;
-#endif
         vec3 kappa = sample_extinction(medium);
         deposit_segment(start, hit.receiver >= 0 ? mix(start, x, hit.fraction) : x, power, kappa,
                         sample_scattering(medium));

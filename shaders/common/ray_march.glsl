@@ -35,6 +35,9 @@ vec2 step_node(ivec3 cell) { return texelFetch(step_structure, cell, 0).rg; }
 #if EIKON_SHARP_SURFACES
 #include "common/sharp_surface_blocks.glsl"
 uint inside_mask = 0u;  // the sharp surfaces the ray is inside (common/sharp_surface_blocks.glsl)
+#else
+const uint inside_mask = 0u;  // no sharp surface: a ray is inside none
+vec3 owned_medium_point(vec3 x, uint mask) { return x; }  // and no object owns a voxel's material
 #endif
 
 vec4 field_at(vec3 x);  // common/ray_march_steps.glsl

@@ -52,6 +52,7 @@ vec3 off_sharp_surfaces(vec3 x, uint mask, float margin) {
 // the ray crosses exactly. Near a sphere or box the material is read off it,
 // on the ray's side, by the reach of a trilinear read (1.5 voxels along each
 // axis), where every voxel read lies wholly on that side.
+// (Without sharp surfaces common/ray_march.glsl stands in: x itself.)
 vec3 owned_medium_point(vec3 x, uint mask) {
 #if EIKON_HAS_EXTINCTION || EIKON_HAS_SCATTERING || EIKON_HAS_EMISSION
     return off_sharp_surfaces(x, mask, 1.5f * length(xyz_of(grid.voxel_size)));

@@ -166,21 +166,8 @@ Corner trace_ray(uint emitter_index, uint face, vec2 u, vec3 tube_power) {
         max_invariant_error = max(max_invariant_error, invariant_error);
         invariant_error_sum += invariant_error;
         ReceiverHit hit = first_receiver_crossing(start, x);
-        float travelled = hit.receiver >= 0 ? hit.fraction * ds : ds;
-        if (!grid_contains(x)) {
-            // A step that leaves the grid overshoots its boundary, and
-            // outside the grid nothing absorbs: only the part inside counts.
-            vec3 chord = x - start;
-            float chord_length = length(chord);
-            if (chord_length > 0.0f)
-                travelled = min(travelled, max(grid_ray_interval(start, chord / chord_length).y, 0.0f) /
-                                               chord_length * ds);
-        }
-#if EIKON_SHARP_SURFACES
+        float travelled = travelled_inside_grid(start, x, ds, hit.receiver >= 0 ? hit.fraction * ds : ds);
         vec3 medium = owned_medium_point(start, inside_mask);
-#else
-        vec3 medium = start;
-#endif
         vec3 kappa = sample_extinction(medium);
         last_inside = vec4(mix(start, x, ds > 0.0f ? travelled / ds : 0.0f), 1.0f);
         if (tube && ledger.branched)

@@ -1,18 +1,13 @@
-// The GPU encoding of a SevenPointOperator (sim/fluid/StencilOperator.h;
-// sim/gpu/GpuStencilOperator.h): one uint per cell, bits 0–5 the neighbours
-// coupled to it (bit 2·axis + side, side 0 the lower one), bits 8–14 its
-// diagonal class (the faces whose weight adds to the diagonal), 64 where the
-// cell is no unknown. Red–black passes run one invocation per pair of cells
-// (2i, 2i + 1) of a row, which holds one cell of each colour.
+// A SevenPointOperator on the GPU (sim/fluid/StencilOperator.h;
+// sim/gpu/GpuStencilOperator.h): one uint of flags per cell, encoded as
+// common/stencil_flags.glsl says. Red–black passes run one invocation per
+// pair of cells (2i, 2i + 1) of a row, which holds one cell of each colour.
 // With REAL defined (float or double: the precision of a pass) and
 // STENCIL_INPUT(c) naming the vector the operator reads, it also gives the
 // operator itself, from the uniforms size, weight and identity.
 
-const uint kNotUnknown = 64u;
+#include "common/stencil_flags.glsl"
 
-uint coupledBits(uint flags) { return flags & 63u; }
-uint diagonalClass(uint flags) { return (flags >> 8) & 127u; }
-bool isUnknown(uint flags) { return diagonalClass(flags) != kNotUnknown; }
 bool hasFace(uint bits, int axis, int side) { return (bits & (1u << uint(2 * axis + side))) != 0u; }
 
 int cellIndex(ivec3 cell, ivec3 cells) { return cell.x + cells.x * (cell.y + cells.y * cell.z); }

@@ -6,6 +6,8 @@
 // boundaries, held samples) add to diag_c without a coupling.
 #pragma once
 
+#include "shaders/common/cpp_shim.h"
+
 #include <glm/vec3.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
@@ -35,8 +37,9 @@ struct SevenPointOperator {
     std::vector<std::uint8_t> plainRow;
 
     static constexpr std::uint8_t bit(int axis, int side) { return static_cast<std::uint8_t>(1u << (2 * axis + side)); }
-    static constexpr std::uint8_t kAllCoupled = 0x3f;
-    static constexpr std::uint8_t kNotUnknown = 64;
+    // The encoding the GPU reads too (shaders/common/stencil_flags.glsl).
+    static constexpr std::uint8_t kAllCoupled = shader::kCoupledBits;
+    static constexpr std::uint8_t kNotUnknown = shader::kNotUnknown;
 
     // Sets the weights and tabulates identity + Σ w over each class's faces.
     void setWeight(glm::dvec3 w);

@@ -70,7 +70,7 @@ void GpuAdvection::trace(const std::array<GpuField, 3>& velocity, double dt) {
     glUniform3f(trace_.uniform("cellsPerMetre"), static_cast<float>(1.0 / h_.x), static_cast<float>(1.0 / h_.y),
                 static_cast<float>(1.0 / h_.z));
     glUniform1f(trace_.uniform("dt"), static_cast<float>(dt));
-    dispatchOverEntries(trace_, displacementRecords(cells_), 64);
+    dispatchOverEntries(trace_, displacementRecords(cells_));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -8,14 +8,15 @@ namespace {
 constexpr std::size_t kGroupsAlongX = 32768;  // under every driver's 65 535, a power of two
 }
 
-void dispatchOverEntries(const gl::Program& program, std::size_t count, unsigned localSize) {
+void dispatchOverEntries(const gl::Program& program, std::size_t count) {
     if (count == 0) return;
-    program.use();
-    const std::size_t groups = (count + localSize - 1) / localSize;
+    const glm::uvec3 local = program.workGroupSize();
+    EIKON_CHECK(local.x > 0 && local.y == 1 && local.z == 1);  // a one-dimensional pass
+    const std::size_t groups = (count + local.x - 1) / local.x;
     const std::size_t x = groups < kGroupsAlongX ? groups : kGroupsAlongX;
     const std::size_t y = (groups + x - 1) / x;
     EIKON_CHECK(y <= 65535);
-    glDispatchCompute(static_cast<GLuint>(x), static_cast<GLuint>(y), 1);
+    program.dispatchGroups(static_cast<GLuint>(x), static_cast<GLuint>(y));
 }
 
 }  // namespace eikon::sim::gpu

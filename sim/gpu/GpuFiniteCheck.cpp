@@ -43,7 +43,7 @@ void GpuFiniteCheck::check(const GpuField& field, const std::string& name, const
     record_.use();
     glUniform1ui(record_.uniform("count"), static_cast<GLuint>(kSlots));
     glUniform1ui(record_.uniform("slot"), static_cast<GLuint>(checks_.size()));
-    glDispatchCompute(1, 1, 1);
+    record_.dispatchGroups(1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     checks_.push_back({&field, name, sample, when});
 }

@@ -38,14 +38,14 @@ void GpuMassCorrection::reduce(Stage stage, const GpuField& field, std::size_t b
     glUniform1ui(first.uniform("count"), static_cast<GLuint>(field.count()));
     // Record's first pass reads no budget; the others read low and high.
     if (stage != Record) glUniform1ui(first.uniform("field"), static_cast<GLuint>(budget));
-    glDispatchCompute(kGroups, 1, 1);
+    first.dispatchGroups(kGroups);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     const gl::Program& second = program(stage, 1);
     second.use();
     glUniform1ui(second.uniform("count"), kGroups);
     glUniform1ui(second.uniform("field"), static_cast<GLuint>(budget));
-    glDispatchCompute(1, 1, 1);
+    second.dispatchGroups(1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

@@ -134,7 +134,7 @@ void GpuMultigrid::vcycle(std::size_t l) const {
         level.x.bindStorage(layout::kSolverVectorX);
         level.op.setUniforms(coarsest_);
         glProgramUniform1i(coarsest_.id(), coarsest_.uniform("sweeps"), 2 * std::max({size.x, size.y, size.z}));
-        coarsest_.dispatchCovering(1, 1, 1, 1, 1, 1);  // one work group
+        coarsest_.dispatchGroups(1);  // one work group
         barrier();
         return;
     }

@@ -40,14 +40,14 @@ void GpuReduction::run(Operation operation, Element element, const gl::Buffer& a
     const gl::Program& first = program(operation, element, 0);
     first.use();
     glUniform1ui(first.uniform("count"), static_cast<GLuint>(count));
-    glDispatchCompute(kGroups, 1, 1);
+    first.dispatchGroups(kGroups);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     const gl::Program& second = program(operation, element, 1);
     second.use();
     glUniform1ui(second.uniform("count"), kGroups);
     glUniform1ui(second.uniform("slot"), static_cast<GLuint>(slot));
-    glDispatchCompute(1, 1, 1);
+    second.dispatchGroups(1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 

@@ -59,7 +59,7 @@ void GpuSources::apply(const HeldSamples& held, GpuField& field) const {
     held.entries.bindStorage(layout::kSolverSourceCells);
     field.bind(layout::kSolverField);
     glUniform1ui(program_.uniform("count"), static_cast<GLuint>(held.count));
-    dispatchOverEntries(program_, held.count, 64);
+    dispatchOverEntries(program_, held.count);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

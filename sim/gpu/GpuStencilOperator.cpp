@@ -1,6 +1,7 @@
 #include "sim/gpu/GpuStencilOperator.h"
 
 #include "bridge/layout/GpuLayouts.h"
+#include "shaders/common/cpp_shim.h"
 #include "sim/gpu/GpuField.h"
 
 #include <cstdint>
@@ -13,7 +14,7 @@ GpuStencilOperator::GpuStencilOperator(const SevenPointOperator& op, const std::
       cells_(op.cellCount() * sizeof(std::uint32_t), solverResource(what + " flags", op.size)) {
     std::vector<std::uint32_t> flags(op.cellCount());
     for (std::size_t c = 0; c < flags.size(); ++c) {
-        flags[c] = static_cast<std::uint32_t>(op.coupled[c]) | (static_cast<std::uint32_t>(op.diagonalClass[c]) << 8);
+        flags[c] = shader::stencilFlags(op.coupled[c], op.diagonalClass[c]);
         if (op.isUnknown(c)) ++unknownCount_;
     }
     cells_.upload(flags.data(), flags.size() * sizeof(std::uint32_t));

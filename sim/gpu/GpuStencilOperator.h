@@ -32,7 +32,7 @@ public:
     void bindCells() const;
     // Sets the uniforms size, weight and identity (shaders/sim/seven_point.glsl).
     void setUniforms(const gl::Program& program) const;
-    // One invocation per cell, in 4×4×4 groups.
+    // One invocation per cell.
     void dispatchOverCells(const gl::Program& program) const;
     // One invocation per pair of cells (2i, 2i + 1) along x: a red–black half-sweep.
     void dispatchOverPairs(const gl::Program& program) const;

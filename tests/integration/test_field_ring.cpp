@@ -47,6 +47,7 @@ void main() {
         GLint linked = GL_FALSE;
         glGetProgramiv(program_.id(), GL_LINK_STATUS, &linked);
         if (!linked) throw std::runtime_error("probe shader failed to link");
+        program_.readWorkGroupSize();
         counter_ = gl::Buffer(sizeof(GLuint));
         counter_.clearToZero();
     }

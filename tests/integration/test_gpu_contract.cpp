@@ -683,8 +683,7 @@ TEST(GpuContract, LoopBudgetKeepsUnderTheDriversCap) {
     constexpr std::size_t kInvocations = 256;
     gl::Buffer counts(kInvocations * sizeof(glm::uvec2));
     counts.bindStorage(0);
-    program.use();
-    glDispatchCompute(kInvocations / 64, 1, 1);
+    program.dispatchCovering(kInvocations);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::uvec2> result(kInvocations);
     counts.download(result.data(), result.size() * sizeof(glm::uvec2));

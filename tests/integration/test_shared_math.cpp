@@ -76,7 +76,7 @@ TEST(SharedMath, GlslAndCppAgree) {
     buffer.bindStorage(kProbeBinding);
     program.use();
     glUniform1ui(program.uniform("case_count"), kCases);
-    program.dispatchCovering(kCases, 1, 1, 64, 1, 1);
+    program.dispatchCovering(kCases);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     buffer.download(gpu.data(), gpu.size() * sizeof(ProbeCase));
 

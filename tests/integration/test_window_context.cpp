@@ -41,7 +41,7 @@ TEST(WindowContext, OpensWithOpenGl45AndRunsComputeShaders) {
     gl::Buffer buffer(probe.size() * sizeof(glm::vec4), probe.data());
     const gl::Program program = gl::compileComputeProgramFromSource("euler_probe.comp", kEulerProbe);
     buffer.bindStorage(0);
-    program.dispatchCovering(1, 1, 1, 1, 1, 1);
+    program.dispatchCovering(1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     buffer.download(probe.data(), probe.size() * sizeof(glm::vec4));
     EXPECT_FLOAT_EQ(probe[2].x, 0.25f + 0.1f / 2.0f * 2.0f);
