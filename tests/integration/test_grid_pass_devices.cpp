@@ -196,6 +196,7 @@ TEST_F(GridPassDevices, HeatShimmersFrameIsTheSameOnBothDevices) {
     scene.diagnostic.reset();
     scene.camera.position = glm::dvec3(0.0, 0.57, 3.0);
     scene.camera.target = glm::dvec3(0.0, 0.02, -0.8);
+    scene.camera.fovDeg = 1.2;
     scene.render.environment.kind = EnvironmentDesc::Kind::Sky;
     scene.render.environment.groundHeight = -1.0;
     scene.render.environment.checkerSize = 0.03;
