@@ -1,6 +1,5 @@
 #include "render/stages/NativeWavefrontTrace.h"
 
-#include "render/stages/NativeTextures.h"
 #include "shaders/common/cpp_shim.h"
 
 #include <tbb/blocked_range.h>
@@ -20,11 +19,12 @@
 #define EIKON_LATTICE_SOURCE 0
 #define EIKON_LOOP_BUDGET 0
 
+#include "render/stages/NativeTracerKernel.h"
+
 namespace eikon::shader {
 namespace {
 
 using layout::kUnfollowed;
-using render::HostTexture3D;
 
 // A thread's sums: the tallies and the counters of its rays and patches.
 struct ThreadSums {
@@ -32,43 +32,13 @@ struct ThreadSums {
     render::NativeWavefrontCounts counts;
 };
 
-// One invocation of wavefront_trace.comp: its blocks and uniforms under
-// their GLSL names, its per-invocation state, and its tallies as the
-// thread's sums.
-struct WavefrontKernel {
-    // The GLSL blocks' structs, expanded from the member lists of
-    // bridge/layout/GpuLayouts.h (sizes checked below); Corner and Patch name
-    // their members as GLSL does.
-#define EIKON_GLSL_MEMBER(cppType, cppName, glslType, glslName, arrayLength) glslType glslName;
-    struct GridBlock { EIKON_GPU_GRID(EIKON_GLSL_MEMBER) };
-    struct Receiver { EIKON_GPU_RECEIVER(EIKON_GLSL_MEMBER) };
-    struct Emitter { EIKON_GPU_EMITTER(EIKON_GLSL_MEMBER) };
-    struct SharpSurface { EIKON_GPU_SHARP_SURFACE(EIKON_GLSL_MEMBER) };
-#undef EIKON_GLSL_MEMBER
+// One invocation of wavefront_trace.comp: the march's blocks and state
+// (NativeTracerKernel), its own uniforms and its tallies as the thread's
+// sums.
+struct WavefrontKernel : NativeTracerKernel {
     using Corner = layout::GpuWavefrontCorner;
     using Patch = layout::GpuWavefrontPatch;
-    // common/sharp_triangle_surfaces.glsl's, whose functions below are
-    // never reached: the native pass takes spheres and boxes only.
-    struct TriangleTrace {
-        float t;
-        int triangle;
-        vec2 uv;
-        int hits;
-    };
 
-    GridBlock grid;
-    const Receiver* receivers;
-    uint receiver_count;
-    const Emitter* emitters;
-    uint emitter_count;
-    const SharpSurface* sharp_surfaces;
-    uint sharp_surface_count;
-    HostTexture3D<vec4> gradient_texture;
-    HostTexture3D<vec4> step_structure;
-    vec3 dispersion;
-    float step_length;
-    uint max_steps;
-    vec3 power_unit;
     // wavefront_trace.comp's uniforms.
     uint seeded_jobs;
     uint first_cell;
@@ -87,26 +57,6 @@ struct WavefrontKernel {
     const Patch* patches;
     Patch* children;
     ThreadSums* sums;
-
-    // Per ray, as the shader's globals are per invocation.
-    float channel_scale = 1.0f;
-    float sharp_offset = 0.0f;
-    uint inside_mask = 0u;
-    uint deposits = 0u;
-
-    // common/grid_sampling.glsl's textures.
-    vec4 sample_gradient_and_delta(vec3 x) { return gradient_texture.linear(grid_uvw(x)); }
-    vec3 sample_extinction(vec3) { return vec3(0.0f); }
-    vec3 sample_scattering(vec3) { return vec3(0.0f); }
-    // common/ray_march.glsl's step structure.
-    vec2 step_node(ivec3 cell) { return vec2(step_structure.fetch(cell)); }
-
-    bool inside_triangle_surface(vec4, vec3) { return false; }
-    TriangleTrace triangle_surface_crossing(vec4, vec3, vec3, float, float) { return {0.0f, -1, vec2(0.0f), 0}; }
-    vec3 onto_triangle(int, vec3 p) { return p; }
-    vec3 triangle_facet_normal(int) { return vec3(0.0f); }
-    vec3 triangle_facing_normal(int, vec2, vec3, vec3 facet_facing, float, float) { return facet_facing; }
-    float triangle_surface_clearance() { return 0.0f; }
 
     // The counters of the shared text, into the thread's sums.
     void count_traced_ray() { ++sums->counts.rays; }
@@ -129,14 +79,6 @@ struct WavefrontKernel {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"  // bodies compiled out by the options
 #pragma GCC diagnostic ignored "-Wshadow"            // GLSL parameters named as the ray's state
-#include "shaders/common/grid_box.glsl"
-#include "shaders/common/receiver_hits.glsl"
-#include "shaders/common/straight_flight.glsl"
-#include "shaders/common/loop_budget.glsl"
-#include "shaders/common/sharp_surface_crossings.glsl"
-#include "shaders/common/integrators.glsl"
-#include "shaders/common/ray_march_steps.glsl"
-#include "shaders/common/spot_profile.glsl"
 #include "shaders/common/fluence_tracks.glsl"
 #include "shaders/common/pass_loops.glsl"
 #include "shaders/common/wide_units.glsl"
@@ -150,10 +92,6 @@ struct WavefrontKernel {
 #pragma GCC diagnostic pop
 };
 
-static_assert(sizeof(WavefrontKernel::GridBlock) == sizeof(layout::GpuGrid));
-static_assert(sizeof(WavefrontKernel::Receiver) == sizeof(layout::GpuReceiver));
-static_assert(sizeof(WavefrontKernel::Emitter) == sizeof(layout::GpuEmitter));
-static_assert(sizeof(WavefrontKernel::SharpSurface) == sizeof(layout::GpuSharpSurface));
 
 }  // namespace
 }  // namespace eikon::shader
@@ -226,20 +164,7 @@ NativeWavefrontTrace::NativeWavefrontTrace(const NativePhotonInputs& march, cons
     impl_ = std::make_unique<Impl>(empty);
     using Kernel = Impl::Kernel;
     Kernel& kernel = impl_->kernel;
-    std::memcpy(&kernel.grid, &march.grid, sizeof kernel.grid);
-    kernel.receivers = reinterpret_cast<const Kernel::Receiver*>(march.receivers.data());
-    kernel.receiver_count = static_cast<unsigned>(march.receivers.size());
-    kernel.emitters = reinterpret_cast<const Kernel::Emitter*>(march.emitters.data());
-    kernel.emitter_count = static_cast<unsigned>(march.emitters.size());
-    kernel.sharp_surfaces = reinterpret_cast<const Kernel::SharpSurface*>(march.surfaces.data());
-    kernel.sharp_surface_count = static_cast<unsigned>(march.surfaces.size());
-    const glm::ivec3 cells(march.grid.resolution);
-    kernel.gradient_texture = {march.gradient, cells};
-    kernel.step_structure = {march.steps, cells};
-    kernel.dispersion = march.dispersion;
-    kernel.step_length = march.stepLength;
-    kernel.max_steps = march.maxSteps;
-    kernel.power_unit = march.powerUnit;
+    kernel.bindMarch(march);
     kernel.grid_cells = settings.gridCells;
     kernel.max_depth = settings.maxDepth;
     kernel.capacity = settings.capacity;

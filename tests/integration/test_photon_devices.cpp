@@ -20,13 +20,10 @@
 //   are the same integers, and that is asserted there. Only the mean
 //   invariant error, a sum of each step's rounding of |v| − n, differs
 //   (0.6% on the default scene).
-#include "gl/GlContext.h"
 #include "io/scene/SceneParser.h"
-#include "render/graph/FrameRenderer.h"
-#include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
+#include "tests/integration/LightPassDevices.h"
 
-#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,41 +37,12 @@ namespace {
 
 using render::StageDevice;
 
-struct PassOutputs {
-    render::PhotonStats stats;
-    std::vector<std::uint64_t> tallies;  // receiver texels, per channel, in power units
-    StageDevice device = StageDevice::Gpu;
-    std::string deviceReason;
-};
-
 Scene defaultPhotonScene() {
     Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/default.json");
     scene.tracer.estimator = TracerDesc::Estimator::Photons;
     scene.render.photons = 1 << 18;
     scene.render.errorEstimate = false;
     return scene;
-}
-
-PassOutputs tracePass(Scene scene, ComputeDevice device) {
-    test::glContext();
-    scene.render.device = device;
-    const FieldSet fields = sim::voxelizeScene(scene);
-    render::RendererOptions options;
-    options.drawsImage = false;
-    render::FrameRenderer renderer(scene, fields, options);
-    const render::FrameResult frame = renderer.render(fields);
-    const auto photons = std::find_if(frame.stages.begin(), frame.stages.end(),
-                                      [](const render::StageReport& stage) { return stage.name == "photons"; });
-    EXPECT_NE(photons, frame.stages.end());
-    PassOutputs out;
-    if (photons != frame.stages.end()) {
-        EXPECT_TRUE(photons->ran);
-        out.device = photons->device;
-        out.deviceReason = photons->deviceReason;
-    }
-    out.stats = frame.photons;
-    out.tallies = renderer.receivers().downloadTallies();
-    return out;
 }
 
 std::uint64_t sumOf(const std::vector<std::uint64_t>& values) {
@@ -89,8 +57,8 @@ protected:
 };
 
 TEST_F(PhotonDevices, TheNativePassIsTheSameRunToRun) {
-    const PassOutputs first = tracePass(defaultPhotonScene(), ComputeDevice::Cpu);
-    const PassOutputs second = tracePass(defaultPhotonScene(), ComputeDevice::Cpu);
+    const test::LightPassOutputs first = test::traceLightPass(defaultPhotonScene(), ComputeDevice::Cpu);
+    const test::LightPassOutputs second = test::traceLightPass(defaultPhotonScene(), ComputeDevice::Cpu);
     EXPECT_EQ(first.device, StageDevice::Cpu) << first.deviceReason;
     EXPECT_TRUE(first.deviceReason.empty());
     ASSERT_FALSE(first.tallies.empty());
@@ -104,8 +72,8 @@ TEST_F(PhotonDevices, TheNativePassIsTheSameRunToRun) {
 }
 
 TEST_F(PhotonDevices, TheNativePassAgreesWithTheComputeShader) {
-    const PassOutputs gpu = tracePass(defaultPhotonScene(), ComputeDevice::Gpu);
-    const PassOutputs cpu = tracePass(defaultPhotonScene(), ComputeDevice::Cpu);
+    const test::LightPassOutputs gpu = test::traceLightPass(defaultPhotonScene(), ComputeDevice::Gpu);
+    const test::LightPassOutputs cpu = test::traceLightPass(defaultPhotonScene(), ComputeDevice::Cpu);
     EXPECT_EQ(gpu.device, StageDevice::Gpu);
     EXPECT_EQ(cpu.device, StageDevice::Cpu) << cpu.deviceReason;
     ASSERT_EQ(gpu.tallies.size(), cpu.tallies.size());
@@ -138,9 +106,7 @@ TEST_F(PhotonDevices, TheNativePassAgreesWithTheComputeShader) {
     EXPECT_LE(unitsMoved, 1e-2 * received);
     EXPECT_NEAR(double(cpu.stats.steps), double(gpu.stats.steps), 1e-3 * double(gpu.stats.steps));
 
-    gl::GlInfo renderer;
-    renderer.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (!renderer.rendersOnCpu()) return;
+    if (!test::rendersOnCpu()) return;
     EXPECT_EQ(cpu.tallies, gpu.tallies);
     for (const auto member : {&render::PhotonStats::emitted, &render::PhotonStats::absorbed, &render::PhotonStats::escaped,
                               &render::PhotonStats::received, &render::PhotonStats::cutOff, &render::PhotonStats::blocked,
@@ -158,7 +124,7 @@ TEST_F(PhotonDevices, AScenePastTheNativePassRunsTheComputeShaderAndSaysWhy) {
     Scene scene = defaultPhotonScene();
     scene.tracer.integrator = TracerDesc::Integrator::Rk4;
     scene.render.photons = 1 << 12;
-    const PassOutputs out = tracePass(scene, ComputeDevice::Cpu);
+    const test::LightPassOutputs out = test::traceLightPass(scene, ComputeDevice::Cpu);
     EXPECT_EQ(out.device, StageDevice::Gpu);
     EXPECT_NE(out.deviceReason.find("leapfrog"), std::string::npos) << out.deviceReason;
 }

@@ -21,13 +21,10 @@
 //   split otherwise). The bound asserted: each ledger tally and the
 //   receiver's total within 1e-4 of the compute shader's, and the texels'
 //   summed |difference| within 1e-4 of the received total.
-#include "gl/GlContext.h"
 #include "io/scene/SceneParser.h"
-#include "render/graph/FrameRenderer.h"
-#include "sim/voxelize/AnalyticVoxelizer.h"
 #include "tests/integration/GlTestContext.h"
+#include "tests/integration/LightPassDevices.h"
 
-#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,13 +38,6 @@ namespace {
 
 using render::StageDevice;
 
-struct PassOutputs {
-    render::PhotonStats stats;
-    std::vector<std::uint64_t> tallies;  // receiver texels, per channel, in power units
-    StageDevice device = StageDevice::Gpu;
-    std::string deviceReason;
-};
-
 Scene wavefrontScene(const std::string& name) {
     Scene scene = loadSceneFile(std::string(EIKON_SOURCE_DIR) + "/scenes/" + name + ".json");
     EXPECT_EQ(scene.tracer.estimator, TracerDesc::Estimator::Wavefront);
@@ -56,38 +46,10 @@ Scene wavefrontScene(const std::string& name) {
     return scene;
 }
 
-PassOutputs tracePass(Scene scene, ComputeDevice device) {
-    test::glContext();
-    scene.render.device = device;
-    const FieldSet fields = sim::voxelizeScene(scene);
-    render::RendererOptions options;
-    options.drawsImage = false;
-    render::FrameRenderer renderer(scene, fields, options);
-    const render::FrameResult frame = renderer.render(fields);
-    const auto photons = std::find_if(frame.stages.begin(), frame.stages.end(),
-                                      [](const render::StageReport& stage) { return stage.name == "photons"; });
-    EXPECT_NE(photons, frame.stages.end());
-    PassOutputs out;
-    if (photons != frame.stages.end()) {
-        EXPECT_TRUE(photons->ran);
-        out.device = photons->device;
-        out.deviceReason = photons->deviceReason;
-    }
-    out.stats = frame.photons;
-    out.tallies = renderer.receivers().downloadTallies();
-    return out;
-}
-
 double sumOf(const std::vector<std::uint64_t>& values) {
     double sum = 0.0;
     for (std::uint64_t value : values) sum += static_cast<double>(value);
     return sum;
-}
-
-bool rendersOnCpu() {
-    gl::GlInfo renderer;
-    renderer.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return renderer.rendersOnCpu();
 }
 
 class WavefrontDevices : public ::testing::TestWithParam<std::string> {
@@ -96,8 +58,8 @@ protected:
 };
 
 TEST_P(WavefrontDevices, TheNativePassIsTheSameRunToRun) {
-    const PassOutputs first = tracePass(wavefrontScene(GetParam()), ComputeDevice::Cpu);
-    const PassOutputs second = tracePass(wavefrontScene(GetParam()), ComputeDevice::Cpu);
+    const test::LightPassOutputs first = test::traceLightPass(wavefrontScene(GetParam()), ComputeDevice::Cpu);
+    const test::LightPassOutputs second = test::traceLightPass(wavefrontScene(GetParam()), ComputeDevice::Cpu);
     EXPECT_EQ(first.device, StageDevice::Cpu) << first.deviceReason;
     EXPECT_TRUE(first.deviceReason.empty());
     ASSERT_FALSE(first.tallies.empty());
@@ -115,8 +77,8 @@ TEST_P(WavefrontDevices, TheNativePassIsTheSameRunToRun) {
 }
 
 TEST_P(WavefrontDevices, TheNativePassAgreesWithTheComputeShader) {
-    const PassOutputs gpu = tracePass(wavefrontScene(GetParam()), ComputeDevice::Gpu);
-    const PassOutputs cpu = tracePass(wavefrontScene(GetParam()), ComputeDevice::Cpu);
+    const test::LightPassOutputs gpu = test::traceLightPass(wavefrontScene(GetParam()), ComputeDevice::Gpu);
+    const test::LightPassOutputs cpu = test::traceLightPass(wavefrontScene(GetParam()), ComputeDevice::Cpu);
     EXPECT_EQ(gpu.device, StageDevice::Gpu);
     EXPECT_EQ(cpu.device, StageDevice::Cpu) << cpu.deviceReason;
     ASSERT_EQ(gpu.tallies.size(), cpu.tallies.size());
@@ -161,7 +123,7 @@ TEST_P(WavefrontDevices, TheNativePassAgreesWithTheComputeShader) {
     EXPECT_NEAR(double(cpu.stats.steps), double(gpu.stats.steps), 1e-3 * double(gpu.stats.steps));
     EXPECT_EQ(n.atLimit, g.atLimit);
     EXPECT_LE(cpu.stats.maxInvariantError, 1e-5);
-    if (GetParam() == "default" && rendersOnCpu()) {
+    if (GetParam() == "default" && test::rendersOnCpu()) {
         EXPECT_EQ(n.patches, g.patches);
         EXPECT_EQ(n.splits, g.splits);
         EXPECT_EQ(n.rays, g.rays);
@@ -178,7 +140,7 @@ TEST(WavefrontDevicesRefusal, AScenePastTheNativePassRunsTheComputeShaderAndSays
     Scene scene = wavefrontScene("default");
     scene.tracer.wavefront.gridCells = 4;
     scene.tracer.dispersion = Rgb(0.98, 1.0, 1.02);  // the same program, one channel a wavefront
-    const PassOutputs out = tracePass(scene, ComputeDevice::Cpu);
+    const test::LightPassOutputs out = test::traceLightPass(scene, ComputeDevice::Cpu);
     EXPECT_EQ(out.device, StageDevice::Gpu);
     EXPECT_EQ(out.deviceReason, "the native pass is not dispersive");
 }
