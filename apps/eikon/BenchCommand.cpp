@@ -40,8 +40,7 @@ Measurement measure(const std::string& name, const Scene& scene, const FieldSet&
         if (stage.name == "photons") measurement.device = render::stageDeviceName(stage.device);
     std::vector<double> times;
     for (int i = 0; i < repeats; ++i) times.push_back(renderer.relight(measurement.stats).milliseconds);
-    std::sort(times.begin(), times.end());
-    measurement.medianMs = times[times.size() / 2];
+    measurement.medianMs = median(times);
     return measurement;
 }
 
@@ -63,10 +62,8 @@ double measureCameraFrames(const Scene& scene, const FieldSet& fields, int repea
             if (stage.name == "post") post.push_back(stage.milliseconds);
         }
     }
-    std::sort(view.begin(), view.end());
-    std::sort(post.begin(), post.end());
-    postMs = post[post.size() / 2];
-    return view[view.size() / 2];
+    postMs = median(post);
+    return median(view);
 }
 
 }  // namespace

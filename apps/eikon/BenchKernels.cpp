@@ -9,12 +9,12 @@
 
 namespace eikon::app {
 
-namespace {
-
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     return values[values.size() / 2];
 }
+
+namespace {
 
 // What one stage worked on in a frame, unit by unit.
 std::vector<std::pair<std::string, std::uint64_t>> unitsOf(const std::string& stage, const Scene& scene,
@@ -49,10 +49,9 @@ std::vector<KernelFigure> measureKernels(const Scene& scene, const FieldSet& fie
     render::FrameResult last;
     for (int i = 0; i < repeats; ++i) {
         // New versions: the renderer takes every field as changed.
-        ++frame.indexVersion;
-        ++frame.extinctionVersion;
-        ++frame.scatteringVersion;
-        ++frame.surfaceVersion;
+#define EIKON_NEW_VERSION(group) ++frame.group##Version;
+        EIKON_OPTICAL_FIELD_VERSIONS(EIKON_NEW_VERSION)
+#undef EIKON_NEW_VERSION
         last = renderer.render(frame);
         for (const render::StageReport& stage : last.stages) times[stage.name].push_back(stage.milliseconds);
     }

@@ -29,6 +29,10 @@ struct KernelFigure {
     double nanosecondsPerUnit() const { return count > 0 ? milliseconds * 1e6 / static_cast<double>(count) : 0.0; }
 };
 
+// The median of `values` (the upper one of an even count), as every bench
+// figure is taken.
+double median(std::vector<double> values);
+
 // Renders one frame (compilation, first uploads), then `repeats` frames in
 // which every field's version moves on; one figure per stage and unit.
 std::vector<KernelFigure> measureKernels(const Scene& scene, const FieldSet& fields, int repeats);
