@@ -41,6 +41,7 @@ float octree_step(vec3 x, vec3 d, vec3 grid_min, vec3 voxel_size, float level, f
 // level ray takes the step that crosses step_voxels of the thin layers,
 // not step_voxels of their thickness along its path.
 float voxel_crossing_step(vec3 d, vec3 bend, vec3 reach, float shortest, float longest) {
+    if (longest <= shortest) return shortest;  // cubic voxels: nothing to weigh
     vec3 along = abs(d);
     vec3 per_axis = 2.0f * reach / max(along + sqrt(along * along + 8.0f * abs(bend) * reach), vec3(1e-30f));
     return clamp(min(per_axis.x, min(per_axis.y, per_axis.z)), shortest, longest);
